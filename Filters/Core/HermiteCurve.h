@@ -1,0 +1,34 @@
+// Cubic Hermite curves with circle-preserving end tangents (Wang et al. 2008,
+// III-C, eqs. 2-5). Used for silhouette bridges (over a mesh edge) and
+// silhouette segments (between two silhouette points).
+#pragma once
+
+#include <glm/vec3.hpp>
+
+namespace silsmooth {
+
+struct HermiteCurve
+{
+  glm::dvec3 P0{ 0.0 };
+  glm::dvec3 P1{ 0.0 };
+  glm::dvec3 T0{ 0.0 };
+  glm::dvec3 T1{ 0.0 };
+
+  /// Eq. 5: S(u) = (2P0 - 2P1 + T0 + T1)u^3 - (3P0 - 3P1 + 2T0 + T1)u^2 + T0 u + P0.
+  glm::dvec3 evaluate(double u) const;
+};
+
+/// The end tangent of a curve along `chord` at an end with unit normal
+/// `normal`: the chord projected on the end's tangent plane (eqs. 2-3), scaled to
+/// L = 2|chord| / (1 + cos(theta)) (eq. 4) so that end data sampled from a
+/// circular arc give the standard cubic approximation of that arc.
+/// Where the projection vanishes (the chord is parallel to the normal, or the
+/// normal is zero) the chord itself is used, which makes the curve straight at
+/// that end instead of dividing by ~0.
+glm::dvec3 circleTangent(const glm::dvec3& normal, const glm::dvec3& chord);
+
+/// The Hermite curve from p0 to p1 with unit normals n0, n1 at the ends.
+HermiteCurve makeCircleApproximatingCurve(
+  const glm::dvec3& p0, const glm::dvec3& n0, const glm::dvec3& p1, const glm::dvec3& n1);
+
+} // namespace silsmooth

@@ -1,0 +1,50 @@
+// Local re-meshing of one silhouette triangle (Wang et al. 2008, III-E, Fig. 11;
+// DESIGN 3.2 and 3.6).
+//
+// A silhouette triangle (A, B, C) has one vertex A whose visibility differs from
+// B's and C's. Its sides AB and AC carry the silhouette points P and Q, and the
+// sampled silhouette segment runs P = s0, s1, ..., sn = Q across it. The
+// triangle is cut along that polyline into
+//   - the lone side, polygon A P s1 ... Q: a fan from A;
+//   - the base side, polygon P B C Q s(n-1) ... s1: the triangle (B, C, sk)
+//     plus fans from B over s0..sk and from C over sk..sn, where sk is the
+//     sample most nearly equidistant from B and C (no sliver at either end).
+// Both polygons are convex in the triangle's parameter domain (the samples lie
+// on the chord PQ there), so every new triangle keeps the orientation of the
+// input triangle. Sides AB and AC are split only at P and Q, which the
+// neighbouring triangle across each side shares (one silhouette point per
+// edge), and side BC is never split: the result is crack-free and introduces
+// no T-junction. When a silhouette point coincides with a vertex (the caller
+// passes the vertex's id), triangles that would repeat an id are dropped;
+// this is a zero-length edge collapse and keeps a closed manifold closed.
+//
+// Feature segments (Fig. 12) will add layouts with one or two feature sides;
+// they reuse the same fan building blocks.
+#pragma once
+
+#include "MeshTopology.h"
+
+#include <glm/vec3.hpp>
+#include <vector>
+
+namespace silsmooth {
+
+struct SilhouetteTriangleLayout
+{
+  /// Corners in the input triangle's orientation: A is the lone vertex.
+  Id Lone = -1;
+  Id BaseFirst = -1;  ///< B, after A in the triangle's order
+  Id BaseSecond = -1; ///< C
+  /// P (on AB), interior samples, Q (on AC): point ids.
+  std::vector<Id> Chain;
+  /// Positions of B, C and of the chain's points (same order as Chain).
+  glm::dvec3 BaseFirstPosition{ 0.0 };
+  glm::dvec3 BaseSecondPosition{ 0.0 };
+  std::vector<glm::dvec3> ChainPositions;
+};
+
+/// Appends the triangles that replace the silhouette triangle to `out` and
+/// returns how many were appended.
+std::size_t remeshSilhouetteTriangle(const SilhouetteTriangleLayout& layout, std::vector<Triangle>& out);
+
+} // namespace silsmooth

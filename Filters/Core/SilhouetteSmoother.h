@@ -1,0 +1,96 @@
+// The per-frame silhouette smoothing pass of Wang et al. 2008 over a mesh whose
+// view-independent data (edge table, shading normals) is prepared once.
+//
+// Steps, each in its own unit: vertex visibility (ViewGeometry), silhouette
+// triangles, one silhouette point per mixed edge on its silhouette bridge
+// (HermiteCurve, SilhouettePoint), silhouette segments and their adaptive
+// sampling (AdaptiveSampling), local re-meshing (LocalRemesher), and the
+// silhouette polylines (SilhouettePolylines).
+#pragma once
+
+#include "AdaptiveSampling.h"
+#include "MeshTopology.h"
+#include "ViewGeometry.h"
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <functional>
+#include <vector>
+
+namespace silsmooth {
+
+/// The view-independent state: points, triangles, unit shading normals and
+/// the edge table. Build it when the input changes, reuse it every frame.
+class PreparedMesh
+{
+public:
+  /// `normals` may be empty (angle-weighted normals are computed) or hold one
+  /// normal per point; a given normal that is zero or not finite is replaced
+  /// by the angle-weighted one.
+  PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
+    const std::vector<glm::dvec3>& normals = {});
+
+  const std::vector<glm::dvec3>& points() const { return this->Points; }
+  const std::vector<Triangle>& triangles() const { return this->Triangles; }
+  const std::vector<glm::dvec3>& normals() const { return this->Normals; }
+  const EdgeTable& edges() const { return this->Edges; }
+
+private:
+  std::vector<glm::dvec3> Points;
+  std::vector<Triangle> Triangles;
+  std::vector<glm::dvec3> Normals;
+  EdgeTable Edges;
+};
+
+/// A point the pass adds. Its other attributes (texture coordinates, scalars)
+/// are the linear combination `Weights` of the input points `Sources`.
+struct NewPoint
+{
+  glm::dvec3 Position{ 0.0 };
+  glm::dvec3 Normal{ 0.0 };
+  std::array<Id, 3> Sources{ { 0, 0, 0 } };
+  std::array<double, 3> Weights{ { 0.0, 0.0, 0.0 } };
+};
+
+struct SmoothingResult
+{
+  /// Added points; the i-th has id pointCount + i in the output.
+  std::vector<NewPoint> NewPoints;
+  /// Input triangles that were re-meshed, ascending.
+  std::vector<Id> SilhouetteTriangles;
+  /// The triangles replacing SilhouetteTriangles[i] are
+  /// Replacements[ReplacementOffsets[i] .. ReplacementOffsets[i + 1]).
+  std::vector<std::size_t> ReplacementOffsets{ 0 };
+  std::vector<Triangle> Replacements;
+  /// The smoothed silhouette, chained across triangles, as output point ids.
+  std::vector<std::vector<Id>> Polylines;
+
+  std::size_t newTriangleCount() const { return this->Replacements.size(); }
+};
+
+/// Runs body(begin, end) over sub-ranges covering [0, count). The VTK adapter
+/// passes vtkSMPTools; the default is a plain loop. Results never depend on
+/// how the range is split.
+using ParallelFor =
+  std::function<void(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body)>;
+void serialFor(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body);
+
+/// Silhouette points closer than this (in edge parameter) to an end of their
+/// edge are placed on that vertex, so that no sliver triangle is made.
+constexpr double SnapParameter = 1e-6;
+
+SmoothingResult smoothSilhouettes(const PreparedMesh& mesh, const ViewGeometry& view,
+  const SamplingParameters& sampling, const ParallelFor& parallelFor = serialFor);
+
+/// The visibility value g of every point (parallel over points).
+std::vector<double> vertexVisibility(
+  const PreparedMesh& mesh, const ViewGeometry& view, const ParallelFor& parallelFor = serialFor);
+
+/// Convenience for tests and tools: all output triangles, in input order with
+/// each silhouette triangle replaced in place, and per triangle the input
+/// triangle it came from and whether it is new geometry.
+void assembleTriangles(const PreparedMesh& mesh, const SmoothingResult& result,
+  std::vector<Triangle>& triangles, std::vector<Id>& sourceTriangle, std::vector<unsigned char>& isNew);
+
+} // namespace silsmooth

@@ -1,0 +1,26 @@
+#include "ViewGeometry.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec4.hpp>
+
+namespace silsmooth {
+
+double ViewGeometry::visibility(const glm::dvec3& point, const glm::dvec3& normal) const
+{
+  return glm::dot(normal, this->towardViewerFrom(point));
+}
+
+bool ViewGeometry::toPixels(const glm::dvec3& point, glm::dvec2& pixel) const
+{
+  const glm::dvec4 clip = this->ModelToClip * glm::dvec4(point, 1.0);
+  // w is the distance along the view axis for perspective and 1 for parallel.
+  if (!(clip.w > 1e-12))
+  {
+    return false;
+  }
+  pixel.x = (clip.x / clip.w + 1.0) * 0.5 * this->ViewportWidth;
+  pixel.y = (clip.y / clip.w + 1.0) * 0.5 * this->ViewportHeight;
+  return true;
+}
+
+} // namespace silsmooth

@@ -1,0 +1,41 @@
+// The view as the core sees it, in the mesh's model coordinates: where the eye
+// is (or which way the viewer looks, for parallel projection), and how model
+// points map to viewport pixels (for the pixel tolerance of the sampling).
+#pragma once
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace silsmooth {
+
+struct ViewGeometry
+{
+  /// Parallel projection: visibility uses TowardViewer; perspective: Eye.
+  bool Parallel = false;
+  /// Eye position in model coordinates (perspective).
+  glm::dvec3 Eye{ 0.0, 0.0, 1.0 };
+  /// Unit vector pointing from the scene towards the viewer (parallel), i.e.
+  /// minus the direction of projection, in model coordinates.
+  glm::dvec3 TowardViewer{ 0.0, 0.0, 1.0 };
+  /// Model coordinates to clip coordinates (projection * view * model).
+  glm::dmat4 ModelToClip{ 1.0 };
+  /// Viewport size in pixels.
+  int ViewportWidth = 1024;
+  int ViewportHeight = 768;
+
+  /// D_V of the paper: the direction from V towards the viewer (not unit).
+  glm::dvec3 towardViewerFrom(const glm::dvec3& point) const
+  {
+    return this->Parallel ? this->TowardViewer : this->Eye - point;
+  }
+
+  /// The visibility value g(V) = N_V . D_V; V is visible when g >= 0 (paper II).
+  double visibility(const glm::dvec3& point, const glm::dvec3& normal) const;
+
+  /// Projects a model point to viewport pixels. Returns false when the point
+  /// is on or behind the eye plane (no finite pixel position).
+  bool toPixels(const glm::dvec3& point, glm::dvec2& pixel) const;
+};
+
+} // namespace silsmooth

@@ -1,0 +1,199 @@
+/**
+ * @class   vtkSilhouetteSmoothingFilter
+ * @brief   re-meshes a coarse triangle mesh along its silhouette so the outline looks smooth
+ *
+ * vtkSilhouetteSmoothingFilter implements the view-dependent silhouette smoothing
+ * of L. Wang, C. Tu, W. Wang, X. Meng, B. Chan and D. Yan, "Silhouette Smoothing for
+ * Real-Time Rendering of Mesh Surfaces", IEEE TVCG 14(3), 2008. For the current
+ * camera it finds the silhouette triangles (those whose vertices differ in
+ * visibility N.(E - V) >= 0), reconstructs the smooth silhouette across them with
+ * cubic Hermite curves (silhouette bridges on the mixed edges, silhouette points
+ * where the interpolated normal is perpendicular to the view, silhouette segments
+ * between them), samples each segment adaptively so that the polyline stays
+ * within `Tolerance` pixels of the curve, and re-meshes only those triangles.
+ * Every other cell passes through unchanged.
+ *
+ * Input: a vtkPolyData. Polygons and triangle strips are triangulated; vertices
+ * and lines are passed through unchanged. Point normals (the active normals of the
+ * point data) are used as shading normals when present; otherwise angle-weighted
+ * vertex normals are computed. A given normal that is zero is replaced by the
+ * computed one; a point with no defined normal at all counts as visible.
+ *
+ * The view: a camera (SetCamera, or the active camera of SetRenderer), the
+ * viewport size in pixels (SetViewportSize, or the renderer's size), and
+ * optionally the actor (SetProp3D) or its matrix (SetModelMatrix) so that the
+ * eye is taken into the data's model coordinates. Perspective and parallel
+ * projection are both handled, from the camera. GetMTime() includes the
+ * camera's, the prop's and the matrix's, so a mapper fed by this filter
+ * re-executes it whenever the view moves. The view-independent work (triangles,
+ * edge table, shading normals) is cached and rebuilt only when the input changes.
+ *
+ * Output port 0: the re-meshed mesh. All input points come first with their ids
+ * unchanged, then the added points. Arrays:
+ * - cell `NewGeometry` (unsigned char): 0 = input triangle kept as it was,
+ *   1 = made by silhouette re-meshing (2 is reserved for feature-curve re-meshing);
+ * - cell `OriginalCellId` (vtkIdType): the input cell each output cell came from;
+ * - point `Normals`: the shading normals, set as the active normals (added points
+ *   get the normalised interpolated normal);
+ * - every other input point array, interpolated linearly for the added points
+ *   along the same parameters; every other input cell array, copied from the
+ *   original cell;
+ * - field data `SilhouetteTriangleCount`, `NewTriangleCount`, `NewPointCount`,
+ *   `InputTriangleCount`, `OutputTriangleCount` (vtkIdType, one tuple each).
+ *
+ * Output port 1: the smoothed silhouette as polylines chained across triangles
+ * (closed loops repeat their first point at the end), with point `Normals`.
+ *
+ * Guarantees: crack-free (each silhouette point is computed once per undirected
+ * edge, so both triangles of an edge split it at the identical point); a closed
+ * manifold input gives a closed manifold output with consistent orientation;
+ * boundary edges stay boundary edges; a view with no silhouette triangle gives
+ * the input back unchanged (plus the arrays above).
+ *
+ * Defined behaviour for awkward input: an empty input gives an empty output;
+ * points with NaN or infinite coordinates make the request fail with an error;
+ * cells that repeat a point id are passed through unchanged; edges shared by more
+ * than two triangles are split at one shared point for all of them; a missing
+ * camera makes the request fail with an error; an eye exactly on the surface is
+ * handled like any other view (its vertices count as visible).
+ *
+ * @sa vtkPolyDataSilhouette
+ */
+#ifndef vtkSilhouetteSmoothingFilter_h
+#define vtkSilhouetteSmoothingFilter_h
+
+#include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkWeakPointer.h" // For the renderer
+
+#include <memory> // For the cached core mesh
+
+class vtkCamera;
+class vtkMatrix4x4;
+class vtkProp3D;
+class vtkRenderer;
+
+class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkSilhouetteSmoothingFilter
+  : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkSilhouetteSmoothingFilter* New();
+  vtkTypeMacro(vtkSilhouetteSmoothingFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The camera that defines the view. Required unless a renderer is set.
+   */
+  virtual void SetCamera(vtkCamera*);
+  vtkGetObjectMacro(Camera, vtkCamera);
+  ///@}
+
+  ///@{
+  /**
+   * Optional: the prop that renders the output; its matrix takes the eye into
+   * the data's model coordinates. Takes precedence over ModelMatrix.
+   */
+  virtual void SetProp3D(vtkProp3D*);
+  vtkGetObjectMacro(Prop3D, vtkProp3D);
+  ///@}
+
+  ///@{
+  /**
+   * Optional: the model-to-world matrix of the data, used when no prop is set.
+   */
+  virtual void SetModelMatrix(vtkMatrix4x4*);
+  vtkGetObjectMacro(ModelMatrix, vtkMatrix4x4);
+  ///@}
+
+  ///@{
+  /**
+   * Optional: a renderer to take the camera (its active camera, when no camera
+   * is set) and the viewport size from. Held by a weak reference, so the usual
+   * renderer -> actor -> mapper -> filter chain makes no reference loop.
+   */
+  virtual void SetRenderer(vtkRenderer*);
+  vtkRenderer* GetRenderer();
+  ///@}
+
+  ///@{
+  /**
+   * Viewport size in pixels, used when no renderer is set. Default 1024 x 768.
+   */
+  vtkSetVector2Macro(ViewportSize, int);
+  vtkGetVector2Macro(ViewportSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Largest distance, in pixels, allowed between a sampled silhouette segment
+   * and its curve. Default 0.5 (the paper's range is 0.5 to 2).
+   */
+  vtkSetClampMacro(Tolerance, double, 1e-3, VTK_DOUBLE_MAX);
+  vtkGetMacro(Tolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Fewest and most points sampled on one silhouette segment, counting both
+   * ends. Defaults 2 (the chord, when the curve is within tolerance of it)
+   * and 256.
+   */
+  vtkSetClampMacro(MinimumSamples, int, 2, 65536);
+  vtkGetMacro(MinimumSamples, int);
+  vtkSetClampMacro(MaximumSamples, int, 2, 65536);
+  vtkGetMacro(MaximumSamples, int);
+  ///@}
+
+  enum SamplingRules
+  {
+    ARC_BOUND = 0,      ///< k >= sqrt(h / e) pieces: keeps the tolerance (default)
+    WANG_EQUATION_8 = 1 ///< the paper's eq. 8, which under-samples (kept for comparison)
+  };
+
+  ///@{
+  /**
+   * How the number of samples per silhouette segment is chosen.
+   */
+  vtkSetClampMacro(SamplingRule, int, ARC_BOUND, WANG_EQUATION_8);
+  vtkGetMacro(SamplingRule, int);
+  void SetSamplingRuleToArcBound() { this->SetSamplingRule(ARC_BOUND); }
+  void SetSamplingRuleToWangEquation8() { this->SetSamplingRule(WANG_EQUATION_8); }
+  ///@}
+
+  /**
+   * The smoothed silhouette polylines (output port 1).
+   */
+  vtkPolyData* GetSilhouetteOutput();
+
+  /**
+   * Includes the camera's, the prop's and the matrix's modification times,
+   * and changes when the renderer's size does.
+   */
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkSilhouetteSmoothingFilter();
+  ~vtkSilhouetteSmoothingFilter() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  vtkCamera* Camera = nullptr;
+  vtkProp3D* Prop3D = nullptr;
+  vtkMatrix4x4* ModelMatrix = nullptr;
+  vtkWeakPointer<vtkRenderer> Renderer;
+  int ViewportSize[2] = { 1024, 768 };
+  double Tolerance = 0.5;
+  int MinimumSamples = 2;
+  int MaximumSamples = 256;
+  int SamplingRule = ARC_BOUND;
+
+private:
+  vtkSilhouetteSmoothingFilter(const vtkSilhouetteSmoothingFilter&) = delete;
+  void operator=(const vtkSilhouetteSmoothingFilter&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

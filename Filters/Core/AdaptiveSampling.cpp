@@ -33,7 +33,10 @@ int silhouetteSampleCount(const HermiteCurve& segment, const glm::dvec3& n0, con
   double samples = 0.0;
   if (parameters.Rule == SamplingRule::ArcBound)
   {
-    samples = std::ceil(std::sqrt(h / tolerance)) + 1.0;
+    // h / k^2 underestimates the chord error of an arc (1 - cos x < x^2 / 2)
+    // and the Hermite curve's speed is not quite uniform; a 25% margin on h
+    // covers both for segments up to a half circle (see TestAdaptiveSampling).
+    samples = std::ceil(std::sqrt(ArcBoundMargin * h / tolerance)) + 1.0;
   }
   else
   {

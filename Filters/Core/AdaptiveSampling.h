@@ -23,6 +23,9 @@ enum class SamplingRule
   WangEquation8 ///< the paper's eq. 8 as printed; kept for comparison
 };
 
+/// Safety factor on the sagitta in the arc bound (see AdaptiveSampling.cpp).
+constexpr double ArcBoundMargin = 1.25;
+
 struct SamplingParameters
 {
   double TolerancePixels = 0.5;

@@ -2,6 +2,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -22,17 +23,54 @@ std::size_t emit(Id a, Id b, Id c, std::vector<Triangle>& out)
   return 1;
 }
 
+// Shape quality 4 sqrt(3) area / (sum of squared sides): 1 for an equilateral
+// triangle, 0 for a degenerate one. Triangles that repeat an id are dropped
+// by emit(), so they do not count (infinite quality).
+double shapeQuality(Id ia, Id ib, Id ic, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
+{
+  if (ia == ib || ib == ic || ic == ia)
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  const double sides = glm::dot(b - a, b - a) + glm::dot(c - b, c - b) + glm::dot(a - c, a - c);
+  if (!(sides > 0.0))
+  {
+    return 0.0;
+  }
+  return 2.0 * std::sqrt(3.0) * glm::length(glm::cross(b - a, c - a)) / sides;
+}
+
+// The k whose triangulation has the best worst triangle, in O(n) with
+// prefix minima of B's fan and suffix minima of C's fan.
 std::size_t chooseBaseSplit(const SilhouetteTriangleLayout& layout)
 {
-  std::size_t best = 0;
-  double bestImbalance = std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < layout.ChainPositions.size(); ++k)
+  const std::vector<Id>& s = layout.Chain;
+  const std::vector<glm::dvec3>& x = layout.ChainPositions;
+  const glm::dvec3& pb = layout.BaseFirstPosition;
+  const glm::dvec3& pc = layout.BaseSecondPosition;
+  const Id b = layout.BaseFirst;
+  const Id c = layout.BaseSecond;
+  const std::size_t n = s.size() - 1;
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> bFanBefore(n + 1, inf); // worst of (B, s[i+1], s[i]) for i < k
+  for (std::size_t k = 1; k <= n; ++k)
   {
-    const double imbalance = std::abs(glm::distance(layout.ChainPositions[k], layout.BaseFirstPosition) -
-      glm::distance(layout.ChainPositions[k], layout.BaseSecondPosition));
-    if (imbalance < bestImbalance)
+    bFanBefore[k] = std::min(bFanBefore[k - 1], shapeQuality(b, s[k], s[k - 1], pb, x[k], x[k - 1]));
+  }
+  std::vector<double> cFanFrom(n + 1, inf); // worst of (C, s[i+1], s[i]) for i >= k
+  for (std::size_t k = n; k-- > 0;)
+  {
+    cFanFrom[k] = std::min(cFanFrom[k + 1], shapeQuality(c, s[k + 1], s[k], pc, x[k + 1], x[k]));
+  }
+  std::size_t best = 0;
+  double bestQuality = -1.0;
+  for (std::size_t k = 0; k <= n; ++k)
+  {
+    const double worst =
+      std::min({ bFanBefore[k], cFanFrom[k], shapeQuality(b, c, s[k], pb, pc, x[k]) });
+    if (worst > bestQuality)
     {
-      bestImbalance = imbalance;
+      bestQuality = worst;
       best = k;
     }
   }

@@ -7,8 +7,11 @@
 // triangle is cut along that polyline into
 //   - the lone side, polygon A P s1 ... Q: a fan from A;
 //   - the base side, polygon P B C Q s(n-1) ... s1: the triangle (B, C, sk)
-//     plus fans from B over s0..sk and from C over sk..sn, where sk is the
-//     sample most nearly equidistant from B and C (no sliver at either end).
+//     plus fans from B over s0..sk and from C over sk..sn. The split sk
+//     maximises the worst triangle shape, measured in the flat triangle
+//     (the parameter domain): shape in 3D would not do, because the curve's
+//     bulge gives a triangle standing on edge a good 3D shape. A fan from a
+//     vertex that lies almost on the chord's line makes such standing slivers.
 // Both polygons are convex in the triangle's parameter domain (the samples lie
 // on the chord PQ there), so every new triangle keeps the orientation of the
 // input triangle. Sides AB and AC are split only at P and Q, which the
@@ -37,7 +40,9 @@ struct SilhouetteTriangleLayout
   Id BaseSecond = -1; ///< C
   /// P (on AB), interior samples, Q (on AC): point ids.
   std::vector<Id> Chain;
-  /// Positions of B, C and of the chain's points (same order as Chain).
+  /// Positions in the plane of the input triangle (the parameter domain):
+  /// B, C, and the chain's points where they sit on the chord P-Q there
+  /// (same order as Chain).
   glm::dvec3 BaseFirstPosition{ 0.0 };
   glm::dvec3 BaseSecondPosition{ 0.0 };
   std::vector<glm::dvec3> ChainPositions;

@@ -100,6 +100,12 @@ double silhouetteParameter(const VisibilityQuadratic& h, double h0, double h1)
       ++inside;
     }
   }
+  // A lone root that does not make h small is a casualty of underflow or
+  // cancellation in the coefficients.
+  if (inside == 1 && !(std::abs(h(std::clamp(root, 0.0, 1.0))) <= 1e-9 * scale))
+  {
+    inside = 0;
+  }
   if (inside != 1)
   {
     // None or two in range: rounding has blurred the picture; the sign change

@@ -249,21 +249,28 @@ private:
     const double pTowardB = (b > a) ? p.HighWeight : 1.0 - p.HighWeight;
     const double qTowardC = (c > a) ? q.HighWeight : 1.0 - q.HighWeight;
 
+    // The re-meshing works in the flat triangle, where P and Q sit on their
+    // edges and the samples on the chord between them.
+    const glm::dvec3 flatA = this->positionOf(a);
+    const glm::dvec3 flatB = this->positionOf(b);
+    const glm::dvec3 flatC = this->positionOf(c);
+    const glm::dvec3 flatP = flatA + pTowardB * (flatB - flatA);
+    const glm::dvec3 flatQ = flatA + qTowardC * (flatC - flatA);
     SilhouetteTriangleLayout layout;
     layout.Lone = a;
     layout.BaseFirst = b;
     layout.BaseSecond = c;
-    layout.BaseFirstPosition = this->positionOf(b);
-    layout.BaseSecondPosition = this->positionOf(c);
+    layout.BaseFirstPosition = flatB;
+    layout.BaseSecondPosition = flatC;
     layout.Chain.push_back(p.Point);
-    layout.ChainPositions.push_back(this->positionOf(p.Point));
+    layout.ChainPositions.push_back(flatP);
 
     if (p.Point != q.Point)
     {
       const glm::dvec3 nP = this->normalOf(p.Point);
       const glm::dvec3 nQ = this->normalOf(q.Point);
       const HermiteCurve segment =
-        makeCircleApproximatingCurve(layout.ChainPositions.front(), nP, this->positionOf(q.Point), nQ);
+        makeCircleApproximatingCurve(this->positionOf(p.Point), nP, this->positionOf(q.Point), nQ);
       const int samples = silhouetteSampleCount(segment, nP, nQ, this->View, this->Sampling);
       const Id pointCount = static_cast<Id>(this->Mesh.points().size());
       for (int i = 1; i + 1 < samples; ++i)
@@ -281,12 +288,12 @@ private:
         sample.Weights = { (1.0 - s) * (1.0 - pTowardB) + s * (1.0 - qTowardC), (1.0 - s) * pTowardB,
           s * qTowardC };
         layout.Chain.push_back(pointCount + static_cast<Id>(this->Result.NewPoints.size()));
-        layout.ChainPositions.push_back(sample.Position);
+        layout.ChainPositions.push_back((1.0 - s) * flatP + s * flatQ);
         this->Result.NewPoints.push_back(sample);
       }
     }
     layout.Chain.push_back(q.Point);
-    layout.ChainPositions.push_back(this->positionOf(q.Point));
+    layout.ChainPositions.push_back(flatQ);
 
     remeshSilhouetteTriangle(layout, this->Result.Replacements);
     this->Result.ReplacementOffsets.push_back(this->Result.Replacements.size());

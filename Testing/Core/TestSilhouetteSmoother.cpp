@@ -1,0 +1,183 @@
+// The whole per-frame pass on small exact meshes: invariants of DESIGN 3.2.
+#include "SilhouetteSmoother.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <map>
+#include <random>
+#include <utility>
+
+using namespace silsmooth;
+
+namespace {
+
+// The regular octahedron, outward, with exact sphere normals.
+PreparedMesh octahedron()
+{
+  std::vector<glm::dvec3> points{ { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 }, { 0, 0, 1 },
+    { 0, 0, -1 } };
+  std::vector<Triangle> triangles;
+  for (int sx : { 1, -1 })
+  {
+    for (int sy : { 1, -1 })
+    {
+      for (int sz : { 1, -1 })
+      {
+        const Id x = sx > 0 ? 0 : 1;
+        const Id y = sy > 0 ? 2 : 3;
+        const Id z = sz > 0 ? 4 : 5;
+        triangles.push_back(sx * sy * sz > 0 ? Triangle{ x, y, z } : Triangle{ x, z, y });
+      }
+    }
+  }
+  std::vector<glm::dvec3> normals = points;
+  return PreparedMesh(points, triangles, normals);
+}
+
+ViewGeometry perspectiveFrom(const glm::dvec3& eye)
+{
+  ViewGeometry view;
+  view.Eye = eye;
+  // A crude projection that is enough for sampling: x/z-like scaling.
+  view.ModelToClip = glm::dmat4(0.5);
+  view.ModelToClip[3][3] = 1.0;
+  view.ViewportWidth = 1000;
+  view.ViewportHeight = 1000;
+  return view;
+}
+
+struct Check
+{
+  int Unpaired = 0;      // directed edges without their reverse
+  int Repeated = 0;      // directed edges used twice (orientation clash)
+  int Degenerate = 0;    // triangles repeating an id
+  int Flipped = 0;       // geometric normal against the vertex normals
+};
+
+Check check(const PreparedMesh& mesh, const SmoothingResult& result)
+{
+  std::vector<Triangle> triangles;
+  std::vector<Id> source;
+  std::vector<unsigned char> isNew;
+  assembleTriangles(mesh, result, triangles, source, isNew);
+  const Id n = static_cast<Id>(mesh.points().size());
+  auto position = [&](Id id) {
+    return id < n ? mesh.points()[id] : result.NewPoints[static_cast<std::size_t>(id - n)].Position;
+  };
+  auto normal = [&](Id id) {
+    return id < n ? mesh.normals()[id] : result.NewPoints[static_cast<std::size_t>(id - n)].Normal;
+  };
+  Check c;
+  std::map<std::pair<Id, Id>, int> directed;
+  for (const Triangle& t : triangles)
+  {
+    c.Degenerate += hasRepeatedCorner(t) ? 1 : 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      ++directed[{ t[k], t[(k + 1) % 3] }];
+    }
+    const glm::dvec3 face =
+      glm::cross(position(t[1]) - position(t[0]), position(t[2]) - position(t[0]));
+    if (glm::dot(face, normal(t[0]) + normal(t[1]) + normal(t[2])) < 0.0)
+    {
+      ++c.Flipped;
+    }
+  }
+  for (const auto& [edge, uses] : directed)
+  {
+    c.Repeated += uses > 1 ? 1 : 0;
+    c.Unpaired += directed.count({ edge.second, edge.first }) ? 0 : 1;
+  }
+  return c;
+}
+
+} // namespace
+
+TEST(SilhouetteSmoother, OctahedronStaysClosedFromManyViews)
+{
+  const PreparedMesh mesh = octahedron();
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> gauss;
+  for (int i = 0; i < 500; ++i)
+  {
+    const glm::dvec3 direction = glm::normalize(glm::dvec3(gauss(rng), gauss(rng), gauss(rng)));
+    const ViewGeometry view = perspectiveFrom(direction * (2.0 + 3.0 * (i % 5)));
+    const SmoothingResult result = smoothSilhouettes(mesh, view, SamplingParameters{});
+    ASSERT_FALSE(result.SilhouetteTriangles.empty());
+    const Check c = check(mesh, result);
+    EXPECT_EQ(c.Unpaired, 0);
+    EXPECT_EQ(c.Repeated, 0);
+    EXPECT_EQ(c.Degenerate, 0);
+    EXPECT_EQ(c.Flipped, 0);
+    // One closed silhouette loop around a convex body.
+    ASSERT_EQ(result.Polylines.size(), 1u);
+    EXPECT_EQ(result.Polylines.front().front(), result.Polylines.front().back());
+  }
+}
+
+TEST(SilhouetteSmoother, SilhouettePointsLieWhereTheNormalTurnsAway)
+{
+  // Seen in parallel projection, the interpolated normal at the silhouette point is perpendicular to the view.
+  const PreparedMesh mesh = octahedron();
+  ViewGeometry view = perspectiveFrom({ 0, 0, 1 });
+  view.Parallel = true;
+  view.TowardViewer = glm::normalize(glm::dvec3(0.2, 0.1, 1.0));
+  const SmoothingResult result = smoothSilhouettes(mesh, view, SamplingParameters{});
+  ASSERT_FALSE(result.NewPoints.empty());
+  int silhouettePoints = 0;
+  for (const NewPoint& p : result.NewPoints)
+  {
+    if (p.Weights[2] == 0.0) // silhouette points combine two ends of an edge
+    {
+      ++silhouettePoints;
+      EXPECT_NEAR(glm::dot(p.Normal, view.TowardViewer), 0.0, 1e-12);
+    }
+  }
+  EXPECT_EQ(silhouettePoints, 6); // +x, +y, +z are visible: 6 edges join them to -x, -y, -z
+}
+
+TEST(SilhouetteSmoother, ParallelSplitDoesNotChangeTheResult)
+{
+  const PreparedMesh mesh = octahedron();
+  const ViewGeometry view = perspectiveFrom({ 2.5, 1.0, 0.3 });
+  const SmoothingResult serial = smoothSilhouettes(mesh, view, SamplingParameters{});
+  const ParallelFor oneByOne = [](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
+    for (std::size_t i = count; i-- > 0;)
+    {
+      body(i, i + 1);
+    }
+  };
+  const SmoothingResult split = smoothSilhouettes(mesh, view, SamplingParameters{}, oneByOne);
+  ASSERT_EQ(serial.NewPoints.size(), split.NewPoints.size());
+  for (std::size_t i = 0; i < serial.NewPoints.size(); ++i)
+  {
+    EXPECT_EQ(serial.NewPoints[i].Position, split.NewPoints[i].Position);
+  }
+  EXPECT_EQ(serial.Replacements, split.Replacements);
+}
+
+TEST(SilhouetteSmoother, NoSilhouetteLeavesTheMeshAlone)
+{
+  // One triangle facing the viewer: nothing to do.
+  const PreparedMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 } });
+  const SmoothingResult result = smoothSilhouettes(mesh, perspectiveFrom({ 0.2, 0.2, 5 }), SamplingParameters{});
+  EXPECT_TRUE(result.SilhouetteTriangles.empty());
+  EXPECT_TRUE(result.NewPoints.empty());
+  EXPECT_TRUE(result.Polylines.empty());
+}
+
+TEST(SilhouetteSmoother, ZeroNormalsAndEyeOnTheSurface)
+{
+  // Points with no defined normal count as visible and never produce NaN.
+  PreparedMesh withZero({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 5, 5, 5 } }, { { 0, 1, 2 } },
+    { { 0, 0, 1 }, { 0, 0, 1 }, { 0, 0, 1 }, { 0, 0, 0 } });
+  EXPECT_EQ(withZero.normals()[3], glm::dvec3(0.0)); // isolated: nothing to compute it from
+  const PreparedMesh mesh = octahedron();
+  const SmoothingResult onSurface = smoothSilhouettes(mesh, perspectiveFrom({ 1, 0, 0 }), SamplingParameters{});
+  for (const NewPoint& p : onSurface.NewPoints)
+  {
+    EXPECT_TRUE(std::isfinite(p.Position.x) && std::isfinite(p.Position.y) && std::isfinite(p.Position.z));
+  }
+  EXPECT_EQ(check(mesh, onSurface).Unpaired, 0);
+}

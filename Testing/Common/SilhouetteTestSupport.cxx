@@ -1,0 +1,272 @@
+#include "SilhouetteTestSupport.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkMath.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkWindowToImageFilter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+#include <utility>
+
+namespace silhouette_test {
+
+std::string TopologyReport::summary() const
+{
+  std::ostringstream s;
+  s << this->Triangles << " triangles, " << this->BoundaryEdges << " boundary edges, "
+    << this->NonManifoldEdges << " non-manifold edges, " << this->OrientationConflicts
+    << " orientation conflicts, " << this->DegenerateTriangles << " degenerate, "
+    << this->FlippedTriangles << " flipped, " << this->OtherCells << " other cells, "
+    << this->NonFinitePoints << " non-finite points";
+  return s.str();
+}
+
+TopologyReport AnalyzeTopology(vtkPolyData* mesh)
+{
+  TopologyReport report;
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      ++report.NonFinitePoints;
+    }
+  }
+  report.OtherCells = mesh->GetNumberOfStrips();
+  std::map<std::pair<vtkIdType, vtkIdType>, int> directed;
+  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    if (n != 3)
+    {
+      ++report.OtherCells;
+      continue;
+    }
+    ++report.Triangles;
+    double p[3][3];
+    for (int k = 0; k < 3; ++k)
+    {
+      mesh->GetPoint(ids[k], p[k]);
+      ++directed[{ ids[k], ids[(k + 1) % 3] }];
+    }
+    double u[3], v[3], face[3];
+    vtkMath::Subtract(p[1], p[0], u);
+    vtkMath::Subtract(p[2], p[0], v);
+    vtkMath::Cross(u, v, face);
+    if (ids[0] == ids[1] || ids[1] == ids[2] || ids[0] == ids[2] || vtkMath::Norm(face) == 0.0)
+    {
+      ++report.DegenerateTriangles;
+      continue;
+    }
+    if (normals)
+    {
+      double sum[3] = { 0, 0, 0 };
+      for (int k = 0; k < 3; ++k)
+      {
+        double n3[3];
+        normals->GetTuple(ids[k], n3);
+        vtkMath::Add(sum, n3, sum);
+      }
+      if (vtkMath::Dot(face, sum) < 0.0)
+      {
+        ++report.FlippedTriangles;
+      }
+    }
+  }
+  for (const auto& [edge, uses] : directed)
+  {
+    if (uses > 1)
+    {
+      ++report.OrientationConflicts;
+    }
+    const auto reverse = directed.find({ edge.second, edge.first });
+    const int reverseUses = reverse == directed.end() ? 0 : reverse->second;
+    // Count each undirected edge once, from its lower-id direction (or from
+    // the only direction present).
+    if (edge.first < edge.second || reverseUses == 0)
+    {
+      const int total = uses + reverseUses;
+      report.BoundaryEdges += total == 1 ? 1 : 0;
+      report.NonManifoldEdges += total > 2 ? 1 : 0;
+    }
+  }
+  return report;
+}
+
+std::vector<std::array<double, 3>> SphereDirections(int count)
+{
+  std::vector<std::array<double, 3>> directions;
+  const double golden = vtkMath::Pi() * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < count; ++i)
+  {
+    const double z = 1.0 - (2.0 * i + 1.0) / count;
+    const double radius = std::sqrt(1.0 - z * z);
+    const double angle = golden * i;
+    directions.push_back({ radius * std::cos(angle), radius * std::sin(angle), z });
+  }
+  return directions;
+}
+
+vtkSmartPointer<vtkCamera> CameraLookingAtOrigin(
+  const std::array<double, 3>& direction, double distance, double viewAngle)
+{
+  auto camera = vtkSmartPointer<vtkCamera>::New();
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetPosition(direction[0] * distance, direction[1] * distance, direction[2] * distance);
+  // Any up vector not along the view direction.
+  if (std::abs(direction[1]) < 0.9)
+  {
+    camera->SetViewUp(0, 1, 0);
+  }
+  else
+  {
+    camera->SetViewUp(1, 0, 0);
+  }
+  camera->OrthogonalizeViewUp();
+  camera->SetViewAngle(viewAngle);
+  camera->SetClippingRange(0.01 * distance, 10.0 * distance);
+  return camera;
+}
+
+MaskRenderer::MaskRenderer(int width, int height)
+  : W(width)
+  , H(height)
+  , Window(vtkSmartPointer<vtkRenderWindow>::New())
+  , Renderer(vtkSmartPointer<vtkRenderer>::New())
+{
+  this->Window->SetOffScreenRendering(1);
+  this->Window->SetMultiSamples(0);
+  this->Window->SetSize(width, height);
+  this->Window->AddRenderer(this->Renderer);
+  this->Renderer->SetBackground(0, 0, 0);
+}
+
+MaskRenderer::~MaskRenderer() = default;
+
+std::vector<unsigned char> MaskRenderer::Render(vtkPolyData* mesh, vtkCamera* camera)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(mesh);
+  mapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetColor(1, 1, 1);
+  actor->GetProperty()->LightingOff();
+  this->Renderer->RemoveAllViewProps();
+  this->Renderer->AddActor(actor);
+  this->Renderer->SetActiveCamera(camera);
+  this->Renderer->ResetCameraClippingRange();
+  this->Window->Render();
+
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(this->Window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkUnsignedCharArray* rgb =
+    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+  std::vector<unsigned char> mask(static_cast<std::size_t>(this->W) * this->H, 0);
+  for (std::size_t i = 0; i < mask.size(); ++i)
+  {
+    mask[i] = rgb->GetValue(static_cast<vtkIdType>(3 * i)) > 127 ? 1 : 0;
+  }
+  this->Renderer->RemoveAllViewProps();
+  return mask;
+}
+
+namespace {
+
+std::vector<std::array<double, 2>> BoundaryPoints(
+  const std::vector<unsigned char>& mask, int width, int height)
+{
+  std::vector<std::array<double, 2>> points;
+  for (int j = 0; j < height; ++j)
+  {
+    for (int i = 0; i < width; ++i)
+    {
+      const unsigned char here = mask[static_cast<std::size_t>(j) * width + i];
+      if (i + 1 < width && here != mask[static_cast<std::size_t>(j) * width + i + 1])
+      {
+        points.push_back({ i + 1.0, j + 0.5 });
+      }
+      if (j + 1 < height && here != mask[static_cast<std::size_t>(j + 1) * width + i])
+      {
+        points.push_back({ i + 0.5, j + 1.0 });
+      }
+    }
+  }
+  return points;
+}
+
+void Accumulate(BoundaryDistance& d, double value)
+{
+  d.Mean += value;
+  d.Max = std::max(d.Max, value);
+  ++d.Samples;
+}
+
+} // namespace
+
+BoundaryDistance DistanceToCircle(
+  const std::vector<unsigned char>& mask, int width, int height, double cx, double cy, double r)
+{
+  BoundaryDistance d;
+  for (const auto& p : BoundaryPoints(mask, width, height))
+  {
+    Accumulate(d, std::abs(std::hypot(p[0] - cx, p[1] - cy) - r));
+  }
+  if (d.Samples > 0)
+  {
+    d.Mean /= static_cast<double>(d.Samples);
+  }
+  return d;
+}
+
+BoundaryDistance DistanceBetweenBoundaries(
+  const std::vector<unsigned char>& a, const std::vector<unsigned char>& b, int width, int height)
+{
+  const auto pa = BoundaryPoints(a, width, height);
+  const auto pb = BoundaryPoints(b, width, height);
+  BoundaryDistance d;
+  auto oneWay = [&d](const std::vector<std::array<double, 2>>& from,
+                  const std::vector<std::array<double, 2>>& to) {
+    for (const auto& p : from)
+    {
+      double best = std::numeric_limits<double>::infinity();
+      for (const auto& q : to)
+      {
+        best = std::min(best, std::hypot(p[0] - q[0], p[1] - q[1]));
+      }
+      Accumulate(d, best);
+    }
+  };
+  oneWay(pa, pb);
+  oneWay(pb, pa);
+  if (d.Samples > 0)
+  {
+    d.Mean /= static_cast<double>(d.Samples);
+  }
+  return d;
+}
+
+} // namespace silhouette_test

@@ -11,7 +11,7 @@ namespace silsmooth {
 namespace {
 
 // Appends (a, b, c) unless it repeats a point id (see the header: a
-// silhouette point snapped onto a vertex collapses these triangles).
+// silhouette point given as a vertex's id collapses these triangles).
 std::size_t emit(Id a, Id b, Id c, std::vector<Triangle>& out)
 {
   const Triangle t{ a, b, c };

@@ -17,9 +17,9 @@
 // input triangle. Sides AB and AC are split only at P and Q, which the
 // neighbouring triangle across each side shares (one silhouette point per
 // edge), and side BC is never split: the result is crack-free and introduces
-// no T-junction. When a silhouette point coincides with a vertex (the caller
-// passes the vertex's id), triangles that would repeat an id are dropped;
-// this is a zero-length edge collapse and keeps a closed manifold closed.
+// no T-junction. A caller may pass a vertex's id as a silhouette point (the
+// point lies on that vertex); triangles that would repeat an id are then
+// dropped, a zero-length edge collapse that keeps a closed manifold closed.
 //
 // Feature segments (Fig. 12) will add layouts with one or two feature sides;
 // they reuse the same fan building blocks.

@@ -84,7 +84,7 @@ bool isVisible(double g)
 struct EdgeSilhouettePoint
 {
   Id Edge = -1;
-  Id Point = -1;        // output point id (a vertex id when snapped)
+  Id Point = -1;         // output point id
   double HighWeight = 0; // parameter from the edge's low end to its high end
 };
 
@@ -176,37 +176,25 @@ private:
       const std::size_t hi = static_cast<std::size_t>(edge.high);
       const VisibilityQuadratic h = visibilityAlongEdge(normals[lo],
         this->View.towardViewerFrom(points[lo]), normals[hi], this->View.towardViewerFrom(points[hi]));
-      double u = silhouetteParameter(h, this->G[lo], this->G[hi]);
+      const double u = std::clamp(
+        silhouetteParameter(h, this->G[lo], this->G[hi]), EdgeParameterMargin, 1.0 - EdgeParameterMargin);
+      const HermiteCurve bridge =
+        makeCircleApproximatingCurve(points[lo], normals[lo], points[hi], normals[hi]);
+      NewPoint p;
+      p.Position = bridge.evaluate(u);
+      p.Normal = safeNormalize((1.0 - u) * normals[lo] + u * normals[hi]);
+      if (p.Normal == glm::dvec3(0.0))
+      {
+        // Opposite normals at the ends: no interpolated direction exists.
+        p.Normal = u < 0.5 ? normals[lo] : normals[hi];
+      }
+      p.Sources = { edge.low, edge.high, edge.high };
+      p.Weights = { 1.0 - u, u, 0.0 };
       EdgeSilhouettePoint sp;
       sp.Edge = e;
-      if (u <= SnapParameter)
-      {
-        sp.Point = edge.low;
-        sp.HighWeight = 0.0;
-      }
-      else if (u >= 1.0 - SnapParameter)
-      {
-        sp.Point = edge.high;
-        sp.HighWeight = 1.0;
-      }
-      else
-      {
-        const HermiteCurve bridge =
-          makeCircleApproximatingCurve(points[lo], normals[lo], points[hi], normals[hi]);
-        NewPoint p;
-        p.Position = bridge.evaluate(u);
-        p.Normal = safeNormalize((1.0 - u) * normals[lo] + u * normals[hi]);
-        if (p.Normal == glm::dvec3(0.0))
-        {
-          // Opposite normals at the ends: no interpolated direction exists.
-          p.Normal = u < 0.5 ? normals[lo] : normals[hi];
-        }
-        p.Sources = { edge.low, edge.high, edge.high };
-        p.Weights = { 1.0 - u, u, 0.0 };
-        sp.Point = pointCount + static_cast<Id>(this->Result.NewPoints.size());
-        sp.HighWeight = u;
-        this->Result.NewPoints.push_back(p);
-      }
+      sp.Point = pointCount + static_cast<Id>(this->Result.NewPoints.size());
+      sp.HighWeight = u;
+      this->Result.NewPoints.push_back(p);
       this->EdgePoints.push_back(sp);
     }
   }

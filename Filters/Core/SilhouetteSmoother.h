@@ -76,9 +76,13 @@ using ParallelFor =
   std::function<void(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body)>;
 void serialFor(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body);
 
-/// Silhouette points closer than this (in edge parameter) to an end of their
-/// edge are placed on that vertex, so that no sliver triangle is made.
-constexpr double SnapParameter = 1e-6;
+/// Silhouette points are kept at least this far (in edge parameter) from the
+/// ends of their edge. A point closer to the triangle's lone vertex would make
+/// the region between them a sliver, and any fan over the bulging curve there
+/// stands on edge (one flipped triangle in 120 torus views before this rule).
+/// The clamp is continuous, so the silhouette never pops; on the exact-sphere
+/// test it changes the mean outline error by less than 0.001 px.
+constexpr double EdgeParameterMargin = 0.01;
 
 SmoothingResult smoothSilhouettes(const PreparedMesh& mesh, const ViewGeometry& view,
   const SamplingParameters& sampling, const ParallelFor& parallelFor = serialFor);

@@ -7,7 +7,11 @@
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkMath.h"
+#include "vtkPLYReader.h"
 #include "vtkPointData.h"
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkXMLPolyDataReader.h"
+#include <vtksys/SystemTools.hxx>
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -146,6 +150,66 @@ vtkSmartPointer<vtkCamera> CameraLookingAtOrigin(
   camera->SetViewAngle(viewAngle);
   camera->SetClippingRange(0.01 * distance, 10.0 * distance);
   return camera;
+}
+
+vtkSmartPointer<vtkCamera> CameraAroundMesh(
+  vtkPolyData* mesh, const std::array<double, 3>& direction, double distance, bool parallel)
+{
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  const double center[3] = { (bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2,
+    (bounds[4] + bounds[5]) / 2 };
+  const double radius = 0.5 *
+    std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+      (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+      (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  auto camera = CameraLookingAtOrigin(direction, distance * radius);
+  double position[3];
+  camera->GetPosition(position);
+  camera->SetFocalPoint(center);
+  camera->SetPosition(position[0] + center[0], position[1] + center[1], position[2] + center[2]);
+  camera->SetParallelProjection(parallel ? 1 : 0);
+  camera->SetParallelScale(1.2 * radius);
+  return camera;
+}
+
+std::string DataFile(int argc, char* argv[], const std::string& name)
+{
+  for (int i = 0; i + 1 < argc; ++i)
+  {
+    if (std::string(argv[i]) == "-D")
+    {
+      return std::string(argv[i + 1]) + "/" + name;
+    }
+  }
+  return name;
+}
+
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
+{
+  vtkSmartPointer<vtkAlgorithm> reader;
+  const std::string extension = vtksys::SystemTools::LowerCase(
+    vtksys::SystemTools::GetFilenameLastExtension(path));
+  if (extension == ".ply")
+  {
+    auto ply = vtkSmartPointer<vtkPLYReader>::New();
+    ply->SetFileName(path.c_str());
+    reader = ply;
+  }
+  else if (extension == ".vtp")
+  {
+    auto vtp = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    vtp->SetFileName(path.c_str());
+    reader = vtp;
+  }
+  else
+  {
+    return nullptr;
+  }
+  reader->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(reader->GetOutputDataObject(0));
+  return mesh->GetNumberOfPoints() > 0 ? mesh : nullptr;
 }
 
 MaskRenderer::MaskRenderer(int width, int height)

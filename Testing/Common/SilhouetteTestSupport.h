@@ -47,6 +47,18 @@ std::vector<std::array<double, 3>> SphereDirections(int count);
 vtkSmartPointer<vtkCamera> CameraLookingAtOrigin(
   const std::array<double, 3>& direction, double distance, double viewAngle = 30.0);
 
+/// A camera looking at the centre of `mesh`'s bounding sphere from `direction`
+/// at `distance` bounding radii; parallel projection when `parallel`.
+vtkSmartPointer<vtkCamera> CameraAroundMesh(
+  vtkPolyData* mesh, const std::array<double, 3>& direction, double distance, bool parallel);
+
+/// The path of a file of the project's Data/ folder, given as `-D folder` on
+/// the test's command line.
+std::string DataFile(int argc, char* argv[], const std::string& name);
+
+/// Reads a mesh by extension (.ply .vtp .obj .stl .vtk); nullptr on failure.
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path);
+
 /// Renders meshes flat white on black, unlit, without multisampling, and
 /// reads back which pixels they cover. One window, reused.
 class MaskRenderer

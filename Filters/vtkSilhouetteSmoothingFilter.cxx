@@ -100,9 +100,17 @@ void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
     {
       continue;
     }
+    // A fresh array: SetNumberOfTuples() on a copy would reallocate without
+    // keeping the copied values.
     auto array = vtk::TakeSmartPointer(source->NewInstance());
-    array->DeepCopy(source);
+    array->SetName(source->GetName());
+    array->SetNumberOfComponents(source->GetNumberOfComponents());
+    array->CopyComponentNames(source);
     array->SetNumberOfTuples(total);
+    if (numPoints > 0)
+    {
+      array->InsertTuples(0, numPoints, 0, source);
+    }
     vtkIdType id = numPoints;
     for (const silsmooth::NewPoint& p : result.NewPoints)
     {

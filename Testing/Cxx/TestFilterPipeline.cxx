@@ -1,0 +1,421 @@
+// The filter as a pipeline citizen: when it re-executes (view changes that
+// matter, and only those), the prop's matrix, attribute interpolation, the
+// provenance arrays and counts, polygons/strips/verts/lines, and results that
+// do not depend on the thread count.
+#include "vtkActor.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIcosphereSource.h"
+#include "vtkIdTypeArray.h"
+#include "vtkMath.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+#include "vtkSilhouetteSmoothingFilter.h"
+#include "vtkStripper.h"
+#include "vtkTorusSurfaceSource.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "SilhouetteTestSupport.h"
+
+#include <cmath>
+#include <cstdio>
+#include <set>
+
+namespace {
+
+#define CHECK(condition, message)                                                                  \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(condition))                                                                              \
+    {                                                                                              \
+      std::printf("FAIL: %s (%s, line %d)\n", message, #condition, __LINE__);                     \
+      return false;                                                                                \
+    }                                                                                              \
+  } while (false)
+
+// Counts RequestData calls through the filter's StartEvent.
+struct ExecutionCounter
+{
+  int Count = 0;
+  vtkNew<vtkCallbackCommand> Command;
+  explicit ExecutionCounter(vtkAlgorithm* algorithm)
+  {
+    this->Command->SetClientData(this);
+    this->Command->SetCallback([](vtkObject*, unsigned long, void* self, void*) {
+      ++static_cast<ExecutionCounter*>(self)->Count;
+    });
+    algorithm->AddObserver(vtkCommand::StartEvent, this->Command);
+  }
+};
+
+long FieldCount(vtkPolyData* mesh, const char* name)
+{
+  vtkDataArray* a = mesh->GetFieldData()->GetArray(name);
+  return a ? static_cast<long>(a->GetTuple1(0)) : -1;
+}
+
+bool ReExecutesOnlyWhenTheViewChanges()
+{
+  vtkNew<vtkIcosphereSource> sphere;
+  vtkNew<vtkSilhouetteSmoothingFilter> smoother;
+  smoother->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(0, 0, 5);
+  smoother->SetCamera(camera);
+  ExecutionCounter runs(smoother);
+  smoother->Update();
+  CHECK(runs.Count == 1, "first update runs");
+  smoother->Update();
+  CHECK(runs.Count == 1, "a second update without changes does nothing");
+  camera->SetClippingRange(0.1, 123.0);
+  smoother->Update();
+  CHECK(runs.Count == 1, "a clipping-range change (renderers do it every frame) does not re-run");
+  camera->Azimuth(10);
+  smoother->Update();
+  CHECK(runs.Count == 2, "moving the camera re-runs");
+  smoother->SetViewportSize(800, 600);
+  smoother->Update();
+  CHECK(runs.Count == 3, "a new viewport size re-runs");
+
+  vtkNew<vtkActor> actor;
+  smoother->SetProp3D(actor);
+  smoother->Update();
+  CHECK(runs.Count == 4, "setting a prop re-runs");
+  actor->GetProperty()->SetColor(1, 0, 0);
+  smoother->Update();
+  CHECK(runs.Count == 4, "a colour change does not re-run");
+  actor->SetPosition(0.5, 0, 0);
+  smoother->Update();
+  CHECK(runs.Count == 5, "moving the prop re-runs");
+
+  sphere->SetRadius(2.0);
+  smoother->Update();
+  CHECK(runs.Count == 6, "a new input re-runs");
+  double bounds[6];
+  smoother->GetOutput()->GetBounds(bounds);
+  CHECK(bounds[1] > 1.9, "the cache follows the new input");
+
+  // Through a renderer: camera and size come from it, no SetCamera needed.
+  vtkNew<vtkSilhouetteSmoothingFilter> viaRenderer;
+  viaRenderer->SetInputConnection(sphere->GetOutputPort());
+  vtkNew<vtkRenderer> renderer;
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(300, 200);
+  window->AddRenderer(renderer);
+  viaRenderer->SetRenderer(renderer);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(viaRenderer->GetOutputPort());
+  vtkNew<vtkActor> rendered;
+  rendered->SetMapper(mapper);
+  renderer->AddActor(rendered);
+  renderer->ResetCamera();
+  ExecutionCounter rendererRuns(viaRenderer);
+  window->Render();
+  window->Render();
+  CHECK(rendererRuns.Count == 1, "two renders of an unchanged view run the filter once");
+  renderer->GetActiveCamera()->Elevation(15);
+  window->Render();
+  CHECK(rendererRuns.Count == 2, "rendering after a camera move re-runs the filter");
+  window->SetSize(400, 300);
+  window->Render();
+  CHECK(rendererRuns.Count == 3, "resizing the window re-runs the filter");
+  CHECK(FieldCount(viaRenderer->GetOutput(), "SilhouetteTriangleCount") > 0, "renderer view has a silhouette");
+  std::printf("re-execution: only on view, prop, size and input changes\n");
+  return true;
+}
+
+// The same view through an actor's matrix must give the same world-space
+// mesh as transforming the data first.
+bool PropMatrixMatchesTransformedData()
+{
+  vtkNew<vtkTorusSurfaceSource> torus;
+  torus->Update();
+  vtkNew<vtkTransform> transform;
+  transform->Translate(0.3, -0.2, 0.5);
+  transform->RotateWXYZ(37, 0.2, 1.0, 0.4);
+  transform->Scale(1.5, 1.5, 1.5);
+
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(1.0, 4.0, 6.0);
+  camera->SetFocalPoint(0.3, -0.2, 0.5);
+
+  vtkNew<vtkActor> actor;
+  actor->SetUserTransform(transform);
+  vtkNew<vtkSilhouetteSmoothingFilter> withProp;
+  withProp->SetInputConnection(torus->GetOutputPort());
+  withProp->SetProp3D(actor);
+  withProp->SetCamera(camera);
+  withProp->Update();
+
+  vtkNew<vtkTransformPolyDataFilter> moved;
+  moved->SetInputConnection(torus->GetOutputPort());
+  moved->SetTransform(transform);
+  vtkNew<vtkSilhouetteSmoothingFilter> onMoved;
+  onMoved->SetInputConnection(moved->GetOutputPort());
+  onMoved->SetCamera(camera);
+  onMoved->Update();
+
+  vtkPolyData* a = withProp->GetOutput();
+  vtkPolyData* b = onMoved->GetOutput();
+  CHECK(FieldCount(a, "SilhouetteTriangleCount") > 0, "the view has a silhouette");
+  CHECK(FieldCount(a, "SilhouetteTriangleCount") == FieldCount(b, "SilhouetteTriangleCount"),
+    "same silhouette triangles");
+  CHECK(a->GetNumberOfPoints() == b->GetNumberOfPoints(), "same number of points");
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    a->GetPoint(i, p);
+    transform->TransformPoint(p, p);
+    b->GetPoint(i, q);
+    worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(p, q)));
+  }
+  CHECK(worst < 1e-5, "points agree in world space");
+  std::printf("prop matrix: %ld silhouette triangles, largest world-space difference %.2e\n",
+    FieldCount(a, "SilhouetteTriangleCount"), worst);
+  return true;
+}
+
+bool ArraysAndCounts()
+{
+  vtkNew<vtkIcosphereSource> sphere;
+  sphere->SetSubdivisionLevel(2);
+  sphere->Update();
+  vtkNew<vtkPolyData> input;
+  input->DeepCopy(sphere->GetOutput());
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  // A constant scalar (interpolation must keep it), texture coordinates, and
+  // a cell array to be copied from the original cells.
+  vtkNew<vtkDoubleArray> constant;
+  constant->SetName("Constant");
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetName("TextureCoordinates");
+  tcoords->SetNumberOfComponents(2);
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    constant->InsertNextValue(7.25);
+    double p[3];
+    input->GetPoint(i, p);
+    tcoords->InsertNextTuple2(0.5 + 0.5 * p[0], 0.5 + 0.5 * p[1]);
+  }
+  input->GetPointData()->AddArray(constant);
+  input->GetPointData()->SetTCoords(tcoords);
+  vtkNew<vtkIdTypeArray> cellTag;
+  cellTag->SetName("CellTag");
+  for (vtkIdType c = 0; c < input->GetNumberOfCells(); ++c)
+  {
+    cellTag->InsertNextValue(1000 + c);
+  }
+  input->GetCellData()->AddArray(cellTag);
+  input->GetFieldData()->AddArray(constant); // passes through
+
+  vtkNew<vtkSilhouetteSmoothingFilter> smoother;
+  smoother->SetInputData(input);
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(2.0, 1.0, 3.0);
+  smoother->SetCamera(camera);
+  smoother->Update();
+  vtkPolyData* out = smoother->GetOutput();
+  vtkPointData* pd = out->GetPointData();
+
+  CHECK(pd->GetTCoords() && pd->GetTCoords()->GetNumberOfTuples() == out->GetNumberOfPoints(),
+    "texture coordinates are carried and still active");
+  CHECK(pd->GetNormals() && std::string(pd->GetNormals()->GetName()) == "Normals", "active Normals");
+  vtkDataArray* outConstant = pd->GetArray("Constant");
+  CHECK(outConstant, "other point arrays are carried");
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    CHECK(std::abs(outConstant->GetTuple1(i) - 7.25) < 1e-12, "interpolation weights sum to one");
+    double n[3];
+    pd->GetNormals()->GetTuple(i, n);
+    CHECK(std::abs(vtkMath::Norm(n) - 1.0) < 1e-6, "normals are unit");
+    double t[2];
+    pd->GetTCoords()->GetTuple(i, t);
+    CHECK(t[0] >= -1e-6 && t[0] <= 1.0 + 1e-6 && t[1] >= -1e-6 && t[1] <= 1.0 + 1e-6,
+      "texture coordinates stay in the convex hull of the input's");
+  }
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    double a[3], b[3];
+    input->GetPoint(i, a);
+    out->GetPoint(i, b);
+    CHECK(a[0] == b[0] && a[1] == b[1] && a[2] == b[2], "input points keep their ids and positions");
+  }
+
+  vtkDataArray* newGeometry = out->GetCellData()->GetArray("NewGeometry");
+  vtkDataArray* original = out->GetCellData()->GetArray("OriginalCellId");
+  vtkDataArray* tag = out->GetCellData()->GetArray("CellTag");
+  CHECK(newGeometry && vtkUnsignedCharArray::SafeDownCast(newGeometry), "NewGeometry is unsigned char");
+  CHECK(original && vtkIdTypeArray::SafeDownCast(original), "OriginalCellId is vtkIdType");
+  CHECK(tag, "cell arrays are carried");
+  std::set<vtkIdType> remeshed;
+  long newCells = 0;
+  for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+  {
+    CHECK(tag->GetTuple1(c) == 1000 + original->GetTuple1(c), "cell data come from the original cell");
+    if (newGeometry->GetTuple1(c) == 1)
+    {
+      ++newCells;
+      remeshed.insert(static_cast<vtkIdType>(original->GetTuple1(c)));
+    }
+  }
+  CHECK(FieldCount(out, "NewTriangleCount") == newCells, "NewTriangleCount counts NewGeometry cells");
+  CHECK(FieldCount(out, "SilhouetteTriangleCount") == static_cast<long>(remeshed.size()),
+    "SilhouetteTriangleCount counts the re-meshed input cells");
+  CHECK(FieldCount(out, "OutputTriangleCount") == out->GetNumberOfPolys(), "OutputTriangleCount");
+  CHECK(FieldCount(out, "InputTriangleCount") == input->GetNumberOfPolys(), "InputTriangleCount");
+  CHECK(FieldCount(out, "NewPointCount") == out->GetNumberOfPoints() - numPoints, "NewPointCount");
+  CHECK(out->GetFieldData()->GetArray("Constant"), "input field data pass through");
+  std::printf("arrays: %ld silhouette triangles -> %ld new triangles, %ld new points\n",
+    FieldCount(out, "SilhouetteTriangleCount"), newCells, FieldCount(out, "NewPointCount"));
+  return true;
+}
+
+bool CellTypes()
+{
+  // Strips give the same mesh as their triangles; verts and lines pass.
+  vtkNew<vtkTorusSurfaceSource> torus;
+  vtkNew<vtkStripper> stripper;
+  stripper->SetInputConnection(torus->GetOutputPort());
+  stripper->Update();
+  vtkNew<vtkPolyData> mixed;
+  mixed->DeepCopy(stripper->GetOutput());
+  CHECK(mixed->GetNumberOfStrips() > 0, "the stripper made strips");
+  vtkNew<vtkCellArray> verts;
+  const vtkIdType vertex = 3;
+  verts->InsertNextCell(1, &vertex);
+  mixed->SetVerts(verts);
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType line[3] = { 0, 5, 9 };
+  lines->InsertNextCell(3, line);
+  mixed->SetLines(lines);
+
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(0.5, 3.0, 4.0);
+  vtkNew<vtkSilhouetteSmoothingFilter> fromStrips;
+  fromStrips->SetInputData(mixed);
+  fromStrips->SetCamera(camera);
+  fromStrips->Update();
+  vtkNew<vtkSilhouetteSmoothingFilter> fromTriangles;
+  fromTriangles->SetInputConnection(torus->GetOutputPort());
+  fromTriangles->SetCamera(camera);
+  fromTriangles->Update();
+  vtkPolyData* a = fromStrips->GetOutput();
+  vtkPolyData* b = fromTriangles->GetOutput();
+  CHECK(a->GetNumberOfVerts() == 1 && a->GetNumberOfLines() == 1, "verts and lines pass through");
+  CHECK(a->GetNumberOfStrips() == 0, "strips are triangulated");
+  CHECK(a->GetNumberOfPolys() == b->GetNumberOfPolys(), "strips give the same triangle count");
+  CHECK(FieldCount(a, "SilhouetteTriangleCount") == FieldCount(b, "SilhouetteTriangleCount"),
+    "strips give the same silhouette");
+  vtkDataArray* original = a->GetCellData()->GetArray("OriginalCellId");
+  CHECK(original->GetTuple1(0) == 0 && original->GetTuple1(1) == 1, "verts and lines keep their ids");
+  CHECK(original->GetTuple1(2) >= 2, "triangles point to the strips they came from");
+  const auto report = silhouette_test::AnalyzeTopology(a);
+  CHECK(report.closedManifold(), "triangulated strips stay a closed manifold");
+  std::printf("cell types: strips -> %lld triangles, verts and lines kept\n",
+    static_cast<long long>(a->GetNumberOfPolys()));
+  return true;
+}
+
+bool IndependentOfThreadCount()
+{
+  vtkNew<vtkIcosphereSource> sphere;
+  sphere->SetSubdivisionLevel(4);
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(1.0, 2.0, 2.5);
+  auto run = [&](int threads) {
+    vtkSMPTools::Initialize(threads);
+    vtkNew<vtkSilhouetteSmoothingFilter> smoother;
+    smoother->SetInputConnection(sphere->GetOutputPort());
+    smoother->SetCamera(camera);
+    smoother->Update();
+    auto copy = vtkSmartPointer<vtkPolyData>::New();
+    copy->DeepCopy(smoother->GetOutput());
+    return copy;
+  };
+  auto one = run(1);
+  auto two = run(2);
+  vtkSMPTools::Initialize(0);
+  CHECK(one->GetNumberOfPoints() == two->GetNumberOfPoints(), "same points");
+  CHECK(one->GetNumberOfPolys() == two->GetNumberOfPolys(), "same cells");
+  for (vtkIdType i = 0; i < one->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    one->GetPoint(i, p);
+    two->GetPoint(i, q);
+    CHECK(p[0] == q[0] && p[1] == q[1] && p[2] == q[2], "bit-identical points");
+  }
+  std::printf("threads: 1 and 2 threads give identical output (%lld points)\n",
+    static_cast<long long>(one->GetNumberOfPoints()));
+  return true;
+}
+
+bool ParallelProjection()
+{
+  // In parallel projection the silhouette points of a sphere have
+  // interpolated normals perpendicular to the view, and so do the samples
+  // between them. (The view is tilted: straight along z it would pass through
+  // the icosahedron's vertices on the equator, where every silhouette point
+  // sits on a vertex.) A silhouette point kept 1% away from an edge end (the edge-margin
+  // clamp) is off by at most 1% of the normal's turn along its edge.
+  vtkNew<vtkIcosphereSource> sphere;
+  sphere->SetSubdivisionLevel(2);
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(0.7, 0.3, 10);
+  camera->ParallelProjectionOn();
+  camera->SetParallelScale(1.2);
+  vtkNew<vtkSilhouetteSmoothingFilter> smoother;
+  smoother->SetInputConnection(sphere->GetOutputPort());
+  smoother->SetCamera(camera);
+  smoother->Update();
+  double view[3];
+  camera->GetDirectionOfProjection(view);
+  vtkPolyData* lines = smoother->GetSilhouetteOutput();
+  CHECK(lines->GetNumberOfLines() == 1, "one loop");
+  const double edgeTurn = 0.33; // largest angle between the normals of an edge, level 2
+  double worst = 0.0;
+  vtkIdType exact = 0;
+  for (vtkIdType i = 0; i < lines->GetNumberOfPoints(); ++i)
+  {
+    double n[3];
+    lines->GetPointData()->GetNormals()->GetTuple(i, n);
+    const double off = std::abs(vtkMath::Dot(n, view));
+    worst = std::max(worst, off);
+    exact += off < 1e-6 ? 1 : 0; // normals are stored as floats
+  }
+  CHECK(worst <= 0.01 * edgeTurn, "silhouette normals are perpendicular to the view");
+  CHECK(exact * 2 > lines->GetNumberOfPoints(), "most silhouette points are exactly on the contour");
+  std::printf("parallel: %lld silhouette points, %lld exact, worst normal %.1e off the view plane\n",
+    static_cast<long long>(lines->GetNumberOfPoints()), static_cast<long long>(exact), worst);
+  return true;
+}
+
+} // namespace
+
+int TestFilterPipeline(int, char*[])
+{
+  bool ok = ReExecutesOnlyWhenTheViewChanges();
+  ok = PropMatrixMatchesTransformedData() && ok;
+  ok = ArraysAndCounts() && ok;
+  ok = CellTypes() && ok;
+  ok = IndependentOfThreadCount() && ok;
+  ok = ParallelProjection() && ok;
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}

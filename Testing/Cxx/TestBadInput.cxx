@@ -1,0 +1,322 @@
+// Bad input to the filter (issue 2, item 5): each case either fails the
+// request with a clear vtkErrorMacro message, or has a defined, documented
+// behaviour; never a crash, a hang or NaN in the output.
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
+#include "vtkIcosphereSource.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSilhouetteSmoothingFilter.h"
+#include "vtkTestErrorObserver.h"
+
+#include "SilhouetteTestSupport.h"
+
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+namespace {
+
+#define CHECK(condition, message)                                                                  \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(condition))                                                                              \
+    {                                                                                              \
+      std::printf("FAIL: %s (%s, line %d)\n", message, #condition, __LINE__);                     \
+      return false;                                                                                \
+    }                                                                                              \
+  } while (false)
+
+// Runs the filter on `input` with `camera` (may be null) and returns the
+// error message it reported ("" when none).
+struct Run
+{
+  vtkNew<vtkSilhouetteSmoothingFilter> Filter;
+  vtkNew<vtkTest::ErrorObserver> Errors;
+  vtkNew<vtkTest::ErrorObserver> ExecutiveErrors;
+  int Result = 0;
+
+  Run(vtkPolyData* input, vtkCamera* camera)
+  {
+    this->Filter->AddObserver(vtkCommand::ErrorEvent, this->Errors);
+    this->Filter->AddObserver(vtkCommand::WarningEvent, this->Errors);
+    this->Filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, this->ExecutiveErrors);
+    this->Filter->SetInputData(input);
+    this->Filter->SetCamera(camera);
+    this->Result = this->Filter->GetExecutive()->Update();
+  }
+  std::string Error() { return this->Errors->GetError() ? this->Errors->GetErrorMessage() : ""; }
+  bool Failed() const { return this->Result == 0; }
+};
+
+vtkSmartPointer<vtkCamera> Camera(double x, double y, double z)
+{
+  auto camera = vtkSmartPointer<vtkCamera>::New();
+  camera->SetPosition(x, y, z);
+  camera->SetFocalPoint(0, 0, 0);
+  return camera;
+}
+
+vtkSmartPointer<vtkPolyData> Sphere(int level = 1)
+{
+  vtkNew<vtkIcosphereSource> source;
+  source->SetSubdivisionLevel(level);
+  source->Update();
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(source->GetOutput());
+  return copy;
+}
+
+bool NoNaN(vtkPolyData* mesh)
+{
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      return false;
+    }
+  }
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  for (vtkIdType i = 0; normals && i < normals->GetNumberOfTuples(); ++i)
+  {
+    double n[3];
+    normals->GetTuple(i, n);
+    if (!std::isfinite(n[0]) || !std::isfinite(n[1]) || !std::isfinite(n[2]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool NoCamera()
+{
+  Run run(Sphere(), nullptr);
+  CHECK(run.Failed(), "the request fails");
+  CHECK(run.Error().find("No camera") != std::string::npos, "the error names the missing camera");
+  std::printf("no camera: request failed with \"%s\"\n", run.Error().c_str());
+  return true;
+}
+
+bool NonFiniteCoordinates()
+{
+  for (double bad : { std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() })
+  {
+    auto mesh = Sphere();
+    mesh->GetPoints()->SetPoint(5, bad, 0.0, 0.0);
+    Run run(mesh, Camera(0, 0, 5));
+    CHECK(run.Failed(), "the request fails");
+    CHECK(run.Error().find("NaN or infinite") != std::string::npos &&
+        run.Error().find("point 5") != std::string::npos,
+      "the error says which point");
+  }
+  std::printf("NaN/inf coordinates: request failed naming the point\n");
+  return true;
+}
+
+bool EmptyInput()
+{
+  vtkNew<vtkPolyData> empty;
+  Run run(empty, Camera(0, 0, 5));
+  CHECK(!run.Failed() && run.Error().empty(), "an empty input is not an error");
+  CHECK(run.Filter->GetOutput()->GetNumberOfPoints() == 0 &&
+      run.Filter->GetOutput()->GetNumberOfCells() == 0,
+    "an empty input gives an empty output");
+  // Points but no cells, and lines only: passed through.
+  vtkNew<vtkPolyData> linesOnly;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  linesOnly->SetPoints(points);
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType line[2] = { 0, 1 };
+  lines->InsertNextCell(2, line);
+  linesOnly->SetLines(lines);
+  Run lineRun(linesOnly, Camera(0, 0, 5));
+  CHECK(!lineRun.Failed() && lineRun.Filter->GetOutput()->GetNumberOfLines() == 1, "lines pass");
+  std::printf("empty input: empty output; lines-only input passed through\n");
+  return true;
+}
+
+bool DegenerateTriangles()
+{
+  // A repeated point id and a zero-area triangle with distinct ids, both in
+  // the silhouette region of the sphere.
+  auto mesh = Sphere(2);
+  vtkNew<vtkCellArray> polys;
+  polys->DeepCopy(mesh->GetPolys());
+  const vtkIdType repeated[3] = { 0, 0, 1 };
+  polys->InsertNextCell(3, repeated);
+  const vtkIdType p = mesh->GetPoints()->InsertNextPoint(mesh->GetPoint(2));
+  const vtkIdType q = mesh->GetPoints()->InsertNextPoint(mesh->GetPoint(2));
+  const vtkIdType flat[3] = { 2, p, q };
+  polys->InsertNextCell(3, flat);
+  mesh->SetPolys(polys);
+  mesh->GetPointData()->Initialize(); // normals are computed
+  for (int view = 0; view < 20; ++view)
+  {
+    const double angle = 0.3 * view;
+    Run run(mesh, Camera(5 * std::cos(angle), 1.0, 5 * std::sin(angle)));
+    CHECK(!run.Failed() && run.Error().empty(), "degenerate triangles are not an error");
+    vtkPolyData* out = run.Filter->GetOutput();
+    CHECK(NoNaN(out), "no NaN");
+    // The repeated-id cell passes through unchanged.
+    vtkDataArray* original = out->GetCellData()->GetArray("OriginalCellId");
+    vtkDataArray* newGeometry = out->GetCellData()->GetArray("NewGeometry");
+    const vtkIdType repeatedCell = mesh->GetNumberOfCells() - 2;
+    bool found = false;
+    for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+    {
+      if (original->GetTuple1(c) == repeatedCell)
+      {
+        CHECK(!found && newGeometry->GetTuple1(c) == 0, "the repeated-id cell is kept as it was");
+        found = true;
+      }
+    }
+    CHECK(found, "the repeated-id cell is in the output");
+  }
+  std::printf("degenerate triangles: repeated-id cell passed through, zero-area handled, no NaN\n");
+  return true;
+}
+
+bool NonManifoldEdges()
+{
+  // Three triangles on the edge 0-1: the edge is split at one point for all.
+  vtkNew<vtkPolyData> fan;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, -1, 0);
+  points->InsertNextPoint(0, 1, 0);
+  points->InsertNextPoint(1, 0, 0.3);
+  points->InsertNextPoint(-1, 0, 0.3);
+  points->InsertNextPoint(0, 0, -1);
+  fan->SetPoints(points);
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType t0[3] = { 0, 1, 2 }, t1[3] = { 1, 0, 3 }, t2[3] = { 0, 1, 4 };
+  polys->InsertNextCell(3, t0);
+  polys->InsertNextCell(3, t1);
+  polys->InsertNextCell(3, t2);
+  fan->SetPolys(polys);
+  vtkNew<vtkDoubleArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->InsertNextTuple3(1, 0, 0); // 0 and 1 differ in visibility for an eye on -x
+  normals->InsertNextTuple3(-1, 0, 0);
+  normals->InsertNextTuple3(0, 0, 1);
+  normals->InsertNextTuple3(0, 0, 1);
+  normals->InsertNextTuple3(0, 0, -1);
+  fan->GetPointData()->SetNormals(normals);
+  Run run(fan, Camera(-5, 0.2, 0.1));
+  CHECK(!run.Failed(), "non-manifold input is processed");
+  vtkPolyData* out = run.Filter->GetOutput();
+  CHECK(NoNaN(out), "no NaN");
+  const auto report = silhouette_test::AnalyzeTopology(out);
+  // Each half of the split edge is still shared by the three triangles.
+  CHECK(report.NonManifoldEdges == 2, "the non-manifold edge is split once, consistently");
+  std::printf("non-manifold edge: split at one shared point (%s)\n", report.summary().c_str());
+  return true;
+}
+
+bool ZeroNormals()
+{
+  auto mesh = Sphere(2);
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); i += 3)
+  {
+    normals->SetTuple3(i, 0, 0, 0);
+  }
+  const vtkIdType lonely = mesh->GetPoints()->InsertNextPoint(9, 9, 9); // used by no cell
+  normals->InsertTuple3(lonely, 0, 0, 0);
+  for (int view = 0; view < 20; ++view)
+  {
+    const double angle = 0.31 * view;
+    Run run(mesh, Camera(4 * std::cos(angle), 0.5, 4 * std::sin(angle)));
+    CHECK(!run.Failed() && run.Error().empty(), "zero normals are not an error");
+    vtkPolyData* out = run.Filter->GetOutput();
+    CHECK(NoNaN(out), "no NaN");
+    CHECK(silhouette_test::AnalyzeTopology(out).closedManifold(), "still a closed manifold");
+    double n[3];
+    out->GetPointData()->GetNormals()->GetTuple(0, n);
+    CHECK(std::abs(vtkMath::Norm(n) - 1.0) < 1e-6, "a zero input normal is replaced by the computed one");
+  }
+  std::printf("zero normals: replaced by angle-weighted ones; isolated point tolerated\n");
+  return true;
+}
+
+bool EyeOnTheSurface()
+{
+  auto mesh = Sphere(1);
+  double vertex[3];
+  mesh->GetPoint(7, vertex);
+  auto onVertex = Camera(vertex[0], vertex[1], vertex[2]);
+  auto inside = Camera(0.3, 0.2, 0.1); // inside the sphere: no silhouette at all
+  for (vtkCamera* camera : { onVertex.Get(), inside.Get() })
+  {
+    Run run(mesh, camera);
+    CHECK(!run.Failed(), "an eye on the surface is handled");
+    CHECK(NoNaN(run.Filter->GetOutput()), "no NaN");
+    CHECK(silhouette_test::AnalyzeTopology(run.Filter->GetOutput()).closedManifold(), "closed manifold");
+  }
+  std::printf("eye on the surface: handled, closed manifold, no NaN\n");
+  return true;
+}
+
+bool OutOfRangeIds()
+{
+  auto mesh = Sphere(1);
+  vtkNew<vtkCellArray> polys;
+  polys->DeepCopy(mesh->GetPolys());
+  const vtkIdType bad[3] = { 0, 1, 5000 };
+  polys->InsertNextCell(3, bad);
+  mesh->SetPolys(polys);
+  Run run(mesh, Camera(0, 0, 5));
+  CHECK(run.Failed(), "the request fails");
+  CHECK(run.Error().find("do not exist") != std::string::npos, "the error says so");
+  std::printf("cells naming missing points: request failed\n");
+  return true;
+}
+
+bool ExtremeScales()
+{
+  for (double scale : { 1e-30, 1e30 })
+  {
+    auto mesh = Sphere(2);
+    for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    {
+      double x[3];
+      mesh->GetPoint(i, x);
+      mesh->GetPoints()->SetPoint(i, scale * x[0], scale * x[1], scale * x[2]);
+    }
+    Run run(mesh, Camera(0.4 * scale, 0.3 * scale, 4 * scale));
+    CHECK(!run.Failed(), "extreme scales are handled");
+    CHECK(NoNaN(run.Filter->GetOutput()), "no NaN at extreme scales");
+    CHECK(silhouette_test::AnalyzeTopology(run.Filter->GetOutput()).closedManifold(), "closed manifold");
+  }
+  std::printf("coordinates at 1e-30 and 1e30: handled, no NaN\n");
+  return true;
+}
+
+} // namespace
+
+int TestBadInput(int, char*[])
+{
+  bool ok = NoCamera();
+  ok = NonFiniteCoordinates() && ok;
+  ok = EmptyInput() && ok;
+  ok = DegenerateTriangles() && ok;
+  ok = NonManifoldEdges() && ok;
+  ok = ZeroNormals() && ok;
+  ok = EyeOnTheSurface() && ok;
+  ok = OutOfRangeIds() && ok;
+  ok = ExtremeScales() && ok;
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}

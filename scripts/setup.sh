@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Installs what the project needs on Debian bookworm (only the packages that
+# are missing, so it is safe to run again), then configures and builds in
+# build/ (Release). Sourced by demo.sh and test.sh; run alone to just build.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${SILHOUETTE_BUILD_DIR:-$here/build}"
+
+packages=(cmake make g++ pkg-config libvtk9-dev libglm-dev libosd-dev libosmesa6-dev libgtest-dev
+  xvfb xauth)
+
+missing=()
+for package in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$package")
+  fi
+done
+if [ "${#missing[@]}" -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  sudo_cmd=()
+  if [ "$(id -u)" -ne 0 ]; then
+    if ! command -v sudo >/dev/null; then
+      echo "setup: need root (or sudo) to install: ${missing[*]}" >&2
+      exit 1
+    fi
+    sudo_cmd=(sudo)
+  fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+jobs="$(nproc 2>/dev/null || echo 2)"
+echo "setup: configuring and building in $build"
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >"$build.configure.log" 2>&1 ||
+  { cat "$build.configure.log" >&2; exit 1; }
+cmake --build "$build" -j "$jobs" -- --no-print-directory >"$build.build.log" 2>&1 ||
+  { tail -50 "$build.build.log" >&2; exit 1; }
+echo "setup: built (logs: $build.configure.log, $build.build.log)"

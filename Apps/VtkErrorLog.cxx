@@ -4,6 +4,7 @@
 
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
+#include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkOutputWindow.h>
@@ -45,6 +46,15 @@ protected:
 };
 vtkStandardNewMacro(LoggingOutputWindow);
 
+// Some VTK code (vtkPLY, the executive) logs through vtkLogger as well as, or
+// instead of, the output window.
+void OnLoggerMessage(void*, const vtkLogger::Message& message)
+{
+  const bool isError = message.verbosity <= vtkLogger::VERBOSITY_ERROR;
+  VtkErrorLog::Instance().Record(
+    isError ? VtkErrorLog::Kind::Error : VtkErrorLog::Kind::Warning, false, message.message);
+}
+
 void OnErrorEvent(vtkObject*, unsigned long, void*, void* callData)
 {
   VtkErrorLog::Instance().Record(
@@ -60,11 +70,12 @@ bool IsGenericFailure(const std::string& text)
 
 std::string Trim(const std::string& text)
 {
-  const auto first = std::find_if_not(
-    text.begin(), text.end(), [](unsigned char c) { return std::isspace(c); });
-  const auto last = std::find_if_not(
-    text.rbegin(), text.rend(), [](unsigned char c) { return std::isspace(c); })
-                      .base();
+  const auto first =
+    std::find_if_not(text.begin(), text.end(), [](unsigned char c) { return std::isspace(c); });
+  const auto last = std::find_if_not(text.rbegin(), text.rend(),
+    [](unsigned char c) {
+      return std::isspace(c);
+    }).base();
   return first < last ? std::string(first, last) : std::string();
 }
 
@@ -76,10 +87,12 @@ VtkErrorLog& VtkErrorLog::Instance()
   return log;
 }
 
-void VtkErrorLog::InstallOutputWindow()
+void VtkErrorLog::InstallMessageCapture()
 {
   vtkNew<LoggingOutputWindow> window;
   vtkOutputWindow::SetInstance(window);
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  vtkLogger::AddCallback("silhouette", &OnLoggerMessage, nullptr, vtkLogger::VERBOSITY_WARNING);
 }
 
 void VtkErrorLog::Watch(vtkObject* object)
@@ -114,13 +127,13 @@ std::string VtkErrorLog::Summary() const
   // Most telling first: an error of the object we asked for, any specific
   // error, a warning (readers often warn just before they fail), and only
   // then the executive's bare "returned failure".
-  const auto firstWhere = [this](auto&& predicate) -> const Message* {
+  const auto firstWhere = [this](auto&& predicate) -> const Message*
+  {
     const auto found = std::find_if(this->Messages.begin(), this->Messages.end(), predicate);
     return found == this->Messages.end() ? nullptr : &*found;
   };
-  const Message* best = firstWhere([](const Message& m) {
-    return m.Severity == Kind::Error && m.FromWatchedObject && !IsGenericFailure(m.Text);
-  });
+  const Message* best = firstWhere([](const Message& m)
+    { return m.Severity == Kind::Error && m.FromWatchedObject && !IsGenericFailure(m.Text); });
   if (!best)
   {
     best = firstWhere(
@@ -164,7 +177,8 @@ std::string EssenceOfVtkMessage(const std::string& text)
   }
   // "vtkPLYReader (0x55d0c0): message" -> "message"; the class name and the
   // address mean nothing to the user of a command-line program.
-  static const std::regex objectPrefix(R"(^[A-Za-z_][A-Za-z0-9_]*\s*\(\s*(0x)?[0-9A-Fa-f]+\)\s*:\s*)");
+  static const std::regex objectPrefix(
+    R"(^[A-Za-z_][A-Za-z0-9_]*\s*\(\s*(0x)?[0-9A-Fa-f]+\)\s*:\s*)");
   essence = std::regex_replace(essence, objectPrefix, "");
   static const std::regex address(R"(\s*\(0x[0-9A-Fa-f]+\))");
   essence = std::regex_replace(essence, address, "");

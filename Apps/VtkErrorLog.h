@@ -24,8 +24,8 @@ public:
   /// The one log of the program.
   static VtkErrorLog& Instance();
 
-  /// Routes VTK's output window into this log; call once at start-up.
-  void InstallOutputWindow();
+  /// Routes VTK's output window and vtkLogger into this log; call once at start-up.
+  void InstallMessageCapture();
 
   /// Records the errors `object` raises (through an ErrorEvent observer).
   void Watch(vtkObject* object);

@@ -33,8 +33,9 @@ fi
 
 jobs="$(nproc 2>/dev/null || echo 2)"
 echo "setup: configuring and building in $build"
-cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >"$build.configure.log" 2>&1 ||
-  { cat "$build.configure.log" >&2; exit 1; }
-cmake --build "$build" -j "$jobs" -- --no-print-directory >"$build.build.log" 2>&1 ||
-  { tail -50 "$build.build.log" >&2; exit 1; }
-echo "setup: built (logs: $build.configure.log, $build.build.log)"
+mkdir -p "$build"
+cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >"$build/setup-configure.log" 2>&1 ||
+  { cat "$build/setup-configure.log" >&2; exit 1; }
+cmake --build "$build" -j "$jobs" >"$build/setup-build.log" 2>&1 ||
+  { tail -50 "$build/setup-build.log" >&2; exit 1; }
+echo "setup: built (logs in $build: setup-configure.log, setup-build.log)"

@@ -1,0 +1,277 @@
+#include "CameraOptions.h"
+
+#include "CliErrors.h"
+
+#include <vtkCamera.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkRenderer.h>
+#include <vtkTransform.h>
+
+#include <cmath>
+#include <regex>
+
+namespace cli
+{
+namespace
+{
+
+std::array<int, 2> ParseViewportSize(const std::string& option, const std::string& text)
+{
+  static const std::regex widthByHeight(R"(([0-9]{1,9})[xX]([0-9]{1,9}))");
+  std::smatch match;
+  if (std::regex_match(text, match, widthByHeight))
+  {
+    const int width = std::stoi(match[1].str());
+    const int height = std::stoi(match[2].str());
+    if (width >= 1 && height >= 1 && width <= MaximumViewportSide && height <= MaximumViewportSide)
+    {
+      return { width, height };
+    }
+  }
+  throw UsageError("option '" + option + "' needs WxH with sides from 1 to " +
+    std::to_string(MaximumViewportSide) + " pixels, got '" + text + "'");
+}
+
+double Length(const std::array<double, 3>& v)
+{
+  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+
+std::array<double, 3> Difference(const double a[3], const double b[3])
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+
+// Whether `up` cannot orient a camera looking along `direction`.
+bool IsParallel(const std::array<double, 3>& up, const std::array<double, 3>& direction)
+{
+  double cross[3];
+  vtkMath::Cross(up.data(), direction.data(), cross);
+  return Length({ cross[0], cross[1], cross[2] }) <= 1e-9 * Length(up) * Length(direction);
+}
+
+// vtkCamera::Elevation() keeps the view-up, so 90 degrees would leave it
+// parallel to the view; turning the view-up with the camera keeps any angle valid.
+void ElevateWithViewUp(vtkCamera* camera, double degrees)
+{
+  camera->OrthogonalizeViewUp();
+  double up[3];
+  camera->GetViewUp(up);
+  double towardFocus[3];
+  camera->GetDirectionOfProjection(towardFocus);
+  double right[3];
+  vtkMath::Cross(towardFocus, up, right);
+  // vtkCamera::Elevation() turns the position about minus the camera's x axis.
+  const double axis[3] = { -right[0], -right[1], -right[2] };
+  vtkNew<vtkTransform> turn;
+  turn->RotateWXYZ(degrees, axis);
+  double turnedUp[3];
+  turn->TransformVector(up, turnedUp);
+  camera->Elevation(degrees);
+  camera->SetViewUp(turnedUp);
+  camera->OrthogonalizeViewUp();
+}
+
+} // namespace
+
+bool ParseCameraOption(const Option& option, ArgumentList& arguments, CameraOptions& camera)
+{
+  const std::string& name = option.Name;
+  if (name == "--size")
+  {
+    camera.ViewportSize = ParseViewportSize(name, arguments.TakeValue(option));
+  }
+  else if (name == "--tolerance")
+  {
+    const std::string text = arguments.TakeValue(option);
+    camera.Tolerance = ParseNumber(name, text);
+    // The filter clamps anything smaller to 0.001; refuse rather than change it silently.
+    if (camera.Tolerance < 1e-3)
+    {
+      throw UsageError("option '" + name + "' needs at least 0.001 pixels, got '" + text + "'");
+    }
+  }
+  else if (name == "--azimuth")
+  {
+    camera.Azimuth = ParseNumber(name, arguments.TakeValue(option));
+  }
+  else if (name == "--elevation")
+  {
+    camera.Elevation = ParseNumber(name, arguments.TakeValue(option));
+  }
+  else if (name == "--zoom")
+  {
+    const std::string text = arguments.TakeValue(option);
+    camera.Zoom = ParseNumber(name, text);
+    if (camera.Zoom <= 0.0)
+    {
+      throw UsageError("option '" + name + "' needs a factor above 0, got '" + text + "'");
+    }
+  }
+  else if (name == "--camera-position")
+  {
+    camera.CameraPosition = arguments.TakeTriple(option);
+  }
+  else if (name == "--focal-point")
+  {
+    camera.FocalPoint = arguments.TakeTriple(option);
+  }
+  else if (name == "--view-up")
+  {
+    camera.ViewUp = arguments.TakeTriple(option);
+    if (Length(*camera.ViewUp) == 0.0)
+    {
+      throw UsageError("option '" + name + "' needs a non-zero vector");
+    }
+  }
+  else if (name == "--view-angle")
+  {
+    const std::string text = arguments.TakeValue(option);
+    camera.ViewAngle = ParseNumber(name, text);
+    // vtkCamera clamps the angle to 179 degrees.
+    if (camera.ViewAngle <= 0.0 || camera.ViewAngle > 179.0)
+    {
+      throw UsageError(
+        "option '" + name + "' needs degrees above 0 and at most 179, got '" + text + "'");
+    }
+  }
+  else if (name == "--parallel")
+  {
+    RejectInlineValue(option);
+    camera.Parallel = true;
+  }
+  else
+  {
+    return false;
+  }
+  return true;
+}
+
+void CheckCameraOptions(const CameraOptions& camera)
+{
+  if (!camera.CameraPosition)
+  {
+    if (camera.FocalPoint)
+    {
+      throw UsageError("option '--focal-point' needs '--camera-position'");
+    }
+    if (camera.ViewUp)
+    {
+      throw UsageError("option '--view-up' needs '--camera-position'");
+    }
+    return;
+  }
+  if (camera.FocalPoint)
+  {
+    const auto direction = Difference(camera.FocalPoint->data(), camera.CameraPosition->data());
+    if (Length(direction) == 0.0)
+    {
+      throw UsageError("options '--camera-position' and '--focal-point' give the same point");
+    }
+    if (camera.ViewUp && IsParallel(*camera.ViewUp, direction))
+    {
+      throw UsageError("option '--view-up' is parallel to the viewing direction");
+    }
+  }
+}
+
+std::string CameraOptionsHelp()
+{
+  return R"(Camera options (shared by smooth and render):
+  --size WxH               viewport and image size in pixels, each side 1 to
+                           16384 (default 1024x768)
+  --tolerance PX           the filter's Tolerance: the largest distance in
+                           pixels between the sampled and the smooth
+                           silhouette, at least 0.001 (default 0.5)
+  --azimuth DEG            turn the camera about the view-up through the
+                           focal point (default 0)
+  --elevation DEG          turn the camera up or down over the focal point;
+                           the view-up turns with it (default 0)
+  --zoom F                 divide the view angle (the parallel scale with
+                           --parallel) by F > 0 (default 1)
+  --camera-position X Y Z  put the camera at X Y Z instead of the framing
+                           camera (default: the framing camera, see below)
+  --focal-point X Y Z      the point the explicit camera looks at; needs
+                           --camera-position (default: the centre of the
+                           mesh's bounding box)
+  --view-up X Y Z          the explicit camera's up direction; needs
+                           --camera-position (default 0 1 0)
+  --view-angle DEG         vertical view angle, above 0 and at most 179
+                           (default 30)
+  --parallel               parallel projection instead of perspective
+                           (default: perspective)
+
+The framing camera is vtkRenderer::ResetCamera() on the mesh's bounds: it
+looks along -Z at the centre of the bounding box, view-up +Y, from the
+distance at which the bounding sphere fills the view angle. With
+--camera-position the explicit camera replaces it (a parallel camera keeps
+the framing parallel scale). Then --azimuth, --elevation and --zoom are
+applied in that order, to either camera. The filter gets this camera and
+the --size viewport before it first runs.
+)";
+}
+
+void SetUpCamera(vtkRenderer* renderer, const double bounds[6], const CameraOptions& options)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetParallelProjection(options.Parallel);
+  camera->SetViewAngle(options.ViewAngle);
+  camera->SetPosition(0.0, 0.0, 1.0);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetViewUp(0.0, 1.0, 0.0);
+
+  // A mesh with NaN coordinates has no frame; the filter reports those points.
+  bool finiteBounds = true;
+  for (int i = 0; i < 6; ++i)
+  {
+    finiteBounds = finiteBounds && std::isfinite(bounds[i]);
+  }
+  if (finiteBounds)
+  {
+    renderer->ResetCamera(bounds);
+  }
+
+  if (options.CameraPosition)
+  {
+    const double centre[3] = { 0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+      0.5 * (bounds[4] + bounds[5]) };
+    const double* focus = options.FocalPoint ? options.FocalPoint->data() : centre;
+    const double* position = options.CameraPosition->data();
+    const std::array<double, 3> up = options.ViewUp.value_or(std::array<double, 3>{ 0, 1, 0 });
+    const auto direction = Difference(focus, position);
+    if (Length(direction) == 0.0)
+    {
+      throw RuntimeError("the camera position is the focal point (the centre of the mesh's "
+                         "bounding box); give another --camera-position or a --focal-point");
+    }
+    if (IsParallel(up, direction))
+    {
+      throw RuntimeError("the view-up is parallel to the viewing direction; give --view-up");
+    }
+    // Focal point last: vtkCamera moves the focal point when the position lands on it.
+    camera->SetPosition(position);
+    camera->SetFocalPoint(focus);
+    camera->SetViewUp(up.data());
+    camera->OrthogonalizeViewUp();
+  }
+
+  if (options.Azimuth != 0.0)
+  {
+    camera->Azimuth(options.Azimuth);
+  }
+  if (options.Elevation != 0.0)
+  {
+    ElevateWithViewUp(camera, options.Elevation);
+  }
+  if (options.Zoom != 1.0)
+  {
+    camera->Zoom(options.Zoom);
+  }
+  if (finiteBounds)
+  {
+    renderer->ResetCameraClippingRange(bounds);
+  }
+}
+
+} // namespace cli

@@ -1,0 +1,56 @@
+#ifndef CameraOptions_h
+#define CameraOptions_h
+
+#include "ArgumentList.h"
+
+#include <array>
+#include <optional>
+#include <string>
+
+class vtkCamera;
+class vtkRenderer;
+
+namespace cli
+{
+
+/// The view options shared by `smooth` and `render`: the filter must see the
+/// very camera and viewport the renderer uses, so both come from here.
+struct CameraOptions
+{
+  std::array<int, 2> ViewportSize{ 1024, 768 };
+  double Tolerance = 0.5;
+  double Azimuth = 0.0;
+  double Elevation = 0.0;
+  double Zoom = 1.0;
+  std::optional<std::array<double, 3>> CameraPosition;
+  std::optional<std::array<double, 3>> FocalPoint;
+  std::optional<std::array<double, 3>> ViewUp;
+  double ViewAngle = 30.0;
+  bool Parallel = false;
+};
+
+/// Largest accepted viewport side, to keep images and buffers sane.
+constexpr int MaximumViewportSide = 16384;
+
+/// Consumes `option` (and its values) if it is a camera option; false if not.
+/// Throws UsageError for bad values.
+bool ParseCameraOption(const Option& option, ArgumentList& arguments, CameraOptions& camera);
+
+/// Checks that need several options at once; throws UsageError.
+void CheckCameraOptions(const CameraOptions& camera);
+
+/// The help text of the camera options, with their defaults.
+std::string CameraOptionsHelp();
+
+/**
+ * Sets the renderer's active camera: framed on `bounds` the way
+ * vtkRenderer::ResetCamera() does (looking along -Z, view-up +Y), or the
+ * explicit camera; then azimuth, elevation and zoom, in that order. The
+ * renderer must already be in a window of the viewport size, as the framing
+ * depends on the aspect ratio. Throws RuntimeError if the result is degenerate.
+ */
+void SetUpCamera(vtkRenderer* renderer, const double bounds[6], const CameraOptions& options);
+
+} // namespace cli
+
+#endif

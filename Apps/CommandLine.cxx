@@ -1,0 +1,312 @@
+#include "CommandLine.h"
+
+#include "CliErrors.h"
+#include "Smoothing.h"
+
+#include <vector>
+
+namespace cli
+{
+namespace
+{
+
+std::string MainHelp()
+{
+  return R"(Usage: silhouette COMMAND [ARGUMENTS]
+
+View-dependent silhouette smoothing of coarse triangle meshes (L. Wang et
+al., "Silhouette Smoothing for Real-Time Rendering of Mesh Surfaces", IEEE
+TVCG 14(3), 2008), with vtkSilhouetteSmoothingFilter.
+
+Commands:
+  smooth INPUT [-o OUTPUT] [--json] [camera options]
+      smooth the silhouette of INPUT for one view, optionally write the
+      result, and print figures about it
+  render INPUT -o IMAGE.png [--style STYLE] [--no-smoothing] [--json]
+         [camera options]
+      render INPUT offscreen to a PNG image and print the same figures
+  help [COMMAND]
+      show this help, or the help of COMMAND
+
+Run 'silhouette COMMAND --help' for the options of a command.
+
+Exit status: 0 on success, 1 when the work fails (a file, the data or VTK),
+2 for a wrong command line.
+)";
+}
+
+std::string FiguresHelp()
+{
+  return "Figures: the input's triangles (after triangulating polygons and strips),\n"
+         "the output's triangles, the silhouette triangles that were re-meshed, the\n"
+         "new triangles and new points that replaced them, and two times in\n"
+         "milliseconds (std::chrono::steady_clock, the mesh already in memory):\n"
+         "the filter's first Update(), which also prepares the view-independent\n"
+         "data (triangles, edge table, normals) once per mesh, and the time of one\n"
+         "frame after that (what each camera move costs): the median of " +
+    std::to_string(TimedFilterRuns) +
+    " runs.\n"
+    "Reading, camera set-up, writing and rendering are not timed.\n"
+    "With --json they are one JSON object on stdout with the keys input, output\n"
+    "(a path or null), input_triangles, output_triangles, silhouette_triangles,\n"
+    "new_triangles, new_points, prepare_ms, filter_ms, tolerance, viewport [w, h]\n"
+    "and camera {position, focal_point, view_up, view_angle, parallel}.\n";
+}
+
+std::string SmoothHelp()
+{
+  return R"(Usage: silhouette smooth INPUT [-o OUTPUT] [--json] [camera options]
+
+Reads INPUT, smooths its silhouette for the view of the camera options with
+vtkSilhouetteSmoothingFilter, writes the result if -o is given, and prints
+figures about it. The extension of INPUT, in any letter case, picks the
+reader: .ply (vtkPLYReader), .obj (vtkOBJReader), .stl (vtkSTLReader), .vtp
+(vtkXMLPolyDataReader) or .vtk (vtkPolyDataReader; legacy POLYDATA only).
+
+Options:
+  -o, --output FILE   write the smoothed mesh to FILE: .vtp (VTK XML, binary,
+                      zlib-compressed) or .ply (binary) (default: nothing is
+                      written)
+  --json              print the figures as one JSON object instead of text
+                      (default: text)
+  -h, --help          show this help and exit
+
+)" + CameraOptionsHelp() +
+    "\n" + FiguresHelp();
+}
+
+std::string RenderHelp()
+{
+  return R"(Usage: silhouette render INPUT -o IMAGE.png [--style STYLE] [--no-smoothing]
+                        [--json] [camera options]
+
+Reads INPUT like 'silhouette smooth', smooths its silhouette for the view of
+the camera options, renders it offscreen at --size with that same camera
+(no multisampling, so images are repeatable), writes a PNG image and prints
+the same figures as 'silhouette smooth'. Rendering needs an X display; where
+there is none, run it under 'xvfb-run -a'.
+
+Options:
+  -o, --output IMAGE.png  the image to write; required, must end in .png
+  --style STYLE           what to draw (default: shaded):
+                          shaded        the smoothed mesh in light grey on
+                                        white, Phong shading with the
+                                        filter's normals
+                          wireframe     the mesh's edges in black on white,
+                                        hidden edges removed
+                          new-geometry  like wireframe, with the edges of the
+                                        triangles the smoothing made
+                                        (NewGeometry > 0) in red and the
+                                        others dark grey
+                          lines         the smoothed silhouette polylines
+                                        (the filter's second output) in
+                                        black, 2 pixels wide, on white,
+                                        without the mesh (so hidden parts
+                                        of the silhouette show too)
+  --no-smoothing          draw the unsmoothed input in the same style: shaded
+                          still uses the filter's shading normals; lines draws
+                          VTK's vtkPolyDataSilhouette of the input for the
+                          same camera, a stand-in for now (default: smoothed).
+                          The figures still describe the smoothing.
+  --json                  print the figures as one JSON object instead of text
+                          (default: text); its "output" is the image
+  -h, --help              show this help and exit
+
+)" + CameraOptionsHelp() +
+    "\n" + FiguresHelp();
+}
+
+bool IsHelpWord(const std::string& word)
+{
+  return word == "--help" || word == "-h";
+}
+
+// The help of `command`, or UsageError if there is no such command.
+std::string HelpOf(const std::string& command)
+{
+  if (command == "smooth")
+  {
+    return SmoothHelp();
+  }
+  if (command == "render")
+  {
+    return RenderHelp();
+  }
+  if (command == "help")
+  {
+    return MainHelp();
+  }
+  throw UsageError("unknown command '" + command + "'; run 'silhouette --help'");
+}
+
+std::optional<RenderStyle> ParseRenderStyle(const std::string& name)
+{
+  for (RenderStyle style :
+    { RenderStyle::Shaded, RenderStyle::Wireframe, RenderStyle::NewGeometry, RenderStyle::Lines })
+  {
+    if (name == NameOf(style))
+    {
+      return style;
+    }
+  }
+  return std::nullopt;
+}
+
+// The parts both commands share: INPUT, --json and the camera options.
+// `parseOwnOption` handles the command's other options and says whether it knew it.
+template<typename Options, typename OwnOptionParser>
+void ParseCommand(const std::string& command, ArgumentList& arguments, Options& options,
+  OwnOptionParser parseOwnOption)
+{
+  bool onlyOperands = false; // after "--"
+  while (!arguments.AtEnd())
+  {
+    const std::string word = arguments.Take();
+    if (!onlyOperands && word == "--")
+    {
+      onlyOperands = true;
+    }
+    else if (!onlyOperands && LooksLikeOption(word))
+    {
+      const Option option = SplitOption(word);
+      if (option.Name == "--json")
+      {
+        RejectInlineValue(option);
+        options.Json = true;
+      }
+      else if (!ParseCameraOption(option, arguments, options.Camera) &&
+        !parseOwnOption(option, arguments))
+      {
+        throw UsageError("unknown option '" + option.Name + "' for '" + command +
+          "'; run 'silhouette " + command + " --help'");
+      }
+    }
+    else if (options.Input.empty())
+    {
+      options.Input = word;
+    }
+    else
+    {
+      throw UsageError(
+        "unexpected argument '" + word + "' (INPUT is already '" + options.Input + "')");
+    }
+  }
+  if (options.Input.empty())
+  {
+    throw UsageError(
+      "'" + command + "' needs an INPUT mesh; run 'silhouette " + command + " --help'");
+  }
+  CheckCameraOptions(options.Camera);
+}
+
+bool IsOutputOption(const Option& option)
+{
+  return option.Name == "-o" || option.Name == "--output";
+}
+
+} // namespace
+
+const char* NameOf(RenderStyle style)
+{
+  switch (style)
+  {
+    case RenderStyle::Wireframe:
+      return "wireframe";
+    case RenderStyle::NewGeometry:
+      return "new-geometry";
+    case RenderStyle::Lines:
+      return "lines";
+    case RenderStyle::Shaded:
+    default:
+      return "shaded";
+  }
+}
+
+CommandLine ParseCommandLine(int argc, char* argv[])
+{
+  std::vector<std::string> words(argv + 1, argv + argc);
+  CommandLine result;
+  if (words.empty())
+  {
+    throw UsageError("no command given; run 'silhouette --help'");
+  }
+  const std::string command = words.front();
+  if (IsHelpWord(command) || command == "help")
+  {
+    if (command == "help" && words.size() > 2)
+    {
+      throw UsageError("'help' takes at most one COMMAND");
+    }
+    result.HelpText = words.size() == 2 ? HelpOf(words[1]) : MainHelp();
+    return result;
+  }
+  const std::string commandHelp = HelpOf(command); // also rejects unknown commands
+  // "--help" anywhere before "--" wins over mistakes elsewhere on the line.
+  for (std::size_t i = 1; i < words.size() && words[i] != "--"; ++i)
+  {
+    if (IsHelpWord(words[i]))
+    {
+      result.HelpText = commandHelp;
+      return result;
+    }
+  }
+
+  ArgumentList arguments({ words.begin() + 1, words.end() });
+  if (command == "smooth")
+  {
+    result.What = CommandLine::Action::Smooth;
+    SmoothOptions& smooth = result.Smooth;
+    ParseCommand(command, arguments, smooth,
+      [&smooth](const Option& option, ArgumentList& args)
+      {
+        if (!IsOutputOption(option))
+        {
+          return false;
+        }
+        smooth.Output = args.TakeValue(option);
+        return true;
+      });
+  }
+  else
+  {
+    result.What = CommandLine::Action::Render;
+    RenderOptions& render = result.Render;
+    ParseCommand(command, arguments, render,
+      [&render](const Option& option, ArgumentList& args)
+      {
+        if (IsOutputOption(option))
+        {
+          render.Output = args.TakeValue(option);
+        }
+        else if (option.Name == "--style")
+        {
+          const std::string name = args.TakeValue(option);
+          const std::optional<RenderStyle> style = ParseRenderStyle(name);
+          if (!style)
+          {
+            throw UsageError(
+              "option '--style' needs shaded, wireframe, new-geometry or lines, got '" + name +
+              "'");
+          }
+          render.Style = *style;
+        }
+        else if (option.Name == "--no-smoothing")
+        {
+          RejectInlineValue(option);
+          render.NoSmoothing = true;
+        }
+        else
+        {
+          return false;
+        }
+        return true;
+      });
+    if (render.Output.empty())
+    {
+      throw UsageError("'render' needs '-o IMAGE.png'");
+    }
+  }
+  return result;
+}
+
+} // namespace cli

@@ -1,0 +1,54 @@
+#ifndef Figures_h
+#define Figures_h
+
+#include <vtkType.h>
+
+#include <array>
+#include <optional>
+#include <ostream>
+#include <string>
+
+class vtkCamera;
+class vtkPolyData;
+
+namespace cli
+{
+
+struct CameraOptions;
+
+/// What `smooth` and `render` print about one run of the filter.
+struct Figures
+{
+  std::string Input;
+  std::optional<std::string> Output;
+  vtkIdType InputTriangles = 0;
+  vtkIdType OutputTriangles = 0;
+  vtkIdType SilhouetteTriangles = 0;
+  vtkIdType NewTriangles = 0;
+  vtkIdType NewPoints = 0;
+  double PrepareMilliseconds = 0.0;
+  double FilterMilliseconds = 0.0;
+  double Tolerance = 0.0;
+  std::array<int, 2> Viewport{};
+  std::array<double, 3> CameraPosition{};
+  std::array<double, 3> FocalPoint{};
+  std::array<double, 3> ViewUp{};
+  double ViewAngle = 0.0;
+  bool Parallel = false;
+};
+
+/// Gathers the figures; the counts come from the field data of the filter's
+/// output. Throws RuntimeError if one of those arrays is missing.
+Figures CollectFigures(const std::string& input, const std::optional<std::string>& output,
+  vtkPolyData* smoothed, double prepareMilliseconds, double filterMilliseconds, const CameraOptions& options,
+  vtkCamera* camera);
+
+/// One "name: value" line per figure.
+void PrintFiguresAsText(std::ostream& out, const Figures& figures);
+
+/// One JSON object on one line.
+void PrintFiguresAsJson(std::ostream& out, const Figures& figures);
+
+} // namespace cli
+
+#endif

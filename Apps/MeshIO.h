@@ -1,0 +1,41 @@
+#ifndef MeshIO_h
+#define MeshIO_h
+
+#include <vtkSmartPointer.h>
+#include <vtkType.h>
+
+#include <string>
+
+class vtkPolyData;
+
+namespace cli
+{
+
+/// The extension of `path` in lower case, with its dot ("" if none).
+std::string LowercaseExtension(const std::string& path);
+
+/**
+ * Reads a mesh with the reader its extension picks (.ply .obj .stl .vtp .vtk).
+ * Throws RuntimeError with one line for a missing or unreadable file, an
+ * unknown extension, a legacy .vtk file that is not POLYDATA, and any error
+ * VTK reports while reading.
+ */
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path);
+
+/// The triangles the filter will see: polygons fanned, strips split.
+vtkIdType CountTriangles(vtkPolyData* mesh);
+
+/// Throws RuntimeError unless the directory `path` goes into exists (VTK's
+/// writers only say they could not open the file).
+void RequireOutputDirectory(const std::string& path);
+
+/// Throws RuntimeError unless WriteMesh can write `path` (.vtp or .ply);
+/// called before the work so a typo costs nothing.
+void CheckMeshOutputPath(const std::string& path);
+
+/// Writes .vtp (XML, binary, zlib) or .ply (binary); throws RuntimeError on failure.
+void WriteMesh(vtkPolyData* mesh, const std::string& path);
+
+} // namespace cli
+
+#endif

@@ -1,0 +1,503 @@
+#include "PlyCheck.h"
+
+#include "CliErrors.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iomanip>
+#include <iterator>
+#include <optional>
+#include <sstream>
+#include <vector>
+
+namespace cli
+{
+namespace
+{
+
+// The largest face vtkPLYReader 9.1 reads correctly.
+constexpr long long MaximumFaceVertices = 255;
+
+enum class ScalarType
+{
+  Int8,
+  UInt8,
+  Int16,
+  UInt16,
+  Int32,
+  UInt32,
+  Float32,
+  Float64
+};
+
+std::optional<ScalarType> ScalarTypeNamed(const std::string& name)
+{
+  struct Named
+  {
+    const char* Name;
+    ScalarType Type;
+  };
+  static const Named types[] = { { "char", ScalarType::Int8 }, { "int8", ScalarType::Int8 },
+    { "uchar", ScalarType::UInt8 }, { "uint8", ScalarType::UInt8 }, { "short", ScalarType::Int16 },
+    { "int16", ScalarType::Int16 }, { "ushort", ScalarType::UInt16 },
+    { "uint16", ScalarType::UInt16 }, { "int", ScalarType::Int32 }, { "int32", ScalarType::Int32 },
+    { "uint", ScalarType::UInt32 }, { "uint32", ScalarType::UInt32 },
+    { "float", ScalarType::Float32 }, { "float32", ScalarType::Float32 },
+    { "double", ScalarType::Float64 }, { "float64", ScalarType::Float64 } };
+  for (const Named& type : types)
+  {
+    if (name == type.Name)
+    {
+      return type.Type;
+    }
+  }
+  return std::nullopt;
+}
+
+std::size_t SizeOf(ScalarType type)
+{
+  switch (type)
+  {
+    case ScalarType::Int8:
+    case ScalarType::UInt8:
+      return 1;
+    case ScalarType::Int16:
+    case ScalarType::UInt16:
+      return 2;
+    case ScalarType::Float64:
+      return 8;
+    default:
+      return 4;
+  }
+}
+
+bool IsInteger(ScalarType type)
+{
+  return type != ScalarType::Float32 && type != ScalarType::Float64;
+}
+
+struct Property
+{
+  std::string Name;
+  ScalarType Type = ScalarType::Float32;
+  bool IsList = false;
+  ScalarType CountType = ScalarType::UInt8;
+};
+
+struct Element
+{
+  std::string Name;
+  long long Count = 0;
+  std::vector<Property> Properties;
+};
+
+enum class Format
+{
+  Ascii,
+  BinaryLittleEndian,
+  BinaryBigEndian
+};
+
+struct Header
+{
+  Format BodyFormat = Format::Ascii;
+  std::vector<Element> Elements;
+  std::size_t BodyOffset = 0;
+};
+
+class PlyChecker
+{
+public:
+  PlyChecker(const std::string& path, std::string bytes)
+    : Path(path)
+    , Bytes(std::move(bytes))
+  {
+  }
+
+  void Check()
+  {
+    const Header header = this->ReadHeader();
+    this->VertexCount = 0;
+    for (const Element& element : header.Elements)
+    {
+      if (element.Name == "vertex")
+      {
+        this->VertexCount = element.Count;
+      }
+    }
+    this->Position = header.BodyOffset;
+    for (const Element& element : header.Elements)
+    {
+      for (long long i = 0; i < element.Count; ++i)
+      {
+        if (header.BodyFormat == Format::Ascii)
+        {
+          this->CheckAsciiInstance(element, i);
+        }
+        else
+        {
+          this->CheckBinaryInstance(element, i, header.BodyFormat == Format::BinaryBigEndian);
+        }
+      }
+    }
+  }
+
+private:
+  [[noreturn]] void Fail(const std::string& problem) const
+  {
+    throw RuntimeError("cannot read '" + this->Path + "': malformed PLY: " + problem);
+  }
+
+  Header ReadHeader()
+  {
+    Header header;
+    std::size_t lineNumber = 0;
+    bool sawFormat = false;
+    std::size_t position = 0;
+    while (true)
+    {
+      const std::size_t end = this->Bytes.find('\n', position);
+      if (end == std::string::npos)
+      {
+        this->Fail(lineNumber == 0 ? "empty file" : "the header has no end_header line");
+      }
+      std::string line = this->Bytes.substr(position, end - position);
+      position = end + 1;
+      ++lineNumber;
+      if (!line.empty() && line.back() == '\r')
+      {
+        line.pop_back();
+      }
+      std::istringstream words(line);
+      std::string keyword;
+      words >> keyword;
+      const std::string where = "header line " + std::to_string(lineNumber);
+      if (lineNumber == 1)
+      {
+        if (keyword != "ply")
+        {
+          this->Fail("the file does not start with 'ply'");
+        }
+        continue;
+      }
+      if (keyword == "format")
+      {
+        std::string format, version;
+        words >> format >> version;
+        if (format == "ascii")
+        {
+          header.BodyFormat = Format::Ascii;
+        }
+        else if (format == "binary_little_endian")
+        {
+          header.BodyFormat = Format::BinaryLittleEndian;
+        }
+        else if (format == "binary_big_endian")
+        {
+          header.BodyFormat = Format::BinaryBigEndian;
+        }
+        else
+        {
+          this->Fail(where + ": unknown format '" + format + "'");
+        }
+        sawFormat = true;
+      }
+      else if (keyword == "element")
+      {
+        Element element;
+        std::string count;
+        words >> element.Name >> count;
+        char* countEnd = nullptr;
+        errno = 0;
+        element.Count = std::strtoll(count.c_str(), &countEnd, 10);
+        if (element.Name.empty() || count.empty() || *countEnd != '\0' || errno == ERANGE ||
+          element.Count < 0)
+        {
+          this->Fail(where + ": bad element line '" + line + "'");
+        }
+        header.Elements.push_back(element);
+      }
+      else if (keyword == "property")
+      {
+        if (header.Elements.empty())
+        {
+          this->Fail(where + ": property before any element");
+        }
+        Property property;
+        std::string type;
+        words >> type;
+        if (type == "list")
+        {
+          std::string countType, itemType;
+          words >> countType >> itemType >> property.Name;
+          const auto count = ScalarTypeNamed(countType);
+          const auto item = ScalarTypeNamed(itemType);
+          if (!count || !IsInteger(*count) || !item)
+          {
+            this->Fail(where + ": bad list property '" + line + "'");
+          }
+          property.IsList = true;
+          property.CountType = *count;
+          property.Type = *item;
+        }
+        else
+        {
+          words >> property.Name;
+          const auto scalar = ScalarTypeNamed(type);
+          if (!scalar)
+          {
+            this->Fail(where + ": unknown property type '" + type + "'");
+          }
+          property.Type = *scalar;
+        }
+        if (property.Name.empty())
+        {
+          this->Fail(where + ": property without a name");
+        }
+        header.Elements.back().Properties.push_back(property);
+      }
+      else if (keyword == "end_header")
+      {
+        break;
+      }
+      else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty())
+      {
+        this->Fail(where + ": unknown keyword '" + keyword + "'");
+      }
+    }
+    if (!sawFormat)
+    {
+      this->Fail("the header has no format line");
+    }
+    header.BodyOffset = position;
+    return header;
+  }
+
+  static bool IsVertexIndexList(const Element& element, const Property& property)
+  {
+    return element.Name == "face" && property.IsList &&
+      (property.Name == "vertex_indices" || property.Name == "vertex_index");
+  }
+
+  void CheckVertexIndex(double index, long long face) const
+  {
+    if (!(index >= 0.0 && index < static_cast<double>(this->VertexCount)))
+    {
+      std::ostringstream problem;
+      problem << "face " << face << " refers to vertex " << std::fixed << std::setprecision(0)
+              << index << " but there are " << this->VertexCount << " vertices";
+      this->Fail(problem.str());
+    }
+  }
+
+  void CheckFaceSize(long long count, long long face) const
+  {
+    if (count > MaximumFaceVertices)
+    {
+      this->Fail("face " + std::to_string(face) + " has " + std::to_string(count) +
+        " vertices; vtkPLYReader reads at most " + std::to_string(MaximumFaceVertices));
+    }
+  }
+
+  // ASCII: vtkPLYReader reads one element per line, so each line must hold
+  // exactly the element's values.
+  void CheckAsciiInstance(const Element& element, long long instance)
+  {
+    const std::string where = element.Name + " " + std::to_string(instance);
+    std::vector<std::string> words;
+    while (words.empty())
+    {
+      if (this->Position >= this->Bytes.size())
+      {
+        this->Fail("the file ends before " + where);
+      }
+      std::size_t end = this->Bytes.find('\n', this->Position);
+      if (end == std::string::npos)
+      {
+        end = this->Bytes.size();
+      }
+      std::istringstream line(this->Bytes.substr(this->Position, end - this->Position));
+      this->Position = end + 1;
+      words.assign(std::istream_iterator<std::string>(line), std::istream_iterator<std::string>());
+    }
+    std::size_t next = 0;
+    const auto number = [&](ScalarType type)
+    {
+      if (next >= words.size())
+      {
+        this->Fail(where + " has too few values");
+      }
+      const std::string& word = words[next++];
+      char* end = nullptr;
+      const double value = std::strtod(word.c_str(), &end);
+      if (word.empty() || *end != '\0' || (IsInteger(type) && std::trunc(value) != value))
+      {
+        this->Fail(where + " has a bad value '" + word + "'");
+      }
+      return value;
+    };
+    for (const Property& property : element.Properties)
+    {
+      if (!property.IsList)
+      {
+        number(property.Type);
+        continue;
+      }
+      const double count = number(property.CountType);
+      if (count < 0)
+      {
+        this->Fail(where + " has a negative list length");
+      }
+      const bool indices = IsVertexIndexList(element, property);
+      if (indices)
+      {
+        this->CheckFaceSize(static_cast<long long>(count), instance);
+      }
+      for (long long k = 0; k < static_cast<long long>(count); ++k)
+      {
+        const double value = number(property.Type);
+        if (indices)
+        {
+          this->CheckVertexIndex(value, instance);
+        }
+      }
+    }
+    if (next != words.size())
+    {
+      this->Fail(where + " has too many values");
+    }
+  }
+
+  double ReadBinary(ScalarType type, bool bigEndian, const std::string& where)
+  {
+    const std::size_t size = SizeOf(type);
+    if (this->Bytes.size() - this->Position < size)
+    {
+      this->Fail("the file ends inside " + where + " (truncated binary body)");
+    }
+    unsigned char raw[8];
+    std::memcpy(raw, this->Bytes.data() + this->Position, size);
+    this->Position += size;
+    // Assemble the value in host order from the file's byte order.
+    const bool hostIsLittle = []
+    {
+      const std::uint16_t one = 1;
+      unsigned char first;
+      std::memcpy(&first, &one, 1);
+      return first == 1;
+    }();
+    if (bigEndian == hostIsLittle)
+    {
+      std::reverse(raw, raw + size);
+    }
+    switch (type)
+    {
+      case ScalarType::Int8:
+        return static_cast<std::int8_t>(raw[0]);
+      case ScalarType::UInt8:
+        return raw[0];
+      case ScalarType::Int16:
+      {
+        std::int16_t v;
+        std::memcpy(&v, raw, 2);
+        return v;
+      }
+      case ScalarType::UInt16:
+      {
+        std::uint16_t v;
+        std::memcpy(&v, raw, 2);
+        return v;
+      }
+      case ScalarType::Int32:
+      {
+        std::int32_t v;
+        std::memcpy(&v, raw, 4);
+        return v;
+      }
+      case ScalarType::UInt32:
+      {
+        std::uint32_t v;
+        std::memcpy(&v, raw, 4);
+        return v;
+      }
+      case ScalarType::Float32:
+      {
+        float v;
+        std::memcpy(&v, raw, 4);
+        return v;
+      }
+      case ScalarType::Float64:
+      default:
+      {
+        double v;
+        std::memcpy(&v, raw, 8);
+        return v;
+      }
+    }
+  }
+
+  void CheckBinaryInstance(const Element& element, long long instance, bool bigEndian)
+  {
+    const std::string where = element.Name + " " + std::to_string(instance);
+    for (const Property& property : element.Properties)
+    {
+      if (!property.IsList)
+      {
+        this->ReadBinary(property.Type, bigEndian, where);
+        continue;
+      }
+      const double count = this->ReadBinary(property.CountType, bigEndian, where);
+      if (count < 0)
+      {
+        this->Fail(where + " has a negative list length");
+      }
+      const bool indices = IsVertexIndexList(element, property);
+      if (indices)
+      {
+        this->CheckFaceSize(static_cast<long long>(count), instance);
+      }
+      else if (static_cast<double>(this->Bytes.size() - this->Position) <
+        count * static_cast<double>(SizeOf(property.Type)))
+      {
+        this->Fail("the file ends inside " + where + " (truncated binary body)");
+      }
+      for (long long k = 0; k < static_cast<long long>(count); ++k)
+      {
+        const double value = this->ReadBinary(property.Type, bigEndian, where);
+        if (indices)
+        {
+          this->CheckVertexIndex(value, instance);
+        }
+      }
+    }
+  }
+
+  std::string Path;
+  std::string Bytes;
+  std::size_t Position = 0;
+  long long VertexCount = 0;
+};
+
+} // namespace
+
+void CheckPlyFile(const std::string& path)
+{
+  std::ifstream file(path, std::ios::binary);
+  if (!file)
+  {
+    throw RuntimeError("cannot read '" + path + "': " + std::strerror(errno));
+  }
+  std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  if (file.bad())
+  {
+    throw RuntimeError("cannot read '" + path + "': " + std::strerror(errno));
+  }
+  PlyChecker(path, std::move(bytes)).Check();
+}
+
+} // namespace cli

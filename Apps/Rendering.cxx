@@ -1,0 +1,274 @@
+#include "Rendering.h"
+
+#include "CliErrors.h"
+#include "MeshIO.h"
+#include "VtkErrorLog.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFloatArray.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPolyDataSilhouette.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSilhouetteSmoothingFilter.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <csignal>
+#include <cstdlib>
+#include <unistd.h>
+
+namespace cli
+{
+namespace
+{
+
+constexpr double White[3] = { 1.0, 1.0, 1.0 };
+constexpr double Black[3] = { 0.0, 0.0, 0.0 };
+constexpr double LightGrey[3] = { 0.82, 0.82, 0.80 };
+constexpr double DarkGrey[3] = { 0.30, 0.30, 0.30 };
+constexpr double Red[3] = { 0.90, 0.0, 0.0 };
+
+// VTK aborts when its X display cannot be opened; end with one line instead.
+void ReportAbortWhileRendering(int)
+{
+  static const char message[] = "silhouette: rendering aborted: VTK could not use the X display "
+                                "(is DISPLAY right? try 'xvfb-run -a')\n";
+  const ssize_t ignored = write(STDERR_FILENO, message, sizeof(message) - 1);
+  (void)ignored;
+  _exit(ExitFailure);
+}
+
+// The input with the filter's shading normals, so --no-smoothing differs from
+// the smoothed mesh in its geometry only (input points keep their ids).
+vtkSmartPointer<vtkPolyData> InputWithShadingNormals(
+  vtkPolyData* input, vtkSilhouetteSmoothingFilter* filter)
+{
+  auto shown = vtkSmartPointer<vtkPolyData>::New();
+  shown->ShallowCopy(input);
+  vtkDataArray* shadingNormals = filter->GetOutput()->GetPointData()->GetNormals();
+  if (shadingNormals)
+  {
+    vtkNew<vtkFloatArray> normals;
+    normals->SetName("Normals");
+    normals->SetNumberOfComponents(3);
+    normals->SetNumberOfTuples(input->GetNumberOfPoints());
+    normals->InsertTuples(0, input->GetNumberOfPoints(), 0, shadingNormals);
+    shown->GetPointData()->SetNormals(normals);
+  }
+  return shown;
+}
+
+// Edges drawn over an unlit white fill, in one pass: the fill hides the
+// edges behind the mesh without the z-fighting of a separate hidden-line pass.
+void ShowEdges(vtkActor* actor, const double color[3])
+{
+  vtkProperty* property = actor->GetProperty();
+  property->SetRepresentationToSurface();
+  property->SetColor(White[0], White[1], White[2]);
+  property->LightingOff();
+  property->EdgeVisibilityOn();
+  property->SetEdgeColor(color[0], color[1], color[2]);
+  property->SetLineWidth(1.0);
+}
+
+// The triangles of the filter's output that the smoothing made (NewGeometry
+// > 0) or kept (== 0), over the output's points.
+vtkSmartPointer<vtkPolyData> SelectByNewGeometry(vtkPolyData* mesh, bool made)
+{
+  auto selected = vtkSmartPointer<vtkPolyData>::New();
+  selected->SetPoints(mesh->GetPoints());
+  vtkNew<vtkCellArray> triangles;
+  vtkDataArray* newGeometry = mesh->GetCellData()->GetArray("NewGeometry");
+  // Cell ids count vertices and lines before polygons.
+  vtkIdType cellId = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
+  auto cell = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  vtkIdType size = 0;
+  const vtkIdType* points = nullptr;
+  for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell(), ++cellId)
+  {
+    const bool isMade = newGeometry && newGeometry->GetTuple1(cellId) > 0.0;
+    if (isMade == made)
+    {
+      cell->GetCurrentCell(size, points);
+      triangles->InsertNextCell(size, points);
+    }
+  }
+  selected->SetPolys(triangles);
+  return selected;
+}
+
+vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithmOutput* source)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(source);
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
+vtkSmartPointer<vtkActor> MakeActor(vtkPolyData* mesh)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(mesh);
+  mapper->ScalarVisibilityOff();
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  return actor;
+}
+
+// VTK's face-based silhouette edges of `input` for the renderer's camera:
+// the stand-in for the unsmoothed silhouette.
+vtkSmartPointer<vtkPolyDataSilhouette> MakeVtkSilhouette(vtkPolyData* input, vtkCamera* camera)
+{
+  auto silhouette = vtkSmartPointer<vtkPolyDataSilhouette>::New();
+  VtkErrorLog::Instance().Watch(silhouette);
+  silhouette->SetInputData(input);
+  silhouette->SetCamera(camera);
+  if (camera->GetParallelProjection())
+  {
+    silhouette->SetDirectionToCameraVector();
+  }
+  else
+  {
+    silhouette->SetDirectionToCameraOrigin();
+  }
+  silhouette->SetEnableFeatureAngle(0);
+  silhouette->BorderEdgesOff();
+  return silhouette;
+}
+
+void AddActors(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter, vtkPolyData* input,
+  const RenderOptions& options)
+{
+  vtkRenderer* renderer = view.Renderer;
+  const bool smoothed = !options.NoSmoothing;
+  switch (options.Style)
+  {
+    case RenderStyle::Shaded:
+    {
+      vtkSmartPointer<vtkActor> actor = smoothed
+        ? MakeActor(filter->GetOutputPort(0))
+        : MakeActor(InputWithShadingNormals(input, filter));
+      vtkProperty* property = actor->GetProperty();
+      property->SetColor(LightGrey[0], LightGrey[1], LightGrey[2]);
+      property->SetInterpolationToPhong();
+      property->SetSpecular(0.2);
+      property->SetSpecularPower(20.0);
+      renderer->AddActor(actor);
+      break;
+    }
+    case RenderStyle::Wireframe:
+    {
+      vtkSmartPointer<vtkActor> actor =
+        smoothed ? MakeActor(filter->GetOutputPort(0)) : MakeActor(input);
+      ShowEdges(actor, Black);
+      renderer->AddActor(actor);
+      break;
+    }
+    case RenderStyle::NewGeometry:
+    {
+      if (!smoothed)
+      {
+        vtkSmartPointer<vtkActor> actor = MakeActor(input);
+        ShowEdges(actor, DarkGrey);
+        renderer->AddActor(actor);
+        break;
+      }
+      // Two actors, so each can have its edge colour; the red one is drawn
+      // last and wins the edges both share.
+      vtkPolyData* output = filter->GetOutput();
+      vtkSmartPointer<vtkActor> kept = MakeActor(SelectByNewGeometry(output, false));
+      ShowEdges(kept, DarkGrey);
+      vtkSmartPointer<vtkActor> made = MakeActor(SelectByNewGeometry(output, true));
+      ShowEdges(made, Red);
+      renderer->AddActor(kept);
+      renderer->AddActor(made);
+      break;
+    }
+    case RenderStyle::Lines:
+    {
+      vtkSmartPointer<vtkActor> actor = smoothed
+        ? MakeActor(filter->GetOutputPort(1))
+        : MakeActor(MakeVtkSilhouette(input, renderer->GetActiveCamera())->GetOutputPort());
+      vtkProperty* property = actor->GetProperty();
+      property->SetColor(Black[0], Black[1], Black[2]);
+      property->SetLineWidth(2.0);
+      property->LightingOff();
+      renderer->AddActor(actor);
+      break;
+    }
+  }
+}
+
+} // namespace
+
+OffscreenView MakeOffscreenView(const std::array<int, 2>& size)
+{
+  OffscreenView view;
+  view.Window = vtkSmartPointer<vtkRenderWindow>::New();
+  view.Window->SetOffScreenRendering(1);
+  view.Window->SetMultiSamples(0); // deterministic images
+  view.Window->SetSize(size[0], size[1]);
+  view.Renderer = vtkSmartPointer<vtkRenderer>::New();
+  view.Renderer->SetBackground(White[0], White[1], White[2]);
+  view.Window->AddRenderer(view.Renderer);
+  return view;
+}
+
+void CheckImageOutputPath(const std::string& path)
+{
+  if (LowercaseExtension(path) != ".png")
+  {
+    throw RuntimeError("cannot write '" + path + "': the image must be a .png file");
+  }
+  RequireOutputDirectory(path);
+}
+
+void RequireDisplay()
+{
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display)
+  {
+    throw RuntimeError("render needs an X display and DISPLAY is not set; run it under "
+                       "'xvfb-run -a'");
+  }
+}
+
+void RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
+  vtkPolyData* input, const RenderOptions& options)
+{
+  VtkErrorLog& errors = VtkErrorLog::Instance();
+  errors.Clear();
+  AddActors(view, filter, input, options);
+  // Clip on what is drawn: the smoothed silhouette bulges past the input's bounds.
+  view.Renderer->ResetCameraClippingRange();
+
+  std::signal(SIGABRT, ReportAbortWhileRendering);
+  view.Window->Render();
+  errors.ThrowIfErrors("rendering failed");
+
+  vtkNew<vtkWindowToImageFilter> capture;
+  capture->SetInput(view.Window);
+  capture->SetInputBufferTypeToRGB();
+  capture->ReadFrontBufferOff();
+  vtkNew<vtkPNGWriter> writer;
+  errors.Watch(writer);
+  writer->SetInputConnection(capture->GetOutputPort());
+  writer->SetFileName(options.Output.c_str());
+  writer->Write();
+  std::signal(SIGABRT, SIG_DFL);
+  errors.ThrowIfErrors("cannot write '" + options.Output + "'");
+}
+
+} // namespace cli

@@ -1,0 +1,45 @@
+#ifndef Rendering_h
+#define Rendering_h
+
+#include "CommandLine.h"
+
+#include <vtkSmartPointer.h>
+
+#include <array>
+
+class vtkPolyData;
+class vtkRenderWindow;
+class vtkRenderer;
+class vtkSilhouetteSmoothingFilter;
+
+namespace cli
+{
+
+/// An offscreen window of the viewport size with one renderer. `smooth`
+/// uses it only to frame the camera, so both commands frame alike; nothing
+/// touches the display until the first Render().
+struct OffscreenView
+{
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkRenderer> Renderer;
+};
+OffscreenView MakeOffscreenView(const std::array<int, 2>& size);
+
+/// Throws RuntimeError unless `path` ends in .png (any letter case).
+void CheckImageOutputPath(const std::string& path);
+
+/// Throws RuntimeError when there is no X display to render with (VTK
+/// would abort the program).
+void RequireDisplay();
+
+/**
+ * Draws `options.Style` of the filter's output (or of `input` with
+ * --no-smoothing) into `view` with the camera already set up, and writes
+ * the PNG image. Throws RuntimeError on any VTK error.
+ */
+void RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
+  vtkPolyData* input, const RenderOptions& options);
+
+} // namespace cli
+
+#endif

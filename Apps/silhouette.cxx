@@ -1,0 +1,59 @@
+// silhouette: the command-line front end of vtkSilhouetteSmoothingFilter.
+// Run `silhouette --help` for what it does.
+#include "CliErrors.h"
+#include "CommandLine.h"
+#include "Commands.h"
+#include "VtkErrorLog.h"
+
+#include <exception>
+#include <iostream>
+#include <new>
+
+namespace
+{
+
+int Fail(cli::ExitStatus status, const std::string& message)
+{
+  std::cerr << "silhouette: " << message << std::endl;
+  return status;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  cli::VtkErrorLog::Instance().InstallMessageCapture();
+  try
+  {
+    const cli::CommandLine commandLine = cli::ParseCommandLine(argc, argv);
+    switch (commandLine.What)
+    {
+      case cli::CommandLine::Action::ShowHelp:
+        std::cout << commandLine.HelpText;
+        break;
+      case cli::CommandLine::Action::Smooth:
+        cli::RunSmooth(commandLine.Smooth);
+        break;
+      case cli::CommandLine::Action::Render:
+        cli::RunRender(commandLine.Render);
+        break;
+    }
+    return cli::ExitSuccess;
+  }
+  catch (const cli::UsageError& error)
+  {
+    return Fail(cli::ExitUsage, error.what());
+  }
+  catch (const cli::RuntimeError& error)
+  {
+    return Fail(cli::ExitFailure, error.what());
+  }
+  catch (const std::bad_alloc&)
+  {
+    return Fail(cli::ExitFailure, "out of memory");
+  }
+  catch (const std::exception& error)
+  {
+    return Fail(cli::ExitFailure, error.what());
+  }
+}

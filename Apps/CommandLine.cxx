@@ -256,51 +256,46 @@ CommandLine ParseCommandLine(int argc, char* argv[])
   {
     result.What = CommandLine::Action::Smooth;
     SmoothOptions& smooth = result.Smooth;
-    ParseCommand(command, arguments, smooth,
-      [&smooth](const Option& option, ArgumentList& args)
+    ParseCommand(command, arguments, smooth, [&smooth](const Option& option, ArgumentList& args) {
+      if (!IsOutputOption(option))
       {
-        if (!IsOutputOption(option))
-        {
-          return false;
-        }
-        smooth.Output = args.TakeValue(option);
-        return true;
-      });
+        return false;
+      }
+      smooth.Output = args.TakeValue(option);
+      return true;
+    });
   }
   else
   {
     result.What = CommandLine::Action::Render;
     RenderOptions& render = result.Render;
-    ParseCommand(command, arguments, render,
-      [&render](const Option& option, ArgumentList& args)
+    ParseCommand(command, arguments, render, [&render](const Option& option, ArgumentList& args) {
+      if (IsOutputOption(option))
       {
-        if (IsOutputOption(option))
+        render.Output = args.TakeValue(option);
+      }
+      else if (option.Name == "--style")
+      {
+        const std::string name = args.TakeValue(option);
+        const std::optional<RenderStyle> style = ParseRenderStyle(name);
+        if (!style)
         {
-          render.Output = args.TakeValue(option);
+          throw UsageError(
+            "option '--style' needs shaded, wireframe, new-geometry or lines, got '" + name + "'");
         }
-        else if (option.Name == "--style")
-        {
-          const std::string name = args.TakeValue(option);
-          const std::optional<RenderStyle> style = ParseRenderStyle(name);
-          if (!style)
-          {
-            throw UsageError(
-              "option '--style' needs shaded, wireframe, new-geometry or lines, got '" + name +
-              "'");
-          }
-          render.Style = *style;
-        }
-        else if (option.Name == "--no-smoothing")
-        {
-          RejectInlineValue(option);
-          render.NoSmoothing = true;
-        }
-        else
-        {
-          return false;
-        }
-        return true;
-      });
+        render.Style = *style;
+      }
+      else if (option.Name == "--no-smoothing")
+      {
+        RejectInlineValue(option);
+        render.NoSmoothing = true;
+      }
+      else
+      {
+        return false;
+      }
+      return true;
+    });
     if (render.Output.empty())
     {
       throw UsageError("'render' needs '-o IMAGE.png'");

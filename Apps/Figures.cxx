@@ -106,7 +106,8 @@ double RoundToMicroseconds(double milliseconds)
 } // namespace
 
 Figures CollectFigures(const std::string& input, const std::optional<std::string>& output,
-  vtkPolyData* smoothed, double prepareMilliseconds, double filterMilliseconds, const CameraOptions& options, vtkCamera* camera)
+  vtkPolyData* smoothed, double prepareMilliseconds, double filterMilliseconds,
+  const CameraOptions& options, vtkCamera* camera)
 {
   Figures figures;
   figures.Input = input;

@@ -40,8 +40,8 @@ struct Figures
 /// Gathers the figures; the counts come from the field data of the filter's
 /// output. Throws RuntimeError if one of those arrays is missing.
 Figures CollectFigures(const std::string& input, const std::optional<std::string>& output,
-  vtkPolyData* smoothed, double prepareMilliseconds, double filterMilliseconds, const CameraOptions& options,
-  vtkCamera* camera);
+  vtkPolyData* smoothed, double prepareMilliseconds, double filterMilliseconds,
+  const CameraOptions& options, vtkCamera* camera);
 
 /// One "name: value" line per figure.
 void PrintFiguresAsText(std::ostream& out, const Figures& figures);

@@ -326,8 +326,7 @@ private:
       words.assign(std::istream_iterator<std::string>(line), std::istream_iterator<std::string>());
     }
     std::size_t next = 0;
-    const auto number = [&](ScalarType type)
-    {
+    const auto number = [&](ScalarType type) {
       if (next >= words.size())
       {
         this->Fail(where + " has too few values");
@@ -384,8 +383,7 @@ private:
     std::memcpy(raw, this->Bytes.data() + this->Position, size);
     this->Position += size;
     // Assemble the value in host order from the file's byte order.
-    const bool hostIsLittle = []
-    {
+    const bool hostIsLittle = [] {
       const std::uint16_t one = 1;
       unsigned char first;
       std::memcpy(&first, &one, 1);

@@ -72,10 +72,9 @@ std::string Trim(const std::string& text)
 {
   const auto first =
     std::find_if_not(text.begin(), text.end(), [](unsigned char c) { return std::isspace(c); });
-  const auto last = std::find_if_not(text.rbegin(), text.rend(),
-    [](unsigned char c) {
-      return std::isspace(c);
-    }).base();
+  const auto last = std::find_if_not(text.rbegin(), text.rend(), [](unsigned char c) {
+    return std::isspace(c);
+  }).base();
   return first < last ? std::string(first, last) : std::string();
 }
 
@@ -127,13 +126,13 @@ std::string VtkErrorLog::Summary() const
   // Most telling first: an error of the object we asked for, any specific
   // error, a warning (readers often warn just before they fail), and only
   // then the executive's bare "returned failure".
-  const auto firstWhere = [this](auto&& predicate) -> const Message*
-  {
+  const auto firstWhere = [this](auto&& predicate) -> const Message* {
     const auto found = std::find_if(this->Messages.begin(), this->Messages.end(), predicate);
     return found == this->Messages.end() ? nullptr : &*found;
   };
-  const Message* best = firstWhere([](const Message& m)
-    { return m.Severity == Kind::Error && m.FromWatchedObject && !IsGenericFailure(m.Text); });
+  const Message* best = firstWhere([](const Message& m) {
+    return m.Severity == Kind::Error && m.FromWatchedObject && !IsGenericFailure(m.Text);
+  });
   if (!best)
   {
     best = firstWhere(

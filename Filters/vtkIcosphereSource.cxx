@@ -22,7 +22,8 @@ vtkIcosphereSource::vtkIcosphereSource()
   this->SetNumberOfInputPorts(0);
 }
 
-namespace {
+namespace
+{
 
 using Direction = std::array<double, 3>;
 using Face = std::array<vtkIdType, 3>;
@@ -35,15 +36,16 @@ Direction Normalized(const Direction& d)
 
 } // namespace
 
-int vtkIcosphereSource::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+int vtkIcosphereSource::RequestData(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
 {
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
 
   // The icosahedron: vertices on the three golden rectangles, faces outward.
   const double phi = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Direction> directions = { { -1, phi, 0 }, { 1, phi, 0 }, { -1, -phi, 0 }, { 1, -phi, 0 },
-    { 0, -1, phi }, { 0, 1, phi }, { 0, -1, -phi }, { 0, 1, -phi }, { phi, 0, -1 }, { phi, 0, 1 },
-    { -phi, 0, -1 }, { -phi, 0, 1 } };
+  std::vector<Direction> directions = { { -1, phi, 0 }, { 1, phi, 0 }, { -1, -phi, 0 },
+    { 1, -phi, 0 }, { 0, -1, phi }, { 0, 1, phi }, { 0, -1, -phi }, { 0, 1, -phi }, { phi, 0, -1 },
+    { phi, 0, 1 }, { -phi, 0, -1 }, { -phi, 0, 1 } };
   for (Direction& d : directions)
   {
     d = Normalized(d);
@@ -115,6 +117,6 @@ void vtkIcosphereSource::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SubdivisionLevel: " << this->SubdivisionLevel << "\n";
   os << indent << "Radius: " << this->Radius << "\n";
-  os << indent << "Center: (" << this->Center[0] << ", " << this->Center[1] << ", " << this->Center[2]
-     << ")\n";
+  os << indent << "Center: (" << this->Center[0] << ", " << this->Center[1] << ", "
+     << this->Center[2] << ")\n";
 }

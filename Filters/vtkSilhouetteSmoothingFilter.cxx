@@ -35,7 +35,8 @@
 
 vtkStandardNewMacro(vtkSilhouetteSmoothingFilter);
 
-namespace {
+namespace
+{
 
 // Everything about the view that changes the result. The camera's own MTime
 // is not enough: renderers reset its clipping range every frame, which would
@@ -62,7 +63,6 @@ void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
   array->SetValue(0, value);
   fd->AddArray(array);
 }
-
 
 vtkSmartPointer<vtkPoints> BuildPoints(vtkPolyData* input, const silsmooth::SmoothingResult& result)
 {
@@ -190,7 +190,8 @@ void BuildCells(vtkPolyData* input, vtkPolyData* output, const std::vector<vtkId
     if (next < result.SilhouetteTriangles.size() &&
       result.SilhouetteTriangles[next] == static_cast<silsmooth::Id>(t))
     {
-      for (std::size_t r = result.ReplacementOffsets[next]; r < result.ReplacementOffsets[next + 1]; ++r)
+      for (std::size_t r = result.ReplacementOffsets[next]; r < result.ReplacementOffsets[next + 1];
+           ++r)
       {
         emit(result.Replacements[r], triangleCell[t], 1);
       }
@@ -234,7 +235,6 @@ void BuildCells(vtkPolyData* input, vtkPolyData* output, const std::vector<vtkId
   out->AddArray(newGeometry);
   out->AddArray(originalCellId);
 }
-
 
 // Output port 1: the silhouette polylines over their own compact point set.
 void BuildSilhouetteLines(
@@ -371,7 +371,8 @@ bool vtkSilhouetteSmoothingFilter::Internals::Rebuild(vtkPolyData* input)
       }
     }
   }
-  this->Mesh = std::make_unique<silsmooth::PreparedMesh>(std::move(points), std::move(triangles), normals);
+  this->Mesh =
+    std::make_unique<silsmooth::PreparedMesh>(std::move(points), std::move(triangles), normals);
   this->CachedInput = input;
   this->CachedInputTime = input->GetMTime();
   return true;
@@ -413,7 +414,8 @@ vtkPolyData* vtkSilhouetteSmoothingFilter::GetSilhouetteOutput()
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
 }
 
-namespace {
+namespace
+{
 
 vtkCamera* ActiveCamera(vtkCamera* camera, vtkRenderer* renderer)
 {
@@ -506,7 +508,8 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   }
 
   Internals& internal = *this->Internal;
-  if (!internal.Mesh || internal.CachedInput != input || internal.CachedInputTime != input->GetMTime())
+  if (!internal.Mesh || internal.CachedInput != input ||
+    internal.CachedInputTime != input->GetMTime())
   {
     if (!internal.Rebuild(input))
     {
@@ -570,10 +573,9 @@ int vtkSilhouetteSmoothingFilter::RequestData(
                                                         : silsmooth::SamplingRule::ArcBound;
   const silsmooth::ParallelFor smpFor =
     [](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
-      vtkSMPTools::For(0, static_cast<vtkIdType>(count),
-        [&body](vtkIdType begin, vtkIdType end) {
-          body(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
-        });
+      vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&body](vtkIdType begin, vtkIdType end) {
+        body(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
+      });
     };
   const silsmooth::SmoothingResult result =
     silsmooth::smoothSilhouettes(*internal.Mesh, view, sampling, smpFor);
@@ -617,10 +619,12 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Prop3D: " << this->Prop3D << "\n";
   os << indent << "ModelMatrix: " << this->ModelMatrix << "\n";
   os << indent << "Renderer: " << this->Renderer.GetPointer() << "\n";
-  os << indent << "ViewportSize: " << this->ViewportSize[0] << " x " << this->ViewportSize[1] << "\n";
+  os << indent << "ViewportSize: " << this->ViewportSize[0] << " x " << this->ViewportSize[1]
+     << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "MinimumSamples: " << this->MinimumSamples << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
-  os << indent << "SamplingRule: "
-     << (this->SamplingRule == ARC_BOUND ? "ArcBound" : "WangEquation8") << "\n";
+  os << indent
+     << "SamplingRule: " << (this->SamplingRule == ARC_BOUND ? "ArcBound" : "WangEquation8")
+     << "\n";
 }

@@ -15,7 +15,8 @@
 #include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkTorusSurfaceSource : public vtkPolyDataAlgorithm
+class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkTorusSurfaceSource
+  : public vtkPolyDataAlgorithm
 {
 public:
   static vtkTorusSurfaceSource* New();

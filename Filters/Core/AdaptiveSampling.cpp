@@ -5,7 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 double projectedSagittaPixels(const HermiteCurve& segment, const ViewGeometry& view)
 {
@@ -48,7 +49,8 @@ int silhouetteSampleCount(const HermiteCurve& segment, const glm::dvec3& n0, con
   {
     return maximum;
   }
-  return static_cast<int>(std::clamp(samples, static_cast<double>(minimum), static_cast<double>(maximum)));
+  return static_cast<int>(
+    std::clamp(samples, static_cast<double>(minimum), static_cast<double>(maximum)));
 }
 
 } // namespace silsmooth

@@ -15,7 +15,8 @@
 #include "HermiteCurve.h"
 #include "ViewGeometry.h"
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 enum class SamplingRule
 {

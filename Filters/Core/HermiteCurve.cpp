@@ -4,7 +4,8 @@
 
 #include <algorithm>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 glm::dvec3 HermiteCurve::evaluate(double u) const
 {
@@ -28,7 +29,8 @@ glm::dvec3 circleTangent(const glm::dvec3& normal, const glm::dvec3& chord)
   {
     return chord; // straight end: cos(theta) = 1, so L = |chord|
   }
-  const double cosTheta = std::clamp(glm::dot(chord, projected) / (chordLength * projectedLength), 0.0, 1.0);
+  const double cosTheta =
+    std::clamp(glm::dot(chord, projected) / (chordLength * projectedLength), 0.0, 1.0);
   const double length = 2.0 * chordLength / (1.0 + cosTheta);
   return projected * (length / projectedLength);
 }

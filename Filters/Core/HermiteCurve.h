@@ -5,7 +5,8 @@
 
 #include <glm/vec3.hpp>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 struct HermiteCurve
 {

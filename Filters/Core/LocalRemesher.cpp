@@ -6,9 +6,11 @@
 #include <cmath>
 #include <limits>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
-namespace {
+namespace
+{
 
 // Appends (a, b, c) unless it repeats a point id (see the header: a
 // silhouette point given as a vertex's id collapses these triangles).
@@ -26,7 +28,8 @@ std::size_t emit(Id a, Id b, Id c, std::vector<Triangle>& out)
 // Shape quality 4 sqrt(3) area / (sum of squared sides): 1 for an equilateral
 // triangle, 0 for a degenerate one. Triangles that repeat an id are dropped
 // by emit(), so they do not count (infinite quality).
-double shapeQuality(Id ia, Id ib, Id ic, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
+double shapeQuality(
+  Id ia, Id ib, Id ic, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
 {
   if (ia == ib || ib == ic || ic == ia)
   {
@@ -55,7 +58,8 @@ std::size_t chooseBaseSplit(const SilhouetteTriangleLayout& layout)
   std::vector<double> bFanBefore(n + 1, inf); // worst of (B, s[i+1], s[i]) for i < k
   for (std::size_t k = 1; k <= n; ++k)
   {
-    bFanBefore[k] = std::min(bFanBefore[k - 1], shapeQuality(b, s[k], s[k - 1], pb, x[k], x[k - 1]));
+    bFanBefore[k] =
+      std::min(bFanBefore[k - 1], shapeQuality(b, s[k], s[k - 1], pb, x[k], x[k - 1]));
   }
   std::vector<double> cFanFrom(n + 1, inf); // worst of (C, s[i+1], s[i]) for i >= k
   for (std::size_t k = n; k-- > 0;)
@@ -79,7 +83,8 @@ std::size_t chooseBaseSplit(const SilhouetteTriangleLayout& layout)
 
 } // namespace
 
-std::size_t remeshSilhouetteTriangle(const SilhouetteTriangleLayout& layout, std::vector<Triangle>& out)
+std::size_t remeshSilhouetteTriangle(
+  const SilhouetteTriangleLayout& layout, std::vector<Triangle>& out)
 {
   const std::vector<Id>& s = layout.Chain;
   const Id a = layout.Lone;

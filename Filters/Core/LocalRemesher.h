@@ -30,7 +30,8 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 struct SilhouetteTriangleLayout
 {
@@ -50,6 +51,7 @@ struct SilhouetteTriangleLayout
 
 /// Appends the triangles that replace the silhouette triangle to `out` and
 /// returns how many were appended.
-std::size_t remeshSilhouetteTriangle(const SilhouetteTriangleLayout& layout, std::vector<Triangle>& out);
+std::size_t remeshSilhouetteTriangle(
+  const SilhouetteTriangleLayout& layout, std::vector<Triangle>& out);
 
 } // namespace silsmooth

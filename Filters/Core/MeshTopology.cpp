@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 EdgeTable::EdgeTable(const std::vector<Triangle>& triangles)
 {

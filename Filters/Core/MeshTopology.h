@@ -7,7 +7,8 @@
 #include <cstdint>
 #include <vector>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 using Id = std::int64_t;
 using Triangle = std::array<Id, 3>;

@@ -5,7 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 glm::dvec3 safeNormalize(const glm::dvec3& normal)
 {
@@ -17,7 +18,8 @@ glm::dvec3 safeNormalize(const glm::dvec3& normal)
   return normal / length;
 }
 
-namespace {
+namespace
+{
 
 // Interior angle at `corner` between the directions to `a` and `b`; zero when
 // either direction is degenerate. atan2 of |cross| and dot is accurate for

@@ -8,7 +8,8 @@
 #include <glm/vec3.hpp>
 #include <vector>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 /// Unit angle-weighted vertex normals. A vertex with no incident triangle of
 /// non-zero area gets the zero vector: callers treat it as having no defined

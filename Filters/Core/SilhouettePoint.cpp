@@ -5,7 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 VisibilityQuadratic visibilityAlongEdge(
   const glm::dvec3& n0, const glm::dvec3& d0, const glm::dvec3& n1, const glm::dvec3& d1)
@@ -20,7 +21,8 @@ VisibilityQuadratic visibilityAlongEdge(
   return h;
 }
 
-namespace {
+namespace
+{
 
 bool isVisible(double g)
 {

@@ -9,7 +9,8 @@
 
 #include <glm/vec3.hpp>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 /// Coefficients of h(u) = a u^2 + b u + c.
 struct VisibilityQuadratic

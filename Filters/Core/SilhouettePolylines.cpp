@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <unordered_map>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 std::vector<std::vector<Id>> chainSegments(const std::vector<std::vector<Id>>& segments)
 {

@@ -8,7 +8,8 @@
 
 #include <vector>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 /// Each segment is a list of point ids from one end to the other (at least
 /// two). Chains stop where an end is shared by other than two segments.

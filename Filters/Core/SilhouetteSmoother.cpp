@@ -11,7 +11,8 @@
 #include <algorithm>
 #include <cmath>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 void serialFor(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body)
 {
@@ -21,8 +22,8 @@ void serialFor(std::size_t count, const std::function<void(std::size_t, std::siz
   }
 }
 
-PreparedMesh::PreparedMesh(
-  std::vector<glm::dvec3> points, std::vector<Triangle> triangles, const std::vector<glm::dvec3>& normals)
+PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
+  const std::vector<glm::dvec3>& normals)
   : Points(std::move(points))
   , Triangles(std::move(triangles))
   , Edges(this->Triangles)
@@ -73,7 +74,8 @@ std::vector<double> vertexVisibility(
   return g;
 }
 
-namespace {
+namespace
+{
 
 bool isVisible(double g)
 {
@@ -91,8 +93,8 @@ struct EdgeSilhouettePoint
 class SilhouettePass
 {
 public:
-  SilhouettePass(const PreparedMesh& mesh, const ViewGeometry& view, const SamplingParameters& sampling,
-    const ParallelFor& parallelFor)
+  SilhouettePass(const PreparedMesh& mesh, const ViewGeometry& view,
+    const SamplingParameters& sampling, const ParallelFor& parallelFor)
     : Mesh(mesh)
     , View(view)
     , Sampling(sampling)
@@ -174,10 +176,11 @@ private:
       const Edge& edge = edges.edge(e);
       const std::size_t lo = static_cast<std::size_t>(edge.low);
       const std::size_t hi = static_cast<std::size_t>(edge.high);
-      const VisibilityQuadratic h = visibilityAlongEdge(normals[lo],
-        this->View.towardViewerFrom(points[lo]), normals[hi], this->View.towardViewerFrom(points[hi]));
-      const double u = std::clamp(
-        silhouetteParameter(h, this->G[lo], this->G[hi]), EdgeParameterMargin, 1.0 - EdgeParameterMargin);
+      const VisibilityQuadratic h =
+        visibilityAlongEdge(normals[lo], this->View.towardViewerFrom(points[lo]), normals[hi],
+          this->View.towardViewerFrom(points[hi]));
+      const double u = std::clamp(silhouetteParameter(h, this->G[lo], this->G[hi]),
+        EdgeParameterMargin, 1.0 - EdgeParameterMargin);
       const HermiteCurve bridge =
         makeCircleApproximatingCurve(points[lo], normals[lo], points[hi], normals[hi]);
       NewPoint p;
@@ -209,15 +212,17 @@ private:
   glm::dvec3 positionOf(Id point) const
   {
     const Id pointCount = static_cast<Id>(this->Mesh.points().size());
-    return point < pointCount ? this->Mesh.points()[static_cast<std::size_t>(point)]
-                              : this->Result.NewPoints[static_cast<std::size_t>(point - pointCount)].Position;
+    return point < pointCount
+      ? this->Mesh.points()[static_cast<std::size_t>(point)]
+      : this->Result.NewPoints[static_cast<std::size_t>(point - pointCount)].Position;
   }
 
   glm::dvec3 normalOf(Id point) const
   {
     const Id pointCount = static_cast<Id>(this->Mesh.points().size());
-    return point < pointCount ? this->Mesh.normals()[static_cast<std::size_t>(point)]
-                              : this->Result.NewPoints[static_cast<std::size_t>(point - pointCount)].Normal;
+    return point < pointCount
+      ? this->Mesh.normals()[static_cast<std::size_t>(point)]
+      : this->Result.NewPoints[static_cast<std::size_t>(point - pointCount)].Normal;
   }
 
   void remeshTriangle(Id t, std::vector<std::vector<Id>>& segments)
@@ -226,7 +231,8 @@ private:
     const EdgeTable& edges = this->Mesh.edges();
     const bool v0 = isVisible(this->G[static_cast<std::size_t>(tri[0])]);
     const bool v1 = isVisible(this->G[static_cast<std::size_t>(tri[1])]);
-    const int lone = (v0 == v1) ? 2 : (isVisible(this->G[static_cast<std::size_t>(tri[2])]) == v0 ? 1 : 0);
+    const int lone =
+      (v0 == v1) ? 2 : (isVisible(this->G[static_cast<std::size_t>(tri[2])]) == v0 ? 1 : 0);
     const Id a = tri[lone];
     const Id b = tri[(lone + 1) % 3];
     const Id c = tri[(lone + 2) % 3];
@@ -273,8 +279,8 @@ private:
         }
         // Linear along the chord P -> Q in the triangle's parameter domain.
         sample.Sources = { a, b, c };
-        sample.Weights = { (1.0 - s) * (1.0 - pTowardB) + s * (1.0 - qTowardC), (1.0 - s) * pTowardB,
-          s * qTowardC };
+        sample.Weights = { (1.0 - s) * (1.0 - pTowardB) + s * (1.0 - qTowardC),
+          (1.0 - s) * pTowardB, s * qTowardC };
         layout.Chain.push_back(pointCount + static_cast<Id>(this->Result.NewPoints.size()));
         layout.ChainPositions.push_back((1.0 - s) * flatP + s * flatQ);
         this->Result.NewPoints.push_back(sample);
@@ -309,7 +315,8 @@ SmoothingResult smoothSilhouettes(const PreparedMesh& mesh, const ViewGeometry& 
 }
 
 void assembleTriangles(const PreparedMesh& mesh, const SmoothingResult& result,
-  std::vector<Triangle>& triangles, std::vector<Id>& sourceTriangle, std::vector<unsigned char>& isNew)
+  std::vector<Triangle>& triangles, std::vector<Id>& sourceTriangle,
+  std::vector<unsigned char>& isNew)
 {
   triangles.clear();
   sourceTriangle.clear();
@@ -321,7 +328,8 @@ void assembleTriangles(const PreparedMesh& mesh, const SmoothingResult& result,
     if (next < result.SilhouetteTriangles.size() &&
       result.SilhouetteTriangles[next] == static_cast<Id>(t))
     {
-      for (std::size_t r = result.ReplacementOffsets[next]; r < result.ReplacementOffsets[next + 1]; ++r)
+      for (std::size_t r = result.ReplacementOffsets[next]; r < result.ReplacementOffsets[next + 1];
+           ++r)
       {
         triangles.push_back(result.Replacements[r]);
         sourceTriangle.push_back(static_cast<Id>(t));

@@ -18,7 +18,8 @@
 #include <functional>
 #include <vector>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 /// The view-independent state: points, triangles, unit shading normals and
 /// the edge table. Build it when the input changes, reuse it every frame.
@@ -95,6 +96,7 @@ std::vector<double> vertexVisibility(
 /// each silhouette triangle replaced in place, and per triangle the input
 /// triangle it came from and whether it is new geometry.
 void assembleTriangles(const PreparedMesh& mesh, const SmoothingResult& result,
-  std::vector<Triangle>& triangles, std::vector<Id>& sourceTriangle, std::vector<unsigned char>& isNew);
+  std::vector<Triangle>& triangles, std::vector<Id>& sourceTriangle,
+  std::vector<unsigned char>& isNew);
 
 } // namespace silsmooth

@@ -3,7 +3,8 @@
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 double ViewGeometry::visibility(const glm::dvec3& point, const glm::dvec3& normal) const
 {

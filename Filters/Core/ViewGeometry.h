@@ -7,7 +7,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-namespace silsmooth {
+namespace silsmooth
+{
 
 struct ViewGeometry
 {

@@ -23,13 +23,15 @@
 #include <functional>
 #include <vector>
 
-namespace {
+namespace
+{
 
 double Milliseconds(const std::function<void()>& work)
 {
   const auto start = std::chrono::steady_clock::now();
   work();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+    .count();
 }
 
 double Median(std::vector<double> values)
@@ -80,14 +82,15 @@ int main(int argc, char* argv[])
   }
   if (markdown)
   {
-    std::printf("| triangles | cache build ms | filter ms/frame | DeepCopy ms | ratio to DeepCopy | "
-                "vtkPolyDataSilhouette ms | ratio to it | silhouette triangles | added triangles |\n");
+    std::printf(
+      "| triangles | cache build ms | filter ms/frame | DeepCopy ms | ratio to DeepCopy | "
+      "vtkPolyDataSilhouette ms | ratio to it | silhouette triangles | added triangles |\n");
     std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   }
   else
   {
-    std::printf("%10s %10s %10s %10s %8s %10s %8s %10s %10s\n", "triangles", "cache ms", "filter ms",
-      "copy ms", "x copy", "vtkSil ms", "x vtkSil", "sil tris", "added");
+    std::printf("%10s %10s %10s %10s %8s %10s %8s %10s %10s\n", "triangles", "cache ms",
+      "filter ms", "copy ms", "x copy", "vtkSil ms", "x vtkSil", "sil tris", "added");
   }
   for (int level = 3; level <= maxLevel; ++level)
   {
@@ -122,7 +125,8 @@ int main(int argc, char* argv[])
       copyMs.push_back(Milliseconds([&] { copy->DeepCopy(mesh); }));
       silhouetteTriangles +=
         smoother->GetOutput()->GetFieldData()->GetArray("SilhouetteTriangleCount")->GetTuple1(0);
-      addedTriangles += static_cast<double>(smoother->GetOutput()->GetNumberOfPolys() - mesh->GetNumberOfPolys());
+      addedTriangles +=
+        static_cast<double>(smoother->GetOutput()->GetNumberOfPolys() - mesh->GetNumberOfPolys());
     }
     const double filter = Median(filterMs);
     const double copy = Median(copyMs);
@@ -131,14 +135,14 @@ int main(int argc, char* argv[])
     const double cache = std::max(0.0, cacheAndFrame - filter);
     if (markdown)
     {
-      std::printf("| %lld | %.1f | %.2f | %.2f | %.1f | %.2f | %.2f | %.0f | %.0f |\n", triangles, cache,
-        filter, copy, filter / copy, other, filter / other, silhouetteTriangles / frames,
+      std::printf("| %lld | %.1f | %.2f | %.2f | %.1f | %.2f | %.2f | %.0f | %.0f |\n", triangles,
+        cache, filter, copy, filter / copy, other, filter / other, silhouetteTriangles / frames,
         addedTriangles / frames);
     }
     else
     {
-      std::printf("%10lld %10.1f %10.2f %10.2f %8.1f %10.2f %8.2f %10.0f %10.0f\n", triangles, cache,
-        filter, copy, filter / copy, other, filter / other, silhouetteTriangles / frames,
+      std::printf("%10lld %10.1f %10.2f %10.2f %8.1f %10.2f %8.2f %10.0f %10.0f\n", triangles,
+        cache, filter, copy, filter / copy, other, filter / other, silhouetteTriangles / frames,
         addedTriangles / frames);
     }
     std::fflush(stdout);

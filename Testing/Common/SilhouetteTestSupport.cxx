@@ -9,16 +9,16 @@
 #include "vtkMath.h"
 #include "vtkPLYReader.h"
 #include "vtkPointData.h"
-#include "vtkPolyDataAlgorithm.h"
-#include "vtkXMLPolyDataReader.h"
-#include <vtksys/SystemTools.hxx>
 #include "vtkPolyData.h"
+#include "vtkPolyDataAlgorithm.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
+#include "vtkXMLPolyDataReader.h"
+#include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
 #include <cmath>
@@ -27,7 +27,8 @@
 #include <sstream>
 #include <utility>
 
-namespace silhouette_test {
+namespace silhouette_test
+{
 
 std::string TopologyReport::summary() const
 {
@@ -188,8 +189,8 @@ std::string DataFile(int argc, char* argv[], const std::string& name)
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
 {
   vtkSmartPointer<vtkAlgorithm> reader;
-  const std::string extension = vtksys::SystemTools::LowerCase(
-    vtksys::SystemTools::GetFilenameLastExtension(path));
+  const std::string extension =
+    vtksys::SystemTools::LowerCase(vtksys::SystemTools::GetFilenameLastExtension(path));
   if (extension == ".ply")
   {
     auto ply = vtkSmartPointer<vtkPLYReader>::New();
@@ -258,7 +259,8 @@ std::vector<unsigned char> MaskRenderer::Render(vtkPolyData* mesh, vtkCamera* ca
   return mask;
 }
 
-namespace {
+namespace
+{
 
 std::vector<std::array<double, 2>> BoundaryPoints(
   const std::vector<unsigned char>& mask, int width, int height)

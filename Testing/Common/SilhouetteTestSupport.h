@@ -14,17 +14,18 @@ class vtkPolyData;
 class vtkRenderWindow;
 class vtkRenderer;
 
-namespace silhouette_test {
+namespace silhouette_test
+{
 
 struct TopologyReport
 {
   long Triangles = 0;
-  long OtherCells = 0;          ///< polygons that are not triangles, strips
-  long BoundaryEdges = 0;       ///< undirected edges in one triangle
-  long NonManifoldEdges = 0;    ///< undirected edges in three or more triangles
+  long OtherCells = 0;           ///< polygons that are not triangles, strips
+  long BoundaryEdges = 0;        ///< undirected edges in one triangle
+  long NonManifoldEdges = 0;     ///< undirected edges in three or more triangles
   long OrientationConflicts = 0; ///< edges used twice in the same direction
-  long DegenerateTriangles = 0; ///< repeated point id or zero area
-  long FlippedTriangles = 0;    ///< geometric normal against the summed point normals
+  long DegenerateTriangles = 0;  ///< repeated point id or zero area
+  long FlippedTriangles = 0;     ///< geometric normal against the summed point normals
   long NonFinitePoints = 0;
 
   bool closedManifold() const

@@ -10,7 +10,8 @@
 
 using namespace silsmooth;
 
-namespace {
+namespace
+{
 
 ViewGeometry unitPixelView()
 {
@@ -66,7 +67,8 @@ TEST(AdaptiveSampling, SagittaOfAnArc)
 {
   const Arc arc = circleArc(400.0, 1.0);
   // Sagitta of a circular arc: R (1 - cos(angle / 2)).
-  EXPECT_NEAR(projectedSagittaPixels(arc.Curve, unitPixelView()), 400.0 * (1.0 - std::cos(0.5)), 0.05);
+  EXPECT_NEAR(
+    projectedSagittaPixels(arc.Curve, unitPixelView()), 400.0 * (1.0 - std::cos(0.5)), 0.05);
 }
 
 TEST(AdaptiveSampling, ArcBoundKeepsTheTolerance)

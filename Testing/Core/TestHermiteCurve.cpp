@@ -10,7 +10,8 @@
 using silsmooth::HermiteCurve;
 using silsmooth::makeCircleApproximatingCurve;
 
-namespace {
+namespace
+{
 
 // Largest |radius - 1| along the curve for an arc of the unit circle in the
 // XY plane spanning `angle` radians, end normals radial.

@@ -11,7 +11,8 @@
 
 using namespace silsmooth;
 
-namespace {
+namespace
+{
 
 // A planar triangle A(0) B(1) C(2) in z = 0, counter-clockwise, P (3) on AB,
 // Q (4) on AC, interior samples 5.. on the chord between them.

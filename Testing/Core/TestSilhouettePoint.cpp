@@ -8,10 +8,11 @@
 #include <random>
 
 using silsmooth::silhouetteParameter;
-using silsmooth::VisibilityQuadratic;
 using silsmooth::visibilityAlongEdge;
+using silsmooth::VisibilityQuadratic;
 
-namespace {
+namespace
+{
 
 VisibilityQuadratic quadratic(double a, double b, double c)
 {
@@ -44,11 +45,11 @@ TEST(SilhouettePoint, CoefficientsMatchTheEnds)
 
 TEST(SilhouettePoint, ExactRoots)
 {
-  EXPECT_DOUBLE_EQ(solve(quadratic(0.0, -2.0, 1.0)), 0.5);         // linear (parallel projection)
-  EXPECT_NEAR(solve(quadratic(1.0, 0.0, -0.25)), 0.5, 1e-15);       // u^2 - 1/4
-  EXPECT_NEAR(solve(quadratic(-1.0, 0.0, 0.09)), 0.3, 1e-15);       // roots +-0.3
-  EXPECT_NEAR(solve(quadratic(1.0, -2.2, 0.4)), 0.2, 1e-14);        // roots 0.2 and 2
-  EXPECT_NEAR(solve(quadratic(1.0, 1.8, -0.4)), 0.2, 1e-14);        // roots 0.2 and -2
+  EXPECT_DOUBLE_EQ(solve(quadratic(0.0, -2.0, 1.0)), 0.5);    // linear (parallel projection)
+  EXPECT_NEAR(solve(quadratic(1.0, 0.0, -0.25)), 0.5, 1e-15); // u^2 - 1/4
+  EXPECT_NEAR(solve(quadratic(-1.0, 0.0, 0.09)), 0.3, 1e-15); // roots +-0.3
+  EXPECT_NEAR(solve(quadratic(1.0, -2.2, 0.4)), 0.2, 1e-14);  // roots 0.2 and 2
+  EXPECT_NEAR(solve(quadratic(1.0, 1.8, -0.4)), 0.2, 1e-14);  // roots 0.2 and -2
 }
 
 TEST(SilhouettePoint, EndsOnTheSurfaceOfVisibility)

@@ -10,7 +10,8 @@
 
 using namespace silsmooth;
 
-namespace {
+namespace
+{
 
 // The regular octahedron, outward, with exact sphere normals.
 PreparedMesh octahedron()
@@ -49,10 +50,10 @@ ViewGeometry perspectiveFrom(const glm::dvec3& eye)
 
 struct Check
 {
-  int Unpaired = 0;      // directed edges without their reverse
-  int Repeated = 0;      // directed edges used twice (orientation clash)
-  int Degenerate = 0;    // triangles repeating an id
-  int Flipped = 0;       // geometric normal against the vertex normals
+  int Unpaired = 0;   // directed edges without their reverse
+  int Repeated = 0;   // directed edges used twice (orientation clash)
+  int Degenerate = 0; // triangles repeating an id
+  int Flipped = 0;    // geometric normal against the vertex normals
 };
 
 Check check(const PreparedMesh& mesh, const SmoothingResult& result)
@@ -118,7 +119,8 @@ TEST(SilhouetteSmoother, OctahedronStaysClosedFromManyViews)
 
 TEST(SilhouetteSmoother, SilhouettePointsLieWhereTheNormalTurnsAway)
 {
-  // Seen in parallel projection, the interpolated normal at the silhouette point is perpendicular to the view.
+  // Seen in parallel projection, the interpolated normal at the silhouette point is perpendicular
+  // to the view.
   const PreparedMesh mesh = octahedron();
   ViewGeometry view = perspectiveFrom({ 0, 0, 1 });
   view.Parallel = true;
@@ -142,7 +144,8 @@ TEST(SilhouetteSmoother, ParallelSplitDoesNotChangeTheResult)
   const PreparedMesh mesh = octahedron();
   const ViewGeometry view = perspectiveFrom({ 2.5, 1.0, 0.3 });
   const SmoothingResult serial = smoothSilhouettes(mesh, view, SamplingParameters{});
-  const ParallelFor oneByOne = [](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
+  const ParallelFor oneByOne = [](std::size_t count,
+                                 const std::function<void(std::size_t, std::size_t)>& body) {
     for (std::size_t i = count; i-- > 0;)
     {
       body(i, i + 1);
@@ -161,7 +164,8 @@ TEST(SilhouetteSmoother, NoSilhouetteLeavesTheMeshAlone)
 {
   // One triangle facing the viewer: nothing to do.
   const PreparedMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 } });
-  const SmoothingResult result = smoothSilhouettes(mesh, perspectiveFrom({ 0.2, 0.2, 5 }), SamplingParameters{});
+  const SmoothingResult result =
+    smoothSilhouettes(mesh, perspectiveFrom({ 0.2, 0.2, 5 }), SamplingParameters{});
   EXPECT_TRUE(result.SilhouetteTriangles.empty());
   EXPECT_TRUE(result.NewPoints.empty());
   EXPECT_TRUE(result.Polylines.empty());
@@ -174,10 +178,12 @@ TEST(SilhouetteSmoother, ZeroNormalsAndEyeOnTheSurface)
     { { 0, 0, 1 }, { 0, 0, 1 }, { 0, 0, 1 }, { 0, 0, 0 } });
   EXPECT_EQ(withZero.normals()[3], glm::dvec3(0.0)); // isolated: nothing to compute it from
   const PreparedMesh mesh = octahedron();
-  const SmoothingResult onSurface = smoothSilhouettes(mesh, perspectiveFrom({ 1, 0, 0 }), SamplingParameters{});
+  const SmoothingResult onSurface =
+    smoothSilhouettes(mesh, perspectiveFrom({ 1, 0, 0 }), SamplingParameters{});
   for (const NewPoint& p : onSurface.NewPoints)
   {
-    EXPECT_TRUE(std::isfinite(p.Position.x) && std::isfinite(p.Position.y) && std::isfinite(p.Position.z));
+    EXPECT_TRUE(
+      std::isfinite(p.Position.x) && std::isfinite(p.Position.y) && std::isfinite(p.Position.z));
   }
   EXPECT_EQ(check(mesh, onSurface).Unpaired, 0);
 }

@@ -23,14 +23,15 @@
 #include <limits>
 #include <string>
 
-namespace {
+namespace
+{
 
 #define CHECK(condition, message)                                                                  \
   do                                                                                               \
   {                                                                                                \
     if (!(condition))                                                                              \
     {                                                                                              \
-      std::printf("FAIL: %s (%s, line %d)\n", message, #condition, __LINE__);                     \
+      std::printf("FAIL: %s (%s, line %d)\n", message, #condition, __LINE__);                      \
       return false;                                                                                \
     }                                                                                              \
   } while (false)
@@ -110,7 +111,8 @@ bool NoCamera()
 
 bool NonFiniteCoordinates()
 {
-  for (double bad : { std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() })
+  for (double bad :
+    { std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity() })
   {
     auto mesh = Sphere();
     mesh->GetPoints()->SetPoint(5, bad, 0.0, 0.0);
@@ -246,7 +248,8 @@ bool ZeroNormals()
     CHECK(silhouette_test::AnalyzeTopology(out).closedManifold(), "still a closed manifold");
     double n[3];
     out->GetPointData()->GetNormals()->GetTuple(0, n);
-    CHECK(std::abs(vtkMath::Norm(n) - 1.0) < 1e-6, "a zero input normal is replaced by the computed one");
+    CHECK(std::abs(vtkMath::Norm(n) - 1.0) < 1e-6,
+      "a zero input normal is replaced by the computed one");
   }
   std::printf("zero normals: replaced by angle-weighted ones; isolated point tolerated\n");
   return true;
@@ -264,7 +267,8 @@ bool EyeOnTheSurface()
     Run run(mesh, camera);
     CHECK(!run.Failed(), "an eye on the surface is handled");
     CHECK(NoNaN(run.Filter->GetOutput()), "no NaN");
-    CHECK(silhouette_test::AnalyzeTopology(run.Filter->GetOutput()).closedManifold(), "closed manifold");
+    CHECK(silhouette_test::AnalyzeTopology(run.Filter->GetOutput()).closedManifold(),
+      "closed manifold");
   }
   std::printf("eye on the surface: handled, closed manifold, no NaN\n");
   return true;
@@ -299,7 +303,8 @@ bool ExtremeScales()
     Run run(mesh, Camera(0.4 * scale, 0.3 * scale, 4 * scale));
     CHECK(!run.Failed(), "extreme scales are handled");
     CHECK(NoNaN(run.Filter->GetOutput()), "no NaN at extreme scales");
-    CHECK(silhouette_test::AnalyzeTopology(run.Filter->GetOutput()).closedManifold(), "closed manifold");
+    CHECK(silhouette_test::AnalyzeTopology(run.Filter->GetOutput()).closedManifold(),
+      "closed manifold");
   }
   std::printf("coordinates at 1e-30 and 1e30: handled, no NaN\n");
   return true;

@@ -37,14 +37,15 @@
 #include <cstdio>
 #include <set>
 
-namespace {
+namespace
+{
 
 #define CHECK(condition, message)                                                                  \
   do                                                                                               \
   {                                                                                                \
     if (!(condition))                                                                              \
     {                                                                                              \
-      std::printf("FAIL: %s (%s, line %d)\n", message, #condition, __LINE__);                     \
+      std::printf("FAIL: %s (%s, line %d)\n", message, #condition, __LINE__);                      \
       return false;                                                                                \
     }                                                                                              \
   } while (false)
@@ -136,7 +137,8 @@ bool ReExecutesOnlyWhenTheViewChanges()
   window->SetSize(400, 300);
   window->Render();
   CHECK(rendererRuns.Count == 3, "resizing the window re-runs the filter");
-  CHECK(FieldCount(viaRenderer->GetOutput(), "SilhouetteTriangleCount") > 0, "renderer view has a silhouette");
+  CHECK(FieldCount(viaRenderer->GetOutput(), "SilhouetteTriangleCount") > 0,
+    "renderer view has a silhouette");
   std::printf("re-execution: only on view, prop, size and input changes\n");
   return true;
 }
@@ -237,7 +239,8 @@ bool ArraysAndCounts()
 
   CHECK(pd->GetTCoords() && pd->GetTCoords()->GetNumberOfTuples() == out->GetNumberOfPoints(),
     "texture coordinates are carried and still active");
-  CHECK(pd->GetNormals() && std::string(pd->GetNormals()->GetName()) == "Normals", "active Normals");
+  CHECK(
+    pd->GetNormals() && std::string(pd->GetNormals()->GetName()) == "Normals", "active Normals");
   vtkDataArray* outConstant = pd->GetArray("Constant");
   CHECK(outConstant, "other point arrays are carried");
   for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
@@ -256,27 +259,31 @@ bool ArraysAndCounts()
     double a[3], b[3];
     input->GetPoint(i, a);
     out->GetPoint(i, b);
-    CHECK(a[0] == b[0] && a[1] == b[1] && a[2] == b[2], "input points keep their ids and positions");
+    CHECK(
+      a[0] == b[0] && a[1] == b[1] && a[2] == b[2], "input points keep their ids and positions");
   }
 
   vtkDataArray* newGeometry = out->GetCellData()->GetArray("NewGeometry");
   vtkDataArray* original = out->GetCellData()->GetArray("OriginalCellId");
   vtkDataArray* tag = out->GetCellData()->GetArray("CellTag");
-  CHECK(newGeometry && vtkUnsignedCharArray::SafeDownCast(newGeometry), "NewGeometry is unsigned char");
+  CHECK(
+    newGeometry && vtkUnsignedCharArray::SafeDownCast(newGeometry), "NewGeometry is unsigned char");
   CHECK(original && vtkIdTypeArray::SafeDownCast(original), "OriginalCellId is vtkIdType");
   CHECK(tag, "cell arrays are carried");
   std::set<vtkIdType> remeshed;
   long newCells = 0;
   for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
   {
-    CHECK(tag->GetTuple1(c) == 1000 + original->GetTuple1(c), "cell data come from the original cell");
+    CHECK(
+      tag->GetTuple1(c) == 1000 + original->GetTuple1(c), "cell data come from the original cell");
     if (newGeometry->GetTuple1(c) == 1)
     {
       ++newCells;
       remeshed.insert(static_cast<vtkIdType>(original->GetTuple1(c)));
     }
   }
-  CHECK(FieldCount(out, "NewTriangleCount") == newCells, "NewTriangleCount counts NewGeometry cells");
+  CHECK(
+    FieldCount(out, "NewTriangleCount") == newCells, "NewTriangleCount counts NewGeometry cells");
   CHECK(FieldCount(out, "SilhouetteTriangleCount") == static_cast<long>(remeshed.size()),
     "SilhouetteTriangleCount counts the re-meshed input cells");
   CHECK(FieldCount(out, "OutputTriangleCount") == out->GetNumberOfPolys(), "OutputTriangleCount");
@@ -325,7 +332,8 @@ bool CellTypes()
   CHECK(FieldCount(a, "SilhouetteTriangleCount") == FieldCount(b, "SilhouetteTriangleCount"),
     "strips give the same silhouette");
   vtkDataArray* original = a->GetCellData()->GetArray("OriginalCellId");
-  CHECK(original->GetTuple1(0) == 0 && original->GetTuple1(1) == 1, "verts and lines keep their ids");
+  CHECK(
+    original->GetTuple1(0) == 0 && original->GetTuple1(1) == 1, "verts and lines keep their ids");
   CHECK(original->GetTuple1(2) >= 2, "triangles point to the strips they came from");
   const auto report = silhouette_test::AnalyzeTopology(a);
   CHECK(report.closedManifold(), "triangulated strips stay a closed manifold");
@@ -401,8 +409,10 @@ bool ParallelProjection()
     exact += off < 1e-6 ? 1 : 0; // normals are stored as floats
   }
   CHECK(worst <= 0.01 * edgeTurn, "silhouette normals are perpendicular to the view");
-  CHECK(exact * 2 > lines->GetNumberOfPoints(), "most silhouette points are exactly on the contour");
-  std::printf("parallel: %lld silhouette points, %lld exact, worst normal %.1e off the view plane\n",
+  CHECK(
+    exact * 2 > lines->GetNumberOfPoints(), "most silhouette points are exactly on the contour");
+  std::printf(
+    "parallel: %lld silhouette points, %lld exact, worst normal %.1e off the view plane\n",
     static_cast<long long>(lines->GetNumberOfPoints()), static_cast<long long>(exact), worst);
   return true;
 }

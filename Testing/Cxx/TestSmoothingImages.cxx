@@ -21,7 +21,8 @@
 
 #include <cstdio>
 
-namespace {
+namespace
+{
 
 void AddPanel(vtkRenderWindow* window, vtkPolyData* mesh, int row, int column, double azimuth,
   double elevation, bool newGeometry)

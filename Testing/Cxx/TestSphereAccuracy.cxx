@@ -37,8 +37,8 @@ int TestSphereAccuracy(int, char*[])
   silhouette_test::MaskRenderer renderer(size, size);
   std::printf("sphere of %lld triangles, %.1f px across, tolerance %.2f px\n",
     static_cast<long long>(sphere->GetOutput()->GetNumberOfCells()), 2.0 * radius, tolerance);
-  std::printf("%4s %12s %12s | %12s %12s %10s\n", "view", "coarse mean", "coarse max", "smooth mean",
-    "smooth max", "triangles");
+  std::printf("%4s %12s %12s | %12s %12s %10s\n", "view", "coarse mean", "coarse max",
+    "smooth mean", "smooth max", "triangles");
   double worstMean = 0.0;
   double worstMax = 0.0;
   double sumMean = 0.0;
@@ -53,8 +53,8 @@ int TestSphereAccuracy(int, char*[])
       renderer.Render(sphere->GetOutput(), camera), size, size, size / 2.0, size / 2.0, radius);
     const auto smooth = silhouette_test::DistanceToCircle(
       renderer.Render(smoother->GetOutput(), camera), size, size, size / 2.0, size / 2.0, radius);
-    std::printf("%4zu %12.3f %12.3f | %12.3f %12.3f %10lld\n", v, coarse.Mean, coarse.Max, smooth.Mean,
-      smooth.Max, static_cast<long long>(smoother->GetOutput()->GetNumberOfPolys()));
+    std::printf("%4zu %12.3f %12.3f | %12.3f %12.3f %10lld\n", v, coarse.Mean, coarse.Max,
+      smooth.Mean, smooth.Max, static_cast<long long>(smoother->GetOutput()->GetNumberOfPolys()));
     if (smooth.Samples < 1000)
     {
       std::printf("FAIL: view %zu has only %ld boundary samples\n", v, smooth.Samples);
@@ -92,7 +92,8 @@ int TestSphereAccuracy(int, char*[])
   std::printf("eq. 8 sampling: worst mean %.3f px, worst max %.3f px\n", eq8WorstMean, eq8WorstMax);
   if (!(eq8WorstMax > worstMax))
   {
-    std::printf("FAIL: eq. 8 is expected to under-sample (it no longer does: revisit the default)\n");
+    std::printf(
+      "FAIL: eq. 8 is expected to under-sample (it no longer does: revisit the default)\n");
     return EXIT_FAILURE;
   }
   return EXIT_SUCCESS;

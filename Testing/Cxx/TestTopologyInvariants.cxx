@@ -28,7 +28,8 @@
 #include <set>
 #include <utility>
 
-namespace {
+namespace
+{
 
 bool CheckMeshOverViews(const char* name, vtkPolyData* mesh, bool expectNoFlips)
 {
@@ -69,8 +70,8 @@ bool CheckMeshOverViews(const char* name, vtkPolyData* mesh, bool expectNoFlips)
       it->GetCurrentCell(n, ids);
       if (n < 3 || ids[0] != ids[n - 1])
       {
-        std::printf("FAIL: %s view %zu: a silhouette polyline of %lld points is not closed\n", name, v,
-          static_cast<long long>(n));
+        std::printf("FAIL: %s view %zu: a silhouette polyline of %lld points is not closed\n", name,
+          v, static_cast<long long>(n));
         ok = false;
         break;
       }
@@ -82,11 +83,12 @@ bool CheckMeshOverViews(const char* name, vtkPolyData* mesh, bool expectNoFlips)
     }
     flipped += report.FlippedTriangles;
     newTriangles += static_cast<long>(report.Triangles - input.Triangles);
-    silhouetteTriangles +=
-      static_cast<long>(smoother->GetOutput()->GetFieldData()->GetArray("SilhouetteTriangleCount")->GetTuple1(0));
+    silhouetteTriangles += static_cast<long>(
+      smoother->GetOutput()->GetFieldData()->GetArray("SilhouetteTriangleCount")->GetTuple1(0));
   }
-  std::printf("%-8s %6ld input triangles; over %zu views: %ld silhouette triangles, %ld triangles added, "
-              "%ld flipped\n",
+  std::printf(
+    "%-8s %6ld input triangles; over %zu views: %ld silhouette triangles, %ld triangles added, "
+    "%ld flipped\n",
     name, input.Triangles, directions.size(), silhouetteTriangles, newTriangles, flipped);
   if (expectNoFlips && flipped != 0)
   {
@@ -195,7 +197,8 @@ bool CheckOpenMesh()
       return false;
     }
   }
-  std::printf("open mesh: %zu boundary edges kept over 40 views (%ld splits at silhouette points)\n",
+  std::printf(
+    "open mesh: %zu boundary edges kept over 40 views (%ld splits at silhouette points)\n",
     before.size(), splitEdges);
   return splitEdges > 0; // the views must actually exercise the split case
 }

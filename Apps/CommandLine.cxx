@@ -25,6 +25,8 @@ Commands:
   render INPUT -o IMAGE.png [--style STYLE] [--no-smoothing] [--json]
          [camera options]
       render INPUT offscreen to a PNG image and print the same figures
+  generate sphere|torus -o OUTPUT [shape options]
+      write an analytic test mesh with exact normals
   help [COMMAND]
       show this help, or the help of COMMAND
 
@@ -116,6 +118,113 @@ Options:
     "\n" + FiguresHelp();
 }
 
+std::string GenerateHelp()
+{
+  return R"(Usage: silhouette generate sphere|torus -o OUTPUT [shape options]
+
+Writes an analytic mesh whose points lie exactly on the surface, with the
+exact surface normals as point normals: the meshes whose true silhouette is
+known, for measuring accuracy. OUTPUT is .vtp (keeps the normals) or .ply.
+
+  sphere   an icosphere (vtkIcosphereSource): an icosahedron whose triangles
+           are split into four per level, new points pushed onto the sphere
+  torus    a torus about +Z (vtkTorusSurfaceSource): a regular grid of
+           ring x tube samples, two triangles per quad, seams joined
+
+Options:
+  -o, --output FILE        the file to write (.vtp or .ply); required
+  --level N                sphere: subdivision level, 0 to 8; 20 * 4^N
+                           triangles (default 1: 80 triangles)
+  --radius R               the sphere's radius, or the torus's ring radius
+                           (distance from the axis to the tube's centre)
+                           (default 1)
+  --tube-radius R          torus: the tube's radius (default 0.4)
+  --ring-resolution N      torus: samples around the ring, at least 3
+                           (default 24)
+  --tube-resolution N      torus: samples around the tube, at least 3
+                           (default 12); the torus has 2 * ring * tube
+                           triangles
+  -h, --help               show this help and exit
+)";
+}
+
+// A whole number in [low, high] for `option`, or UsageError.
+int ParseCount(const Option& option, const std::string& text, int low, int high)
+{
+  const double value = ParseNumber(option.Name, text);
+  if (value != static_cast<double>(static_cast<long long>(value)) || value < low || value > high)
+  {
+    throw UsageError("option '" + option.Name + "' needs a whole number from " +
+      std::to_string(low) + " to " + std::to_string(high) + ", got '" + text + "'");
+  }
+  return static_cast<int>(value);
+}
+
+GenerateOptions ParseGenerate(ArgumentList& arguments)
+{
+  GenerateOptions options;
+  bool haveShape = false;
+  while (!arguments.AtEnd())
+  {
+    const std::string word = arguments.Take();
+    if (!LooksLikeOption(word))
+    {
+      if (haveShape)
+      {
+        throw UsageError("unexpected argument '" + word + "' (the shape is already given)");
+      }
+      if (word != "sphere" && word != "torus")
+      {
+        throw UsageError("'generate' makes a sphere or a torus, not '" + word + "'");
+      }
+      options.Shape = word == "sphere" ? GeneratedShape::Sphere : GeneratedShape::Torus;
+      haveShape = true;
+      continue;
+    }
+    const Option option = SplitOption(word);
+    if (option.Name == "-o" || option.Name == "--output")
+    {
+      options.Output = arguments.TakeValue(option);
+    }
+    else if (option.Name == "--level")
+    {
+      options.Level = ParseCount(option, arguments.TakeValue(option), 0, 8);
+    }
+    else if (option.Name == "--ring-resolution")
+    {
+      options.RingResolution = ParseCount(option, arguments.TakeValue(option), 3, 100000);
+    }
+    else if (option.Name == "--tube-resolution")
+    {
+      options.TubeResolution = ParseCount(option, arguments.TakeValue(option), 3, 100000);
+    }
+    else if (option.Name == "--radius" || option.Name == "--tube-radius")
+    {
+      const std::string text = arguments.TakeValue(option);
+      const double value = ParseNumber(option.Name, text);
+      if (!(value > 0.0))
+      {
+        throw UsageError("option '" + option.Name + "' needs a number above 0, got '" + text + "'");
+      }
+      (option.Name == "--radius" ? options.Radius : options.TubeRadius) = value;
+    }
+    else
+    {
+      throw UsageError(
+        "unknown option '" + option.Name + "' for 'generate'; run 'silhouette generate --help'");
+    }
+  }
+  if (!haveShape)
+  {
+    throw UsageError("'generate' needs a shape: sphere or torus");
+  }
+  if (options.Output.empty())
+  {
+    throw UsageError("'generate' needs '-o OUTPUT'");
+  }
+  return options;
+}
+
 bool IsHelpWord(const std::string& word)
 {
   return word == "--help" || word == "-h";
@@ -131,6 +240,10 @@ std::string HelpOf(const std::string& command)
   if (command == "render")
   {
     return RenderHelp();
+  }
+  if (command == "generate")
+  {
+    return GenerateHelp();
   }
   if (command == "help")
   {
@@ -252,7 +365,12 @@ CommandLine ParseCommandLine(int argc, char* argv[])
   }
 
   ArgumentList arguments({ words.begin() + 1, words.end() });
-  if (command == "smooth")
+  if (command == "generate")
+  {
+    result.What = CommandLine::Action::Generate;
+    result.Generate = ParseGenerate(arguments);
+  }
+  else if (command == "smooth")
   {
     result.What = CommandLine::Action::Smooth;
     SmoothOptions& smooth = result.Smooth;

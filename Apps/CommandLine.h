@@ -2,6 +2,7 @@
 #define CommandLine_h
 
 #include "CameraOptions.h"
+#include "Generate.h"
 
 #include <optional>
 #include <string>
@@ -43,12 +44,14 @@ struct CommandLine
   {
     ShowHelp, ///< print HelpText and exit 0
     Smooth,
-    Render
+    Render,
+    Generate
   };
   Action What = Action::ShowHelp;
   std::string HelpText;
   SmoothOptions Smooth;
   RenderOptions Render;
+  GenerateOptions Generate;
 };
 
 /// Parses argv; throws UsageError for anything it cannot make sense of.

@@ -3,6 +3,7 @@
 #include "CliErrors.h"
 #include "CommandLine.h"
 #include "Commands.h"
+#include "Generate.h"
 #include "VtkErrorLog.h"
 
 #include <exception>
@@ -36,6 +37,9 @@ int main(int argc, char* argv[])
         break;
       case cli::CommandLine::Action::Render:
         cli::RunRender(commandLine.Render);
+        break;
+      case cli::CommandLine::Action::Generate:
+        cli::RunGenerate(commandLine.Generate);
         break;
     }
     return cli::ExitSuccess;

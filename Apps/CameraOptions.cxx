@@ -16,23 +16,6 @@ namespace cli
 namespace
 {
 
-std::array<int, 2> ParseViewportSize(const std::string& option, const std::string& text)
-{
-  static const std::regex widthByHeight(R"(([0-9]{1,9})[xX]([0-9]{1,9}))");
-  std::smatch match;
-  if (std::regex_match(text, match, widthByHeight))
-  {
-    const int width = std::stoi(match[1].str());
-    const int height = std::stoi(match[2].str());
-    if (width >= 1 && height >= 1 && width <= MaximumViewportSide && height <= MaximumViewportSide)
-    {
-      return { width, height };
-    }
-  }
-  throw UsageError("option '" + option + "' needs WxH with sides from 1 to " +
-    std::to_string(MaximumViewportSide) + " pixels, got '" + text + "'");
-}
-
 double Length(const std::array<double, 3>& v)
 {
   return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
@@ -74,6 +57,23 @@ void ElevateWithViewUp(vtkCamera* camera, double degrees)
 }
 
 } // namespace
+
+std::array<int, 2> ParseViewportSize(const std::string& option, const std::string& text)
+{
+  static const std::regex widthByHeight(R"(([0-9]{1,9})[xX]([0-9]{1,9}))");
+  std::smatch match;
+  if (std::regex_match(text, match, widthByHeight))
+  {
+    const int width = std::stoi(match[1].str());
+    const int height = std::stoi(match[2].str());
+    if (width >= 1 && height >= 1 && width <= MaximumViewportSide && height <= MaximumViewportSide)
+    {
+      return { width, height };
+    }
+  }
+  throw UsageError("option '" + option + "' needs WxH with sides from 1 to " +
+    std::to_string(MaximumViewportSide) + " pixels, got '" + text + "'");
+}
 
 bool ParseCameraOption(const Option& option, ArgumentList& arguments, CameraOptions& camera)
 {

@@ -34,6 +34,9 @@ constexpr int MaximumViewportSide = 16384;
 
 /// Consumes `option` (and its values) if it is a camera option; false if not.
 /// Throws UsageError for bad values.
+/// "WxH" with sides from 1 to MaximumViewportSide, or UsageError naming `option`.
+std::array<int, 2> ParseViewportSize(const std::string& option, const std::string& text);
+
 bool ParseCameraOption(const Option& option, ArgumentList& arguments, CameraOptions& camera);
 
 /// Checks that need several options at once; throws UsageError.

@@ -27,6 +27,11 @@ Commands:
       render INPUT offscreen to a PNG image and print the same figures
   generate sphere|torus -o OUTPUT [shape options]
       write an analytic test mesh with exact normals
+  compare MODEL|MESH|all ... [options]
+      coarse, coarse + smoothing and a fine OpenSubdiv reference, measured
+      from the same cameras: outline deviations and whole-frame times
+  figure MODEL|MESH -o FIGURE.png [--plot PLOT.png] [options]
+      the four labelled panels of Xing's Fig. 1, and a time plot
   help [COMMAND]
       show this help, or the help of COMMAND
 
@@ -225,6 +230,129 @@ GenerateOptions ParseGenerate(ArgumentList& arguments)
   return options;
 }
 
+CompareOptions ParseCompare(ArgumentList& arguments)
+{
+  CompareOptions options;
+  while (!arguments.AtEnd())
+  {
+    const std::string word = arguments.Take();
+    if (!LooksLikeOption(word))
+    {
+      options.Inputs.push_back(word);
+      continue;
+    }
+    const Option option = SplitOption(word);
+    if (option.Name == "--coarse-triangles")
+    {
+      options.CoarseTriangles = ParseCount(option, arguments.TakeValue(option), 4, 10000000);
+    }
+    else if (option.Name == "--fine-level")
+    {
+      options.FineLevel = ParseCount(option, arguments.TakeValue(option), 1, 5);
+    }
+    else if (option.Name == "--views")
+    {
+      options.Views = ParseCount(option, arguments.TakeValue(option), 1, 1000);
+    }
+    else if (option.Name == "--frames")
+    {
+      options.Frames = ParseCount(option, arguments.TakeValue(option), 1, 100000);
+    }
+    else if (option.Name == "--size")
+    {
+      options.ViewportSize = ParseViewportSize(option.Name, arguments.TakeValue(option));
+    }
+    else if (option.Name == "--tolerance")
+    {
+      const std::string text = arguments.TakeValue(option);
+      options.Tolerance = ParseNumber(option.Name, text);
+      if (!(options.Tolerance >= 0.001))
+      {
+        throw UsageError(
+          "option '--tolerance' needs a number of at least 0.001, got '" + text + "'");
+      }
+    }
+    else if (option.Name == "--data")
+    {
+      options.DataDirectory = arguments.TakeValue(option);
+    }
+    else if (option.Name == "--json" || option.Name == "--markdown")
+    {
+      RejectInlineValue(option);
+      options.Format = option.Name == "--json" ? CompareFormat::Json : CompareFormat::Markdown;
+    }
+    else
+    {
+      throw UsageError(
+        "unknown option '" + option.Name + "' for 'compare'; run 'silhouette compare --help'");
+    }
+  }
+  if (options.Inputs.empty())
+  {
+    throw UsageError("'compare' needs a model name, 'all' or a mesh file");
+  }
+  return options;
+}
+
+FigureOptions ParseFigure(ArgumentList& arguments)
+{
+  FigureOptions options;
+  while (!arguments.AtEnd())
+  {
+    const std::string word = arguments.Take();
+    if (!LooksLikeOption(word))
+    {
+      if (!options.Input.empty())
+      {
+        throw UsageError(
+          "unexpected argument '" + word + "' (INPUT is already '" + options.Input + "')");
+      }
+      options.Input = word;
+      continue;
+    }
+    const Option option = SplitOption(word);
+    if (option.Name == "-o" || option.Name == "--output")
+    {
+      options.Output = arguments.TakeValue(option);
+    }
+    else if (option.Name == "--plot")
+    {
+      options.Plot = arguments.TakeValue(option);
+    }
+    else if (option.Name == "--coarse-triangles")
+    {
+      options.CoarseTriangles = ParseCount(option, arguments.TakeValue(option), 4, 10000000);
+    }
+    else if (option.Name == "--fine-level")
+    {
+      options.FineLevel = ParseCount(option, arguments.TakeValue(option), 1, 5);
+    }
+    else if (option.Name == "--frames")
+    {
+      options.Frames = ParseCount(option, arguments.TakeValue(option), 1, 100000);
+    }
+    else if (option.Name == "--data")
+    {
+      options.DataDirectory = arguments.TakeValue(option);
+    }
+    else if (!ParseCameraOption(option, arguments, options.Camera))
+    {
+      throw UsageError(
+        "unknown option '" + option.Name + "' for 'figure'; run 'silhouette figure --help'");
+    }
+  }
+  if (options.Input.empty())
+  {
+    throw UsageError("'figure' needs a model name or a mesh file");
+  }
+  if (options.Output.empty())
+  {
+    throw UsageError("'figure' needs '-o FIGURE.png'");
+  }
+  CheckCameraOptions(options.Camera);
+  return options;
+}
+
 bool IsHelpWord(const std::string& word)
 {
   return word == "--help" || word == "-h";
@@ -244,6 +372,14 @@ std::string HelpOf(const std::string& command)
   if (command == "generate")
   {
     return GenerateHelp();
+  }
+  if (command == "compare")
+  {
+    return CompareHelp();
+  }
+  if (command == "figure")
+  {
+    return FigureHelp();
   }
   if (command == "help")
   {
@@ -369,6 +505,16 @@ CommandLine ParseCommandLine(int argc, char* argv[])
   {
     result.What = CommandLine::Action::Generate;
     result.Generate = ParseGenerate(arguments);
+  }
+  else if (command == "compare")
+  {
+    result.What = CommandLine::Action::Compare;
+    result.Compare = ParseCompare(arguments);
+  }
+  else if (command == "figure")
+  {
+    result.What = CommandLine::Action::Figure;
+    result.Figure = ParseFigure(arguments);
   }
   else if (command == "smooth")
   {

@@ -2,6 +2,8 @@
 #define CommandLine_h
 
 #include "CameraOptions.h"
+#include "Compare.h"
+#include "Figure.h"
 #include "Generate.h"
 
 #include <optional>
@@ -45,13 +47,17 @@ struct CommandLine
     ShowHelp, ///< print HelpText and exit 0
     Smooth,
     Render,
-    Generate
+    Generate,
+    Compare,
+    Figure
   };
   Action What = Action::ShowHelp;
   std::string HelpText;
   SmoothOptions Smooth;
   RenderOptions Render;
   GenerateOptions Generate;
+  CompareOptions Compare;
+  FigureOptions Figure;
 };
 
 /// Parses argv; throws UsageError for anything it cannot make sense of.

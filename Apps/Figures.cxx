@@ -47,6 +47,26 @@ std::string JsonNumber(double value)
   return std::string(buffer, result.ptr);
 }
 
+std::string JsonVector(const std::array<double, 3>& v)
+{
+  return "[" + JsonNumber(v[0]) + ", " + JsonNumber(v[1]) + ", " + JsonNumber(v[2]) + "]";
+}
+
+std::string TextVector(const std::array<double, 3>& v)
+{
+  std::ostringstream text;
+  text << std::setprecision(6) << v[0] << " " << v[1] << " " << v[2];
+  return text.str();
+}
+
+// Milliseconds to the microsecond: finer is noise.
+double RoundToMicroseconds(double milliseconds)
+{
+  return std::round(milliseconds * 1000.0) / 1000.0;
+}
+
+} // namespace
+
 std::string JsonString(const std::string& text)
 {
   std::string quoted = "\"";
@@ -84,26 +104,6 @@ std::string JsonString(const std::string& text)
   }
   return quoted + "\"";
 }
-
-std::string JsonVector(const std::array<double, 3>& v)
-{
-  return "[" + JsonNumber(v[0]) + ", " + JsonNumber(v[1]) + ", " + JsonNumber(v[2]) + "]";
-}
-
-std::string TextVector(const std::array<double, 3>& v)
-{
-  std::ostringstream text;
-  text << std::setprecision(6) << v[0] << " " << v[1] << " " << v[2];
-  return text.str();
-}
-
-// Milliseconds to the microsecond: finer is noise.
-double RoundToMicroseconds(double milliseconds)
-{
-  return std::round(milliseconds * 1000.0) / 1000.0;
-}
-
-} // namespace
 
 Figures CollectFigures(const std::string& input, const std::optional<std::string>& output,
   vtkPolyData* smoothed, double prepareMilliseconds, double filterMilliseconds,

@@ -37,6 +37,9 @@ struct Figures
   bool Parallel = false;
 };
 
+/// `text` as a JSON string literal, quotes and control characters escaped.
+std::string JsonString(const std::string& text);
+
 /// Gathers the figures; the counts come from the field data of the filter's
 /// output. Throws RuntimeError if one of those arrays is missing.
 Figures CollectFigures(const std::string& input, const std::optional<std::string>& output,

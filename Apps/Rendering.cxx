@@ -148,12 +148,12 @@ vtkSmartPointer<vtkPolyDataSilhouette> MakeVtkSilhouette(vtkPolyData* input, vtk
   return silhouette;
 }
 
-void AddActors(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter, vtkPolyData* input,
-  const RenderOptions& options)
+} // namespace
+
+void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter, vtkPolyData* input,
+  RenderStyle style, bool smoothed)
 {
-  vtkRenderer* renderer = view.Renderer;
-  const bool smoothed = !options.NoSmoothing;
-  switch (options.Style)
+  switch (style)
   {
     case RenderStyle::Shaded:
     {
@@ -211,8 +211,6 @@ void AddActors(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter, 
   }
 }
 
-} // namespace
-
 OffscreenView MakeOffscreenView(const std::array<int, 2>& size)
 {
   OffscreenView view;
@@ -250,7 +248,7 @@ void RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
 {
   VtkErrorLog& errors = VtkErrorLog::Instance();
   errors.Clear();
-  AddActors(view, filter, input, options);
+  AddStyleActors(view.Renderer, filter, input, options.Style, !options.NoSmoothing);
   // Clip on what is drawn: the smoothed silhouette bulges past the input's bounds.
   view.Renderer->ResetCameraClippingRange();
 

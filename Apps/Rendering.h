@@ -33,6 +33,14 @@ void CheckImageOutputPath(const std::string& path);
 void RequireDisplay();
 
 /**
+ * Adds to `renderer` the actors that draw `style`: of the filter's output, or
+ * of `input` when `smoothed` is false (shaded then uses the filter's shading
+ * normals, so the two differ in geometry only). The filter must be up to date.
+ */
+void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter, vtkPolyData* input,
+  RenderStyle style, bool smoothed);
+
+/**
  * Draws `options.Style` of the filter's output (or of `input` with
  * --no-smoothing) into `view` with the camera already set up, and writes
  * the PNG image. Throws RuntimeError on any VTK error.

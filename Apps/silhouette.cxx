@@ -3,6 +3,8 @@
 #include "CliErrors.h"
 #include "CommandLine.h"
 #include "Commands.h"
+#include "Compare.h"
+#include "Figure.h"
 #include "Generate.h"
 #include "VtkErrorLog.h"
 
@@ -40,6 +42,12 @@ int main(int argc, char* argv[])
         break;
       case cli::CommandLine::Action::Generate:
         cli::RunGenerate(commandLine.Generate);
+        break;
+      case cli::CommandLine::Action::Compare:
+        cli::RunCompare(commandLine.Compare);
+        break;
+      case cli::CommandLine::Action::Figure:
+        cli::RunFigure(commandLine.Figure);
         break;
     }
     return cli::ExitSuccess;

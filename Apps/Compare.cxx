@@ -1,0 +1,275 @@
+#include "Compare.h"
+
+#include "CliErrors.h"
+#include "Figures.h"
+#include "MeshIO.h"
+#include "VtkErrorLog.h"
+
+#include "EvaluationModels.h"
+#include "SilhouetteComparison.h"
+
+#include <vtkPolyData.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+#ifndef SILHOUETTE_DATA_DIR
+#define SILHOUETTE_DATA_DIR "Data"
+#endif
+
+namespace cli
+{
+namespace
+{
+
+using silhouette_eval::ModelComparison;
+using silhouette_eval::VariantFigures;
+
+// The issue's targets: smoothing removes at least two thirds of the coarse
+// outline's deviation from the fine reference, and a whole frame costs at
+// most a third of rendering the fine mesh.
+constexpr double TargetRatio = 1.0 / 3.0;
+
+double DeviationRatio(const ModelComparison& c)
+{
+  return c.Coarse.MeanDeviation > 0 ? c.Smoothed.MeanDeviation / c.Coarse.MeanDeviation : 0.0;
+}
+
+double FrameRatio(const ModelComparison& c)
+{
+  return c.Fine.FrameMilliseconds > 0 ? c.Smoothed.FrameMilliseconds / c.Fine.FrameMilliseconds
+                                      : 0.0;
+}
+
+std::string Fixed(double value, int digits)
+{
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*f", digits, value);
+  return text;
+}
+
+std::string JsonVariant(const VariantFigures& v)
+{
+  std::ostringstream s;
+  s << "{\"triangles\": " << Fixed(v.Triangles, 0)
+    << ", \"deviation_mean_px\": " << Fixed(v.MeanDeviation, 3)
+    << ", \"deviation_max_px\": " << Fixed(v.MaxDeviation, 3);
+  if (v.MeanExact >= 0)
+  {
+    s << ", \"exact_mean_px\": " << Fixed(v.MeanExact, 3)
+      << ", \"exact_max_px\": " << Fixed(v.MaxExact, 3);
+  }
+  s << ", \"filter_ms\": " << Fixed(v.FilterMilliseconds, 3)
+    << ", \"frame_ms\": " << Fixed(v.FrameMilliseconds, 3) << "}";
+  return s.str();
+}
+
+void PrintText(const ModelComparison& c, const CompareOptions& options)
+{
+  std::cout << "model " << c.Name << ": " << c.Description << "\n";
+  std::cout << "  " << options.Views << " views and " << options.Frames << " timed frames at "
+            << options.ViewportSize[0] << "x" << options.ViewportSize[1] << ", tolerance "
+            << options.Tolerance << " px; deviations are outline distances in pixels\n";
+  const bool exact = c.Coarse.MeanExact >= 0;
+  std::printf("  %-18s %10s %10s %10s %10s %10s %10s %10s\n", "variant", "triangles", "dev mean",
+    "dev max", exact ? "exact mean" : "", exact ? "exact max" : "", "filter ms", "frame ms");
+  auto row = [&](const char* name, const VariantFigures& v, bool smoothing) {
+    std::printf("  %-18s %10.0f %10.3f %10.3f %10s %10s %10s %10.2f\n", name, v.Triangles,
+      v.MeanDeviation, v.MaxDeviation, exact ? Fixed(v.MeanExact, 3).c_str() : "",
+      exact ? Fixed(v.MaxExact, 3).c_str() : "",
+      smoothing ? Fixed(v.FilterMilliseconds, 3).c_str() : "-", v.FrameMilliseconds);
+  };
+  row("coarse", c.Coarse, false);
+  row("coarse+smoothing", c.Smoothed, true);
+  row(("fine (Loop " + std::to_string(options.FineLevel) + ")").c_str(), c.Fine, false);
+  std::cout << "  deviation, smoothed / coarse: " << Fixed(DeviationRatio(c), 2)
+            << " (target <= 0.33: " << (DeviationRatio(c) <= TargetRatio ? "met" : "MISSED")
+            << ")\n"
+            << "  frame time, smoothed / fine:  " << Fixed(FrameRatio(c), 2)
+            << " (target <= 0.33: " << (FrameRatio(c) <= TargetRatio ? "met" : "MISSED") << ")\n";
+}
+
+void PrintMarkdown(const std::vector<ModelComparison>& results, const CompareOptions& options)
+{
+  std::cout << "| model | triangles coarse / smoothed / fine | deviation from fine, coarse: mean / "
+               "max px | smoothed: mean / max px | smoothed / coarse | frame ms smoothed / fine | "
+               "smoothed / fine | filter ms |\n"
+               "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+  for (const ModelComparison& c : results)
+  {
+    std::cout << "| " << c.Name << " | " << Fixed(c.Coarse.Triangles, 0) << " / "
+              << Fixed(c.Smoothed.Triangles, 0) << " / " << Fixed(c.Fine.Triangles, 0) << " | "
+              << Fixed(c.Coarse.MeanDeviation, 2) << " / " << Fixed(c.Coarse.MaxDeviation, 1)
+              << " | " << Fixed(c.Smoothed.MeanDeviation, 2) << " / "
+              << Fixed(c.Smoothed.MaxDeviation, 1) << " | " << Fixed(DeviationRatio(c), 2)
+              << (DeviationRatio(c) <= TargetRatio ? "" : " (missed)") << " | "
+              << Fixed(c.Smoothed.FrameMilliseconds, 1) << " / "
+              << Fixed(c.Fine.FrameMilliseconds, 1) << " | " << Fixed(FrameRatio(c), 2)
+              << (FrameRatio(c) <= TargetRatio ? "" : " (missed)") << " | "
+              << Fixed(c.Smoothed.FilterMilliseconds, 2) << " |\n";
+  }
+  bool anyExact = false;
+  for (const ModelComparison& c : results)
+  {
+    anyExact = anyExact || c.Coarse.MeanExact >= 0;
+  }
+  if (anyExact)
+  {
+    std::cout << "\n| model | distance to the exact silhouette, mean / max px: coarse | smoothed | "
+                 "fine |\n|---|---:|---:|---:|\n";
+    for (const ModelComparison& c : results)
+    {
+      if (c.Coarse.MeanExact >= 0)
+      {
+        std::cout << "| " << c.Name << " | " << Fixed(c.Coarse.MeanExact, 2) << " / "
+                  << Fixed(c.Coarse.MaxExact, 1) << " | " << Fixed(c.Smoothed.MeanExact, 2) << " / "
+                  << Fixed(c.Smoothed.MaxExact, 1) << " | " << Fixed(c.Fine.MeanExact, 2) << " / "
+                  << Fixed(c.Fine.MaxExact, 1) << " |\n";
+      }
+    }
+  }
+  std::cout << "\n"
+            << options.Views << " views, " << options.Frames << " timed orbit frames, "
+            << options.ViewportSize[0] << "x" << options.ViewportSize[1] << ", tolerance "
+            << options.Tolerance << " px, fine = Loop level " << options.FineLevel << ".\n";
+}
+
+} // namespace
+
+void RunCompare(const CompareOptions& options)
+{
+  std::vector<std::string> inputs;
+  for (const std::string& input : options.Inputs)
+  {
+    if (input == "all")
+    {
+      const auto names = silhouette_eval::ModelNames();
+      inputs.insert(inputs.end(), names.begin(), names.end());
+    }
+    else
+    {
+      inputs.push_back(input);
+    }
+  }
+  const std::string dataDirectory =
+    options.DataDirectory.empty() ? SILHOUETTE_DATA_DIR : options.DataDirectory;
+
+  silhouette_eval::ComparisonOptions comparison;
+  comparison.Width = options.ViewportSize[0];
+  comparison.Height = options.ViewportSize[1];
+  comparison.Views = options.Views;
+  comparison.TimedFrames = options.Frames;
+  comparison.Tolerance = options.Tolerance;
+  comparison.Progress = [](const std::string& line) {
+    std::cerr << "compare: " << line << std::endl;
+  };
+
+  VtkErrorLog& errors = VtkErrorLog::Instance();
+  std::vector<ModelComparison> results;
+  for (const std::string& input : inputs)
+  {
+    errors.Clear();
+    vtkSmartPointer<vtkPolyData> original;
+    int coarseTriangles = options.CoarseTriangles;
+    try
+    {
+      if (silhouette_eval::IsModelName(input))
+      {
+        original = silhouette_eval::MakeOriginal(input, dataDirectory);
+        if (coarseTriangles == 0)
+        {
+          coarseTriangles = silhouette_eval::DefaultCoarseTriangles(input);
+        }
+      }
+      else
+      {
+        original = ReadMesh(input);
+        if (coarseTriangles == 0)
+        {
+          coarseTriangles = 1000;
+        }
+      }
+      std::cerr << "compare: " << input << ": decimating to " << coarseTriangles
+                << " triangles and refining to Loop level " << options.FineLevel << std::endl;
+      const silhouette_eval::ModelVersions versions =
+        silhouette_eval::MakeVersions(input, original, coarseTriangles, options.FineLevel);
+      errors.ThrowIfErrors("preparing " + input + " failed");
+      results.push_back(silhouette_eval::CompareModel(versions, comparison));
+      errors.ThrowIfErrors("comparing " + input + " failed");
+    }
+    catch (const std::runtime_error& error)
+    {
+      throw RuntimeError(input + ": " + error.what());
+    }
+    if (options.Format == CompareFormat::Text)
+    {
+      PrintText(results.back(), options);
+    }
+  }
+  if (options.Format == CompareFormat::Markdown)
+  {
+    PrintMarkdown(results, options);
+  }
+  else if (options.Format == CompareFormat::Json)
+  {
+    std::cout << "[";
+    for (std::size_t i = 0; i < results.size(); ++i)
+    {
+      const ModelComparison& c = results[i];
+      std::cout << (i ? ", " : "") << "{\"model\": " << JsonString(c.Name)
+                << ", \"original_triangles\": " << c.OriginalTriangles
+                << ", \"silhouette_triangles\": " << Fixed(c.SilhouetteTriangles, 1)
+                << ", \"coarse\": " << JsonVariant(c.Coarse)
+                << ", \"smoothed\": " << JsonVariant(c.Smoothed)
+                << ", \"fine\": " << JsonVariant(c.Fine)
+                << ", \"deviation_ratio\": " << Fixed(DeviationRatio(c), 3)
+                << ", \"frame_ratio\": " << Fixed(FrameRatio(c), 3) << "}";
+    }
+    std::cout << "]\n";
+  }
+}
+
+std::string CompareHelp()
+{
+  return R"(Usage: silhouette compare MODEL|MESH|all ... [options]
+
+Xing's evaluation with numbers: for each input, a coarse version (quadric
+decimation of the original), the coarse version with silhouette smoothing,
+and a fine reference (OpenSubdiv Loop refinement of the original, projected
+to the limit surface) are rendered from the same cameras. For each it prints
+the triangles rendered, the distance of its outline to the fine reference's
+outline (pixels; every boundary pixel of each mask measured to the other's
+boundary with a Euclidean distance transform, mean over the views and max),
+and the whole-frame time (camera move, filter when smoothing, render to
+completion; median over an orbit). For the sphere and the torus it also
+prints the distance to the exact silhouette (the exact circle for the
+sphere, a 518,400-triangle torus rendering for the torus).
+Targets: smoothed deviation at most 1/3 of the coarse one, and smoothed
+frame time at most 1/3 of the fine one; each line says whether they are met.
+Progress goes to stderr. Rendering needs an X display (xvfb-run -a).
+
+Models: bunny, sphere, torus, ellipsoid, supertoroid, knot; 'all' for all of
+them. Any other INPUT is read as a mesh file (.ply .obj .stl .vtp .vtk).
+
+Options:
+  --coarse-triangles N  triangles of the coarse version (default: the
+                        model's own; 1000 for a mesh file)
+  --fine-level L        Loop refinement level of the fine reference, 1 to 5
+                        (default 3)
+  --views N             camera positions for the deviations (default 12)
+  --frames N            timed orbit frames per variant, at least 30 for the
+                        README's figures (default 30)
+  --size WxH            image size (default 1024x768)
+  --tolerance PX        the filter's Tolerance (default 0.5)
+  --data DIR            the folder that holds bunny.ply (default: the
+                        project's Data/ folder)
+  --json                one JSON array, an object per model
+  --markdown            the README's tables
+  -h, --help            show this help and exit
+)";
+}
+
+} // namespace cli

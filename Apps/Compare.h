@@ -1,0 +1,40 @@
+#ifndef Compare_h
+#define Compare_h
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace cli
+{
+
+enum class CompareFormat
+{
+  Text,
+  Json,
+  Markdown
+};
+
+struct CompareOptions
+{
+  /// Model names of the set, "all", or mesh files.
+  std::vector<std::string> Inputs;
+  int CoarseTriangles = 0; ///< 0: the model's default (1,000 for a file)
+  int FineLevel = 3;
+  int Views = 12;
+  int Frames = 30;
+  std::array<int, 2> ViewportSize{ 1024, 768 };
+  double Tolerance = 0.5;
+  CompareFormat Format = CompareFormat::Text;
+  std::string DataDirectory; ///< where bunny.ply is; empty: the built-in default
+};
+
+/// `silhouette compare`: coarse, coarse + smoothing and the fine reference of
+/// each input, measured from the same cameras (see CompareHelp).
+void RunCompare(const CompareOptions& options);
+
+std::string CompareHelp();
+
+} // namespace cli
+
+#endif

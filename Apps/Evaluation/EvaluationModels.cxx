@@ -1,0 +1,395 @@
+#include "EvaluationModels.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDoubleArray.h"
+#include "vtkGenericCell.h"
+#include "vtkIcosphereSource.h"
+#include "vtkMath.h"
+#include "vtkNew.h"
+#include "vtkOpenSubdivRefiner.h"
+#include "vtkPLYReader.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+#include "vtkQuadricDecimation.h"
+#include "vtkStaticCellLocator.h"
+#include "vtkTorusSurfaceSource.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
+#include "vtkTriangleFilter.h"
+
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <utility>
+
+namespace silhouette_eval
+{
+namespace
+{
+
+struct ModelInfo
+{
+  const char* Name;
+  const char* Description;
+  int CoarseTriangles;
+  ExactShape Exact;
+};
+
+const ModelInfo Models[] = {
+  { "bunny", "the Stanford bunny (Data/bunny.ply, 3,674 triangles)", 1000, ExactShape::None },
+  { "sphere", "unit icosphere, 1,280 triangles, points on the sphere", 80, ExactShape::UnitSphere },
+  { "torus", "torus R = 1, r = 0.4, 48 x 24 grid", 400, ExactShape::Torus },
+  { "ellipsoid", "ellipsoid 2 : 1.2 : 0.7, from a 1,280-triangle icosphere", 200,
+    ExactShape::None },
+  { "supertoroid", "super-toroid with a rounded-square tube, 64 x 32 grid", 600, ExactShape::None },
+  { "knot", "trefoil knot tube, 192 x 16 grid", 1200, ExactShape::None },
+};
+
+const ModelInfo& InfoOf(const std::string& name)
+{
+  for (const ModelInfo& info : Models)
+  {
+    if (name == info.Name)
+    {
+      return info;
+    }
+  }
+  throw std::runtime_error("no model named '" + name + "'");
+}
+
+// Signed power: keeps the sign, raises the magnitude (super-quadrics).
+double SignedPower(double x, double e)
+{
+  return std::copysign(std::pow(std::abs(x), e), x);
+}
+
+void SuperToroid(double u, double v, double p[3])
+{
+  const double ring = 1.0 + 0.45 * SignedPower(std::cos(v), 0.5);
+  p[0] = ring * std::cos(u);
+  p[1] = ring * std::sin(u);
+  p[2] = 0.45 * SignedPower(std::sin(v), 0.5);
+}
+
+// Trefoil (2, 3) torus knot with a circular tube around it, in the curve's
+// Frenet frame (its curvature never vanishes, so the frame is smooth and
+// periodic).
+void TrefoilTube(double u, double v, double p[3])
+{
+  auto curve = [](double t, double c[3]) {
+    c[0] = (2.0 + std::cos(3.0 * t)) * std::cos(2.0 * t);
+    c[1] = (2.0 + std::cos(3.0 * t)) * std::sin(2.0 * t);
+    c[2] = std::sin(3.0 * t);
+  };
+  const double h = 1e-4;
+  double c[3], a[3], b[3];
+  curve(u, c);
+  curve(u - h, a);
+  curve(u + h, b);
+  double tangent[3], second[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    tangent[k] = (b[k] - a[k]) / (2.0 * h);
+    second[k] = (b[k] - 2.0 * c[k] + a[k]) / (h * h);
+  }
+  vtkMath::Normalize(tangent);
+  double normal[3];
+  const double along = vtkMath::Dot(second, tangent);
+  for (int k = 0; k < 3; ++k)
+  {
+    normal[k] = second[k] - along * tangent[k];
+  }
+  vtkMath::Normalize(normal);
+  double binormal[3];
+  vtkMath::Cross(tangent, normal, binormal);
+  const double radius = 0.45;
+  for (int k = 0; k < 3; ++k)
+  {
+    p[k] = c[k] + radius * (std::cos(v) * normal[k] + std::sin(v) * binormal[k]);
+  }
+}
+
+void Torus(double u, double v, double p[3])
+{
+  p[0] = (1.0 + 0.4 * std::cos(v)) * std::cos(u);
+  p[1] = (1.0 + 0.4 * std::cos(v)) * std::sin(u);
+  p[2] = 0.4 * std::sin(v);
+}
+
+long CountBoundaryOrNonManifoldEdges(vtkPolyData* mesh)
+{
+  std::map<std::pair<vtkIdType, vtkIdType>, int> uses;
+  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const vtkIdType a = ids[k];
+      const vtkIdType b = ids[(k + 1) % n];
+      ++uses[{ std::min(a, b), std::max(a, b) }];
+    }
+  }
+  long bad = 0;
+  for (const auto& entry : uses)
+  {
+    bad += entry.second != 2 ? 1 : 0;
+  }
+  return bad;
+}
+
+// Moves every point of `coarse` to the closest point of `surface` and gives it
+// the surface's normal there (interpolated over the closest triangle):
+// silhouette smoothing assumes the coarse mesh samples the smooth surface,
+// which quadric decimation's optimal placement does not (on a convex shape it
+// puts the points outside, and the smoothing then overshoots).
+void ProjectOntoSurface(vtkPolyData* coarse, vtkPolyData* surface)
+{
+  vtkSmartPointer<vtkDataArray> normals = surface->GetPointData()->GetNormals();
+  if (!normals)
+  {
+    vtkNew<vtkPolyDataNormals> compute;
+    compute->SetInputData(surface);
+    compute->SplittingOff();
+    compute->ConsistencyOff();
+    compute->ComputePointNormalsOn();
+    compute->ComputeCellNormalsOff();
+    compute->Update();
+    normals = compute->GetOutput()->GetPointData()->GetNormals();
+  }
+  vtkNew<vtkStaticCellLocator> locator;
+  locator->SetDataSet(surface);
+  locator->BuildLocator();
+  vtkNew<vtkPoints> onSurface;
+  onSurface->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> coarseNormals;
+  coarseNormals->SetName("Normals");
+  coarseNormals->SetNumberOfComponents(3);
+  vtkNew<vtkGenericCell> cell;
+  for (vtkIdType i = 0; i < coarse->GetNumberOfPoints(); ++i)
+  {
+    double p[3], closest[3], distance2, pcoords[3], weights[3];
+    vtkIdType cellId = -1;
+    int subId = 0;
+    coarse->GetPoint(i, p);
+    locator->FindClosestPoint(p, closest, cell, cellId, subId, distance2);
+    onSurface->InsertNextPoint(closest);
+    double n[3] = { 0, 0, 0 };
+    if (cellId >= 0 && cell->GetNumberOfPoints() == 3)
+    {
+      double ignored[3], d2;
+      cell->EvaluatePosition(closest, ignored, subId, pcoords, d2, weights);
+      for (int k = 0; k < 3; ++k)
+      {
+        double nk[3];
+        normals->GetTuple(cell->GetPointId(k), nk);
+        for (int c = 0; c < 3; ++c)
+        {
+          n[c] += weights[k] * nk[c];
+        }
+      }
+    }
+    vtkMath::Normalize(n);
+    coarseNormals->InsertNextTuple(n);
+  }
+  coarse->SetPoints(onSurface);
+  coarse->GetPointData()->SetNormals(coarseNormals);
+}
+
+} // namespace
+
+std::vector<std::string> ModelNames()
+{
+  std::vector<std::string> names;
+  for (const ModelInfo& info : Models)
+  {
+    names.emplace_back(info.Name);
+  }
+  return names;
+}
+
+bool IsModelName(const std::string& name)
+{
+  for (const ModelInfo& info : Models)
+  {
+    if (name == info.Name)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+std::string ModelDescription(const std::string& name)
+{
+  return InfoOf(name).Description;
+}
+
+int DefaultCoarseTriangles(const std::string& name)
+{
+  return InfoOf(name).CoarseTriangles;
+}
+
+ExactShape ExactShapeOf(const std::string& name)
+{
+  return IsModelName(name) ? InfoOf(name).Exact : ExactShape::None;
+}
+
+vtkSmartPointer<vtkPolyData> PeriodicGridSurface(
+  int uResolution, int vResolution, void (*surface)(double u, double v, double point[3]))
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  auto index = [=](int i, int j) {
+    return static_cast<vtkIdType>((i % uResolution) * vResolution + (j % vResolution));
+  };
+  for (int i = 0; i < uResolution; ++i)
+  {
+    for (int j = 0; j < vResolution; ++j)
+    {
+      double p[3];
+      surface(2.0 * vtkMath::Pi() * i / uResolution, 2.0 * vtkMath::Pi() * j / vResolution, p);
+      points->InsertNextPoint(p);
+    }
+  }
+  vtkNew<vtkCellArray> polys;
+  for (int i = 0; i < uResolution; ++i)
+  {
+    for (int j = 0; j < vResolution; ++j)
+    {
+      const vtkIdType first[3] = { index(i, j), index(i + 1, j), index(i + 1, j + 1) };
+      const vtkIdType second[3] = { index(i, j), index(i + 1, j + 1), index(i, j + 1) };
+      polys->InsertNextCell(3, first);
+      polys->InsertNextCell(3, second);
+    }
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> MakeOriginal(const std::string& name, const std::string& dataDir)
+{
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  if (name == "bunny")
+  {
+    vtkNew<vtkPLYReader> reader;
+    const std::string path = dataDir + "/bunny.ply";
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    if (reader->GetOutput()->GetNumberOfPolys() == 0)
+    {
+      throw std::runtime_error("cannot read the bunny from " + path);
+    }
+    mesh->ShallowCopy(reader->GetOutput());
+  }
+  else if (name == "sphere" || name == "ellipsoid")
+  {
+    vtkNew<vtkIcosphereSource> sphere;
+    sphere->SetSubdivisionLevel(3);
+    sphere->Update();
+    mesh->ShallowCopy(sphere->GetOutput());
+    if (name == "ellipsoid")
+    {
+      vtkNew<vtkTransform> scale;
+      scale->Scale(2.0, 1.2, 0.7);
+      vtkNew<vtkTransformPolyDataFilter> stretch;
+      stretch->SetInputData(mesh);
+      stretch->SetTransform(scale); // transforms the normals too
+      stretch->Update();
+      mesh = vtkSmartPointer<vtkPolyData>::New();
+      mesh->ShallowCopy(stretch->GetOutput());
+    }
+  }
+  else if (name == "torus")
+  {
+    vtkNew<vtkTorusSurfaceSource> torus;
+    torus->SetRingResolution(48);
+    torus->SetTubeResolution(24);
+    torus->Update();
+    mesh->ShallowCopy(torus->GetOutput());
+  }
+  else if (name == "supertoroid")
+  {
+    mesh = PeriodicGridSurface(64, 32, SuperToroid);
+  }
+  else if (name == "knot")
+  {
+    mesh = PeriodicGridSurface(192, 16, TrefoilTube);
+  }
+  else
+  {
+    InfoOf(name); // throws
+  }
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> Decimate(vtkPolyData* original, int triangles)
+{
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputData(original);
+  triangulate->PassVertsOff();
+  triangulate->PassLinesOff();
+  triangulate->Update();
+  vtkPolyData* input = triangulate->GetOutput();
+  const vtkIdType have = input->GetNumberOfPolys();
+  auto coarse = vtkSmartPointer<vtkPolyData>::New();
+  if (have <= triangles)
+  {
+    coarse->SetPoints(input->GetPoints());
+    coarse->SetPolys(input->GetPolys());
+    return coarse;
+  }
+  vtkNew<vtkQuadricDecimation> decimate;
+  decimate->SetInputData(input);
+  decimate->SetTargetReduction(1.0 - static_cast<double>(triangles) / static_cast<double>(have));
+  decimate->VolumePreservationOn();
+  decimate->Update();
+  // Only geometry: normals of the original do not belong to the moved points.
+  coarse->SetPoints(decimate->GetOutput()->GetPoints());
+  coarse->SetPolys(decimate->GetOutput()->GetPolys());
+  ProjectOntoSurface(coarse, input);
+  if (CountBoundaryOrNonManifoldEdges(input) == 0 && CountBoundaryOrNonManifoldEdges(coarse) != 0)
+  {
+    throw std::runtime_error("quadric decimation to " + std::to_string(triangles) +
+      " triangles broke the closed surface; ask for more triangles");
+  }
+  return coarse;
+}
+
+vtkSmartPointer<vtkPolyData> Refine(vtkPolyData* original, int level)
+{
+  vtkNew<vtkOpenSubdivRefiner> refiner;
+  refiner->SetInputData(original);
+  refiner->SetLevel(level);
+  refiner->ProjectToLimitOn();
+  refiner->Update();
+  if (refiner->GetOutput()->GetNumberOfPolys() == 0)
+  {
+    throw std::runtime_error("Loop refinement failed");
+  }
+  auto fine = vtkSmartPointer<vtkPolyData>::New();
+  fine->ShallowCopy(refiner->GetOutput());
+  return fine;
+}
+
+ModelVersions MakeVersions(const std::string& name, vtkSmartPointer<vtkPolyData> original,
+  int coarseTriangles, int fineLevel)
+{
+  ModelVersions versions;
+  versions.Name = name;
+  versions.Description = IsModelName(name) ? ModelDescription(name) : name;
+  versions.Exact = ExactShapeOf(name);
+  versions.Original = original;
+  versions.Coarse = Decimate(original, coarseTriangles);
+  versions.Fine = Refine(original, fineLevel);
+  return versions;
+}
+
+} // namespace silhouette_eval

@@ -38,14 +38,16 @@ struct ModelInfo
   ExactShape Exact;
 };
 
+// Coarse sizes where the raw outline is visibly polygonal at 1024 x 768
+// (about 1.5 px or more from the fine reference on average).
 const ModelInfo Models[] = {
-  { "bunny", "the Stanford bunny (Data/bunny.ply, 3,674 triangles)", 1000, ExactShape::None },
+  { "bunny", "the Stanford bunny (Data/bunny.ply, 3,674 triangles)", 500, ExactShape::None },
   { "sphere", "unit icosphere, 1,280 triangles, points on the sphere", 80, ExactShape::UnitSphere },
-  { "torus", "torus R = 1, r = 0.4, 48 x 24 grid", 400, ExactShape::Torus },
+  { "torus", "torus R = 1, r = 0.4, 48 x 24 grid", 300, ExactShape::Torus },
   { "ellipsoid", "ellipsoid 2 : 1.2 : 0.7, from a 1,280-triangle icosphere", 200,
     ExactShape::None },
-  { "supertoroid", "super-toroid with a rounded-square tube, 64 x 32 grid", 600, ExactShape::None },
-  { "knot", "trefoil knot tube, 192 x 16 grid", 1200, ExactShape::None },
+  { "supertoroid", "super-toroid with a rounded-square tube, 64 x 32 grid", 300, ExactShape::None },
+  { "knot", "trefoil knot tube, 192 x 16 grid", 600, ExactShape::None },
 };
 
 const ModelInfo& InfoOf(const std::string& name)

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Regenerates the README's evaluation (issue 3) from scratch: builds, measures
+# every model of the set with `silhouette compare all` (1024x768, 12 views, 30
+# timed orbit frames per variant), draws the figures and the time plot into
+# docs/figures/, writes docs/evaluation.md and puts it into README.md between
+# the evaluation markers. Takes a few minutes on two cores.
+set -euo pipefail
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+# shellcheck source=setup.sh
+source "$here/scripts/setup.sh"
+
+silhouette="$build/bin/silhouette"
+display=()
+if [ -z "${DISPLAY:-}" ]; then
+  display=(xvfb-run -a -s "-screen 0 1280x1024x24")
+fi
+mkdir -p "$here/docs/figures"
+
+echo "evaluate: measuring the model set (progress below)"
+{
+  echo "Measured by \`bash scripts/evaluate.sh\` on $(nproc) cores, $(uname -m), Mesa llvmpipe under Xvfb,"
+  echo "$(date -u +%Y-%m-%d)."
+  echo
+  "${display[@]}" "$silhouette" compare all --markdown
+} >"$here/docs/evaluation.md"
+
+for model in bunny torus knot; do
+  "${display[@]}" "$silhouette" figure "$model" --size 400x400 -o "$here/docs/figures/$model.png"
+done
+"${display[@]}" "$silhouette" figure bunny --size 1024x768 -o "$build/figure_bunny_full.png" \
+  --plot "$here/docs/figures/time_bunny.png"
+
+readme="$here/README.md"
+awk -v table="$here/docs/evaluation.md" '
+  /<!-- evaluation:begin -->/ { print; while ((getline line < table) > 0) print line; skipping = 1; next }
+  /<!-- evaluation:end -->/ { skipping = 0 }
+  !skipping { print }
+' "$readme" >"$readme.new"
+mv "$readme.new" "$readme"
+echo "evaluate: wrote docs/evaluation.md, docs/figures/*.png and the README's evaluation section"

@@ -29,7 +29,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <functional>
+#include <numeric>
 #include <unordered_map>
 #include <vector>
 
@@ -42,18 +44,65 @@ namespace
 // is not enough: renderers reset its clipping range every frame, which would
 // re-run the filter for nothing, while a prop's matrix or a window's size can
 // change without touching the camera at all.
+// The camera enters through its model-view matrix (position, orientation,
+// model and user-view transforms) and its projection parameters, which do
+// not depend on the clipping range. Signatures are compared bitwise, so a NaN
+// in the view compares equal to itself instead of re-running the filter on
+// every update.
 struct ViewSignature
 {
-  std::array<double, 19> Camera{};
+  std::array<double, 16> ModelView{};
+  std::array<double, 16> ExplicitProjection{};
+  std::array<double, 17> Projection{};
   std::array<double, 16> Model{};
   std::array<int, 2> Viewport{};
 
-  bool operator==(const ViewSignature& o) const
-  {
-    return this->Camera == o.Camera && this->Model == o.Model && this->Viewport == o.Viewport;
-  }
+  bool operator==(const ViewSignature& o) const { return std::memcmp(this, &o, sizeof(o)) == 0; }
   bool operator!=(const ViewSignature& o) const { return !(*this == o); }
 };
+
+ViewSignature SignatureOf(vtkCamera* camera, const double model[16], std::array<int, 2> viewport)
+{
+  ViewSignature view; // value-initialised: no padding garbage for memcmp
+  std::memset(&view, 0, sizeof(view));
+  std::copy(&camera->GetModelViewTransformMatrix()->Element[0][0],
+    &camera->GetModelViewTransformMatrix()->Element[0][0] + 16, view.ModelView.begin());
+  if (camera->GetUseExplicitProjectionTransformMatrix() &&
+    camera->GetExplicitProjectionTransformMatrix())
+  {
+    std::copy(&camera->GetExplicitProjectionTransformMatrix()->Element[0][0],
+      &camera->GetExplicitProjectionTransformMatrix()->Element[0][0] + 16,
+      view.ExplicitProjection.begin());
+  }
+  double* p = view.Projection.data();
+  p[0] = camera->GetViewAngle();
+  p[1] = camera->GetParallelScale();
+  p[2] = camera->GetParallelProjection();
+  p[3] = camera->GetUseHorizontalViewAngle();
+  camera->GetWindowCenter(p + 4);
+  camera->GetViewShear(p + 6);
+  p[9] = camera->GetEyeAngle();
+  p[10] = camera->GetUseExplicitProjectionTransformMatrix();
+  p[11] = camera->GetUseOffAxisProjection();
+  p[12] = camera->GetEyeSeparation();
+  camera->GetScreenBottomLeft(p + 13); // with UseOffAxisProjection
+  p[16] = camera->GetLeftEye();
+  std::copy(model, model + 16, view.Model.begin());
+  view.Viewport = viewport;
+  return view;
+}
+
+bool AllFinite(const double* values, int count)
+{
+  for (int i = 0; i < count; ++i)
+  {
+    if (!std::isfinite(values[i]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
 
 void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
 {
@@ -80,6 +129,11 @@ vtkSmartPointer<vtkPoints> BuildPoints(vtkPolyData* input, const silsmooth::Smoo
   {
     points->SetPoint(id++, p.Position.x, p.Position.y, p.Position.z);
   }
+  // Vertices lowered below concave silhouette segments: in the output only.
+  for (const auto& moved : result.MovedPoints)
+  {
+    points->SetPoint(moved.first, moved.second.x, moved.second.y, moved.second.z);
+  }
   return points;
 }
 
@@ -91,49 +145,37 @@ void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
 {
   const vtkIdType total = numPoints + static_cast<vtkIdType>(result.NewPoints.size());
   vtkDataArray* inNormals = in->GetNormals();
+  // VTK's attribute rules decide what is copied and interpolated (global and
+  // pedigree ids are not interpolated); the normals are replaced below.
+  out->CopyAllOn();
+  out->CopyNormalsOff();
+  out->InterpolateAllocate(in, total);
+  if (numPoints > 0)
+  {
+    out->CopyData(in, 0, numPoints, 0);
+  }
   vtkNew<vtkIdList> sources;
   sources->SetNumberOfIds(3);
-  for (int i = 0; i < in->GetNumberOfArrays(); ++i)
+  vtkIdType id = numPoints;
+  for (const silsmooth::NewPoint& p : result.NewPoints)
   {
-    vtkAbstractArray* source = in->GetAbstractArray(i);
-    if (!source || source == inNormals)
+    for (int k = 0; k < 3; ++k)
     {
-      continue;
+      sources->SetId(k, p.Sources[k]);
     }
-    // A fresh array: SetNumberOfTuples() on a copy would reallocate without
-    // keeping the copied values.
-    auto array = vtk::TakeSmartPointer(source->NewInstance());
-    array->SetName(source->GetName());
-    array->SetNumberOfComponents(source->GetNumberOfComponents());
-    array->CopyComponentNames(source);
-    array->SetNumberOfTuples(total);
-    if (numPoints > 0)
-    {
-      array->InsertTuples(0, numPoints, 0, source);
-    }
-    vtkIdType id = numPoints;
-    for (const silsmooth::NewPoint& p : result.NewPoints)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        sources->SetId(k, p.Sources[k]);
-      }
-      double weights[3] = { p.Weights[0], p.Weights[1], p.Weights[2] };
-      array->InterpolateTuple(id++, sources, source, weights);
-    }
-    out->AddArray(array);
-    const int attribute = in->IsArrayAnAttribute(i);
-    if (attribute >= 0 && source->GetName())
-    {
-      out->SetActiveAttribute(source->GetName(), attribute);
-    }
+    double weights[3] = { p.Weights[0], p.Weights[1], p.Weights[2] };
+    out->InterpolatePoint(in, id++, sources, weights);
+  }
+  if (inNormals && inNormals->GetName() && out->GetArray(inNormals->GetName()))
+  {
+    out->RemoveArray(inNormals->GetName());
   }
 
   vtkNew<vtkFloatArray> normals;
   normals->SetName(inNormals && inNormals->GetName() ? inNormals->GetName() : "Normals");
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(total);
-  vtkIdType id = 0;
+  id = 0;
   for (const glm::dvec3& n : mesh.normals())
   {
     normals->SetTuple3(id++, n.x, n.y, n.z);
@@ -209,24 +251,16 @@ void BuildCells(vtkPolyData* input, vtkPolyData* output, const std::vector<vtkId
 
   vtkCellData* in = input->GetCellData();
   vtkCellData* out = output->GetCellData();
-  for (int i = 0; i < in->GetNumberOfArrays(); ++i)
+  // Each output cell takes its original cell's data, under VTK's attribute
+  // rules (global ids are not duplicated onto the replacement cells).
+  if (in->GetNumberOfArrays() > 0)
   {
-    vtkAbstractArray* source = in->GetAbstractArray(i);
-    if (!source)
-    {
-      continue;
-    }
-    auto array = vtk::TakeSmartPointer(source->NewInstance());
-    array->SetName(source->GetName());
-    array->SetNumberOfComponents(source->GetNumberOfComponents());
-    array->SetNumberOfTuples(origin->GetNumberOfIds());
-    source->GetTuples(origin, array);
-    out->AddArray(array);
-    const int attribute = in->IsArrayAnAttribute(i);
-    if (attribute >= 0 && source->GetName())
-    {
-      out->SetActiveAttribute(source->GetName(), attribute);
-    }
+    vtkNew<vtkIdList> destination;
+    destination->SetNumberOfIds(origin->GetNumberOfIds());
+    std::iota(destination->begin(), destination->end(), vtkIdType{ 0 });
+    out->CopyAllOn();
+    out->CopyAllocate(in, origin->GetNumberOfIds());
+    out->CopyData(in, origin, destination);
   }
   vtkNew<vtkIdTypeArray> originalCellId;
   originalCellId->SetName("OriginalCellId");
@@ -251,7 +285,7 @@ void BuildSilhouetteLines(
   std::unordered_map<silsmooth::Id, vtkIdType> compact;
   for (const std::vector<silsmooth::Id>& chain : result.Polylines)
   {
-    cells->InsertNextCell(static_cast<vtkIdType>(chain.size()));
+    cells->InsertNextCell(static_cast<int>(chain.size())); // VTK takes the size as int here
     for (const silsmooth::Id id : chain)
     {
       auto inserted = compact.emplace(id, points->GetNumberOfPoints());
@@ -356,6 +390,22 @@ bool vtkSilhouetteSmoothingFilter::Internals::Rebuild(vtkPolyData* input)
       }
     }
   }
+  // Verts and lines pass through, so their ids must be valid too.
+  for (vtkCellArray* cells : { input->GetVerts(), input->GetLines() })
+  {
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      it->GetCurrentCell(npts, pts);
+      for (vtkIdType k = 0; k < npts; ++k)
+      {
+        if (pts[k] < 0 || pts[k] >= numPoints)
+        {
+          return false;
+        }
+      }
+    }
+  }
 
   std::vector<glm::dvec3> normals;
   if (vtkDataArray* given = input->GetPointData()->GetNormals())
@@ -387,12 +437,23 @@ vtkSilhouetteSmoothingFilter::vtkSilhouetteSmoothingFilter()
 vtkSilhouetteSmoothingFilter::~vtkSilhouetteSmoothingFilter()
 {
   this->SetCamera(nullptr);
-  this->SetProp3D(nullptr);
   this->SetModelMatrix(nullptr);
 }
 
 vtkCxxSetObjectMacro(vtkSilhouetteSmoothingFilter, Camera, vtkCamera);
-vtkCxxSetObjectMacro(vtkSilhouetteSmoothingFilter, Prop3D, vtkProp3D);
+void vtkSilhouetteSmoothingFilter::SetProp3D(vtkProp3D* prop)
+{
+  if (this->Prop3D != prop)
+  {
+    this->Prop3D = prop;
+    this->Modified();
+  }
+}
+
+vtkProp3D* vtkSilhouetteSmoothingFilter::GetProp3D()
+{
+  return this->Prop3D;
+}
 vtkCxxSetObjectMacro(vtkSilhouetteSmoothingFilter, ModelMatrix, vtkMatrix4x4);
 
 void vtkSilhouetteSmoothingFilter::SetRenderer(vtkRenderer* renderer)
@@ -417,13 +478,15 @@ vtkPolyData* vtkSilhouetteSmoothingFilter::GetSilhouetteOutput()
 namespace
 {
 
+// The renderer's camera only if it exists: asking for it would create one,
+// and a renderer that already has a camera skips its first automatic reset.
 vtkCamera* ActiveCamera(vtkCamera* camera, vtkRenderer* renderer)
 {
   if (camera)
   {
     return camera;
   }
-  return renderer ? renderer->GetActiveCamera() : nullptr;
+  return renderer && renderer->IsActiveCameraCreated() ? renderer->GetActiveCamera() : nullptr;
 }
 
 void ModelMatrixOf(vtkProp3D* prop, vtkMatrix4x4* matrix, double out[16])
@@ -465,20 +528,10 @@ vtkMTimeType vtkSilhouetteSmoothingFilter::GetMTime()
   {
     return mtime;
   }
-  ViewSignature view;
-  double* c = view.Camera.data();
-  camera->GetPosition(c);
-  camera->GetFocalPoint(c + 3);
-  camera->GetViewUp(c + 6);
-  camera->GetWindowCenter(c + 9);
-  c[11] = camera->GetViewAngle();
-  c[12] = camera->GetParallelScale();
-  c[13] = camera->GetParallelProjection();
-  c[14] = camera->GetUseHorizontalViewAngle();
-  camera->GetViewShear(c + 15);
-  c[18] = camera->GetEyeAngle();
-  ModelMatrixOf(this->Prop3D, this->ModelMatrix, view.Model.data());
-  view.Viewport = ViewportOf(this->Renderer, this->ViewportSize);
+  double model[16];
+  ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
+  const ViewSignature view =
+    SignatureOf(camera, model, ViewportOf(this->Renderer, this->ViewportSize));
   if (!this->Internal->HaveView || view != this->Internal->LastView)
   {
     this->Internal->LastView = view;
@@ -501,6 +554,14 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   }
 
   vtkCamera* camera = ActiveCamera(this->Camera, this->Renderer);
+  if (!camera && this->Renderer)
+  {
+    // The renderer asks for the bounds before it creates its camera (to reset
+    // it): give the input, and run for real once the camera exists.
+    output->ShallowCopy(input);
+    lines->Initialize();
+    return 1;
+  }
   if (!camera)
   {
     vtkErrorMacro("No camera: call SetCamera() or SetRenderer() before updating.");
@@ -527,26 +588,42 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   }
   this->UpdateProgress(0.2);
 
-  // The view in the data's model coordinates.
+  // The view in the data's model coordinates: model -> eye is the camera's
+  // model-view matrix (which includes its model and user-view transforms)
+  // times the prop's matrix; the eye is its inverse applied to the origin, and
+  // the direction towards the viewer its inverse applied to +z.
   double model[16];
   ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
+  double modelView[16];
+  vtkMatrix4x4::Multiply4x4(
+    &camera->GetModelViewTransformMatrix()->Element[0][0], model, modelView);
+  const double determinant = vtkMatrix4x4::Determinant(modelView);
+  if (!AllFinite(model, 16) || !AllFinite(modelView, 16) || !(std::abs(determinant) > 0.0) ||
+    !std::isfinite(determinant) || model[12] != 0.0 || model[13] != 0.0 || model[14] != 0.0 ||
+    model[15] != 1.0)
+  {
+    vtkErrorMacro("The view is degenerate: the model matrix or the camera is singular, not "
+                  "affine, or not finite.");
+    return 0;
+  }
   double inverse[16];
-  vtkMatrix4x4::Invert(model, inverse);
+  vtkMatrix4x4::Invert(modelView, inverse);
   const std::array<int, 2> viewport = ViewportOf(this->Renderer, this->ViewportSize);
+  if (viewport[0] < 1 || viewport[1] < 1)
+  {
+    vtkErrorMacro("The viewport size must be at least 1 x 1 pixels, not " << viewport[0] << " x "
+                                                                          << viewport[1] << ".");
+    return 0;
+  }
 
   silsmooth::ViewGeometry view;
   view.Parallel = camera->GetParallelProjection() != 0;
   view.ViewportWidth = viewport[0];
   view.ViewportHeight = viewport[1];
   double eye[4] = { 0, 0, 0, 1 };
-  camera->GetPosition(eye);
   vtkMatrix4x4::MultiplyPoint(inverse, eye, eye);
   view.Eye = glm::dvec3(eye[0], eye[1], eye[2]) / eye[3];
-  double toward[4] = { 0, 0, 0, 0 };
-  camera->GetDirectionOfProjection(toward);
-  toward[0] = -toward[0];
-  toward[1] = -toward[1];
-  toward[2] = -toward[2];
+  double toward[4] = { 0, 0, 1, 0 };
   vtkMatrix4x4::MultiplyPoint(inverse, toward, toward);
   view.TowardViewer = silsmooth::safeNormalize(glm::dvec3(toward[0], toward[1], toward[2]));
 
@@ -565,12 +642,14 @@ int vtkSilhouetteSmoothingFilter::RequestData(
     }
   }
 
-  silsmooth::SamplingParameters sampling;
+  silsmooth::SmoothingParameters parameters;
+  parameters.PerturbConcaveSilhouettes = this->PerturbVertices;
+  silsmooth::SamplingParameters& sampling = parameters.Sampling;
   sampling.TolerancePixels = this->Tolerance;
   sampling.MinimumSamples = this->MinimumSamples;
   sampling.MaximumSamples = std::max(this->MinimumSamples, this->MaximumSamples);
   sampling.Rule = this->SamplingRule == WANG_EQUATION_8 ? silsmooth::SamplingRule::WangEquation8
-                                                        : silsmooth::SamplingRule::ArcBound;
+                                                        : silsmooth::SamplingRule::SecondDifference;
   const silsmooth::ParallelFor smpFor =
     [](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
       vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&body](vtkIdType begin, vtkIdType end) {
@@ -578,7 +657,7 @@ int vtkSilhouetteSmoothingFilter::RequestData(
       });
     };
   const silsmooth::SmoothingResult result =
-    silsmooth::smoothSilhouettes(*internal.Mesh, view, sampling, smpFor);
+    silsmooth::smoothSilhouettes(*internal.Mesh, view, parameters, smpFor);
   this->UpdateProgress(0.6);
   if (this->GetAbortExecute())
   {
@@ -604,6 +683,8 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   AddCount(fd, "SilhouetteTriangleCount", silhouetteTriangles);
   AddCount(fd, "NewTriangleCount", newTriangles);
   AddCount(fd, "NewPointCount", static_cast<vtkIdType>(result.NewPoints.size()));
+  AddCount(fd, "ConcaveSegmentCount", static_cast<vtkIdType>(result.ConcaveSegmentCount));
+  AddCount(fd, "PerturbedPointCount", static_cast<vtkIdType>(result.MovedPoints.size()));
   AddCount(fd, "InputTriangleCount", inputTriangles);
   AddCount(fd, "OutputTriangleCount", inputTriangles - silhouetteTriangles + newTriangles);
 
@@ -616,7 +697,7 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Camera: " << this->Camera << "\n";
-  os << indent << "Prop3D: " << this->Prop3D << "\n";
+  os << indent << "Prop3D: " << this->Prop3D.GetPointer() << "\n";
   os << indent << "ModelMatrix: " << this->ModelMatrix << "\n";
   os << indent << "Renderer: " << this->Renderer.GetPointer() << "\n";
   os << indent << "ViewportSize: " << this->ViewportSize[0] << " x " << this->ViewportSize[1]
@@ -624,7 +705,7 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "MinimumSamples: " << this->MinimumSamples << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
-  os << indent
-     << "SamplingRule: " << (this->SamplingRule == ARC_BOUND ? "ArcBound" : "WangEquation8")
-     << "\n";
+  os << indent << "PerturbVertices: " << (this->PerturbVertices ? "On" : "Off") << "\n";
+  os << indent << "SamplingRule: "
+     << (this->SamplingRule == SECOND_DIFFERENCE ? "SecondDifference" : "WangEquation8") << "\n";
 }

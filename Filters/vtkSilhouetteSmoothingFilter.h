@@ -23,13 +23,17 @@
  * viewport size in pixels (SetViewportSize, or the renderer's size), and
  * optionally the actor (SetProp3D) or its matrix (SetModelMatrix) so that the
  * eye is taken into the data's model coordinates. Perspective and parallel
- * projection are both handled, from the camera. GetMTime() includes the
- * camera's, the prop's and the matrix's, so a mapper fed by this filter
- * re-executes it whenever the view moves. The view-independent work (triangles,
+ * projection are both handled, from the camera (its model-view matrix, so its
+ * model and user-view transforms count too). GetMTime() changes whenever the
+ * view changes in a way that changes the result (camera, prop matrix, model
+ * matrix, viewport), compared by value, so a mapper fed by this filter re-runs
+ * it when the view moves, and not when a renderer only resets the clipping
+ * range. Before a renderer has created its camera, the input passes through
+ * unchanged (the renderer asks for bounds to create it). The view-independent work (triangles,
  * edge table, shading normals) is cached and rebuilt only when the input changes.
  *
  * Output port 0: the re-meshed mesh. All input points come first with their ids
- * unchanged, then the added points. Arrays:
+ * unchanged (positions too, but for the perturbation below), then the added points. Arrays:
  * - cell `NewGeometry` (unsigned char): 0 = input triangle kept as it was,
  *   1 = made by silhouette re-meshing (2 is reserved for feature-curve re-meshing);
  * - cell `OriginalCellId` (vtkIdType): the input cell each output cell came from;
@@ -39,7 +43,14 @@
  *   along the same parameters; every other input cell array, copied from the
  *   original cell;
  * - field data `SilhouetteTriangleCount`, `NewTriangleCount`, `NewPointCount`,
- *   `InputTriangleCount`, `OutputTriangleCount` (vtkIdType, one tuple each).
+ *   `InputTriangleCount`, `OutputTriangleCount`, `ConcaveSegmentCount`,
+ *   `PerturbedPointCount` (vtkIdType, one tuple each).
+ *
+ * Concave silhouettes (saddle regions, such as a torus's inner rim) would be
+ * hidden behind their neighbouring triangles; with PerturbVertices on (the
+ * default) the vertices around them are lowered below the planes of the
+ * concave segments, as in the paper's section III-E. Only the output's copies
+ * move: input points keep their ids, and their positions except for these.
  *
  * Output port 1: the smoothed silhouette as polylines chained across triangles
  * (closed loops repeat their first point at the end), with point `Normals`.
@@ -47,15 +58,22 @@
  * Guarantees: crack-free (each silhouette point is computed once per undirected
  * edge, so both triangles of an edge split it at the identical point); a closed
  * manifold input gives a closed manifold output with consistent orientation;
- * boundary edges stay boundary edges; a view with no silhouette triangle gives
- * the input back unchanged (plus the arrays above).
+ * boundary edges stay boundary edges (a split one bends to its silhouette point,
+ * which depends on the view and on the normals: a model cut into pieces stays
+ * crack-free along its seams only if every piece carries the same point
+ * normals); a view with no silhouette triangle gives triangle input back
+ * unchanged (polygons and strips come out triangulated; normals come out
+ * normalised, as floats).
  *
  * Defined behaviour for awkward input: an empty input gives an empty output;
  * points with NaN or infinite coordinates make the request fail with an error;
  * cells that repeat a point id are passed through unchanged; edges shared by more
  * than two triangles are split at one shared point for all of them; a missing
  * camera makes the request fail with an error; an eye exactly on the surface is
- * handled like any other view (its vertices count as visible).
+ * handled like any other view (its vertices count as visible); a singular or
+ * non-finite view (e.g. a prop scaled to zero) or a viewport smaller than one
+ * pixel makes the request fail with an error. Global and pedigree ids are not
+ * interpolated (VTK's attribute rules): they are not in the output.
  *
  * @sa vtkPolyDataSilhouette
  */
@@ -92,10 +110,11 @@ public:
   ///@{
   /**
    * Optional: the prop that renders the output; its matrix takes the eye into
-   * the data's model coordinates. Takes precedence over ModelMatrix.
+   * the data's model coordinates. Takes precedence over ModelMatrix. Held by a
+   * weak reference: the prop usually owns the mapper that owns this filter.
    */
   virtual void SetProp3D(vtkProp3D*);
-  vtkGetObjectMacro(Prop3D, vtkProp3D);
+  vtkProp3D* GetProp3D();
   ///@}
 
   ///@{
@@ -147,18 +166,31 @@ public:
 
   enum SamplingRules
   {
-    ARC_BOUND = 0,      ///< k >= sqrt(h / e) pieces: keeps the tolerance (default)
+    SECOND_DIFFERENCE =
+      0,                ///< bounds the projected curve's chord error: keeps the tolerance (default)
     WANG_EQUATION_8 = 1 ///< the paper's eq. 8, which under-samples (kept for comparison)
   };
 
   ///@{
   /**
-   * How the number of samples per silhouette segment is chosen.
+   * How the number of samples per silhouette segment is chosen (see
+   * Filters/Core/AdaptiveSampling.h for the bound and the measurements).
    */
-  vtkSetClampMacro(SamplingRule, int, ARC_BOUND, WANG_EQUATION_8);
+  vtkSetClampMacro(SamplingRule, int, SECOND_DIFFERENCE, WANG_EQUATION_8);
   vtkGetMacro(SamplingRule, int);
-  void SetSamplingRuleToArcBound() { this->SetSamplingRule(ARC_BOUND); }
+  void SetSamplingRuleToSecondDifference() { this->SetSamplingRule(SECOND_DIFFERENCE); }
   void SetSamplingRuleToWangEquation8() { this->SetSamplingRule(WANG_EQUATION_8); }
+  ///@}
+
+  ///@{
+  /**
+   * Lower the vertices around concave silhouette segments so that the
+   * smoothed curve is not blocked by its neighbouring triangles (paper III-E).
+   * Default on.
+   */
+  vtkSetMacro(PerturbVertices, bool);
+  vtkGetMacro(PerturbVertices, bool);
+  vtkBooleanMacro(PerturbVertices, bool);
   ///@}
 
   /**
@@ -167,8 +199,8 @@ public:
   vtkPolyData* GetSilhouetteOutput();
 
   /**
-   * Includes the camera's, the prop's and the matrix's modification times,
-   * and changes when the renderer's size does.
+   * Changes when the view changes in a way that changes the result (compared
+   * by value), besides the usual parameter changes.
    */
   vtkMTimeType GetMTime() override;
 
@@ -179,14 +211,15 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   vtkCamera* Camera = nullptr;
-  vtkProp3D* Prop3D = nullptr;
+  vtkWeakPointer<vtkProp3D> Prop3D;
   vtkMatrix4x4* ModelMatrix = nullptr;
   vtkWeakPointer<vtkRenderer> Renderer;
   int ViewportSize[2] = { 1024, 768 };
   double Tolerance = 0.5;
   int MinimumSamples = 2;
   int MaximumSamples = 256;
-  int SamplingRule = ARC_BOUND;
+  int SamplingRule = SECOND_DIFFERENCE;
+  bool PerturbVertices = true;
 
 private:
   vtkSilhouetteSmoothingFilter(const vtkSilhouetteSmoothingFilter&) = delete;

@@ -37,10 +37,8 @@ EdgeTable::EdgeTable(const std::vector<Triangle>& triangles)
       this->Edges.back().high != key.high)
     {
       this->Edges.push_back(key);
-      this->UseCounts.push_back(0);
     }
     this->SideEdges[order[i]] = static_cast<Id>(this->Edges.size() - 1);
-    ++this->UseCounts.back();
   }
 }
 

@@ -33,13 +33,10 @@ public:
   const Edge& edge(Id e) const { return this->Edges[static_cast<std::size_t>(e)]; }
   /// Edge id of side k of triangle t; side k joins corner k to corner (k+1)%3.
   Id sideEdge(Id t, int k) const { return this->SideEdges[static_cast<std::size_t>(t) * 3 + k]; }
-  /// How many triangle sides use edge e: 1 on a boundary, 2 when manifold.
-  int useCount(Id e) const { return this->UseCounts[static_cast<std::size_t>(e)]; }
 
 private:
   std::vector<Edge> Edges;
   std::vector<Id> SideEdges;
-  std::vector<int> UseCounts;
 };
 
 /// True when the triangle names one point twice (it has no area and no

@@ -5,6 +5,7 @@
 #include "ShadingNormals.h"
 #include "SilhouettePoint.h"
 #include "SilhouettePolylines.h"
+#include "VertexPerturbation.h"
 
 #include <glm/geometric.hpp>
 
@@ -28,6 +29,35 @@ PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle>
   , Triangles(std::move(triangles))
   , Edges(this->Triangles)
 {
+  // Edge neighbours of every vertex (compressed rows), for the perturbation.
+  std::vector<Id> degree(this->Points.size() + 1, 0);
+  for (std::size_t e = 0; e < this->Edges.edgeCount(); ++e)
+  {
+    const Edge& edge = this->Edges.edge(static_cast<Id>(e));
+    if (edge.low != edge.high)
+    {
+      ++degree[static_cast<std::size_t>(edge.low) + 1];
+      ++degree[static_cast<std::size_t>(edge.high) + 1];
+    }
+  }
+  for (std::size_t v = 1; v < degree.size(); ++v)
+  {
+    degree[v] += degree[v - 1];
+  }
+  this->NeighbourOffsets = degree;
+  this->Neighbours.resize(static_cast<std::size_t>(degree.back()));
+  for (std::size_t e = 0; e < this->Edges.edgeCount(); ++e)
+  {
+    const Edge& edge = this->Edges.edge(static_cast<Id>(e));
+    if (edge.low != edge.high)
+    {
+      this->Neighbours[static_cast<std::size_t>(degree[static_cast<std::size_t>(edge.low)]++)] =
+        edge.high;
+      this->Neighbours[static_cast<std::size_t>(degree[static_cast<std::size_t>(edge.high)]++)] =
+        edge.low;
+    }
+  }
+
   std::vector<glm::dvec3> computed;
   bool needComputed = normals.size() != this->Points.size();
   if (!needComputed)
@@ -94,10 +124,11 @@ class SilhouettePass
 {
 public:
   SilhouettePass(const PreparedMesh& mesh, const ViewGeometry& view,
-    const SamplingParameters& sampling, const ParallelFor& parallelFor)
+    const SmoothingParameters& parameters, const ParallelFor& parallelFor)
     : Mesh(mesh)
     , View(view)
-    , Sampling(sampling)
+    , Parameters(parameters)
+    , Sampling(parameters.Sampling)
     , For(parallelFor)
   {
   }
@@ -114,6 +145,14 @@ public:
       this->remeshTriangle(t, segments);
     }
     this->Result.Polylines = chainSegments(segments);
+    this->Result.ConcaveSegmentCount = this->Concave.size();
+    if (this->Parameters.PerturbConcaveSilhouettes && !this->Concave.empty())
+    {
+      this->Result.MovedPoints = perturbVerticesBelowConcaveSegments(this->Concave,
+        this->Mesh.points(), this->Mesh.normals(), this->Mesh.triangles(),
+        this->Mesh.neighbourOffsets(), this->Mesh.neighbours());
+      this->keepOutputFacingOut();
+    }
     return std::move(this->Result);
   }
 
@@ -266,6 +305,14 @@ private:
       const HermiteCurve segment =
         makeCircleApproximatingCurve(this->positionOf(p.Point), nP, this->positionOf(q.Point), nQ);
       const int samples = silhouetteSampleCount(segment, nP, nQ, this->View, this->Sampling);
+      if (isConcaveSegment(segment.P0, nP, segment.P1, nQ))
+      {
+        const glm::dvec3 midNormal = safeNormalize(nP + nQ);
+        if (midNormal != glm::dvec3(0.0))
+        {
+          this->Concave.push_back({ t, segment.P0, segment.P1, segment.evaluate(0.5), midNormal });
+        }
+      }
       const Id pointCount = static_cast<Id>(this->Mesh.points().size());
       for (int i = 1; i + 1 < samples; ++i)
       {
@@ -297,21 +344,64 @@ private:
     }
   }
 
+  // The output triangles around the moved points (kept input triangles and
+  // replacements alike) must not turn over.
+  void keepOutputFacingOut()
+  {
+    const std::vector<std::pair<Id, glm::dvec3>>& moved = this->Result.MovedPoints;
+    auto isMoved = [&moved](Id v) {
+      const auto it = std::lower_bound(moved.begin(), moved.end(), v,
+        [](const std::pair<Id, glm::dvec3>& m, Id id) { return m.first < id; });
+      return it != moved.end() && it->first == v;
+    };
+    auto touchesMoved = [&isMoved](const Triangle& t) {
+      return isMoved(t[0]) || isMoved(t[1]) || isMoved(t[2]);
+    };
+    std::vector<Triangle> around;
+    const std::vector<Triangle>& triangles = this->Mesh.triangles();
+    std::size_t next = 0;
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      if (next < this->Result.SilhouetteTriangles.size() &&
+        this->Result.SilhouetteTriangles[next] == static_cast<Id>(t))
+      {
+        ++next; // replaced: its replacements are checked below
+        continue;
+      }
+      if (touchesMoved(triangles[t]))
+      {
+        around.push_back(triangles[t]);
+      }
+    }
+    for (const Triangle& t : this->Result.Replacements)
+    {
+      if (touchesMoved(t))
+      {
+        around.push_back(t);
+      }
+    }
+    keepTrianglesFacingOut(
+      this->Result.MovedPoints, around, [this](Id id) { return this->positionOf(id); },
+      [this](Id id) { return this->normalOf(id); });
+  }
+
   const PreparedMesh& Mesh;
   const ViewGeometry& View;
+  const SmoothingParameters& Parameters;
   const SamplingParameters& Sampling;
   const ParallelFor& For;
   std::vector<double> G;
   std::vector<EdgeSilhouettePoint> EdgePoints;
+  std::vector<ConcaveSegment> Concave;
   SmoothingResult Result;
 };
 
 } // namespace
 
 SmoothingResult smoothSilhouettes(const PreparedMesh& mesh, const ViewGeometry& view,
-  const SamplingParameters& sampling, const ParallelFor& parallelFor)
+  const SmoothingParameters& parameters, const ParallelFor& parallelFor)
 {
-  return SilhouettePass(mesh, view, sampling, parallelFor).run();
+  return SilhouettePass(mesh, view, parameters, parallelFor).run();
 }
 
 void assembleTriangles(const PreparedMesh& mesh, const SmoothingResult& result,

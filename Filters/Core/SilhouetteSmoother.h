@@ -4,8 +4,9 @@
 // Steps, each in its own unit: vertex visibility (ViewGeometry), silhouette
 // triangles, one silhouette point per mixed edge on its silhouette bridge
 // (HermiteCurve, SilhouettePoint), silhouette segments and their adaptive
-// sampling (AdaptiveSampling), local re-meshing (LocalRemesher), and the
-// silhouette polylines (SilhouettePolylines).
+// sampling (AdaptiveSampling), local re-meshing (LocalRemesher), the
+// silhouette polylines (SilhouettePolylines), and the vertex perturbation
+// for concave segments (VertexPerturbation).
 #pragma once
 
 #include "AdaptiveSampling.h"
@@ -16,6 +17,7 @@
 
 #include <array>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace silsmooth
@@ -36,12 +38,26 @@ public:
   const std::vector<Triangle>& triangles() const { return this->Triangles; }
   const std::vector<glm::dvec3>& normals() const { return this->Normals; }
   const EdgeTable& edges() const { return this->Edges; }
+  /// The vertices joined to v by an edge are
+  /// neighbours()[neighbourOffsets()[v] .. neighbourOffsets()[v + 1]).
+  const std::vector<Id>& neighbourOffsets() const { return this->NeighbourOffsets; }
+  const std::vector<Id>& neighbours() const { return this->Neighbours; }
 
 private:
   std::vector<glm::dvec3> Points;
   std::vector<Triangle> Triangles;
   std::vector<glm::dvec3> Normals;
   EdgeTable Edges;
+  std::vector<Id> NeighbourOffsets;
+  std::vector<Id> Neighbours;
+};
+
+struct SmoothingParameters
+{
+  SamplingParameters Sampling;
+  /// Lower the vertices around concave silhouette segments so that the
+  /// smoothed curve is not blocked (see VertexPerturbation.h).
+  bool PerturbConcaveSilhouettes = true;
 };
 
 /// A point the pass adds. Its other attributes (texture coordinates, scalars)
@@ -66,6 +82,10 @@ struct SmoothingResult
   std::vector<Triangle> Replacements;
   /// The smoothed silhouette, chained across triangles, as output point ids.
   std::vector<std::vector<Id>> Polylines;
+  /// Silhouette segments found concave (III-E), and the input points that
+  /// were lowered below their planes: (id, new position), ascending ids.
+  std::size_t ConcaveSegmentCount = 0;
+  std::vector<std::pair<Id, glm::dvec3>> MovedPoints;
 
   std::size_t newTriangleCount() const { return this->Replacements.size(); }
 };
@@ -81,12 +101,15 @@ void serialFor(std::size_t count, const std::function<void(std::size_t, std::siz
 /// ends of their edge. A point closer to the triangle's lone vertex would make
 /// the region between them a sliver, and any fan over the bulging curve there
 /// stands on edge (one flipped triangle in 120 torus views before this rule).
-/// The clamp is continuous, so the silhouette never pops; on the exact-sphere
-/// test it changes the mean outline error by less than 0.001 px.
+/// The clamp is continuous, so it adds no jump of its own; on the exact-sphere
+/// test it changes the mean outline error by less than 0.001 px. (The
+/// silhouette can still jump when a vertex changes visibility in perspective:
+/// eq. 7's quadratic may have its root far from the edge's end then. A known
+/// limitation of the paper's approximation; parallel projection is linear.)
 constexpr double EdgeParameterMargin = 0.01;
 
 SmoothingResult smoothSilhouettes(const PreparedMesh& mesh, const ViewGeometry& view,
-  const SamplingParameters& sampling, const ParallelFor& parallelFor = serialFor);
+  const SmoothingParameters& parameters, const ParallelFor& parallelFor = serialFor);
 
 /// The visibility value g of every point (parallel over points).
 std::vector<double> vertexVisibility(

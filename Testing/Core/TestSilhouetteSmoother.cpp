@@ -104,7 +104,7 @@ TEST(SilhouetteSmoother, OctahedronStaysClosedFromManyViews)
   {
     const glm::dvec3 direction = glm::normalize(glm::dvec3(gauss(rng), gauss(rng), gauss(rng)));
     const ViewGeometry view = perspectiveFrom(direction * (2.0 + 3.0 * (i % 5)));
-    const SmoothingResult result = smoothSilhouettes(mesh, view, SamplingParameters{});
+    const SmoothingResult result = smoothSilhouettes(mesh, view, SmoothingParameters{});
     ASSERT_FALSE(result.SilhouetteTriangles.empty());
     const Check c = check(mesh, result);
     EXPECT_EQ(c.Unpaired, 0);
@@ -125,7 +125,7 @@ TEST(SilhouetteSmoother, SilhouettePointsLieWhereTheNormalTurnsAway)
   ViewGeometry view = perspectiveFrom({ 0, 0, 1 });
   view.Parallel = true;
   view.TowardViewer = glm::normalize(glm::dvec3(0.2, 0.1, 1.0));
-  const SmoothingResult result = smoothSilhouettes(mesh, view, SamplingParameters{});
+  const SmoothingResult result = smoothSilhouettes(mesh, view, SmoothingParameters{});
   ASSERT_FALSE(result.NewPoints.empty());
   int silhouettePoints = 0;
   for (const NewPoint& p : result.NewPoints)
@@ -143,7 +143,7 @@ TEST(SilhouetteSmoother, ParallelSplitDoesNotChangeTheResult)
 {
   const PreparedMesh mesh = octahedron();
   const ViewGeometry view = perspectiveFrom({ 2.5, 1.0, 0.3 });
-  const SmoothingResult serial = smoothSilhouettes(mesh, view, SamplingParameters{});
+  const SmoothingResult serial = smoothSilhouettes(mesh, view, SmoothingParameters{});
   const ParallelFor oneByOne = [](std::size_t count,
                                  const std::function<void(std::size_t, std::size_t)>& body) {
     for (std::size_t i = count; i-- > 0;)
@@ -151,7 +151,7 @@ TEST(SilhouetteSmoother, ParallelSplitDoesNotChangeTheResult)
       body(i, i + 1);
     }
   };
-  const SmoothingResult split = smoothSilhouettes(mesh, view, SamplingParameters{}, oneByOne);
+  const SmoothingResult split = smoothSilhouettes(mesh, view, SmoothingParameters{}, oneByOne);
   ASSERT_EQ(serial.NewPoints.size(), split.NewPoints.size());
   for (std::size_t i = 0; i < serial.NewPoints.size(); ++i)
   {
@@ -165,7 +165,7 @@ TEST(SilhouetteSmoother, NoSilhouetteLeavesTheMeshAlone)
   // One triangle facing the viewer: nothing to do.
   const PreparedMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 } });
   const SmoothingResult result =
-    smoothSilhouettes(mesh, perspectiveFrom({ 0.2, 0.2, 5 }), SamplingParameters{});
+    smoothSilhouettes(mesh, perspectiveFrom({ 0.2, 0.2, 5 }), SmoothingParameters{});
   EXPECT_TRUE(result.SilhouetteTriangles.empty());
   EXPECT_TRUE(result.NewPoints.empty());
   EXPECT_TRUE(result.Polylines.empty());
@@ -179,7 +179,7 @@ TEST(SilhouetteSmoother, ZeroNormalsAndEyeOnTheSurface)
   EXPECT_EQ(withZero.normals()[3], glm::dvec3(0.0)); // isolated: nothing to compute it from
   const PreparedMesh mesh = octahedron();
   const SmoothingResult onSurface =
-    smoothSilhouettes(mesh, perspectiveFrom({ 1, 0, 0 }), SamplingParameters{});
+    smoothSilhouettes(mesh, perspectiveFrom({ 1, 0, 0 }), SmoothingParameters{});
   for (const NewPoint& p : onSurface.NewPoints)
   {
     EXPECT_TRUE(

@@ -9,6 +9,7 @@
 #include "vtkExecutive.h"
 #include "vtkIcosphereSource.h"
 #include "vtkMath.h"
+#include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -289,6 +290,52 @@ bool OutOfRangeIds()
   return true;
 }
 
+bool DegenerateViews()
+{
+  // A prop flattened to a plane (singular matrix), a NaN in the model matrix,
+  // and a viewport of no pixels: clear errors, no uninitialised view.
+  vtkNew<vtkMatrix4x4> flat;
+  flat->SetElement(2, 2, 0.0);
+  vtkNew<vtkMatrix4x4> notFinite;
+  notFinite->SetElement(0, 3, std::numeric_limits<double>::quiet_NaN());
+  for (vtkMatrix4x4* matrix : { flat.Get(), notFinite.Get() })
+  {
+    vtkNew<vtkSilhouetteSmoothingFilter> filter;
+    vtkNew<vtkTest::ErrorObserver> errors;
+    filter->AddObserver(vtkCommand::ErrorEvent, errors);
+    filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
+    filter->SetInputData(Sphere());
+    filter->SetCamera(Camera(0, 0, 5));
+    filter->SetModelMatrix(matrix);
+    CHECK(filter->GetExecutive()->Update() == 0, "a degenerate model matrix fails the request");
+    CHECK(errors->GetErrorMessage().find("degenerate") != std::string::npos, "and says why");
+  }
+  vtkNew<vtkSilhouetteSmoothingFilter> filter;
+  vtkNew<vtkTest::ErrorObserver> errors;
+  filter->AddObserver(vtkCommand::ErrorEvent, errors);
+  filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
+  filter->SetInputData(Sphere());
+  filter->SetCamera(Camera(0, 0, 5));
+  filter->SetViewportSize(0, 0);
+  CHECK(filter->GetExecutive()->Update() == 0, "an empty viewport fails the request");
+  CHECK(errors->GetErrorMessage().find("viewport") != std::string::npos, "and says why");
+  std::printf("degenerate views (singular or NaN matrix, 0 x 0 viewport): request failed\n");
+  return true;
+}
+
+bool BadLineIds()
+{
+  auto mesh = Sphere(1);
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType line[2] = { 0, 999 };
+  lines->InsertNextCell(2, line);
+  mesh->SetLines(lines);
+  Run run(mesh, Camera(0, 0, 5));
+  CHECK(run.Failed(), "a line naming a missing point fails the request");
+  std::printf("lines naming missing points: request failed\n");
+  return true;
+}
+
 bool ExtremeScales()
 {
   for (double scale : { 1e-30, 1e30 })
@@ -323,5 +370,7 @@ int TestBadInput(int, char*[])
   ok = EyeOnTheSurface() && ok;
   ok = OutOfRangeIds() && ok;
   ok = ExtremeScales() && ok;
+  ok = DegenerateViews() && ok;
+  ok = BadLineIds() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

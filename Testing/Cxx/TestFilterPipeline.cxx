@@ -30,6 +30,7 @@
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
 #include "vtkUnsignedCharArray.h"
+#include "vtkWeakPointer.h"
 
 #include "SilhouetteTestSupport.h"
 
@@ -195,6 +196,71 @@ bool PropMatrixMatchesTransformedData()
   return true;
 }
 
+// The filter holds its prop weakly: actor -> mapper -> filter -> actor would
+// otherwise keep the whole pipeline alive.
+bool NoReferenceLoopThroughTheProp()
+{
+  vtkWeakPointer<vtkSilhouetteSmoothingFilter> filterLeft;
+  vtkWeakPointer<vtkActor> actorLeft;
+  {
+    vtkNew<vtkIcosphereSource> sphere;
+    vtkNew<vtkSilhouetteSmoothingFilter> smoother;
+    smoother->SetInputConnection(sphere->GetOutputPort());
+    vtkNew<vtkPolyDataMapper> mapper;
+    mapper->SetInputConnection(smoother->GetOutputPort());
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    smoother->SetProp3D(actor);
+    filterLeft = smoother.Get();
+    actorLeft = actor.Get();
+  }
+  CHECK(!filterLeft && !actorLeft, "the pipeline is freed when it goes out of scope");
+  std::printf("prop reference: no loop, the pipeline is freed\n");
+  return true;
+}
+
+// The camera's own model transform moves the eye like moving the data the
+// other way.
+bool CameraTransforms()
+{
+  vtkNew<vtkTorusSurfaceSource> torus;
+  torus->Update();
+  vtkNew<vtkTransform> turn;
+  turn->RotateWXYZ(40, 0.3, 1.0, 0.2);
+  vtkNew<vtkCamera> turned;
+  turned->SetPosition(0.5, 2.0, 5.0);
+  turned->SetModelTransformMatrix(turn->GetMatrix());
+  vtkNew<vtkSilhouetteSmoothingFilter> withTransform;
+  withTransform->SetInputConnection(torus->GetOutputPort());
+  withTransform->SetCamera(turned);
+  withTransform->Update();
+
+  vtkNew<vtkTransformPolyDataFilter> moved;
+  moved->SetInputConnection(torus->GetOutputPort());
+  moved->SetTransform(turn);
+  vtkNew<vtkCamera> plain;
+  plain->SetPosition(0.5, 2.0, 5.0);
+  vtkNew<vtkSilhouetteSmoothingFilter> onMoved;
+  onMoved->SetInputConnection(moved->GetOutputPort());
+  onMoved->SetCamera(plain);
+  onMoved->Update();
+  CHECK(FieldCount(withTransform->GetOutput(), "SilhouetteTriangleCount") ==
+      FieldCount(onMoved->GetOutput(), "SilhouetteTriangleCount"),
+    "a camera model transform gives the silhouette of the transformed data");
+  CHECK(
+    withTransform->GetOutput()->GetNumberOfPoints() == onMoved->GetOutput()->GetNumberOfPoints(),
+    "same points");
+  ExecutionCounter runs(withTransform);
+  vtkNew<vtkTransform> other;
+  other->RotateY(10);
+  turned->SetModelTransformMatrix(other->GetMatrix());
+  withTransform->Update();
+  CHECK(runs.Count == 1, "changing the camera's model transform re-runs the filter");
+  std::printf("camera transforms: model transform honoured, %ld silhouette triangles\n",
+    FieldCount(onMoved->GetOutput(), "SilhouetteTriangleCount"));
+  return true;
+}
+
 bool ArraysAndCounts()
 {
   vtkNew<vtkIcosphereSource> sphere;
@@ -227,6 +293,13 @@ bool ArraysAndCounts()
   }
   input->GetCellData()->AddArray(cellTag);
   input->GetFieldData()->AddArray(constant); // passes through
+  vtkNew<vtkIdTypeArray> globalIds;
+  globalIds->SetName("GlobalIds");
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    globalIds->InsertNextValue(1000 + i);
+  }
+  input->GetPointData()->SetGlobalIds(globalIds);
 
   vtkNew<vtkSilhouetteSmoothingFilter> smoother;
   smoother->SetInputData(input);
@@ -290,6 +363,7 @@ bool ArraysAndCounts()
   CHECK(FieldCount(out, "InputTriangleCount") == input->GetNumberOfPolys(), "InputTriangleCount");
   CHECK(FieldCount(out, "NewPointCount") == out->GetNumberOfPoints() - numPoints, "NewPointCount");
   CHECK(out->GetFieldData()->GetArray("Constant"), "input field data pass through");
+  CHECK(!pd->GetGlobalIds(), "global ids are not interpolated into duplicates");
   std::printf("arrays: %ld silhouette triangles -> %ld new triangles, %ld new points\n",
     FieldCount(out, "SilhouetteTriangleCount"), newCells, FieldCount(out, "NewPointCount"));
   return true;
@@ -422,6 +496,8 @@ bool ParallelProjection()
 int TestFilterPipeline(int, char*[])
 {
   bool ok = ReExecutesOnlyWhenTheViewChanges();
+  ok = NoReferenceLoopThroughTheProp() && ok;
+  ok = CameraTransforms() && ok;
   ok = PropMatrixMatchesTransformedData() && ok;
   ok = ArraysAndCounts() && ok;
   ok = CellTypes() && ok;

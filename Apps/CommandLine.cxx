@@ -2,6 +2,7 @@
 
 #include "CliErrors.h"
 #include "Smoothing.h"
+#include "Viewer.h"
 
 #include <vector>
 
@@ -32,6 +33,9 @@ Commands:
       from the same cameras: outline deviations and whole-frame times
   figure MODEL|MESH -o FIGURE.png [--plot PLOT.png] [options]
       the four labelled panels of Xing's Fig. 1, and a time plot
+  view [MODEL|MESH] [options]
+      the interactive viewer (keys, overlays, a tolerance slider), or a
+      headless orbit to numbered PNGs with per-frame figures
   help [COMMAND]
       show this help, or the help of COMMAND
 
@@ -151,6 +155,97 @@ Options:
                            triangles
   -h, --help               show this help and exit
 )";
+}
+
+std::string ViewHelp()
+{
+  return R"(Usage: silhouette view [MODEL|MESH] [options] [camera options]
+       silhouette view [MODEL|MESH] --orbit DEG --frames N [--record DIR] [--json] ...
+       silhouette view [MODEL|MESH] --play LOG [--screenshot-dir DIR] [--json] ...
+
+Opens a VTK render window with trackball camera interaction on the mesh,
+smoothed by vtkSilhouetteSmoothingFilter. The filter is fed the window's
+renderer, so it re-runs by itself whenever the camera moves (through the
+pipeline and its MTime). Needs an X display (xvfb-run -a where there is
+none, for the headless modes).
+
+MODEL|MESH: a model of the evaluation set (bunny, sphere, torus, ellipsoid,
+supertoroid, knot), shown as its coarse version (quadric decimation of the
+original, as 'silhouette compare' makes it), or a mesh file (.ply .obj .stl
+.vtp .vtk). Default: the bundled coarse bunny, Data/bunny_coarse.ply. The
+side-by-side fine reference is OpenSubdiv Loop refinement of the original
+(of the file itself for a mesh file), made the first time it is shown.
+
+)" + std::string("Keys (in the window, where h shows them too):\n") +
+    ViewerKeysHelp() +
+    R"(
+w, n and l switch to their style, or back to shaded when it is on already.
+f makes the fine reference the first time (Loop level --fine-level of the
+original; the status line says so, it takes a moment), then shows it on the
+right, sharing the camera: shaded, or as vtkPolyDataSilhouette lines in the
+lines style. + and - double and halve the tolerance within the slider's 0.1
+to 5 px. r goes back to the camera of the camera options, keeping the
+projection. c writes silhouette_view_NNNN.png (the first free number) to the
+screenshot folder and prints where. VTK's other trackball keys (3 stereo,
+j/t joystick, u user, fly-to, pick) do nothing here.
+
+The overlay (top left) shows the mesh, the style, the triangles in and out,
+the silhouette triangles and new triangles of the last filter run, the
+tolerance, and the times: frames per second from the wall time between the
+ends of the last 20 renders of the main view (a gap of over a second starts
+the count again, so idle time is not averaged in), the renderer's own time
+for the last render (vtkRenderer::GetLastRenderTimeInSeconds, which includes
+running the filter when the view moved) and the filter's time (wall time of
+its last execution). With smoothing off the filter does not run: the output
+is the input and the silhouette and new triangles show as 0.
+
+Options:
+  --style STYLE          the style to start in: shaded, wireframe,
+                         new-geometry or lines, as 'silhouette render'
+                         draws them (default: shaded)
+  --no-smoothing         start with smoothing off (default: on)
+  --fine-reference       start with the side-by-side fine reference
+                         (default: off; key f)
+  --fine-level L         Loop level of the fine reference, 1 to 5
+                         (default 3)
+  --coarse-triangles N   triangles of a model's coarse version (default:
+                         the model's own, as in 'silhouette compare')
+  --data DIR             the folder that holds bunny.ply and
+                         bunny_coarse.ply (default: the project's Data/)
+  --help-overlay         start with the key help shown (default: hidden;
+                         key h)
+  --no-overlay           no text overlays and no slider (default: shown)
+  --no-times             leave the frame rate and times out of the
+                         overlay, so images repeat exactly (default: shown)
+  --screenshot-dir DIR   where key c (and --play) write screenshots,
+                         created if missing (default: the current folder)
+  --orbit DEG            headless: turn the camera DEG degrees in all
+                         about the view-up through the focal point
+                         (vtkCamera::Azimuth), DEG / N per frame, rendering
+                         offscreen (default 360)
+  --frames N             headless: the number of frames, 1 to 100000;
+                         frame i is at azimuth i * DEG / N (default 36)
+  --record DIR           headless: write DIR/frame_0000.png, ...; DIR is
+                         created if missing (default: no images)
+                         Any of --orbit, --frames and --record selects the
+                         headless orbit. It prints one line per frame:
+                         frame, azimuth (degrees from the start camera),
+                         input, output, silhouette and new triangles,
+                         filter ms (0 when it did not run) and render ms.
+  --play LOG             plays a vtkInteractorEventRecorder event log in an
+                         offscreen window, then exits: after the start and
+                         after each key and slider move it writes
+                         step_NN_ACTION.png to the screenshot folder and
+                         prints the figures and the viewer's state. The
+                         log's positions are pixels: play it at the --size
+                         it was made for (default: no log, the window)
+  --json                 with --orbit or --play: one JSON object per line
+                         instead of text (default: text)
+  -h, --help             show this help and exit
+
+)" + CameraOptionsHelp() +
+    "\nThe window has the --size of the camera options (default 1024x768); the\n"
+    "--tolerance option sets the slider's start value (0.1 to 5 px on the slider).\n";
 }
 
 // A whole number in [low, high] for `option`, or UsageError.
@@ -381,6 +476,10 @@ std::string HelpOf(const std::string& command)
   {
     return FigureHelp();
   }
+  if (command == "view")
+  {
+    return ViewHelp();
+  }
   if (command == "help")
   {
     return MainHelp();
@@ -399,6 +498,117 @@ std::optional<RenderStyle> ParseRenderStyle(const std::string& name)
     }
   }
   return std::nullopt;
+}
+
+ViewOptions ParseView(ArgumentList& arguments)
+{
+  ViewOptions options;
+  bool onlyOperands = false; // after "--"
+  while (!arguments.AtEnd())
+  {
+    const std::string word = arguments.Take();
+    if (!onlyOperands && word == "--")
+    {
+      onlyOperands = true;
+      continue;
+    }
+    if (onlyOperands || !LooksLikeOption(word))
+    {
+      if (!options.Input.empty())
+      {
+        throw UsageError(
+          "unexpected argument '" + word + "' (the mesh is already '" + options.Input + "')");
+      }
+      options.Input = word;
+      continue;
+    }
+    const Option option = SplitOption(word);
+    const auto flag = [&option](bool& value) {
+      RejectInlineValue(option);
+      value = true;
+    };
+    if (option.Name == "--style")
+    {
+      const std::string name = arguments.TakeValue(option);
+      const std::optional<RenderStyle> style = ParseRenderStyle(name);
+      if (!style)
+      {
+        throw UsageError(
+          "option '--style' needs shaded, wireframe, new-geometry or lines, got '" + name + "'");
+      }
+      options.Style = *style;
+    }
+    else if (option.Name == "--no-smoothing")
+    {
+      flag(options.NoSmoothing);
+    }
+    else if (option.Name == "--fine-reference")
+    {
+      flag(options.FineReference);
+    }
+    else if (option.Name == "--fine-level")
+    {
+      options.FineLevel = ParseCount(option, arguments.TakeValue(option), 1, 5);
+    }
+    else if (option.Name == "--coarse-triangles")
+    {
+      options.CoarseTriangles = ParseCount(option, arguments.TakeValue(option), 4, 10000000);
+    }
+    else if (option.Name == "--data")
+    {
+      options.DataDirectory = arguments.TakeValue(option);
+    }
+    else if (option.Name == "--help-overlay")
+    {
+      flag(options.HelpOverlay);
+    }
+    else if (option.Name == "--no-overlay")
+    {
+      flag(options.NoOverlay);
+    }
+    else if (option.Name == "--no-times")
+    {
+      flag(options.NoTimes);
+    }
+    else if (option.Name == "--screenshot-dir")
+    {
+      options.ScreenshotDirectory = arguments.TakeValue(option);
+    }
+    else if (option.Name == "--orbit")
+    {
+      options.OrbitDegrees = ParseNumber(option.Name, arguments.TakeValue(option));
+      options.Orbit = true;
+    }
+    else if (option.Name == "--frames")
+    {
+      options.Frames = ParseCount(option, arguments.TakeValue(option), 1, 100000);
+      options.Orbit = true;
+    }
+    else if (option.Name == "--record")
+    {
+      options.RecordDirectory = arguments.TakeValue(option);
+      options.Orbit = true;
+    }
+    else if (option.Name == "--play")
+    {
+      options.PlayLog = arguments.TakeValue(option);
+    }
+    else if (option.Name == "--json")
+    {
+      flag(options.Json);
+    }
+    else if (!ParseCameraOption(option, arguments, options.Camera))
+    {
+      throw UsageError(
+        "unknown option '" + option.Name + "' for 'view'; run 'silhouette view --help'");
+    }
+  }
+  if (options.Orbit && !options.PlayLog.empty())
+  {
+    throw UsageError("'--play' cannot be combined with '--orbit', '--frames' or '--record'");
+  }
+  CheckCameraOptions(options.Camera);
+  return options;
 }
 
 // The parts both commands share: INPUT, --json and the camera options.
@@ -515,6 +725,11 @@ CommandLine ParseCommandLine(int argc, char* argv[])
   {
     result.What = CommandLine::Action::Figure;
     result.Figure = ParseFigure(arguments);
+  }
+  else if (command == "view")
+  {
+    result.What = CommandLine::Action::View;
+    result.View = ParseView(arguments);
   }
   else if (command == "smooth")
   {

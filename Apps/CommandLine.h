@@ -39,6 +39,30 @@ struct RenderOptions
   CameraOptions Camera;
 };
 
+/// `silhouette view`: the interactive viewer, its headless orbit and its
+/// recorded-interaction playback (see ViewHelp in CommandLine.cxx).
+struct ViewOptions
+{
+  std::string Input; ///< a model of the set or a mesh file; empty: the bundled coarse bunny
+  RenderStyle Style = RenderStyle::Shaded;
+  bool NoSmoothing = false;
+  bool FineReference = false; ///< start with the side-by-side fine reference
+  bool HelpOverlay = false;   ///< start with the key help shown
+  bool NoOverlay = false;     ///< no text overlays and no slider
+  bool NoTimes = false;       ///< leave the times out of the overlay (repeatable images)
+  int FineLevel = 3;
+  int CoarseTriangles = 0;   ///< 0: the model's default
+  std::string DataDirectory; ///< where bunny.ply is; empty: the built-in default
+  std::string ScreenshotDirectory = ".";
+  bool Orbit = false; ///< headless: render an orbit offscreen and print per-frame figures
+  double OrbitDegrees = 360.0;
+  int Frames = 36;
+  std::string RecordDirectory; ///< where the orbit's frames go; empty: none written
+  std::string PlayLog;         ///< a vtkInteractorEventRecorder log to play offscreen
+  bool Json = false;
+  CameraOptions Camera;
+};
+
 /// What the command line asks for.
 struct CommandLine
 {
@@ -49,7 +73,8 @@ struct CommandLine
     Render,
     Generate,
     Compare,
-    Figure
+    Figure,
+    View
   };
   Action What = Action::ShowHelp;
   std::string HelpText;
@@ -58,6 +83,7 @@ struct CommandLine
   GenerateOptions Generate;
   CompareOptions Compare;
   FigureOptions Figure;
+  ViewOptions View;
 };
 
 /// Parses argv; throws UsageError for anything it cannot make sense of.

@@ -6,6 +6,7 @@
 #include "Compare.h"
 #include "Figure.h"
 #include "Generate.h"
+#include "Viewer.h"
 #include "VtkErrorLog.h"
 
 #include <exception>
@@ -48,6 +49,9 @@ int main(int argc, char* argv[])
         break;
       case cli::CommandLine::Action::Figure:
         cli::RunFigure(commandLine.Figure);
+        break;
+      case cli::CommandLine::Action::View:
+        cli::RunView(commandLine.View);
         break;
     }
     return cli::ExitSuccess;

@@ -1,0 +1,1095 @@
+#include "Viewer.h"
+
+#include "CliErrors.h"
+#include "Figures.h"
+#include "MeshIO.h"
+#include "Rendering.h"
+#include "VtkErrorLog.h"
+
+#include "EvaluationModels.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkDataObject.h>
+#include <vtkDataSetMapper.h>
+#include <vtkFieldData.h>
+#include <vtkGenericRenderWindowInteractor.h>
+#include <vtkInteractorEventRecorder.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPNGWriter.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkProperty2D.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkSilhouetteSmoothingFilter.h>
+#include <vtkSliderRepresentation2D.h>
+#include <vtkSliderWidget.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+#include <vtkThreshold.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+#include <unistd.h>
+
+#ifndef SILHOUETTE_DATA_DIR
+#define SILHOUETTE_DATA_DIR "Data"
+#endif
+
+namespace cli
+{
+namespace
+{
+
+// The slider's range; the keys double and halve the tolerance within it.
+constexpr double MinimumSliderTolerance = 0.1;
+constexpr double MaximumSliderTolerance = 5.0;
+// Frames per second are averaged over this many intervals between renders.
+constexpr std::size_t MeasuredIntervals = 20;
+// A longer pause between two renders is idling, not a slow frame.
+constexpr double IdleGapSeconds = 1.0;
+
+// The colours of the new-geometry style, as Rendering.cxx draws it.
+constexpr double White[3] = { 1.0, 1.0, 1.0 };
+constexpr double DarkGrey[3] = { 0.30, 0.30, 0.30 };
+constexpr double Red[3] = { 0.90, 0.0, 0.0 };
+
+struct KeyBinding
+{
+  const char* Keys;
+  const char* Meaning;
+};
+
+// The one list the overlay and --help show; short, as the overlay must fit.
+constexpr KeyBinding KeyBindings[] = {
+  { "h", "this help on / off" },
+  { "s", "smoothing on / off" },
+  { "w", "wireframe on / off" },
+  { "n", "new geometry in red on / off" },
+  { "l", "silhouette lines only (pen and ink) on / off" },
+  { "f", "side-by-side fine reference on / off" },
+  { "+ -", "tolerance x2, /2 (also = _)" },
+  { "p", "parallel / perspective" },
+  { "r", "reset the camera" },
+  { "c", "screenshot (PNG)" },
+  { "q e", "quit" },
+  { "drag", "rotate; with shift: pan; with ctrl: spin" },
+  { "wheel", "zoom (also right drag)" },
+};
+
+// VTK aborts when its X display cannot be opened; end with one line instead.
+void ReportAbortWhileRendering(int)
+{
+  static const char message[] = "silhouette: rendering aborted: VTK could not use the X display "
+                                "(is DISPLAY right? try 'xvfb-run -a')\n";
+  const ssize_t ignored = write(STDERR_FILENO, message, sizeof(message) - 1);
+  (void)ignored;
+  _exit(ExitFailure);
+}
+
+// The trackball camera with only the viewer's keys: VTK's own (w/s
+// wireframe/surface, 3 stereo, f fly-to, p pick, j/t joystick...) would
+// change actors behind the viewer's back.
+class ViewerInteractorStyle : public vtkInteractorStyleTrackballCamera
+{
+public:
+  static ViewerInteractorStyle* New();
+  vtkTypeMacro(ViewerInteractorStyle, vtkInteractorStyleTrackballCamera);
+
+  std::function<void(ViewerAction)> Act;
+
+  void OnChar() override
+  {
+    vtkRenderWindowInteractor* interactor = this->Interactor;
+    const char* keySym = interactor->GetKeySym();
+    ViewerAction action;
+    if (this->Act && ViewerActionOfKey(interactor->GetKeyCode(), keySym ? keySym : "", action))
+    {
+      this->Act(action);
+    }
+  }
+};
+vtkStandardNewMacro(ViewerInteractorStyle);
+
+vtkIdType FieldCount(vtkPolyData* data, const char* name)
+{
+  vtkDataArray* array = data->GetFieldData()->GetArray(name);
+  return array && array->GetNumberOfTuples() > 0 ? static_cast<vtkIdType>(array->GetTuple1(0)) : 0;
+}
+
+std::string Fixed(double value, int digits)
+{
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*f", digits, value);
+  return text;
+}
+
+// Enough digits to read the same double back; null for what JSON cannot hold.
+std::string JsonNumber(double value)
+{
+  if (!std::isfinite(value))
+  {
+    return "null";
+  }
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.9g", value);
+  return text;
+}
+
+// 12345 -> "12,345", for counts people read.
+std::string Grouped(long long value)
+{
+  std::string digits = std::to_string(value < 0 ? -value : value);
+  for (int i = static_cast<int>(digits.size()) - 3; i > 0; i -= 3)
+  {
+    digits.insert(static_cast<std::size_t>(i), ",");
+  }
+  return (value < 0 ? "-" : "") + digits;
+}
+
+const char* OnOff(bool on)
+{
+  return on ? "on" : "off";
+}
+
+// Edges over an unlit white fill, as Rendering.cxx's wireframe styles.
+void ShowEdges(vtkActor* actor, const double color[3])
+{
+  vtkProperty* property = actor->GetProperty();
+  property->SetRepresentationToSurface();
+  property->SetColor(White[0], White[1], White[2]);
+  property->LightingOff();
+  property->EdgeVisibilityOn();
+  property->SetEdgeColor(color[0], color[1], color[2]);
+  property->SetLineWidth(1.0);
+}
+
+void WritePng(vtkRenderWindow* window, const std::string& path)
+{
+  VtkErrorLog& errors = VtkErrorLog::Instance();
+  errors.Clear();
+  vtkNew<vtkWindowToImageFilter> capture;
+  capture->SetInput(window);
+  capture->SetInputBufferTypeToRGB();
+  capture->ReadFrontBufferOff();
+  // An offscreen window keeps the frame just rendered; rendering it again
+  // would count as a frame in the frame rate.
+  capture->SetShouldRerender(!window->GetOffScreenRendering());
+  vtkNew<vtkPNGWriter> writer;
+  errors.Watch(writer);
+  writer->SetInputConnection(capture->GetOutputPort());
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  errors.ThrowIfErrors("cannot write '" + path + "'");
+}
+
+void CreateDirectory(const std::string& directory)
+{
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error || !std::filesystem::is_directory(directory))
+  {
+    throw RuntimeError("cannot create the folder '" + directory + "'" +
+      (error ? ": " + error.message() : std::string()));
+  }
+}
+
+std::string JoinPath(const std::string& directory, const std::string& name)
+{
+  return (std::filesystem::path(directory) / name).string();
+}
+
+} // namespace
+
+std::string ViewerKeysHelp()
+{
+  std::string text;
+  for (const KeyBinding& binding : KeyBindings)
+  {
+    char line[32];
+    std::snprintf(line, sizeof(line), "  %-6s ", binding.Keys);
+    text += line;
+    text += binding.Meaning;
+    text += "\n";
+  }
+  return text;
+}
+
+bool ViewerActionOfKey(char keyCode, const std::string& keySym, ViewerAction& action)
+{
+  if (keySym == "KP_Add")
+  {
+    action = ViewerAction::ToleranceUp;
+    return true;
+  }
+  if (keySym == "KP_Subtract")
+  {
+    action = ViewerAction::ToleranceDown;
+    return true;
+  }
+  switch (std::tolower(static_cast<unsigned char>(keyCode)))
+  {
+    case 'h':
+      action = ViewerAction::ToggleHelp;
+      return true;
+    case 's':
+      action = ViewerAction::ToggleSmoothing;
+      return true;
+    case 'w':
+      action = ViewerAction::ToggleWireframe;
+      return true;
+    case 'n':
+      action = ViewerAction::ToggleNewGeometry;
+      return true;
+    case 'l':
+      action = ViewerAction::ToggleLines;
+      return true;
+    case 'f':
+      action = ViewerAction::ToggleFineReference;
+      return true;
+    case '+':
+    case '=':
+      action = ViewerAction::ToleranceUp;
+      return true;
+    case '-':
+    case '_':
+      action = ViewerAction::ToleranceDown;
+      return true;
+    case 'p':
+      action = ViewerAction::ToggleProjection;
+      return true;
+    case 'r':
+      action = ViewerAction::ResetCamera;
+      return true;
+    case 'c':
+      action = ViewerAction::Screenshot;
+      return true;
+    case 'q':
+    case 'e':
+      action = ViewerAction::Quit;
+      return true;
+    default:
+      return false;
+  }
+}
+
+Viewer::Viewer(const ViewOptions& options)
+  : Options(options)
+  , CurrentStyle(options.Style)
+  , Smoothing(!options.NoSmoothing)
+  , ShowHelp(options.HelpOverlay)
+{
+  this->LoadMesh();
+}
+
+Viewer::~Viewer()
+{
+  if (this->Slider)
+  {
+    this->Slider->EnabledOff();
+  }
+}
+
+void Viewer::LoadMesh()
+{
+  const std::string dataDirectory =
+    this->Options.DataDirectory.empty() ? SILHOUETTE_DATA_DIR : this->Options.DataDirectory;
+  const std::string& input = this->Options.Input;
+  if (input.empty() || !silhouette_eval::IsModelName(input))
+  {
+    const std::string path = input.empty() ? JoinPath(dataDirectory, "bunny_coarse.ply") : input;
+    this->Mesh = ReadMesh(path);
+    this->Original = this->Mesh;
+    this->MeshName = std::filesystem::path(path).filename().string();
+    if (CountTriangles(this->Mesh) == 0)
+    {
+      throw RuntimeError(path + " has no triangles");
+    }
+  }
+  else
+  {
+    VtkErrorLog::Instance().Clear();
+    try
+    {
+      this->Original = silhouette_eval::MakeOriginal(input, dataDirectory);
+      const int triangles = this->Options.CoarseTriangles > 0
+        ? this->Options.CoarseTriangles
+        : silhouette_eval::DefaultCoarseTriangles(input);
+      this->Mesh = silhouette_eval::Decimate(this->Original, triangles);
+    }
+    catch (const std::runtime_error& error)
+    {
+      throw RuntimeError(input + ": " + error.what());
+    }
+    VtkErrorLog::Instance().ThrowIfErrors("preparing " + input + " failed");
+    this->MeshName = input + " (coarse)";
+  }
+  this->InputTriangles = CountTriangles(this->Mesh);
+}
+
+void Viewer::BuildWindow(Mode mode)
+{
+  this->RunMode = mode;
+  const auto& size = this->Options.Camera.ViewportSize;
+  this->Window = vtkSmartPointer<vtkRenderWindow>::New();
+  this->Window->SetSize(size[0], size[1]);
+  this->Window->SetMultiSamples(0); // repeatable images, and quick on software OpenGL
+  this->Window->SetOffScreenRendering(mode == Mode::Interactive ? 0 : 1);
+  this->Window->SetWindowName(("silhouette view: " + this->MeshName).c_str());
+  this->Window->SetNumberOfLayers(2);
+
+  this->MainRenderer = vtkSmartPointer<vtkRenderer>::New();
+  this->MainRenderer->SetBackground(White[0], White[1], White[2]);
+  this->Window->AddRenderer(this->MainRenderer);
+  this->FineRenderer = vtkSmartPointer<vtkRenderer>::New();
+  this->FineRenderer->SetBackground(White[0], White[1], White[2]);
+  this->FineRenderer->SetActiveCamera(this->MainRenderer->GetActiveCamera());
+  this->OverlayRenderer = vtkSmartPointer<vtkRenderer>::New();
+  this->OverlayRenderer->SetLayer(1);
+  this->OverlayRenderer->InteractiveOff(); // the camera style acts on the views under it
+  this->Window->AddRenderer(this->OverlayRenderer);
+
+  // Clip on what is drawn (the smoothed outline bulges past the input), in
+  // each view, as the camera is shared.
+  this->MainRenderer->AddObserver(vtkCommand::StartEvent, this, &Viewer::OnViewRenderStart);
+  this->FineRenderer->AddObserver(vtkCommand::StartEvent, this, &Viewer::OnViewRenderStart);
+  this->MainRenderer->AddObserver(vtkCommand::EndEvent, this, &Viewer::OnMainRenderEnd);
+  this->OverlayRenderer->AddObserver(vtkCommand::StartEvent, this, &Viewer::OnOverlayRenderStart);
+
+  this->Filter = vtkSmartPointer<vtkSilhouetteSmoothingFilter>::New();
+  VtkErrorLog::Instance().Watch(this->Filter);
+  this->Filter->SetInputData(this->Mesh);
+  this->Filter->SetRenderer(this->MainRenderer);
+  this->Filter->SetTolerance(this->Options.Camera.Tolerance);
+  this->Filter->AddObserver(vtkCommand::StartEvent, this, &Viewer::OnFilterStart);
+  this->Filter->AddObserver(vtkCommand::EndEvent, this, &Viewer::OnFilterEnd);
+
+  this->ShowFine = false;
+  this->ApplyLayout();
+  this->SetUpTheCamera();
+  // The unsmoothed styles take the filter's shading normals, and a mesh the
+  // filter refuses (NaN points) should fail before any window opens.
+  VtkErrorLog::Instance().Clear();
+  this->Filter->Update();
+  VtkErrorLog::Instance().ThrowIfErrors("smoothing failed");
+  this->FilterRunsAtLastFrame = this->FilterRuns; // that run belongs to no frame
+
+  if (mode == Mode::Interactive || mode == Mode::Playback)
+  {
+    if (mode == Mode::Interactive)
+    {
+      this->Interactor = vtkSmartPointer<vtkRenderWindowInteractor>::New();
+    }
+    else
+    {
+      // Events come from the log only; nothing waits on the X server.
+      this->Interactor = vtkSmartPointer<vtkGenericRenderWindowInteractor>::New();
+    }
+    this->Interactor->SetRenderWindow(this->Window);
+    auto style = vtkSmartPointer<ViewerInteractorStyle>::New();
+    style->Act = [this](ViewerAction action) {
+      this->Perform(action);
+    };
+    this->Style = style;
+    this->Interactor->SetInteractorStyle(style);
+  }
+  if (!this->Options.NoOverlay)
+  {
+    this->BuildOverlay(this->Interactor != nullptr);
+  }
+  this->RebuildActors();
+}
+
+void Viewer::BuildOverlay(bool withWidget)
+{
+  const int fontSize = std::max(11, this->Options.Camera.ViewportSize[1] / 48);
+  this->Status = vtkSmartPointer<vtkTextActor>::New();
+  vtkTextProperty* status = this->Status->GetTextProperty();
+  status->SetFontSize(fontSize);
+  status->SetColor(0, 0, 0);
+  status->SetVerticalJustificationToTop();
+  status->SetBackgroundColor(1, 1, 1);
+  status->SetBackgroundOpacity(0.75);
+  this->Status->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  this->Status->SetPosition(0.01, 0.99);
+  this->OverlayRenderer->AddViewProp(this->Status);
+
+  this->Help = vtkSmartPointer<vtkTextActor>::New();
+  std::string help = ViewerKeysHelp();
+  help.pop_back(); // no empty last line
+  this->Help->SetInput(help.c_str());
+  vtkTextProperty* helpText = this->Help->GetTextProperty();
+  helpText->SetFontSize(fontSize);
+  helpText->SetFontFamilyToCourier(); // the columns line up
+  helpText->SetColor(0, 0, 0);
+  helpText->SetVerticalJustificationToBottom();
+  helpText->SetBackgroundColor(1.0, 1.0, 0.9);
+  helpText->SetBackgroundOpacity(0.9);
+  helpText->SetFrame(1);
+  helpText->SetFrameColor(0.5, 0.5, 0.5);
+  this->Help->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  this->Help->SetPosition(0.01, 0.02);
+  this->Help->SetVisibility(this->ShowHelp);
+  this->OverlayRenderer->AddViewProp(this->Help);
+
+  this->FineLabel = vtkSmartPointer<vtkTextActor>::New();
+  vtkTextProperty* label = this->FineLabel->GetTextProperty();
+  label->SetFontSize(fontSize);
+  label->SetColor(0, 0, 0);
+  label->SetJustificationToRight();
+  label->SetVerticalJustificationToTop();
+  this->FineLabel->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  this->FineLabel->SetPosition(0.99, 0.99);
+
+  auto slider = vtkSmartPointer<vtkSliderRepresentation2D>::New();
+  slider->SetMinimumValue(MinimumSliderTolerance);
+  slider->SetMaximumValue(MaximumSliderTolerance);
+  slider->SetValue(this->Filter->GetTolerance());
+  slider->SetTitleText("tolerance (px)");
+  slider->SetLabelFormat("%.2f");
+  slider->GetPoint1Coordinate()->SetCoordinateSystemToNormalizedDisplay();
+  slider->GetPoint1Coordinate()->SetValue(0.70, 0.07);
+  slider->GetPoint2Coordinate()->SetCoordinateSystemToNormalizedDisplay();
+  slider->GetPoint2Coordinate()->SetValue(0.96, 0.07);
+  slider->SetSliderLength(0.02);
+  slider->SetSliderWidth(0.03);
+  slider->SetTubeWidth(0.006);
+  slider->SetEndCapLength(0.008);
+  slider->SetEndCapWidth(0.03);
+  slider->SetTitleHeight(0.03);
+  slider->SetLabelHeight(0.025);
+  // VTK's defaults are white, for dark backgrounds.
+  slider->GetTitleProperty()->SetColor(0, 0, 0);
+  slider->GetTitleProperty()->ShadowOff();
+  slider->GetTitleProperty()->BoldOff();
+  slider->GetLabelProperty()->SetColor(0, 0, 0);
+  slider->GetLabelProperty()->ShadowOff();
+  slider->GetTubeProperty()->SetColor(0.55, 0.55, 0.55);
+  slider->GetCapProperty()->SetColor(0.35, 0.35, 0.35);
+  slider->GetSliderProperty()->SetColor(0.15, 0.35, 0.75);
+  slider->GetSelectedProperty()->SetColor(0.9, 0.1, 0.1);
+  this->SliderRepresentation = slider;
+
+  if (withWidget)
+  {
+    this->Slider = vtkSmartPointer<vtkSliderWidget>::New();
+    this->Slider->SetInteractor(this->Interactor);
+    this->Slider->SetRepresentation(slider);
+    this->Slider->SetDefaultRenderer(this->OverlayRenderer);
+    this->Slider->SetCurrentRenderer(this->OverlayRenderer);
+    this->Slider->SetAnimationModeToJump();
+    this->Slider->KeyPressActivationOff(); // 'i' would switch it off
+    this->Slider->AddObserver(vtkCommand::InteractionEvent, this, &Viewer::OnSliderMoved);
+    this->Slider->AddObserver(vtkCommand::EndInteractionEvent, this, &Viewer::OnSliderReleased);
+  }
+  else
+  {
+    // No interactor to drive a widget: draw the representation alone.
+    slider->SetRenderer(this->OverlayRenderer);
+    slider->BuildRepresentation();
+    this->OverlayRenderer->AddViewProp(slider);
+  }
+}
+
+void Viewer::SetUpTheCamera()
+{
+  CameraOptions camera = this->Options.Camera;
+  if (this->CameraSetUp)
+  {
+    camera.Parallel = this->MainRenderer->GetActiveCamera()->GetParallelProjection() != 0;
+  }
+  SetUpCamera(this->MainRenderer, this->Mesh->GetBounds(), camera);
+  this->CameraSetUp = true;
+}
+
+void Viewer::ApplyLayout()
+{
+  if (this->ShowFine)
+  {
+    this->MainRenderer->SetViewport(0.0, 0.0, 0.5, 1.0);
+    this->FineRenderer->SetViewport(0.5, 0.0, 1.0, 1.0);
+    if (!this->Window->HasRenderer(this->FineRenderer))
+    {
+      this->Window->AddRenderer(this->FineRenderer);
+    }
+  }
+  else
+  {
+    this->MainRenderer->SetViewport(0.0, 0.0, 1.0, 1.0);
+    this->Window->RemoveRenderer(this->FineRenderer);
+  }
+}
+
+void Viewer::RebuildActors()
+{
+  this->MainRenderer->RemoveAllViewProps();
+  this->AddMainActors();
+  this->FineRenderer->RemoveAllViewProps();
+  if (this->ShowFine && this->Fine)
+  {
+    // The fine mesh drawn as the reference for the style: its outline for
+    // the lines, shaded otherwise (its edges would be a black mass).
+    const RenderStyle fineStyle =
+      this->CurrentStyle == RenderStyle::Lines ? RenderStyle::Lines : RenderStyle::Shaded;
+    AddStyleActors(this->FineRenderer, this->FineNormals, this->Fine, fineStyle, false);
+  }
+  if (this->FineLabel)
+  {
+    this->OverlayRenderer->RemoveViewProp(this->FineLabel);
+    if (this->ShowFine && this->Fine)
+    {
+      const std::string label = std::string("fine reference\n") +
+        (this->CurrentStyle == RenderStyle::Lines ? "vtkPolyDataSilhouette of " : "") +
+        "Loop level " + std::to_string(this->Options.FineLevel) + ", " +
+        Grouped(this->Fine->GetNumberOfPolys()) + " triangles";
+      this->FineLabel->SetInput(label.c_str());
+      this->OverlayRenderer->AddViewProp(this->FineLabel);
+    }
+  }
+}
+
+void Viewer::AddMainActors()
+{
+  if (this->CurrentStyle == RenderStyle::NewGeometry && this->Smoothing)
+  {
+    this->AddNewGeometryActors();
+    return;
+  }
+  // Smoothed, these actors are fed by the filter's ports: the pipeline
+  // re-runs it when the view changes. Unsmoothed, they show the input.
+  AddStyleActors(this->MainRenderer, this->Filter, this->Mesh, this->CurrentStyle, this->Smoothing);
+}
+
+// AddStyleActors' new-geometry style copies the output once (enough for one
+// image); here the kept and the made triangles are selected in the pipeline,
+// so they follow the camera.
+void Viewer::AddNewGeometryActors()
+{
+  for (const bool made : { false, true })
+  {
+    vtkNew<vtkThreshold> select;
+    select->SetInputConnection(this->Filter->GetOutputPort(0));
+    select->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "NewGeometry");
+    select->SetThresholdFunction(vtkThreshold::THRESHOLD_BETWEEN);
+    select->SetLowerThreshold(made ? 0.5 : -0.5);
+    select->SetUpperThreshold(made ? 255.0 : 0.5);
+    vtkNew<vtkDataSetMapper> mapper;
+    mapper->SetInputConnection(select->GetOutputPort());
+    mapper->ScalarVisibilityOff();
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    // The red one is added last and wins the edges both share.
+    ShowEdges(actor, made ? Red : DarkGrey);
+    this->MainRenderer->AddActor(actor);
+  }
+}
+
+bool Viewer::MakeFineReference()
+{
+  if (this->Fine)
+  {
+    return true;
+  }
+  this->Message = "computing the fine reference (Loop level " +
+    std::to_string(this->Options.FineLevel) + " of " + Grouped(CountTriangles(this->Original)) +
+    " triangles), a moment...";
+  this->Window->Render(); // show the message before the wait
+  VtkErrorLog& errors = VtkErrorLog::Instance();
+  errors.Clear();
+  try
+  {
+    this->Fine = silhouette_eval::Refine(this->Original, this->Options.FineLevel);
+    errors.ThrowIfErrors("Loop refinement failed");
+  }
+  catch (const std::exception& error)
+  {
+    this->Fine = nullptr;
+    this->Message = std::string("no fine reference: ") + error.what();
+    return false;
+  }
+  this->FineNormals = vtkSmartPointer<vtkSilhouetteSmoothingFilter>::New();
+  this->FineNormals->SetInputData(this->Fine);
+  this->FineNormals->SetCamera(this->MainRenderer->GetActiveCamera());
+  this->FineNormals->Update();
+  this->Message.clear();
+  return true;
+}
+
+void Viewer::SetTolerance(double tolerance)
+{
+  this->Filter->SetTolerance(tolerance);
+  if (this->SliderRepresentation)
+  {
+    this->SliderRepresentation->SetValue(tolerance);
+  }
+}
+
+void Viewer::ToggleProjection()
+{
+  vtkCamera* camera = this->MainRenderer->GetActiveCamera();
+  if (!camera->GetParallelProjection())
+  {
+    // Keep the size of what is at the focal point.
+    camera->SetParallelScale(
+      camera->GetDistance() * std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle() / 2.0)));
+  }
+  camera->SetParallelProjection(!camera->GetParallelProjection());
+}
+
+void Viewer::Perform(ViewerAction action)
+{
+  std::string name;
+  const auto toggleStyle = [this](RenderStyle style) {
+    this->CurrentStyle = this->CurrentStyle == style ? RenderStyle::Shaded : style;
+    this->RebuildActors();
+    return std::string(this->StyleName());
+  };
+  this->Message.clear();
+  try
+  {
+    switch (action)
+    {
+      case ViewerAction::ToggleHelp:
+        this->ShowHelp = !this->ShowHelp;
+        if (this->Help)
+        {
+          this->Help->SetVisibility(this->ShowHelp);
+        }
+        name = std::string("help-") + OnOff(this->ShowHelp);
+        break;
+      case ViewerAction::ToggleSmoothing:
+        this->Smoothing = !this->Smoothing;
+        this->RebuildActors();
+        name = std::string("smoothing-") + OnOff(this->Smoothing);
+        break;
+      case ViewerAction::ToggleWireframe:
+        name = toggleStyle(RenderStyle::Wireframe);
+        break;
+      case ViewerAction::ToggleNewGeometry:
+        name = toggleStyle(RenderStyle::NewGeometry);
+        break;
+      case ViewerAction::ToggleLines:
+        name = toggleStyle(RenderStyle::Lines);
+        break;
+      case ViewerAction::ToggleFineReference:
+        if (this->ShowFine || this->MakeFineReference())
+        {
+          this->ShowFine = !this->ShowFine;
+          this->ApplyLayout();
+          this->RebuildActors();
+        }
+        name = std::string("fine-reference-") + OnOff(this->ShowFine);
+        break;
+      case ViewerAction::ToleranceUp:
+      case ViewerAction::ToleranceDown:
+      {
+        const double factor = action == ViewerAction::ToleranceUp ? 2.0 : 0.5;
+        this->SetTolerance(std::clamp(
+          this->Filter->GetTolerance() * factor, MinimumSliderTolerance, MaximumSliderTolerance));
+        name = action == ViewerAction::ToleranceUp ? "tolerance-up" : "tolerance-down";
+        break;
+      }
+      case ViewerAction::ToggleProjection:
+        this->ToggleProjection();
+        name = this->MainRenderer->GetActiveCamera()->GetParallelProjection() ? "parallel"
+                                                                              : "perspective";
+        break;
+      case ViewerAction::ResetCamera:
+        this->SetUpTheCamera();
+        name = "reset-camera";
+        break;
+      case ViewerAction::Screenshot:
+      {
+        const std::string path = this->NextScreenshotPath();
+        this->Window->Render();
+        this->Message = "screenshot written: " + this->WriteScreenshot(path);
+        std::cout << "wrote " << path << std::endl;
+        name = "screenshot";
+        break;
+      }
+      case ViewerAction::Quit:
+        if (this->Interactor)
+        {
+          this->Interactor->ExitCallback();
+        }
+        return;
+    }
+  }
+  catch (const std::exception& error)
+  {
+    this->Message = error.what();
+    name = "failed";
+  }
+  this->Window->Render();
+  if (this->RunMode == Mode::Playback)
+  {
+    this->ReportStep(name);
+  }
+}
+
+std::string Viewer::WriteScreenshot(const std::string& path)
+{
+  CreateDirectory(this->Options.ScreenshotDirectory);
+  WritePng(this->Window, path);
+  return path;
+}
+
+std::string Viewer::NextScreenshotPath() const
+{
+  for (int number = 1;; ++number)
+  {
+    char name[64];
+    std::snprintf(name, sizeof(name), "silhouette_view_%04d.png", number);
+    const std::string path = JoinPath(this->Options.ScreenshotDirectory, name);
+    if (!std::filesystem::exists(path))
+    {
+      return path;
+    }
+  }
+}
+
+void Viewer::OnViewRenderStart(vtkObject* renderer, unsigned long, void*)
+{
+  static_cast<vtkRenderer*>(renderer)->ResetCameraClippingRange();
+}
+
+void Viewer::OnMainRenderEnd()
+{
+  const Clock::time_point now = Clock::now();
+  if (!this->FrameEnds.empty() &&
+    std::chrono::duration<double>(now - this->FrameEnds.back()).count() > IdleGapSeconds)
+  {
+    this->FrameEnds.clear();
+  }
+  this->FrameEnds.push_back(now);
+  while (this->FrameEnds.size() > MeasuredIntervals + 1)
+  {
+    this->FrameEnds.pop_front();
+  }
+  this->FilterRanInLastFrame = this->FilterRuns != this->FilterRunsAtLastFrame;
+  this->FilterRunsAtLastFrame = this->FilterRuns;
+}
+
+void Viewer::OnOverlayRenderStart()
+{
+  // The overlay layer renders after the views, so the figures are this frame's.
+  if (this->Status)
+  {
+    this->Status->SetInput(this->StatusText().c_str());
+  }
+}
+
+void Viewer::OnFilterStart()
+{
+  this->FilterStarted = Clock::now();
+}
+
+void Viewer::OnFilterEnd()
+{
+  this->LastFilterMilliseconds =
+    std::chrono::duration<double, std::milli>(Clock::now() - this->FilterStarted).count();
+  ++this->FilterRuns;
+}
+
+void Viewer::OnSliderMoved()
+{
+  this->Filter->SetTolerance(this->SliderRepresentation->GetValue());
+}
+
+void Viewer::OnSliderReleased()
+{
+  if (this->RunMode == Mode::Playback)
+  {
+    this->Window->Render();
+    this->ReportStep("slider");
+  }
+}
+
+double Viewer::FramesPerSecond() const
+{
+  if (this->FrameEnds.size() < 2)
+  {
+    return 0.0;
+  }
+  const double seconds =
+    std::chrono::duration<double>(this->FrameEnds.back() - this->FrameEnds.front()).count();
+  return seconds > 0.0 ? (this->FrameEnds.size() - 1) / seconds : 0.0;
+}
+
+ViewerFigures Viewer::CurrentFigures() const
+{
+  ViewerFigures figures;
+  figures.InputTriangles = this->InputTriangles;
+  if (this->Smoothing)
+  {
+    vtkPolyData* output = this->Filter->GetOutput();
+    figures.OutputTriangles = FieldCount(output, "OutputTriangleCount");
+    figures.SilhouetteTriangles = FieldCount(output, "SilhouetteTriangleCount");
+    figures.NewTriangles = FieldCount(output, "NewTriangleCount");
+  }
+  else
+  {
+    figures.OutputTriangles = this->InputTriangles;
+  }
+  figures.FilterMilliseconds = this->FilterRanInLastFrame ? this->LastFilterMilliseconds : 0.0;
+  figures.RenderMilliseconds = 1000.0 * this->MainRenderer->GetLastRenderTimeInSeconds();
+  return figures;
+}
+
+std::string Viewer::StyleName() const
+{
+  return NameOf(this->CurrentStyle);
+}
+
+std::string Viewer::StatusText() const
+{
+  // Short lines: in the side-by-side view the status has half the window.
+  const ViewerFigures figures = this->CurrentFigures();
+  const bool parallel = this->MainRenderer->GetActiveCamera()->GetParallelProjection() != 0;
+  std::ostringstream text;
+  text << this->MeshName << "\n"
+       << "smoothing " << OnOff(this->Smoothing) << "; " << this->StyleName() << "; "
+       << (parallel ? "parallel" : "perspective") << "\n";
+  text << "triangles in " << Grouped(figures.InputTriangles) << ", out "
+       << Grouped(figures.OutputTriangles) << "\n";
+  if (this->Smoothing)
+  {
+    text << "silhouette " << Grouped(figures.SilhouetteTriangles) << ", new "
+         << Grouped(figures.NewTriangles) << "\n";
+  }
+  else
+  {
+    text << "(the filter is off)\n";
+  }
+  text << "tolerance " << Fixed(this->Filter->GetTolerance(), 2) << " px (+ -, slider)";
+  if (!this->Options.NoTimes)
+  {
+    // Wall time between frames, so it counts everything a frame costs.
+    const double fps = this->FramesPerSecond();
+    text << "\n"
+         << (fps > 0.0 ? Fixed(fps, 1) : std::string("-")) << " frames/s (wall time, "
+         << (this->FrameEnds.empty() ? 0 : this->FrameEnds.size() - 1) << " frames)";
+    text << "\nrender " << Fixed(1000.0 * this->MainRenderer->GetLastRenderTimeInSeconds(), 1)
+         << " ms (renderer's own)";
+    if (this->Smoothing)
+    {
+      text << "\nfilter " << Fixed(this->LastFilterMilliseconds, 2) << " ms (last run)";
+    }
+  }
+  if (!this->Message.empty())
+  {
+    text << "\n" << this->Message;
+  }
+  if (!this->ShowHelp)
+  {
+    text << "\nh: help";
+  }
+  return text.str();
+}
+
+void Viewer::ReportStep(const std::string& action)
+{
+  char name[96];
+  std::snprintf(name, sizeof(name), "step_%02d_%s.png", this->Step, action.c_str());
+  const std::string screenshot = JoinPath(this->Options.ScreenshotDirectory, name);
+  WritePng(this->Window, screenshot);
+  const ViewerFigures figures = this->CurrentFigures();
+  vtkCamera* camera = this->MainRenderer->GetActiveCamera();
+  const bool parallel = camera->GetParallelProjection() != 0;
+  double position[3];
+  camera->GetPosition(position);
+  const double tolerance = this->Filter->GetTolerance();
+  const long long fineTriangles = this->Fine ? this->Fine->GetNumberOfPolys() : 0;
+  if (this->Options.Json)
+  {
+    std::cout << "{\"step\": " << this->Step << ", \"action\": " << JsonString(action)
+              << ", \"smoothing\": " << (this->Smoothing ? "true" : "false")
+              << ", \"style\": " << JsonString(this->StyleName())
+              << ", \"tolerance\": " << JsonNumber(tolerance)
+              << ", \"parallel\": " << (parallel ? "true" : "false")
+              << ", \"fine_reference\": " << (this->ShowFine ? "true" : "false")
+              << ", \"fine_triangles\": " << fineTriangles
+              << ", \"help\": " << (this->ShowHelp ? "true" : "false")
+              << ", \"input_triangles\": " << figures.InputTriangles
+              << ", \"output_triangles\": " << figures.OutputTriangles
+              << ", \"silhouette_triangles\": " << figures.SilhouetteTriangles
+              << ", \"new_triangles\": " << figures.NewTriangles << ", \"camera_position\": ["
+              << JsonNumber(position[0]) << ", " << JsonNumber(position[1]) << ", "
+              << JsonNumber(position[2]) << "], \"message\": " << JsonString(this->Message)
+              << ", \"screenshot\": " << JsonString(screenshot) << "}" << std::endl;
+  }
+  else
+  {
+    std::cout << "step " << this->Step << " " << action << ": smoothing " << OnOff(this->Smoothing)
+              << ", style " << this->StyleName() << ", tolerance " << tolerance << " px, "
+              << (parallel ? "parallel" : "perspective") << ", fine reference "
+              << OnOff(this->ShowFine) << " (" << fineTriangles << " triangles), help "
+              << OnOff(this->ShowHelp) << "; triangles in " << figures.InputTriangles << ", out "
+              << figures.OutputTriangles << ", silhouette " << figures.SilhouetteTriangles
+              << ", new " << figures.NewTriangles << "; camera at " << position[0] << " "
+              << position[1] << " " << position[2] << "; screenshot " << screenshot
+              << (this->Message.empty() ? "" : "; " + this->Message) << std::endl;
+  }
+  ++this->Step;
+}
+
+void Viewer::Interact()
+{
+  this->BuildWindow(Mode::Interactive);
+  if (this->Slider)
+  {
+    this->Slider->EnabledOn();
+  }
+  this->Interactor->Initialize();
+  if (this->Options.FineReference)
+  {
+    this->Perform(ViewerAction::ToggleFineReference);
+  }
+  VtkErrorLog::Instance().Clear();
+  this->Window->Render();
+  VtkErrorLog::Instance().ThrowIfErrors("rendering failed");
+  this->Interactor->Start();
+}
+
+void Viewer::RecordOrbit()
+{
+  const bool record = !this->Options.RecordDirectory.empty();
+  if (record)
+  {
+    CreateDirectory(this->Options.RecordDirectory);
+  }
+  this->BuildWindow(Mode::Orbit);
+  if (this->Options.FineReference)
+  {
+    this->Perform(ViewerAction::ToggleFineReference);
+  }
+  // Frame 0 runs the filter too (its cache stays), so every frame's time is one run.
+  this->Filter->Modified();
+  const int frames = this->Options.Frames;
+  const double step = this->Options.OrbitDegrees / frames;
+  vtkCamera* camera = this->MainRenderer->GetActiveCamera();
+  VtkErrorLog& errors = VtkErrorLog::Instance();
+  if (!this->Options.Json)
+  {
+    std::printf("%5s %9s %8s %8s %10s %8s %10s %10s%s\n", "frame", "azimuth", "input", "output",
+      "silhouette", "new", "filter_ms", "render_ms", record ? "  image" : "");
+  }
+  for (int frame = 0; frame < frames; ++frame)
+  {
+    if (frame > 0)
+    {
+      camera->Azimuth(step);
+    }
+    errors.Clear();
+    this->Window->Render();
+    errors.ThrowIfErrors("rendering frame " + std::to_string(frame) + " failed");
+    const ViewerFigures figures = this->CurrentFigures();
+    std::string image;
+    if (record)
+    {
+      char name[32];
+      std::snprintf(name, sizeof(name), "frame_%04d.png", frame);
+      image = JoinPath(this->Options.RecordDirectory, name);
+      WritePng(this->Window, image);
+    }
+    if (this->Options.Json)
+    {
+      std::cout << "{\"frame\": " << frame << ", \"azimuth\": " << JsonNumber(frame * step)
+                << ", \"input_triangles\": " << figures.InputTriangles
+                << ", \"output_triangles\": " << figures.OutputTriangles
+                << ", \"silhouette_triangles\": " << figures.SilhouetteTriangles
+                << ", \"new_triangles\": " << figures.NewTriangles
+                << ", \"filter_ms\": " << JsonNumber(figures.FilterMilliseconds)
+                << ", \"render_ms\": " << JsonNumber(figures.RenderMilliseconds)
+                << ", \"image\": " << (record ? JsonString(image) : "null") << "}\n";
+    }
+    else
+    {
+      std::printf("%5d %9.2f %8lld %8lld %10lld %8lld %10.3f %10.3f%s%s\n", frame, frame * step,
+        static_cast<long long>(figures.InputTriangles),
+        static_cast<long long>(figures.OutputTriangles),
+        static_cast<long long>(figures.SilhouetteTriangles),
+        static_cast<long long>(figures.NewTriangles), figures.FilterMilliseconds,
+        figures.RenderMilliseconds, record ? "  " : "", image.c_str());
+    }
+    std::cout.flush();
+  }
+}
+
+void Viewer::Play()
+{
+  const std::string& log = this->Options.PlayLog;
+  if (!std::filesystem::is_regular_file(log))
+  {
+    throw RuntimeError("cannot read the event log '" + log + "'");
+  }
+  CreateDirectory(this->Options.ScreenshotDirectory);
+  this->BuildWindow(Mode::Playback);
+  if (this->Slider)
+  {
+    this->Slider->EnabledOn();
+  }
+  VtkErrorLog& errors = VtkErrorLog::Instance();
+  errors.Clear();
+  this->Interactor->Initialize(); // renders the first frame
+  if (this->Options.FineReference)
+  {
+    this->Perform(ViewerAction::ToggleFineReference);
+  }
+  this->Window->Render();
+  errors.ThrowIfErrors("rendering failed");
+  this->ReportStep("start");
+
+  vtkNew<vtkInteractorEventRecorder> recorder;
+  errors.Watch(recorder);
+  recorder->KeyPressActivationOff();
+  recorder->SetInteractor(this->Interactor);
+  recorder->SetFileName(log.c_str());
+  recorder->Play();
+  recorder->Off();
+  errors.ThrowIfErrors("playing '" + log + "' failed");
+}
+
+void RunView(const ViewOptions& options)
+{
+  Viewer viewer(options); // a bad file fails here, before any window
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display)
+  {
+    throw RuntimeError("view needs an X display and DISPLAY is not set; run it under "
+                       "'xvfb-run -a' (offscreen with --orbit or --play)");
+  }
+  std::signal(SIGABRT, ReportAbortWhileRendering);
+  if (!options.PlayLog.empty())
+  {
+    viewer.Play();
+  }
+  else if (options.Orbit)
+  {
+    viewer.RecordOrbit();
+  }
+  else
+  {
+    viewer.Interact();
+  }
+  std::signal(SIGABRT, SIG_DFL);
+}
+
+} // namespace cli

@@ -177,6 +177,7 @@ void RenderPlot(
   timing.TimedFrames = options.Frames;
   timing.Tolerance = options.Camera.Tolerance;
 
+  silhouette_eval::OrbitTimer timer(timing);
   const double base = static_cast<double>(model.Coarse->GetNumberOfPolys());
   std::vector<double> coarseX, coarseY, smoothX, smoothY, fineX, fineY;
   for (double factor : { 0.25, 0.5, 1.0, 2.0 })
@@ -188,8 +189,8 @@ void RenderPlot(
     }
     std::cerr << "figure: timing the coarse mesh at " << target << " triangles" << std::endl;
     vtkSmartPointer<vtkPolyData> coarse = silhouette_eval::Decimate(original, target);
-    const auto plain = silhouette_eval::TimeOrbit(coarse, false, timing);
-    const auto smooth = silhouette_eval::TimeOrbit(coarse, true, timing);
+    const auto plain = timer.Time(coarse, false);
+    const auto smooth = timer.Time(coarse, true);
     coarseX.push_back(plain.Triangles);
     coarseY.push_back(plain.FrameMilliseconds);
     smoothX.push_back(smooth.Triangles);
@@ -199,7 +200,7 @@ void RenderPlot(
   {
     std::cerr << "figure: timing the fine reference at Loop level " << level << std::endl;
     vtkSmartPointer<vtkPolyData> fine = silhouette_eval::Refine(original, level);
-    const auto plain = silhouette_eval::TimeOrbit(fine, false, timing);
+    const auto plain = timer.Time(fine, false);
     fineX.push_back(plain.Triangles);
     fineY.push_back(plain.FrameMilliseconds);
   }
@@ -264,11 +265,14 @@ void RunFigure(const FigureOptions& options)
               << " triangles and refining to Loop level " << options.FineLevel << std::endl;
     const silhouette_eval::ModelVersions model =
       silhouette_eval::MakeVersions(options.Input, original, coarseTriangles, options.FineLevel);
-    RenderPanels(model, options);
+    // The plot's timing windows come first: after a 4096-pixel-wide panel
+    // window (four 1024 px panels), Xvfb's default 1280x1024 screen refused
+    // to create the next window (VTK aborts on that).
     if (!options.Plot.empty())
     {
       RenderPlot(model, original, options);
     }
+    RenderPanels(model, options);
   }
   catch (const std::runtime_error& error)
   {

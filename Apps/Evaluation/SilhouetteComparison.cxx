@@ -81,22 +81,31 @@ double Count(vtkPolyData* mesh, const char* name)
 
 } // namespace
 
-FrameTiming TimeOrbit(vtkPolyData* mesh, bool smoothing, const ComparisonOptions& options)
+OrbitTimer::OrbitTimer(const ComparisonOptions& options)
+  : Options(options)
+  , Window(vtkSmartPointer<vtkRenderWindow>::New())
+  , Renderer(vtkSmartPointer<vtkRenderer>::New())
 {
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(options.Width, options.Height);
-  vtkNew<vtkRenderer> renderer;
-  renderer->SetBackground(1, 1, 1);
-  window->AddRenderer(renderer);
+  this->Window->SetOffScreenRendering(1);
+  this->Window->SetMultiSamples(0);
+  this->Window->SetSize(options.Width, options.Height);
+  this->Renderer->SetBackground(1, 1, 1);
+  this->Window->AddRenderer(this->Renderer);
+}
+
+OrbitTimer::~OrbitTimer() = default;
+
+FrameTiming OrbitTimer::Time(vtkPolyData* mesh, bool smoothing)
+{
+  vtkRenderer* renderer = this->Renderer;
+  renderer->RemoveAllViewProps();
   vtkNew<vtkPolyDataMapper> mapper;
   vtkNew<vtkSilhouetteSmoothingFilter> smoother;
   if (smoothing)
   {
     smoother->SetInputData(mesh);
     smoother->SetRenderer(renderer);
-    smoother->SetTolerance(options.Tolerance);
+    smoother->SetTolerance(this->Options.Tolerance);
     mapper->SetInputConnection(smoother->GetOutputPort());
   }
   else
@@ -109,35 +118,30 @@ FrameTiming TimeOrbit(vtkPolyData* mesh, bool smoothing, const ComparisonOptions
   actor->GetProperty()->SetColor(0.8, 0.8, 0.82);
   renderer->AddActor(actor);
   PlaceCamera(renderer, mesh, 0, 1);
-  window->Render(); // first frame: caches, shader compilation, buffer upload
-  window->WaitForCompletion();
+  this->Window->Render(); // first frame: caches, shaders, buffer upload
+  this->Window->WaitForCompletion();
 
   std::vector<double> frameMs, filterMs;
-  for (int frame = 1; frame <= options.TimedFrames; ++frame)
+  for (int frame = 1; frame <= this->Options.TimedFrames; ++frame)
   {
     const Clock::time_point start = Clock::now();
-    renderer->GetActiveCamera()->Azimuth(360.0 / options.TimedFrames);
+    renderer->GetActiveCamera()->Azimuth(360.0 / this->Options.TimedFrames);
     renderer->ResetCameraClippingRange();
     if (smoothing)
     {
       smoother->Update();
       filterMs.push_back(Since(start));
     }
-    window->Render();
-    window->WaitForCompletion();
+    this->Window->Render();
+    this->Window->WaitForCompletion();
     frameMs.push_back(Since(start));
   }
   FrameTiming timing;
   timing.FrameMilliseconds = Median(frameMs);
   timing.FilterMilliseconds = Median(filterMs);
-  if (smoothing)
-  {
-    timing.Triangles = Count(smoother->GetOutput(), "OutputTriangleCount");
-  }
-  else
-  {
-    timing.Triangles = static_cast<double>(mesh->GetNumberOfPolys());
-  }
+  timing.Triangles = smoothing ? Count(smoother->GetOutput(), "OutputTriangleCount")
+                               : static_cast<double>(mesh->GetNumberOfPolys());
+  renderer->RemoveAllViewProps();
   return timing;
 }
 
@@ -218,12 +222,13 @@ ModelComparison CompareModel(const ModelVersions& model, const ComparisonOptions
   result.Fine.Triangles = static_cast<double>(model.Fine->GetNumberOfPolys());
 
   progress("timing " + std::to_string(options.TimedFrames) + " orbit frames of each variant");
+  OrbitTimer timer(options);
   for (auto [mesh, smoothing, figures] :
     { std::make_tuple(model.Coarse.Get(), false, &result.Coarse),
       std::make_tuple(model.Coarse.Get(), true, &result.Smoothed),
       std::make_tuple(model.Fine.Get(), false, &result.Fine) })
   {
-    const FrameTiming timing = TimeOrbit(mesh, smoothing, options);
+    const FrameTiming timing = timer.Time(mesh, smoothing);
     figures->FrameMilliseconds = timing.FrameMilliseconds;
     figures->FilterMilliseconds = timing.FilterMilliseconds;
   }

@@ -11,6 +11,11 @@
 #include <functional>
 #include <string>
 
+#include "vtkSmartPointer.h"
+
+class vtkRenderWindow;
+class vtkRenderer;
+
 namespace silhouette_eval
 {
 
@@ -57,10 +62,22 @@ struct FrameTiming
   double FrameMilliseconds = 0;
 };
 
-/// Whole-frame timing of `mesh` (with silhouette smoothing when `smoothing`)
-/// over an orbit of options.TimedFrames frames in a lit, shaded window; each
-/// frame moves the camera, updates the filter and renders to completion.
-FrameTiming TimeOrbit(vtkPolyData* mesh, bool smoothing, const ComparisonOptions& options);
+/// Whole-frame timing over an orbit of options.TimedFrames frames in a lit,
+/// shaded window: each frame moves the camera, updates the filter (when
+/// smoothing) and renders to completion. One window serves every timing:
+/// creating many GLX windows in a row made VTK 9.1 abort under Xvfb.
+class OrbitTimer
+{
+public:
+  explicit OrbitTimer(const ComparisonOptions& options);
+  ~OrbitTimer();
+  FrameTiming Time(vtkPolyData* mesh, bool smoothing);
+
+private:
+  ComparisonOptions Options;
+  vtkSmartPointer<vtkRenderWindow> Window;
+  vtkSmartPointer<vtkRenderer> Renderer;
+};
 
 } // namespace silhouette_eval
 

@@ -1,28 +1,19 @@
 #include "SilhouetteTestSupport.h"
 
-#include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
-#include "vtkImageData.h"
 #include "vtkMath.h"
 #include "vtkPLYReader.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
-#include "vtkUnsignedCharArray.h"
-#include "vtkWindowToImageFilter.h"
 #include "vtkXMLPolyDataReader.h"
 #include <vtksys/SystemTools.hxx>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <map>
 #include <sstream>
 #include <utility>
@@ -211,128 +202,6 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->ShallowCopy(reader->GetOutputDataObject(0));
   return mesh->GetNumberOfPoints() > 0 ? mesh : nullptr;
-}
-
-MaskRenderer::MaskRenderer(int width, int height)
-  : W(width)
-  , H(height)
-  , Window(vtkSmartPointer<vtkRenderWindow>::New())
-  , Renderer(vtkSmartPointer<vtkRenderer>::New())
-{
-  this->Window->SetOffScreenRendering(1);
-  this->Window->SetMultiSamples(0);
-  this->Window->SetSize(width, height);
-  this->Window->AddRenderer(this->Renderer);
-  this->Renderer->SetBackground(0, 0, 0);
-}
-
-MaskRenderer::~MaskRenderer() = default;
-
-std::vector<unsigned char> MaskRenderer::Render(vtkPolyData* mesh, vtkCamera* camera)
-{
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(mesh);
-  mapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(1, 1, 1);
-  actor->GetProperty()->LightingOff();
-  this->Renderer->RemoveAllViewProps();
-  this->Renderer->AddActor(actor);
-  this->Renderer->SetActiveCamera(camera);
-  this->Renderer->ResetCameraClippingRange();
-  this->Window->Render();
-
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(this->Window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkUnsignedCharArray* rgb =
-    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
-  std::vector<unsigned char> mask(static_cast<std::size_t>(this->W) * this->H, 0);
-  for (std::size_t i = 0; i < mask.size(); ++i)
-  {
-    mask[i] = rgb->GetValue(static_cast<vtkIdType>(3 * i)) > 127 ? 1 : 0;
-  }
-  this->Renderer->RemoveAllViewProps();
-  return mask;
-}
-
-namespace
-{
-
-std::vector<std::array<double, 2>> BoundaryPoints(
-  const std::vector<unsigned char>& mask, int width, int height)
-{
-  std::vector<std::array<double, 2>> points;
-  for (int j = 0; j < height; ++j)
-  {
-    for (int i = 0; i < width; ++i)
-    {
-      const unsigned char here = mask[static_cast<std::size_t>(j) * width + i];
-      if (i + 1 < width && here != mask[static_cast<std::size_t>(j) * width + i + 1])
-      {
-        points.push_back({ i + 1.0, j + 0.5 });
-      }
-      if (j + 1 < height && here != mask[static_cast<std::size_t>(j + 1) * width + i])
-      {
-        points.push_back({ i + 0.5, j + 1.0 });
-      }
-    }
-  }
-  return points;
-}
-
-void Accumulate(BoundaryDistance& d, double value)
-{
-  d.Mean += value;
-  d.Max = std::max(d.Max, value);
-  ++d.Samples;
-}
-
-} // namespace
-
-BoundaryDistance DistanceToCircle(
-  const std::vector<unsigned char>& mask, int width, int height, double cx, double cy, double r)
-{
-  BoundaryDistance d;
-  for (const auto& p : BoundaryPoints(mask, width, height))
-  {
-    Accumulate(d, std::abs(std::hypot(p[0] - cx, p[1] - cy) - r));
-  }
-  if (d.Samples > 0)
-  {
-    d.Mean /= static_cast<double>(d.Samples);
-  }
-  return d;
-}
-
-BoundaryDistance DistanceBetweenBoundaries(
-  const std::vector<unsigned char>& a, const std::vector<unsigned char>& b, int width, int height)
-{
-  const auto pa = BoundaryPoints(a, width, height);
-  const auto pb = BoundaryPoints(b, width, height);
-  BoundaryDistance d;
-  auto oneWay = [&d](const std::vector<std::array<double, 2>>& from,
-                  const std::vector<std::array<double, 2>>& to) {
-    for (const auto& p : from)
-    {
-      double best = std::numeric_limits<double>::infinity();
-      for (const auto& q : to)
-      {
-        best = std::min(best, std::hypot(p[0] - q[0], p[1] - q[1]));
-      }
-      Accumulate(d, best);
-    }
-  };
-  oneWay(pa, pb);
-  oneWay(pb, pa);
-  if (d.Samples > 0)
-  {
-    d.Mean /= static_cast<double>(d.Samples);
-  }
-  return d;
 }
 
 } // namespace silhouette_test

@@ -1,7 +1,21 @@
-// Measurements shared by the module's tests and benchmarks: mesh topology
-// reports, offscreen silhouette masks, and the distance of a mask's boundary to
-// an exact circle. Test-only code; not part of the module.
+// Helpers shared by the module's tests: mesh topology reports, cameras, data
+// files, and a CHECK macro. Silhouette masks and outline distances come from
+// the evaluation library (Apps/Evaluation/SilhouetteMasks.h). Test-only code;
+// not part of the module.
 #pragma once
+
+#include <cstdio>
+
+/// In a test function returning bool: print what failed and return false.
+#define CHECK(condition, message)                                                                  \
+  do                                                                                               \
+  {                                                                                                \
+    if (!(condition))                                                                              \
+    {                                                                                              \
+      std::printf("FAIL: %s (%s, line %d)\n", message, #condition, __LINE__);                      \
+      return false;                                                                                \
+    }                                                                                              \
+  } while (false)
 
 #include "vtkSmartPointer.h"
 
@@ -11,8 +25,6 @@
 
 class vtkCamera;
 class vtkPolyData;
-class vtkRenderWindow;
-class vtkRenderer;
 
 namespace silhouette_test
 {
@@ -59,43 +71,5 @@ std::string DataFile(int argc, char* argv[], const std::string& name);
 
 /// Reads a mesh by extension (.ply .vtp .obj .stl .vtk); nullptr on failure.
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path);
-
-/// Renders meshes flat white on black, unlit, without multisampling, and
-/// reads back which pixels they cover. One window, reused.
-class MaskRenderer
-{
-public:
-  MaskRenderer(int width, int height);
-  ~MaskRenderer();
-  /// Row-major mask, row 0 at the bottom; 1 where the mesh covers the pixel.
-  std::vector<unsigned char> Render(vtkPolyData* mesh, vtkCamera* camera);
-  int Width() const { return this->W; }
-  int Height() const { return this->H; }
-
-private:
-  int W;
-  int H;
-  vtkSmartPointer<vtkRenderWindow> Window;
-  vtkSmartPointer<vtkRenderer> Renderer;
-};
-
-struct BoundaryDistance
-{
-  double Mean = 0.0;
-  double Max = 0.0;
-  long Samples = 0;
-};
-
-/// Where the mask changes between two 4-neighbour pixels, the boundary point is
-/// taken midway between their centres; returns the distances of those points
-/// to the circle (centre cx, cy, radius r, in pixels; pixel (i, j) has its
-/// centre at (i + 0.5, j + 0.5)).
-BoundaryDistance DistanceToCircle(
-  const std::vector<unsigned char>& mask, int width, int height, double cx, double cy, double r);
-
-/// The same boundary points, measured against another mask's boundary points
-/// (nearest-point distance, both ways, brute force over boundary points).
-BoundaryDistance DistanceBetweenBoundaries(
-  const std::vector<unsigned char>& a, const std::vector<unsigned char>& b, int width, int height);
 
 } // namespace silhouette_test

@@ -21,21 +21,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <string>
 
 namespace
 {
-
-#define CHECK(condition, message)                                                                  \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(condition))                                                                              \
-    {                                                                                              \
-      std::printf("FAIL: %s (%s, line %d)\n", message, #condition, __LINE__);                      \
-      return false;                                                                                \
-    }                                                                                              \
-  } while (false)
 
 // Runs the filter on `input` with `camera` (may be null) and returns the
 // error message it reported ("" when none).
@@ -46,13 +37,19 @@ struct Run
   vtkNew<vtkTest::ErrorObserver> ExecutiveErrors;
   int Result = 0;
 
-  Run(vtkPolyData* input, vtkCamera* camera)
+  /// `configure` sets anything else on the filter before the update.
+  Run(vtkPolyData* input, vtkCamera* camera,
+    const std::function<void(vtkSilhouetteSmoothingFilter*)>& configure = {})
   {
     this->Filter->AddObserver(vtkCommand::ErrorEvent, this->Errors);
     this->Filter->AddObserver(vtkCommand::WarningEvent, this->Errors);
     this->Filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, this->ExecutiveErrors);
     this->Filter->SetInputData(input);
     this->Filter->SetCamera(camera);
+    if (configure)
+    {
+      configure(this->Filter);
+    }
     this->Result = this->Filter->GetExecutive()->Update();
   }
   std::string Error() { return this->Errors->GetError() ? this->Errors->GetErrorMessage() : ""; }
@@ -300,25 +297,15 @@ bool DegenerateViews()
   notFinite->SetElement(0, 3, std::numeric_limits<double>::quiet_NaN());
   for (vtkMatrix4x4* matrix : { flat.Get(), notFinite.Get() })
   {
-    vtkNew<vtkSilhouetteSmoothingFilter> filter;
-    vtkNew<vtkTest::ErrorObserver> errors;
-    filter->AddObserver(vtkCommand::ErrorEvent, errors);
-    filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
-    filter->SetInputData(Sphere());
-    filter->SetCamera(Camera(0, 0, 5));
-    filter->SetModelMatrix(matrix);
-    CHECK(filter->GetExecutive()->Update() == 0, "a degenerate model matrix fails the request");
-    CHECK(errors->GetErrorMessage().find("degenerate") != std::string::npos, "and says why");
+    Run run(Sphere(), Camera(0, 0, 5),
+      [matrix](vtkSilhouetteSmoothingFilter* filter) { filter->SetModelMatrix(matrix); });
+    CHECK(run.Failed(), "a degenerate model matrix fails the request");
+    CHECK(run.Error().find("degenerate") != std::string::npos, "and says why");
   }
-  vtkNew<vtkSilhouetteSmoothingFilter> filter;
-  vtkNew<vtkTest::ErrorObserver> errors;
-  filter->AddObserver(vtkCommand::ErrorEvent, errors);
-  filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
-  filter->SetInputData(Sphere());
-  filter->SetCamera(Camera(0, 0, 5));
-  filter->SetViewportSize(0, 0);
-  CHECK(filter->GetExecutive()->Update() == 0, "an empty viewport fails the request");
-  CHECK(errors->GetErrorMessage().find("viewport") != std::string::npos, "and says why");
+  Run empty(Sphere(), Camera(0, 0, 5),
+    [](vtkSilhouetteSmoothingFilter* filter) { filter->SetViewportSize(0, 0); });
+  CHECK(empty.Failed(), "an empty viewport fails the request");
+  CHECK(empty.Error().find("viewport") != std::string::npos, "and says why");
   std::printf("degenerate views (singular or NaN matrix, 0 x 0 viewport): request failed\n");
   return true;
 }

@@ -41,16 +41,6 @@
 namespace
 {
 
-#define CHECK(condition, message)                                                                  \
-  do                                                                                               \
-  {                                                                                                \
-    if (!(condition))                                                                              \
-    {                                                                                              \
-      std::printf("FAIL: %s (%s, line %d)\n", message, #condition, __LINE__);                      \
-      return false;                                                                                \
-    }                                                                                              \
-  } while (false)
-
 // Counts RequestData calls through the filter's StartEvent.
 struct ExecutionCounter
 {

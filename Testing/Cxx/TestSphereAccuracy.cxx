@@ -12,6 +12,7 @@
 #include "vtkPolyData.h"
 #include "vtkSilhouetteSmoothingFilter.h"
 
+#include "SilhouetteMasks.h"
 #include "SilhouetteTestSupport.h"
 
 #include <cmath>
@@ -34,7 +35,7 @@ int TestSphereAccuracy(int, char*[])
   smoother->SetViewportSize(size, size);
   smoother->SetTolerance(tolerance);
 
-  silhouette_test::MaskRenderer renderer(size, size);
+  silhouette_eval::MaskRenderer renderer(size, size);
   std::printf("sphere of %lld triangles, %.1f px across, tolerance %.2f px\n",
     static_cast<long long>(sphere->GetOutput()->GetNumberOfCells()), 2.0 * radius, tolerance);
   std::printf("%4s %12s %12s | %12s %12s %10s\n", "view", "coarse mean", "coarse max",
@@ -49,10 +50,10 @@ int TestSphereAccuracy(int, char*[])
     auto camera = silhouette_test::CameraLookingAtOrigin(directions[v], distance, viewAngle);
     smoother->SetCamera(camera);
     smoother->Update();
-    const auto coarse = silhouette_test::DistanceToCircle(
-      renderer.Render(sphere->GetOutput(), camera), size, size, size / 2.0, size / 2.0, radius);
-    const auto smooth = silhouette_test::DistanceToCircle(
-      renderer.Render(smoother->GetOutput(), camera), size, size, size / 2.0, size / 2.0, radius);
+    const auto coarse = silhouette_eval::DistanceToCircle(
+      renderer.Render(sphere->GetOutput(), camera), size / 2.0, size / 2.0, radius);
+    const auto smooth = silhouette_eval::DistanceToCircle(
+      renderer.Render(smoother->GetOutput(), camera), size / 2.0, size / 2.0, radius);
     std::printf("%4zu %12.3f %12.3f | %12.3f %12.3f %10lld\n", v, coarse.Mean, coarse.Max,
       smooth.Mean, smooth.Max, static_cast<long long>(smoother->GetOutput()->GetNumberOfPolys()));
     if (smooth.Samples < 1000)
@@ -84,8 +85,8 @@ int TestSphereAccuracy(int, char*[])
     auto camera = silhouette_test::CameraLookingAtOrigin(direction, distance, viewAngle);
     smoother->SetCamera(camera);
     smoother->Update();
-    const auto eq8 = silhouette_test::DistanceToCircle(
-      renderer.Render(smoother->GetOutput(), camera), size, size, size / 2.0, size / 2.0, radius);
+    const auto eq8 = silhouette_eval::DistanceToCircle(
+      renderer.Render(smoother->GetOutput(), camera), size / 2.0, size / 2.0, radius);
     eq8WorstMean = std::max(eq8WorstMean, eq8.Mean);
     eq8WorstMax = std::max(eq8WorstMax, eq8.Max);
   }

@@ -175,14 +175,18 @@ void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
   normals->SetName(inNormals && inNormals->GetName() ? inNormals->GetName() : "Normals");
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(total);
-  id = 0;
-  for (const glm::dvec3& n : mesh.normals())
+  float* n = normals->GetPointer(0);
+  for (const glm::dvec3& normal : mesh.normals())
   {
-    normals->SetTuple3(id++, n.x, n.y, n.z);
+    *n++ = static_cast<float>(normal.x);
+    *n++ = static_cast<float>(normal.y);
+    *n++ = static_cast<float>(normal.z);
   }
   for (const silsmooth::NewPoint& p : result.NewPoints)
   {
-    normals->SetTuple3(id++, p.Normal.x, p.Normal.y, p.Normal.z);
+    *n++ = static_cast<float>(p.Normal.x);
+    *n++ = static_cast<float>(p.Normal.y);
+    *n++ = static_cast<float>(p.Normal.z);
   }
   out->SetNormals(normals);
 }
@@ -203,16 +207,17 @@ void BuildCells(vtkPolyData* input, vtkPolyData* output, const std::vector<vtkId
   vtkNew<vtkIdTypeArray> connectivity;
   offsets->SetNumberOfValues(static_cast<vtkIdType>(outTriangles + 1));
   connectivity->SetNumberOfValues(static_cast<vtkIdType>(outTriangles * 3));
-  vtkNew<vtkIdList> origin;
-  origin->SetNumberOfIds(passThrough + static_cast<vtkIdType>(outTriangles));
+  const vtkIdType outCells = passThrough + static_cast<vtkIdType>(outTriangles);
+  vtkNew<vtkIdTypeArray> originalCellId;
+  originalCellId->SetName("OriginalCellId");
+  originalCellId->SetNumberOfValues(outCells);
   vtkNew<vtkUnsignedCharArray> newGeometry;
   newGeometry->SetName("NewGeometry");
-  newGeometry->SetNumberOfValues(origin->GetNumberOfIds());
-  for (vtkIdType c = 0; c < passThrough; ++c)
-  {
-    origin->SetId(c, c);
-    newGeometry->SetValue(c, 0);
-  }
+  newGeometry->SetNumberOfValues(outCells);
+  vtkIdType* origin = originalCellId->GetPointer(0);
+  unsigned char* kinds = newGeometry->GetPointer(0);
+  std::iota(origin, origin + passThrough, vtkIdType{ 0 });
+  std::fill(kinds, kinds + passThrough, static_cast<unsigned char>(0));
 
   vtkIdType* conn = connectivity->GetPointer(0);
   vtkIdType* offs = offsets->GetPointer(0);
@@ -222,8 +227,8 @@ void BuildCells(vtkPolyData* input, vtkPolyData* output, const std::vector<vtkId
     offs[written] = static_cast<vtkIdType>(written * 3);
     std::copy(t.begin(), t.end(), conn + written * 3);
     ++written;
-    origin->SetId(cell, from);
-    newGeometry->SetValue(cell, kind);
+    origin[cell] = from;
+    kinds[cell] = kind;
     ++cell;
   };
   std::size_t next = 0;
@@ -255,17 +260,16 @@ void BuildCells(vtkPolyData* input, vtkPolyData* output, const std::vector<vtkId
   // rules (global ids are not duplicated onto the replacement cells).
   if (in->GetNumberOfArrays() > 0)
   {
+    vtkNew<vtkIdList> source;
+    source->SetNumberOfIds(outCells);
+    std::copy(origin, origin + outCells, source->begin());
     vtkNew<vtkIdList> destination;
-    destination->SetNumberOfIds(origin->GetNumberOfIds());
+    destination->SetNumberOfIds(outCells);
     std::iota(destination->begin(), destination->end(), vtkIdType{ 0 });
     out->CopyAllOn();
-    out->CopyAllocate(in, origin->GetNumberOfIds());
-    out->CopyData(in, origin, destination);
+    out->CopyAllocate(in, outCells);
+    out->CopyData(in, source, destination);
   }
-  vtkNew<vtkIdTypeArray> originalCellId;
-  originalCellId->SetName("OriginalCellId");
-  originalCellId->SetNumberOfValues(origin->GetNumberOfIds());
-  std::copy(origin->begin(), origin->end(), originalCellId->GetPointer(0));
   out->AddArray(newGeometry);
   out->AddArray(originalCellId);
 }

@@ -310,7 +310,9 @@ private:
         const glm::dvec3 midNormal = safeNormalize(nP + nQ);
         if (midNormal != glm::dvec3(0.0))
         {
-          this->Concave.push_back({ t, segment.P0, segment.P1, segment.evaluate(0.5), midNormal });
+          const glm::dvec3 middle = segment.evaluate(0.5);
+          this->Concave.push_back({ t, segment.P0, segment.P1, middle, midNormal,
+            safeNormalize(this->View.towardViewerFrom(middle)) });
         }
       }
       const Id pointCount = static_cast<Id>(this->Mesh.points().size());

@@ -18,8 +18,9 @@ bool isConcaveSegment(
 namespace
 {
 
-// Whether `point` lies alongside the segment: its position along the chord
-// within the chord's extent, widened by half a chord at each end.
+// Whether `point` lies alongside the segment (its position along the chord
+// within the chord's extent, widened by half a chord at each end) and in
+// front of it, where it could hide it from the eye.
 bool isAlongside(const glm::dvec3& point, const ConcaveSegment& segment)
 {
   const glm::dvec3 chord = segment.End - segment.Start;
@@ -29,7 +30,7 @@ bool isAlongside(const glm::dvec3& point, const ConcaveSegment& segment)
     return false;
   }
   const double t = glm::dot(point - segment.Start, chord) / length2;
-  return t >= -0.5 && t <= 1.5;
+  return t >= -0.5 && t <= 1.5 && glm::dot(point - segment.Midpoint, segment.TowardViewer) > 0.0;
 }
 
 using Move = std::pair<Id, glm::dvec3>;

@@ -16,16 +16,21 @@
 // Taken literally this folds the surface on coarse meshes (measured: 22
 // flipped triangles in 120 torus views, and a trefoil knot's outline 27 times
 // worse), because a 1-ring vertex far to the side of a segment is above its
-// local plane without being able to block it. Three guards, each for a
-// reason: a vertex answers only to segments it lies alongside (its position
-// along the chord within the chord's extent, widened by half a chord); only
-// vertices whose shading normal leans towards R move (they are on the
-// silhouette region; a vertex facing the viewer moved sideways folds the
-// visible surface); a move is at most twice the segments' bulge (a vertex
-// that must move further is not in front of the curve but, say, across a
-// thin tube: the trefoil knot's outline got 2.5 times worse without this);
-// and a move that would turn one of the vertex's triangles over is halved
-// until it does not, or cancelled.
+// local plane without being able to block it. The guards, each for a reason:
+// - a vertex answers only to segments it lies alongside (its position along
+//   the chord within the chord's extent, widened by half a chord) and in front
+//   of (nearer the eye than the midpoint: a vertex behind cannot hide it);
+// - only vertices whose shading normal leans towards R move (they are on the
+//   silhouette region; a vertex facing the viewer moved sideways folds the
+//   visible surface);
+// - a move is at most twice the segments' bulge (a vertex that must move
+//   further is not in front of the curve but, say, across a thin tube: the
+//   knot's outline got 2.5 times worse without this);
+// - a move that would turn one of the vertex's triangles over is halved until
+//   it does not, or cancelled.
+// Even so the effect is mixed on coarse tubes: on the 600-triangle trefoil
+// knot the outline's mean distance to the fine reference doubles in every
+// view (0.7 -> 1.4 px), while the torus's inner rim is uncovered.
 #pragma once
 
 #include "MeshTopology.h"
@@ -45,6 +50,8 @@ struct ConcaveSegment
   glm::dvec3 End;      ///< S(1)
   glm::dvec3 Midpoint; ///< M_i = S(1/2)
   glm::dvec3 Normal;   ///< N_i, unit
+  /// Unit direction from M_i towards the eye (the viewer, in parallel projection).
+  glm::dvec3 TowardViewer;
 };
 
 /// True when the segment from s1 (normal n1) to s2 (normal n2) is concave.

@@ -21,13 +21,22 @@ glm::dvec3 safeNormalize(const glm::dvec3& normal)
 namespace
 {
 
+// `v` divided by its largest component's magnitude: the direction survives
+// where the cross product of two tiny edges (a model at 1e-150 scale) would
+// underflow to zero.
+glm::dvec3 rescaled(const glm::dvec3& v)
+{
+  const double largest = std::max({ std::abs(v.x), std::abs(v.y), std::abs(v.z) });
+  return largest > 0.0 && std::isfinite(largest) ? v / largest : v;
+}
+
 // Interior angle at `corner` between the directions to `a` and `b`; zero when
 // either direction is degenerate. atan2 of |cross| and dot is accurate for
 // angles near 0 and pi, where acos of a dot product loses digits.
 double cornerAngle(const glm::dvec3& corner, const glm::dvec3& a, const glm::dvec3& b)
 {
-  const glm::dvec3 u = a - corner;
-  const glm::dvec3 v = b - corner;
+  const glm::dvec3 u = rescaled(a - corner);
+  const glm::dvec3 v = rescaled(b - corner);
   const double sine = glm::length(glm::cross(u, v));
   const double cosine = glm::dot(u, v);
   if (sine == 0.0 && cosine == 0.0)
@@ -52,7 +61,7 @@ std::vector<glm::dvec3> angleWeightedNormals(
     const glm::dvec3& p0 = points[static_cast<std::size_t>(t[0])];
     const glm::dvec3& p1 = points[static_cast<std::size_t>(t[1])];
     const glm::dvec3& p2 = points[static_cast<std::size_t>(t[2])];
-    const glm::dvec3 faceNormal = safeNormalize(glm::cross(p1 - p0, p2 - p0));
+    const glm::dvec3 faceNormal = safeNormalize(glm::cross(rescaled(p1 - p0), rescaled(p2 - p0)));
     if (faceNormal == glm::dvec3(0.0))
     {
       continue; // zero area: no direction to contribute

@@ -7,6 +7,7 @@
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
+#include "vtkFieldData.h"
 #include "vtkIcosphereSource.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -340,7 +341,24 @@ bool ExtremeScales()
     CHECK(silhouette_test::AnalyzeTopology(run.Filter->GetOutput()).closedManifold(),
       "closed manifold");
   }
-  std::printf("coordinates at 1e-30 and 1e30: handled, no NaN\n");
+  // Without normals at 1e-150 scale: the computed normals must not underflow
+  // (smoothing would silently do nothing), nor the projection give up.
+  auto tiny = Sphere(2);
+  tiny->GetPointData()->Initialize();
+  for (vtkIdType i = 0; i < tiny->GetNumberOfPoints(); ++i)
+  {
+    double x[3];
+    tiny->GetPoint(i, x);
+    tiny->GetPoints()->SetPoint(i, 1e-150 * x[0], 1e-150 * x[1], 1e-150 * x[2]);
+  }
+  Run run(tiny, Camera(0.4e-150, 0.3e-150, 4e-150));
+  CHECK(!run.Failed() && NoNaN(run.Filter->GetOutput()), "1e-150 scale without normals works");
+  const double newTriangles =
+    run.Filter->GetOutput()->GetFieldData()->GetArray("NewTriangleCount")->GetTuple1(0);
+  CHECK(newTriangles > 100, "and still smooths the silhouette");
+  std::printf("coordinates at 1e-30 and 1e30, and 1e-150 without normals (%.0f new triangles): "
+              "handled, no NaN\n",
+    newTriangles);
   return true;
 }
 

@@ -94,8 +94,8 @@ std::string RenderHelp()
 Reads INPUT like 'silhouette smooth', smooths its silhouette for the view of
 the camera options, renders it offscreen at --size with that same camera
 (no multisampling, so images are repeatable), writes a PNG image and prints
-the same figures as 'silhouette smooth'. Rendering needs an X display; where
-there is none, run it under 'xvfb-run -a'.
+the same figures as 'silhouette smooth'. Where there is no X display it
+renders through OSMesa (--backend).
 
 Options:
   -o, --output IMAGE.png  the image to write; required, must end in .png
@@ -121,7 +121,8 @@ Options:
                           The figures still describe the smoothing.
   --json                  print the figures as one JSON object instead of text
                           (default: text); its "output" is the image
-  -h, --help              show this help and exit
+)" + RenderBackendHelp(26) +
+    R"(  -h, --help              show this help and exit
 
 )" + CameraOptionsHelp() +
     "\n" + FiguresHelp();
@@ -166,8 +167,8 @@ std::string ViewHelp()
 Opens a VTK render window with trackball camera interaction on the mesh,
 smoothed by vtkSilhouetteSmoothingFilter. The filter is fed the window's
 renderer, so it re-runs by itself whenever the camera moves (through the
-pipeline and its MTime). Needs an X display (xvfb-run -a where there is
-none, for the headless modes).
+pipeline and its MTime). The window needs an X display; the headless modes
+(--orbit, --play) render through OSMesa where there is none (--backend).
 
 MODEL|MESH: a model of the evaluation set (bunny, sphere, torus, ellipsoid,
 supertoroid, knot), shown as its coarse version (quadric decimation of the
@@ -241,7 +242,8 @@ Options:
                          it was made for (default: no log, the window)
   --json                 with --orbit or --play: one JSON object per line
                          instead of text (default: text)
-  -h, --help             show this help and exit
+)" + RenderBackendHelp(25) +
+    R"(  -h, --help             show this help and exit
 
 )" + CameraOptionsHelp() +
     "\nThe window has the --size of the camera options (default 1024x768); the\n"
@@ -325,7 +327,7 @@ GenerateOptions ParseGenerate(ArgumentList& arguments)
   return options;
 }
 
-CompareOptions ParseCompare(ArgumentList& arguments)
+CompareOptions ParseCompare(ArgumentList& arguments, RenderBackend& backend)
 {
   CompareOptions options;
   while (!arguments.AtEnd())
@@ -376,6 +378,10 @@ CompareOptions ParseCompare(ArgumentList& arguments)
       RejectInlineValue(option);
       options.Format = option.Name == "--json" ? CompareFormat::Json : CompareFormat::Markdown;
     }
+    else if (option.Name == "--backend")
+    {
+      backend = ParseRenderBackend(option.Name, arguments.TakeValue(option));
+    }
     else
     {
       throw UsageError(
@@ -389,7 +395,7 @@ CompareOptions ParseCompare(ArgumentList& arguments)
   return options;
 }
 
-FigureOptions ParseFigure(ArgumentList& arguments)
+FigureOptions ParseFigure(ArgumentList& arguments, RenderBackend& backend)
 {
   FigureOptions options;
   while (!arguments.AtEnd())
@@ -429,6 +435,10 @@ FigureOptions ParseFigure(ArgumentList& arguments)
     else if (option.Name == "--data")
     {
       options.DataDirectory = arguments.TakeValue(option);
+    }
+    else if (option.Name == "--backend")
+    {
+      backend = ParseRenderBackend(option.Name, arguments.TakeValue(option));
     }
     else if (!ParseCameraOption(option, arguments, options.Camera))
     {
@@ -500,7 +510,7 @@ std::optional<RenderStyle> ParseRenderStyle(const std::string& name)
   return std::nullopt;
 }
 
-ViewOptions ParseView(ArgumentList& arguments)
+ViewOptions ParseView(ArgumentList& arguments, RenderBackend& backend)
 {
   ViewOptions options;
   bool onlyOperands = false; // after "--"
@@ -596,6 +606,10 @@ ViewOptions ParseView(ArgumentList& arguments)
     else if (option.Name == "--json")
     {
       flag(options.Json);
+    }
+    else if (option.Name == "--backend")
+    {
+      backend = ParseRenderBackend(option.Name, arguments.TakeValue(option));
     }
     else if (!ParseCameraOption(option, arguments, options.Camera))
     {
@@ -719,17 +733,17 @@ CommandLine ParseCommandLine(int argc, char* argv[])
   else if (command == "compare")
   {
     result.What = CommandLine::Action::Compare;
-    result.Compare = ParseCompare(arguments);
+    result.Compare = ParseCompare(arguments, result.Backend);
   }
   else if (command == "figure")
   {
     result.What = CommandLine::Action::Figure;
-    result.Figure = ParseFigure(arguments);
+    result.Figure = ParseFigure(arguments, result.Backend);
   }
   else if (command == "view")
   {
     result.What = CommandLine::Action::View;
-    result.View = ParseView(arguments);
+    result.View = ParseView(arguments, result.Backend);
   }
   else if (command == "smooth")
   {
@@ -748,10 +762,15 @@ CommandLine ParseCommandLine(int argc, char* argv[])
   {
     result.What = CommandLine::Action::Render;
     RenderOptions& render = result.Render;
-    ParseCommand(command, arguments, render, [&render](const Option& option, ArgumentList& args) {
+    RenderBackend& backend = result.Backend;
+    ParseCommand(command, arguments, render, [&](const Option& option, ArgumentList& args) {
       if (IsOutputOption(option))
       {
         render.Output = args.TakeValue(option);
+      }
+      else if (option.Name == "--backend")
+      {
+        backend = ParseRenderBackend(option.Name, args.TakeValue(option));
       }
       else if (option.Name == "--style")
       {

@@ -5,6 +5,7 @@
 #include "Compare.h"
 #include "Figure.h"
 #include "Generate.h"
+#include "RenderingBackend.h"
 
 #include <optional>
 #include <string>
@@ -84,6 +85,8 @@ struct CommandLine
   CompareOptions Compare;
   FigureOptions Figure;
   ViewOptions View;
+  /// --backend of the commands that render (render, compare, figure, view).
+  RenderBackend Backend = RenderBackend::Auto;
 };
 
 /// Parses argv; throws UsageError for anything it cannot make sense of.

@@ -3,6 +3,7 @@
 #include "CliErrors.h"
 #include "Figures.h"
 #include "MeshIO.h"
+#include "RenderingBackend.h"
 #include "VtkErrorLog.h"
 
 #include "EvaluationModels.h"
@@ -249,7 +250,8 @@ prints the distance to the exact silhouette (the exact circle for the
 sphere, a 518,400-triangle torus rendering for the torus).
 Targets: smoothed deviation at most 1/3 of the coarse one, and smoothed
 frame time at most 1/3 of the fine one; each line says whether they are met.
-Progress goes to stderr. Rendering needs an X display (xvfb-run -a).
+Progress goes to stderr. Where there is no X display it renders through
+OSMesa (--backend).
 
 Models: bunny, sphere, torus, ellipsoid, supertoroid, knot; 'all' for all of
 them. Any other INPUT is read as a mesh file (.ply .obj .stl .vtp .vtk).
@@ -268,7 +270,8 @@ Options:
                         project's Data/ folder)
   --json                one JSON array, an object per model
   --markdown            the README's tables
-  -h, --help            show this help and exit
+)" + RenderBackendHelp(24) +
+    R"(  -h, --help            show this help and exit
 )";
 }
 

@@ -3,6 +3,7 @@
 #include "CliErrors.h"
 #include "MeshIO.h"
 #include "Rendering.h"
+#include "RenderingBackend.h"
 #include "VtkErrorLog.h"
 
 #include "EvaluationModels.h"
@@ -294,7 +295,8 @@ file, decimated and refined like a model. With --plot it also times orbits
 (whole frames: camera move, filter, render) of the coarse mesh at 1/4, 1/2,
 1 and 2 times its triangles, with and without smoothing, and of the fine
 reference at each Loop level, and plots milliseconds against triangles
-with VTK's charts. Rendering needs an X display (xvfb-run -a).
+with VTK's charts. Where there is no X display it renders through OSMesa
+(--backend).
 
 Options:
   -o, --output FILE     the figure (.png); required
@@ -305,7 +307,8 @@ Options:
   --frames N            timed orbit frames per point of the plot (default 30)
   --data DIR            the folder that holds bunny.ply (default: the
                         project's Data/ folder)
-  -h, --help            show this help and exit
+)" + RenderBackendHelp(24) +
+    R"(  -h, --help            show this help and exit
 
 Camera options as for 'smooth' (--size is the size of ONE panel, default
 1024x768; the framing camera frames the original mesh).

@@ -2,6 +2,7 @@
 
 #include "CliErrors.h"
 #include "MeshIO.h"
+#include "RenderingBackend.h"
 #include "VtkErrorLog.h"
 
 #include <vtkActor.h>
@@ -235,6 +236,10 @@ void CheckImageOutputPath(const std::string& path)
 
 void RequireDisplay()
 {
+  if (ActiveRenderBackend() != RenderBackend::X)
+  {
+    return; // OSMesa, or VTK's own offscreen window: no display needed
+  }
   const char* display = std::getenv("DISPLAY");
   if (!display || !*display)
   {

@@ -28,8 +28,8 @@ OffscreenView MakeOffscreenView(const std::array<int, 2>& size);
 /// Throws RuntimeError unless `path` ends in .png (any letter case).
 void CheckImageOutputPath(const std::string& path);
 
-/// Throws RuntimeError when there is no X display to render with (VTK
-/// would abort the program).
+/// Throws RuntimeError when the program renders through X and there is no
+/// X display (VTK would abort the program); does nothing with OSMesa.
 void RequireDisplay();
 
 /**

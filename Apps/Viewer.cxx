@@ -4,6 +4,7 @@
 #include "Figures.h"
 #include "MeshIO.h"
 #include "Rendering.h"
+#include "RenderingBackend.h"
 #include "VtkErrorLog.h"
 
 #include "EvaluationModels.h"
@@ -1070,8 +1071,9 @@ void Viewer::Play()
 void RunView(const ViewOptions& options)
 {
   Viewer viewer(options); // a bad file fails here, before any window
+  const bool interactive = options.PlayLog.empty() && !options.Orbit;
   const char* display = std::getenv("DISPLAY");
-  if (!display || !*display)
+  if ((interactive || ActiveRenderBackend() == RenderBackend::X) && (!display || !*display))
   {
     throw RuntimeError("view needs an X display and DISPLAY is not set; run it under "
                        "'xvfb-run -a' (offscreen with --orbit or --play)");

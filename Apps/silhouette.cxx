@@ -6,6 +6,7 @@
 #include "Compare.h"
 #include "Figure.h"
 #include "Generate.h"
+#include "RenderingBackend.h"
 #include "Viewer.h"
 #include "VtkErrorLog.h"
 
@@ -22,14 +23,39 @@ int Fail(cli::ExitStatus status, const std::string& message)
   return status;
 }
 
+// The commands that render pick their back-end before any VTK window exists
+// (this may restart the program with the OSMesa library preloaded).
+void SelectBackendFor(const cli::CommandLine& commandLine, char* argv[])
+{
+  using Action = cli::CommandLine::Action;
+  switch (commandLine.What)
+  {
+    case Action::Render:
+    case Action::Compare:
+    case Action::Figure:
+      cli::SelectRenderBackend(commandLine.Backend, false, argv);
+      break;
+    case Action::View:
+    {
+      const bool headless = commandLine.View.Orbit || !commandLine.View.PlayLog.empty();
+      cli::SelectRenderBackend(commandLine.Backend, !headless, argv);
+      break;
+    }
+    default:
+      break;
+  }
+}
+
 } // namespace
 
 int main(int argc, char* argv[])
 {
+  cli::RestoreEnvironmentAfterReexec();
   cli::VtkErrorLog::Instance().InstallMessageCapture();
   try
   {
     const cli::CommandLine commandLine = cli::ParseCommandLine(argc, argv);
+    SelectBackendFor(commandLine, argv);
     switch (commandLine.What)
     {
       case cli::CommandLine::Action::ShowHelp:

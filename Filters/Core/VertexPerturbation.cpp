@@ -20,7 +20,11 @@ namespace
 
 // Whether `point` lies alongside the segment (its position along the chord
 // within the chord's extent, widened by half a chord at each end) and in
-// front of it, where it could hide it from the eye.
+// front of it, where it could hide it from the eye. "In front" allows a
+// quarter chord behind the midpoint, because the vertices of a rim sit at
+// about the midpoint's depth. Measured (deviation ratios of the evaluation):
+// strictly in front, torus 0.34 and knot 0.57; a quarter chord, 0.29 and 0.67;
+// half a chord, 0.28 and 0.73; no depth test, 0.28 and 0.75.
 bool isAlongside(const glm::dvec3& point, const ConcaveSegment& segment)
 {
   const glm::dvec3 chord = segment.End - segment.Start;
@@ -30,7 +34,8 @@ bool isAlongside(const glm::dvec3& point, const ConcaveSegment& segment)
     return false;
   }
   const double t = glm::dot(point - segment.Start, chord) / length2;
-  return t >= -0.5 && t <= 1.5 && glm::dot(point - segment.Midpoint, segment.TowardViewer) > 0.0;
+  return t >= -0.5 && t <= 1.5 &&
+    glm::dot(point - segment.Midpoint, segment.TowardViewer) > -0.25 * std::sqrt(length2);
 }
 
 using Move = std::pair<Id, glm::dvec3>;

@@ -19,7 +19,8 @@
 // local plane without being able to block it. The guards, each for a reason:
 // - a vertex answers only to segments it lies alongside (its position along
 //   the chord within the chord's extent, widened by half a chord) and in front
-//   of (nearer the eye than the midpoint: a vertex behind cannot hide it);
+//   of (nearer the eye than the midpoint, within a quarter chord: a vertex
+//   behind cannot hide it);
 // - only vertices whose shading normal leans towards R move (they are on the
 //   silhouette region; a vertex facing the viewer moved sideways folds the
 //   visible surface);
@@ -29,8 +30,9 @@
 // - a move that would turn one of the vertex's triangles over is halved until
 //   it does not, or cancelled.
 // Even so the effect is mixed on coarse tubes: on the 600-triangle trefoil
-// knot the outline's mean distance to the fine reference doubles in every
-// view (0.7 -> 1.4 px), while the torus's inner rim is uncovered.
+// knot the outline's mean distance to the fine reference grows (evaluation
+// ratio 0.35 without perturbation, 0.67 with it), while the torus's inner rim
+// is uncovered (0.42 -> 0.29).
 #pragma once
 
 #include "MeshTopology.h"

@@ -19,7 +19,6 @@
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 #include <vtkPen.h>
 #include <vtkPlot.h>
 #include <vtkPolyData.h>
@@ -29,7 +28,6 @@
 #include <vtkTable.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <iostream>
 #include <stdexcept>
@@ -43,21 +41,6 @@ namespace cli
 {
 namespace
 {
-
-void WritePng(vtkRenderWindow* window, const std::string& path)
-{
-  VtkErrorLog& errors = VtkErrorLog::Instance();
-  vtkNew<vtkWindowToImageFilter> capture;
-  capture->SetInput(window);
-  capture->SetInputBufferTypeToRGB();
-  capture->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> writer;
-  errors.Watch(writer);
-  writer->SetInputConnection(capture->GetOutputPort());
-  writer->SetFileName(path.c_str());
-  writer->Write();
-  errors.ThrowIfErrors("cannot write '" + path + "'");
-}
 
 void AddLabel(vtkRenderer* renderer, const std::string& text)
 {
@@ -136,7 +119,7 @@ void RenderPanels(const silhouette_eval::ModelVersions& model, const FigureOptio
   }
   window->Render();
   VtkErrorLog::Instance().ThrowIfErrors("rendering the figure failed");
-  WritePng(window, options.Output);
+  WriteWindowPng(window, options.Output);
   std::cout << "wrote " << options.Output << "\n";
 }
 
@@ -231,7 +214,7 @@ void RenderPlot(
   AddSeries(chart, "fine (Loop refinement)", fineX, fineY, blue);
   view->GetRenderWindow()->Render();
   VtkErrorLog::Instance().ThrowIfErrors("drawing the plot failed");
-  WritePng(view->GetRenderWindow(), options.Plot);
+  WriteWindowPng(view->GetRenderWindow(), options.Plot);
   std::cout << "wrote " << options.Plot << "\n";
 }
 

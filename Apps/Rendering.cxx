@@ -33,12 +33,6 @@ namespace cli
 namespace
 {
 
-constexpr double White[3] = { 1.0, 1.0, 1.0 };
-constexpr double Black[3] = { 0.0, 0.0, 0.0 };
-constexpr double LightGrey[3] = { 0.82, 0.82, 0.80 };
-constexpr double DarkGrey[3] = { 0.30, 0.30, 0.30 };
-constexpr double Red[3] = { 0.90, 0.0, 0.0 };
-
 // VTK aborts when its X display cannot be opened; end with one line instead.
 void ReportAbortWhileRendering(int)
 {
@@ -67,19 +61,6 @@ vtkSmartPointer<vtkPolyData> InputWithShadingNormals(
     shown->GetPointData()->SetNormals(normals);
   }
   return shown;
-}
-
-// Edges drawn over an unlit white fill, in one pass: the fill hides the
-// edges behind the mesh without the z-fighting of a separate hidden-line pass.
-void ShowEdges(vtkActor* actor, const double color[3])
-{
-  vtkProperty* property = actor->GetProperty();
-  property->SetRepresentationToSurface();
-  property->SetColor(White[0], White[1], White[2]);
-  property->LightingOff();
-  property->EdgeVisibilityOn();
-  property->SetEdgeColor(color[0], color[1], color[2]);
-  property->SetLineWidth(1.0);
 }
 
 // The triangles of the filter's output that the smoothing made (NewGeometry
@@ -150,6 +131,38 @@ vtkSmartPointer<vtkPolyDataSilhouette> MakeVtkSilhouette(vtkPolyData* input, vtk
 }
 
 } // namespace
+
+// Edges drawn over an unlit white fill, in one pass: the fill hides the
+// edges behind the mesh without the z-fighting of a separate hidden-line pass.
+void ShowEdges(vtkActor* actor, const double color[3])
+{
+  vtkProperty* property = actor->GetProperty();
+  property->SetRepresentationToSurface();
+  property->SetColor(White[0], White[1], White[2]);
+  property->LightingOff();
+  property->EdgeVisibilityOn();
+  property->SetEdgeColor(color[0], color[1], color[2]);
+  property->SetLineWidth(1.0);
+}
+
+void WriteWindowPng(vtkRenderWindow* window, const std::string& path)
+{
+  VtkErrorLog& errors = VtkErrorLog::Instance();
+  errors.Clear();
+  vtkNew<vtkWindowToImageFilter> capture;
+  capture->SetInput(window);
+  capture->SetInputBufferTypeToRGB();
+  capture->ReadFrontBufferOff();
+  // An offscreen window keeps the frame just rendered; rendering it again
+  // would count as a frame in a viewer's frame rate.
+  capture->SetShouldRerender(!window->GetOffScreenRendering());
+  vtkNew<vtkPNGWriter> writer;
+  errors.Watch(writer);
+  writer->SetInputConnection(capture->GetOutputPort());
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  errors.ThrowIfErrors("cannot write '" + path + "'");
+}
 
 void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter, vtkPolyData* input,
   RenderStyle style, bool smoothed)
@@ -261,17 +274,8 @@ void RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   view.Window->Render();
   errors.ThrowIfErrors("rendering failed");
 
-  vtkNew<vtkWindowToImageFilter> capture;
-  capture->SetInput(view.Window);
-  capture->SetInputBufferTypeToRGB();
-  capture->ReadFrontBufferOff();
-  vtkNew<vtkPNGWriter> writer;
-  errors.Watch(writer);
-  writer->SetInputConnection(capture->GetOutputPort());
-  writer->SetFileName(options.Output.c_str());
-  writer->Write();
+  WriteWindowPng(view.Window, options.Output);
   std::signal(SIGABRT, SIG_DFL);
-  errors.ThrowIfErrors("cannot write '" + options.Output + "'");
 }
 
 } // namespace cli

@@ -6,7 +6,9 @@
 #include <vtkSmartPointer.h>
 
 #include <array>
+#include <string>
 
+class vtkActor;
 class vtkPolyData;
 class vtkRenderWindow;
 class vtkRenderer;
@@ -31,6 +33,21 @@ void CheckImageOutputPath(const std::string& path);
 /// Throws RuntimeError when the program renders through X and there is no
 /// X display (VTK would abort the program); does nothing with OSMesa.
 void RequireDisplay();
+
+/// The palette of the drawings.
+inline constexpr double White[3] = { 1.0, 1.0, 1.0 };
+inline constexpr double Black[3] = { 0.0, 0.0, 0.0 };
+inline constexpr double LightGrey[3] = { 0.82, 0.82, 0.80 };
+inline constexpr double DarkGrey[3] = { 0.30, 0.30, 0.30 };
+inline constexpr double Red[3] = { 0.90, 0.0, 0.0 };
+
+/// Edges over an unlit white fill, drawn in one pass: the fill hides the
+/// edges behind the mesh without the z-fighting of a hidden-line pass.
+void ShowEdges(vtkActor* actor, const double color[3]);
+
+/// Writes the window's last frame to a PNG file (re-rendering only an
+/// onscreen window); throws RuntimeError on failure.
+void WriteWindowPng(vtkRenderWindow* window, const std::string& path);
 
 /**
  * Adds to `renderer` the actors that draw `style`: of the filter's output, or

@@ -22,7 +22,6 @@
 #include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkObjectFactory.h>
-#include <vtkPNGWriter.h>
 #include <vtkPolyData.h>
 #include <vtkProperty.h>
 #include <vtkProperty2D.h>
@@ -35,7 +34,6 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkThreshold.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <algorithm>
 #include <cctype>
@@ -68,9 +66,6 @@ constexpr std::size_t MeasuredIntervals = 20;
 constexpr double IdleGapSeconds = 1.0;
 
 // The colours of the new-geometry style, as Rendering.cxx draws it.
-constexpr double White[3] = { 1.0, 1.0, 1.0 };
-constexpr double DarkGrey[3] = { 0.30, 0.30, 0.30 };
-constexpr double Red[3] = { 0.90, 0.0, 0.0 };
 
 struct KeyBinding
 {
@@ -168,37 +163,6 @@ std::string Grouped(long long value)
 const char* OnOff(bool on)
 {
   return on ? "on" : "off";
-}
-
-// Edges over an unlit white fill, as Rendering.cxx's wireframe styles.
-void ShowEdges(vtkActor* actor, const double color[3])
-{
-  vtkProperty* property = actor->GetProperty();
-  property->SetRepresentationToSurface();
-  property->SetColor(White[0], White[1], White[2]);
-  property->LightingOff();
-  property->EdgeVisibilityOn();
-  property->SetEdgeColor(color[0], color[1], color[2]);
-  property->SetLineWidth(1.0);
-}
-
-void WritePng(vtkRenderWindow* window, const std::string& path)
-{
-  VtkErrorLog& errors = VtkErrorLog::Instance();
-  errors.Clear();
-  vtkNew<vtkWindowToImageFilter> capture;
-  capture->SetInput(window);
-  capture->SetInputBufferTypeToRGB();
-  capture->ReadFrontBufferOff();
-  // An offscreen window keeps the frame just rendered; rendering it again
-  // would count as a frame in the frame rate.
-  capture->SetShouldRerender(!window->GetOffScreenRendering());
-  vtkNew<vtkPNGWriter> writer;
-  errors.Watch(writer);
-  writer->SetInputConnection(capture->GetOutputPort());
-  writer->SetFileName(path.c_str());
-  writer->Write();
-  errors.ThrowIfErrors("cannot write '" + path + "'");
 }
 
 void CreateDirectory(const std::string& directory)
@@ -748,7 +712,7 @@ void Viewer::Perform(ViewerAction action)
 std::string Viewer::WriteScreenshot(const std::string& path)
 {
   CreateDirectory(this->Options.ScreenshotDirectory);
-  WritePng(this->Window, path);
+  WriteWindowPng(this->Window, path);
   return path;
 }
 
@@ -910,7 +874,7 @@ void Viewer::ReportStep(const std::string& action)
   char name[96];
   std::snprintf(name, sizeof(name), "step_%02d_%s.png", this->Step, action.c_str());
   const std::string screenshot = JoinPath(this->Options.ScreenshotDirectory, name);
-  WritePng(this->Window, screenshot);
+  WriteWindowPng(this->Window, screenshot);
   const ViewerFigures figures = this->CurrentFigures();
   vtkCamera* camera = this->MainRenderer->GetActiveCamera();
   const bool parallel = camera->GetParallelProjection() != 0;
@@ -1008,7 +972,7 @@ void Viewer::RecordOrbit()
       char name[32];
       std::snprintf(name, sizeof(name), "frame_%04d.png", frame);
       image = JoinPath(this->Options.RecordDirectory, name);
-      WritePng(this->Window, image);
+      WriteWindowPng(this->Window, image);
     }
     if (this->Options.Json)
     {

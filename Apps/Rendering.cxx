@@ -33,16 +33,6 @@ namespace cli
 namespace
 {
 
-// VTK aborts when its X display cannot be opened; end with one line instead.
-void ReportAbortWhileRendering(int)
-{
-  static const char message[] = "silhouette: rendering aborted: VTK could not use the X display "
-                                "(is DISPLAY right? try 'xvfb-run -a')\n";
-  const ssize_t ignored = write(STDERR_FILENO, message, sizeof(message) - 1);
-  (void)ignored;
-  _exit(ExitFailure);
-}
-
 // The input with the filter's shading normals, so --no-smoothing differs from
 // the smoothed mesh in its geometry only (input points keep their ids).
 vtkSmartPointer<vtkPolyData> InputWithShadingNormals(
@@ -270,12 +260,10 @@ void RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   // Clip on what is drawn: the smoothed silhouette bulges past the input's bounds.
   view.Renderer->ResetCameraClippingRange();
 
-  std::signal(SIGABRT, ReportAbortWhileRendering);
   view.Window->Render();
   errors.ThrowIfErrors("rendering failed");
 
   WriteWindowPng(view.Window, options.Output);
-  std::signal(SIGABRT, SIG_DFL);
 }
 
 } // namespace cli

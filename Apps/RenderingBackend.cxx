@@ -6,11 +6,14 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
+#include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <optional>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 #if SILHOUETTE_VTK_HAS_X
@@ -203,14 +206,21 @@ bool HaveXDisplay()
       return false;
     }
 #if SILHOUETTE_VTK_HAS_X
-    Display* display = XOpenDisplay(nullptr);
-    if (!display)
+    // A busy Xvfb has been seen to refuse a connection for a moment, so a
+    // refusal is retried for up to a second before it counts.
+    for (int attempt = 0; attempt < 20; ++attempt)
     {
-      return false;
+      if (Display* display = XOpenDisplay(nullptr))
+      {
+        XCloseDisplay(display);
+        return true;
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
-    XCloseDisplay(display);
-#endif
+    return false;
+#else
     return true;
+#endif
   }();
   return answer;
 }
@@ -253,8 +263,9 @@ void SelectRenderBackend(RenderBackend requested, bool interactive, char* argv[]
   if (requested == RenderBackend::Auto)
   {
     // The on-screen viewer stays on X, and fails later with its own message
-    // when there is no display.
-    wantOSMesa = !interactive && !HaveXDisplay();
+    // when there is no display. A re-executed process keeps the choice its
+    // parent made, rather than probing the display a second time.
+    wantOSMesa = Reexecuted ? OSMesaLibraryLoaded() : !interactive && !HaveXDisplay();
   }
   if (wantOSMesa != OSMesaLibraryLoaded())
   {
@@ -276,6 +287,56 @@ void SelectRenderBackend(RenderBackend requested, bool interactive, char* argv[]
   }
   Active = RenderBackend::X;
 #endif
+}
+
+namespace
+{
+
+// Prepared before any rendering, because the abort handler may only use
+// async-signal-safe calls (write, execve, _exit).
+char** RetryArguments = nullptr;
+std::vector<std::string> RetryEnvironmentStrings;
+std::vector<char*> RetryEnvironment;
+constexpr const char* RetryVariable = "SILHOUETTE_RENDER_RETRY";
+
+void RetryOrReportAbort(int)
+{
+  if (RetryArguments && !RetryEnvironment.empty())
+  {
+    static const char retrying[] =
+      "silhouette: VTK could not open its window (X display or GL context); retrying once\n";
+    const ssize_t ignored = write(STDERR_FILENO, retrying, sizeof(retrying) - 1);
+    (void)ignored;
+    execve("/proc/self/exe", RetryArguments, RetryEnvironment.data());
+  }
+  static const char message[] = "silhouette: rendering aborted: VTK could not use the X display "
+                                "(is DISPLAY right? try 'xvfb-run -a')\n";
+  const ssize_t ignored = write(STDERR_FILENO, message, sizeof(message) - 1);
+  (void)ignored;
+  _exit(ExitFailure);
+}
+
+} // namespace
+
+void GuardRenderingAborts(char* argv[])
+{
+  RetryArguments = argv;
+  RetryEnvironmentStrings.clear();
+  RetryEnvironment.clear();
+  if (!std::getenv(RetryVariable))
+  {
+    for (char** variable = environ; *variable; ++variable)
+    {
+      RetryEnvironmentStrings.emplace_back(*variable);
+    }
+    RetryEnvironmentStrings.emplace_back(std::string(RetryVariable) + "=1");
+    for (std::string& variable : RetryEnvironmentStrings)
+    {
+      RetryEnvironment.push_back(variable.data());
+    }
+    RetryEnvironment.push_back(nullptr);
+  }
+  std::signal(SIGABRT, RetryOrReportAbort);
 }
 
 } // namespace cli

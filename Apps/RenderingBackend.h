@@ -46,8 +46,18 @@ void SelectRenderBackend(RenderBackend requested, bool interactive, char* argv[]
 /// The back-end this process renders with (X before SelectRenderBackend).
 RenderBackend ActiveRenderBackend();
 
-/// True when DISPLAY is set and names an X server that answers.
+/// True when DISPLAY is set and names an X server that answers (tried for up
+/// to a second: a busy Xvfb has been seen to refuse a connection for a moment).
 bool HaveXDisplay();
+
+/**
+ * For the rest of the process: when VTK aborts while rendering (it does when
+ * it cannot open its X display or make a GL context), re-execute the program
+ * once with the same arguments, since such failures have been transient under
+ * Xvfb; if that was already the retry, end with one line on stderr instead of
+ * VTK's abort. Call after SelectRenderBackend(), for commands that render.
+ */
+void GuardRenderingAborts(char* argv[]);
 
 } // namespace cli
 

@@ -90,16 +90,6 @@ constexpr KeyBinding KeyBindings[] = {
   { "wheel", "zoom (also right drag)" },
 };
 
-// VTK aborts when its X display cannot be opened; end with one line instead.
-void ReportAbortWhileRendering(int)
-{
-  static const char message[] = "silhouette: rendering aborted: VTK could not use the X display "
-                                "(is DISPLAY right? try 'xvfb-run -a')\n";
-  const ssize_t ignored = write(STDERR_FILENO, message, sizeof(message) - 1);
-  (void)ignored;
-  _exit(ExitFailure);
-}
-
 // The trackball camera with only the viewer's keys: VTK's own (w/s
 // wireframe/surface, 3 stereo, f fly-to, p pick, j/t joystick...) would
 // change actors behind the viewer's back.
@@ -1042,7 +1032,6 @@ void RunView(const ViewOptions& options)
     throw RuntimeError("view needs an X display and DISPLAY is not set; run it under "
                        "'xvfb-run -a' (offscreen with --orbit or --play)");
   }
-  std::signal(SIGABRT, ReportAbortWhileRendering);
   if (!options.PlayLog.empty())
   {
     viewer.Play();
@@ -1055,7 +1044,6 @@ void RunView(const ViewOptions& options)
   {
     viewer.Interact();
   }
-  std::signal(SIGABRT, SIG_DFL);
 }
 
 } // namespace cli

@@ -34,11 +34,13 @@ void SelectBackendFor(const cli::CommandLine& commandLine, char* argv[])
     case Action::Compare:
     case Action::Figure:
       cli::SelectRenderBackend(commandLine.Backend, false, argv);
+      cli::GuardRenderingAborts(argv);
       break;
     case Action::View:
     {
       const bool headless = commandLine.View.Orbit || !commandLine.View.PlayLog.empty();
       cli::SelectRenderBackend(commandLine.Backend, !headless, argv);
+      cli::GuardRenderingAborts(argv);
       break;
     }
     default:

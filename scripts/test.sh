@@ -7,7 +7,12 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 source "$here/scripts/setup.sh"
 
 cd "$build"
+# A failed test runs once more: a busy Xvfb has been seen to refuse an X
+# connection for a moment, and VTK aborts when that happens inside a test
+# that renders. A test that fails twice fails the run; the first failure's
+# output stays in the log.
+retry=(--repeat until-pass:2)
 if [ -z "${DISPLAY:-}" ]; then
-  exec xvfb-run -a -s "-screen 0 1280x1024x24" ctest --output-on-failure -j "$jobs" "$@"
+  exec xvfb-run -a -s "-screen 0 1280x1024x24" ctest --output-on-failure -j "$jobs" "${retry[@]}" "$@"
 fi
-exec ctest --output-on-failure -j "$jobs" "$@"
+exec ctest --output-on-failure -j "$jobs" "${retry[@]}" "$@"

@@ -89,21 +89,40 @@ std::vector<std::array<double, 2>> OutlinePoints(const Mask& mask)
   return points;
 }
 
+namespace
+{
+
+// Mean and max of distance samples, built one sample at a time.
+struct DistanceAccumulator
+{
+  BoundaryDistance Result;
+  void add(double value)
+  {
+    this->Result.Mean += value;
+    this->Result.Max = std::max(this->Result.Max, value);
+    ++this->Result.Samples;
+  }
+  BoundaryDistance finish() const
+  {
+    BoundaryDistance d = this->Result;
+    if (d.Samples > 0)
+    {
+      d.Mean /= static_cast<double>(d.Samples);
+    }
+    return d;
+  }
+};
+
+} // namespace
+
 BoundaryDistance DistanceToCircle(const Mask& mask, double cx, double cy, double r)
 {
-  BoundaryDistance d;
+  DistanceAccumulator d;
   for (const auto& p : OutlinePoints(mask))
   {
-    const double value = std::abs(std::hypot(p[0] - cx, p[1] - cy) - r);
-    d.Mean += value;
-    d.Max = std::max(d.Max, value);
-    ++d.Samples;
+    d.add(std::abs(std::hypot(p[0] - cx, p[1] - cy) - r));
   }
-  if (d.Samples > 0)
-  {
-    d.Mean /= static_cast<double>(d.Samples);
-  }
-  return d;
+  return d.finish();
 }
 
 std::vector<unsigned char> BoundaryPixels(const Mask& mask)
@@ -223,7 +242,7 @@ std::vector<float> DistanceTransform(const std::vector<unsigned char>& seeds, in
 
 BoundaryDistance OutlineDeviation(const Mask& a, const Mask& b)
 {
-  BoundaryDistance d;
+  DistanceAccumulator d;
   const std::vector<unsigned char> boundaryA = BoundaryPixels(a);
   const std::vector<unsigned char> boundaryB = BoundaryPixels(b);
   const std::vector<float> toA = DistanceTransform(boundaryA, a.Width, a.Height);
@@ -240,17 +259,11 @@ BoundaryDistance OutlineDeviation(const Mask& a, const Mask& b)
         {
           return BoundaryDistance{}; // one mask is empty: no outline to compare
         }
-        d.Mean += value;
-        d.Max = std::max(d.Max, value);
-        ++d.Samples;
+        d.add(value);
       }
     }
   }
-  if (d.Samples > 0)
-  {
-    d.Mean /= static_cast<double>(d.Samples);
-  }
-  return d;
+  return d.finish();
 }
 
 } // namespace silhouette_eval

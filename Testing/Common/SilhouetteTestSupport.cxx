@@ -4,6 +4,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
+#include "vtkIcosphereSource.h"
 #include "vtkMath.h"
 #include "vtkPLYReader.h"
 #include "vtkPointData.h"
@@ -107,6 +108,16 @@ TopologyReport AnalyzeTopology(vtkPolyData* mesh)
     }
   }
   return report;
+}
+
+vtkSmartPointer<vtkPolyData> Icosphere(int level)
+{
+  vtkNew<vtkIcosphereSource> source;
+  source->SetSubdivisionLevel(level);
+  source->Update();
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->DeepCopy(source->GetOutput());
+  return copy;
 }
 
 std::vector<std::array<double, 3>> SphereDirections(int count)

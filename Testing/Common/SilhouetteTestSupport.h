@@ -51,6 +51,9 @@ struct TopologyReport
 /// Analyses the polygons of `mesh`; flipped triangles need point normals.
 TopologyReport AnalyzeTopology(vtkPolyData* mesh);
 
+/// A copy of vtkIcosphereSource's sphere at `level` (exact normals), free to modify.
+vtkSmartPointer<vtkPolyData> Icosphere(int level);
+
 /// `count` directions spread evenly over the unit sphere (Fibonacci spiral),
 /// deterministic.
 std::vector<std::array<double, 3>> SphereDirections(int count);

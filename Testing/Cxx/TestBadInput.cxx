@@ -8,7 +8,6 @@
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
-#include "vtkIcosphereSource.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -67,12 +66,7 @@ vtkSmartPointer<vtkCamera> Camera(double x, double y, double z)
 
 vtkSmartPointer<vtkPolyData> Sphere(int level = 1)
 {
-  vtkNew<vtkIcosphereSource> source;
-  source->SetSubdivisionLevel(level);
-  source->Update();
-  auto copy = vtkSmartPointer<vtkPolyData>::New();
-  copy->DeepCopy(source->GetOutput());
-  return copy;
+  return silhouette_test::Icosphere(level);
 }
 
 bool NoNaN(vtkPolyData* mesh)

@@ -7,7 +7,6 @@
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFloatArray.h"
-#include "vtkIcosphereSource.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
 #include "vtkLoopSubdivisionFilter.h"
@@ -227,15 +226,7 @@ vtkSmartPointer<vtkPolyData> TorusGrid(int nu, int nv)
   return MakeMesh(p, tris);
 }
 
-vtkSmartPointer<vtkPolyData> Icosphere(int level)
-{
-  vtkNew<vtkIcosphereSource> source;
-  source->SetSubdivisionLevel(level);
-  source->Update();
-  auto copy = vtkSmartPointer<vtkPolyData>::New();
-  copy->DeepCopy(source->GetOutput());
-  return copy;
-}
+using silhouette_test::Icosphere;
 
 vtkSmartPointer<vtkPolyData> TorusSource()
 {

@@ -113,18 +113,25 @@ void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
   fd->AddArray(array);
 }
 
-vtkSmartPointer<vtkPoints> BuildPoints(vtkPolyData* input, const silsmooth::SmoothingResult& result)
+vtkSmartPointer<vtkPoints> BuildPoints(
+  vtkPolyData* input, const silsmooth::PreparedMesh& mesh, const silsmooth::SmoothingResult& result)
 {
   auto points = vtkSmartPointer<vtkPoints>::New();
   vtkPoints* inPoints = input->GetPoints();
   points->SetDataType(inPoints ? inPoints->GetDataType() : VTK_FLOAT);
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  points->SetNumberOfPoints(numPoints + static_cast<vtkIdType>(result.NewPoints.size()));
+  const vtkIdType prepared = static_cast<vtkIdType>(mesh.points().size());
+  points->SetNumberOfPoints(prepared + static_cast<vtkIdType>(result.NewPoints.size()));
   if (numPoints > 0)
   {
     points->GetData()->InsertTuples(0, numPoints, 0, inPoints->GetData());
   }
-  vtkIdType id = numPoints;
+  // Copies of feature points, one per extra smooth group.
+  for (vtkIdType id = numPoints; id < prepared; ++id)
+  {
+    points->GetData()->SetTuple(id, mesh.sourcePoint(id), inPoints->GetData());
+  }
+  vtkIdType id = prepared;
   for (const silsmooth::NewPoint& p : result.NewPoints)
   {
     points->SetPoint(id++, p.Position.x, p.Position.y, p.Position.z);
@@ -143,7 +150,8 @@ vtkSmartPointer<vtkPoints> BuildPoints(vtkPolyData* input, const silsmooth::Smoo
 void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
   const silsmooth::PreparedMesh& mesh, const silsmooth::SmoothingResult& result)
 {
-  const vtkIdType total = numPoints + static_cast<vtkIdType>(result.NewPoints.size());
+  const vtkIdType prepared = static_cast<vtkIdType>(mesh.points().size());
+  const vtkIdType total = prepared + static_cast<vtkIdType>(result.NewPoints.size());
   vtkDataArray* inNormals = in->GetNormals();
   // VTK's attribute rules decide what is copied and interpolated (global and
   // pedigree ids are not interpolated); the normals are replaced below.
@@ -154,14 +162,18 @@ void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
   {
     out->CopyData(in, 0, numPoints, 0);
   }
+  for (vtkIdType id = numPoints; id < prepared; ++id)
+  {
+    out->CopyData(in, mesh.sourcePoint(id), id);
+  }
   vtkNew<vtkIdList> sources;
   sources->SetNumberOfIds(3);
-  vtkIdType id = numPoints;
+  vtkIdType id = prepared;
   for (const silsmooth::NewPoint& p : result.NewPoints)
   {
     for (int k = 0; k < 3; ++k)
     {
-      sources->SetId(k, p.Sources[k]);
+      sources->SetId(k, mesh.sourcePoint(p.Sources[k]));
     }
     double weights[3] = { p.Weights[0], p.Weights[1], p.Weights[2] };
     out->InterpolatePoint(in, id++, sources, weights);
@@ -202,7 +214,7 @@ void BuildCells(vtkPolyData* input, vtkPolyData* output, const std::vector<vtkId
 
   const std::vector<silsmooth::Triangle>& triangles = mesh.triangles();
   const std::size_t outTriangles =
-    triangles.size() - result.SilhouetteTriangles.size() + result.Replacements.size();
+    triangles.size() - result.RemeshedTriangles.size() + result.Replacements.size();
   vtkNew<vtkIdTypeArray> offsets;
   vtkNew<vtkIdTypeArray> connectivity;
   offsets->SetNumberOfValues(static_cast<vtkIdType>(outTriangles + 1));
@@ -234,13 +246,14 @@ void BuildCells(vtkPolyData* input, vtkPolyData* output, const std::vector<vtkId
   std::size_t next = 0;
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
-    if (next < result.SilhouetteTriangles.size() &&
-      result.SilhouetteTriangles[next] == static_cast<silsmooth::Id>(t))
+    if (next < result.RemeshedTriangles.size() &&
+      result.RemeshedTriangles[next] == static_cast<silsmooth::Id>(t))
     {
+      const auto kind = static_cast<unsigned char>(result.RemeshKinds[next]);
       for (std::size_t r = result.ReplacementOffsets[next]; r < result.ReplacementOffsets[next + 1];
            ++r)
       {
-        emit(result.Replacements[r], triangleCell[t], 1);
+        emit(result.Replacements[r], triangleCell[t], kind);
       }
       ++next;
     }
@@ -318,16 +331,19 @@ struct vtkSilhouetteSmoothingFilter::Internals
   vtkIdType TooSmallPolygons = 0;
   vtkPolyData* CachedInput = nullptr;
   vtkMTimeType CachedInputTime = 0;
+  // The feature settings the cache was built with.
+  std::array<double, 3> CachedFeatureSettings{ { -1.0, -1.0, -1.0 } };
 
   // The last view seen by GetMTime(), and when it last changed.
   ViewSignature LastView;
   bool HaveView = false;
   vtkTimeStamp ViewTime;
 
-  bool Rebuild(vtkPolyData* input);
+  bool Rebuild(vtkPolyData* input, bool useLines, bool detect, double featureAngle);
 };
 
-bool vtkSilhouetteSmoothingFilter::Internals::Rebuild(vtkPolyData* input)
+bool vtkSilhouetteSmoothingFilter::Internals::Rebuild(
+  vtkPolyData* input, bool useLines, bool detect, double featureAngle)
 {
   const vtkIdType numPoints = input->GetNumberOfPoints();
   std::vector<glm::dvec3> points(static_cast<std::size_t>(numPoints));
@@ -425,10 +441,32 @@ bool vtkSilhouetteSmoothingFilter::Internals::Rebuild(vtkPolyData* input)
       }
     }
   }
-  this->Mesh =
-    std::make_unique<silsmooth::PreparedMesh>(std::move(points), std::move(triangles), normals);
+  // Feature edges: the segments of line cells (marked), and edges sharper
+  // than the feature angle (detected).
+  std::vector<silsmooth::FeatureEdge> features;
+  if (useLines)
+  {
+    auto it = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      it->GetCurrentCell(npts, pts);
+      for (vtkIdType k = 0; k + 1 < npts; ++k)
+      {
+        features.emplace_back(pts[k], pts[k + 1]);
+      }
+    }
+  }
+  if (detect)
+  {
+    const std::vector<silsmooth::FeatureEdge> sharp =
+      silsmooth::featureEdgesByAngle(points, triangles, featureAngle);
+    features.insert(features.end(), sharp.begin(), sharp.end());
+  }
+  this->Mesh = std::make_unique<silsmooth::PreparedMesh>(
+    std::move(points), std::move(triangles), normals, std::move(features));
   this->CachedInput = input;
   this->CachedInputTime = input->GetMTime();
+  this->CachedFeatureSettings = { { useLines ? 1.0 : 0.0, detect ? 1.0 : 0.0, featureAngle } };
   return true;
 }
 
@@ -573,10 +611,14 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   }
 
   Internals& internal = *this->Internal;
+  const std::array<double, 3> featureSettings{ { this->FeatureLines ? 1.0 : 0.0,
+    this->FeatureEdgeDetection ? 1.0 : 0.0, this->FeatureAngle } };
   if (!internal.Mesh || internal.CachedInput != input ||
-    internal.CachedInputTime != input->GetMTime())
+    internal.CachedInputTime != input->GetMTime() ||
+    internal.CachedFeatureSettings != featureSettings)
   {
-    if (!internal.Rebuild(input))
+    if (!internal.Rebuild(
+          input, this->FeatureLines, this->FeatureEdgeDetection, this->FeatureAngle))
     {
       internal.Mesh.reset();
       vtkErrorMacro("Input cells refer to points that do not exist.");
@@ -669,7 +711,7 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   }
 
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  output->SetPoints(BuildPoints(input, result));
+  output->SetPoints(BuildPoints(input, *internal.Mesh, result));
   BuildPointData(input->GetPointData(), output->GetPointData(), numPoints, *internal.Mesh, result);
   this->UpdateProgress(0.8);
   BuildCells(input, output, internal.TriangleCell, *internal.Mesh, result);
@@ -682,15 +724,21 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   vtkFieldData* fd = output->GetFieldData();
   fd->PassData(input->GetFieldData());
   const vtkIdType inputTriangles = static_cast<vtkIdType>(internal.Mesh->triangles().size());
-  const vtkIdType silhouetteTriangles = static_cast<vtkIdType>(result.SilhouetteTriangles.size());
+  const vtkIdType remeshedTriangles = static_cast<vtkIdType>(result.RemeshedTriangles.size());
   const vtkIdType newTriangles = static_cast<vtkIdType>(result.newTriangleCount());
-  AddCount(fd, "SilhouetteTriangleCount", silhouetteTriangles);
+  AddCount(fd, "SilhouetteTriangleCount", static_cast<vtkIdType>(result.SilhouetteTriangleCount));
+  AddCount(
+    fd, "FeatureTriangleCount", static_cast<vtkIdType>(internal.Mesh->featureTriangles().size()));
+  AddCount(
+    fd, "FeatureEdgeCount", static_cast<vtkIdType>(internal.Mesh->features().edges().size()));
+  AddCount(fd, "SplitPointCount",
+    static_cast<vtkIdType>(internal.Mesh->points().size() - internal.Mesh->inputPointCount()));
   AddCount(fd, "NewTriangleCount", newTriangles);
   AddCount(fd, "NewPointCount", static_cast<vtkIdType>(result.NewPoints.size()));
   AddCount(fd, "ConcaveSegmentCount", static_cast<vtkIdType>(result.ConcaveSegmentCount));
   AddCount(fd, "PerturbedPointCount", static_cast<vtkIdType>(result.MovedPoints.size()));
   AddCount(fd, "InputTriangleCount", inputTriangles);
-  AddCount(fd, "OutputTriangleCount", inputTriangles - silhouetteTriangles + newTriangles);
+  AddCount(fd, "OutputTriangleCount", inputTriangles - remeshedTriangles + newTriangles);
 
   BuildSilhouetteLines(output, result, lines);
   this->UpdateProgress(1.0);
@@ -710,6 +758,9 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumSamples: " << this->MinimumSamples << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
   os << indent << "PerturbVertices: " << (this->PerturbVertices ? "On" : "Off") << "\n";
+  os << indent << "FeatureLines: " << (this->FeatureLines ? "On" : "Off") << "\n";
+  os << indent << "FeatureEdgeDetection: " << (this->FeatureEdgeDetection ? "On" : "Off") << "\n";
+  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "SamplingRule: "
      << (this->SamplingRule == SECOND_DIFFERENCE ? "SecondDifference" : "WangEquation8") << "\n";
 }

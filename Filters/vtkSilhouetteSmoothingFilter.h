@@ -193,6 +193,32 @@ public:
   vtkBooleanMacro(PerturbVertices, bool);
   ///@}
 
+  ///@{
+  /**
+   * Feature edges (creases) marked on the input: every segment of a line
+   * cell that is an edge of the triangles. Default on (line cells that run
+   * along the surface's edges are taken as a deliberate mark, as
+   * vtkOpenSubdivRefiner reads creases).
+   */
+  vtkSetMacro(FeatureLines, bool);
+  vtkGetMacro(FeatureLines, bool);
+  vtkBooleanMacro(FeatureLines, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Also take as feature edges the edges whose two triangles meet at more
+   * than FeatureAngle degrees (the angle between their normals). Default off:
+   * smooth models need none, and a coarse smooth mesh can have edges sharper
+   * than any fixed angle.
+   */
+  vtkSetMacro(FeatureEdgeDetection, bool);
+  vtkGetMacro(FeatureEdgeDetection, bool);
+  vtkBooleanMacro(FeatureEdgeDetection, bool);
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  ///@}
+
   /**
    * The smoothed silhouette polylines (output port 1).
    */
@@ -220,6 +246,9 @@ protected:
   int MaximumSamples = 256;
   int SamplingRule = SECOND_DIFFERENCE;
   bool PerturbVertices = true;
+  bool FeatureLines = true;
+  bool FeatureEdgeDetection = false;
+  double FeatureAngle = 30.0;
 
 private:
   vtkSilhouetteSmoothingFilter(const vtkSilhouetteSmoothingFilter&) = delete;

@@ -117,4 +117,70 @@ std::size_t remeshSilhouetteTriangle(
   return count;
 }
 
+int chooseFanApex(const std::vector<Id>& ids, const std::vector<glm::dvec3>& flat,
+  const std::vector<unsigned char>& isCandidate, const glm::dvec3& centre)
+{
+  const std::size_t n = ids.size();
+  if (n < 3)
+  {
+    return 0;
+  }
+  // A fan from v makes (v, j, j + 1) for every side not touching v.
+  int best = -1;
+  double bestQuality = 0.0;
+  for (std::size_t v = 0; v < n; ++v)
+  {
+    if (!isCandidate[v])
+    {
+      continue;
+    }
+    double worst = std::numeric_limits<double>::infinity();
+    for (std::size_t step = 1; step + 1 < n; ++step)
+    {
+      const std::size_t j = (v + step) % n;
+      const std::size_t k = (v + step + 1) % n;
+      worst = std::min(worst, shapeQuality(ids[v], ids[j], ids[k], flat[v], flat[j], flat[k]));
+    }
+    if (best < 0 || worst > bestQuality)
+    {
+      best = static_cast<int>(v);
+      bestQuality = worst;
+    }
+  }
+  double centreQuality = std::numeric_limits<double>::infinity();
+  for (std::size_t j = 0; j < n; ++j)
+  {
+    const std::size_t k = (j + 1) % n;
+    centreQuality =
+      std::min(centreQuality, shapeQuality(-1, ids[j], ids[k], centre, flat[j], flat[k]));
+  }
+  // Below this a vertex fan has a triangle standing on edge in the domain.
+  const double proper = 1e-6;
+  if (best < 0 || bestQuality < proper || 0.5 * centreQuality > bestQuality)
+  {
+    return -1;
+  }
+  return best;
+}
+
+std::size_t emitFan(const std::vector<Id>& ids, int apex, Id centreId, std::vector<Triangle>& out)
+{
+  const std::size_t n = ids.size();
+  std::size_t count = 0;
+  if (apex < 0)
+  {
+    for (std::size_t j = 0; j < n; ++j)
+    {
+      count += emit(centreId, ids[j], ids[(j + 1) % n], out);
+    }
+    return count;
+  }
+  const std::size_t v = static_cast<std::size_t>(apex);
+  for (std::size_t step = 1; step + 1 < n; ++step)
+  {
+    count += emit(ids[v], ids[(v + step) % n], ids[(v + step + 1) % n], out);
+  }
+  return count;
+}
+
 } // namespace silsmooth

@@ -21,8 +21,9 @@
 // point lies on that vertex); triangles that would repeat an id are then
 // dropped, a zero-length edge collapse that keeps a closed manifold closed.
 //
-// Feature segments (Fig. 12) will add layouts with one or two feature sides;
-// they reuse the same fan building blocks.
+// Triangles with feature segments (Fig. 12) are cut into polygons that are
+// convex in the parameter domain too, but whose points may lie on any side;
+// chooseFanApex and emitFan triangulate those.
 #pragma once
 
 #include "MeshTopology.h"
@@ -53,5 +54,19 @@ struct SilhouetteTriangleLayout
 /// returns how many were appended.
 std::size_t remeshSilhouetteTriangle(
   const SilhouetteTriangleLayout& layout, std::vector<Triangle>& out);
+
+/// For a polygon (point ids and positions in the parameter domain, in the
+/// input triangle's orientation) that is convex there, with runs of collinear
+/// points: the vertex among `isCandidate` from which a fan has the best worst
+/// triangle shape, or -1 when a fan from `centre` (an interior point the
+/// caller adds) is better by more than a factor of two, or when no vertex fan
+/// is proper (a vertex on the line of a run of points cannot fan it).
+int chooseFanApex(const std::vector<Id>& ids, const std::vector<glm::dvec3>& flat,
+  const std::vector<unsigned char>& isCandidate, const glm::dvec3& centre);
+
+/// Appends the fan of the polygon from vertex `apex`, or from the point
+/// `centreId` when apex is -1; triangles that would repeat an id are dropped.
+/// Returns how many were appended.
+std::size_t emitFan(const std::vector<Id>& ids, int apex, Id centreId, std::vector<Triangle>& out);
 
 } // namespace silsmooth

@@ -11,6 +11,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <unordered_map>
 
 namespace silsmooth
 {
@@ -24,11 +26,71 @@ void serialFor(std::size_t count, const std::function<void(std::size_t, std::siz
 }
 
 PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
-  const std::vector<glm::dvec3>& normals)
+  const std::vector<glm::dvec3>& normals, std::vector<FeatureEdge> featureEdges)
   : Points(std::move(points))
   , Triangles(std::move(triangles))
-  , Edges(this->Triangles)
+  , InputPointCount(this->Points.size())
 {
+  if (!featureEdges.empty())
+  {
+    // Only edges of the triangles can be feature edges.
+    featureEdges = normalizedFeatureEdges(std::move(featureEdges));
+    const EdgeTable input(this->Triangles);
+    std::size_t e = 0;
+    featureEdges.erase(std::remove_if(featureEdges.begin(), featureEdges.end(),
+                         [&](const FeatureEdge& f) {
+                           while (e < input.edgeCount() &&
+                             FeatureEdge(input.edge(static_cast<Id>(e)).low,
+                               input.edge(static_cast<Id>(e)).high) < f)
+                           {
+                             ++e;
+                           }
+                           return e == input.edgeCount() ||
+                             FeatureEdge(input.edge(static_cast<Id>(e)).low,
+                               input.edge(static_cast<Id>(e)).high) != f;
+                         }),
+      featureEdges.end());
+    this->Features = FeatureCurves(this->Points, std::move(featureEdges));
+  }
+  if (!this->Features.empty())
+  {
+    FeatureSplit split = splitAtFeatureEdges(this->Points.size(), this->Triangles, this->Features);
+    this->Triangles = std::move(split.Triangles);
+    this->CopySources = std::move(split.CopySources);
+    this->OnFeature = std::move(split.OnFeature);
+    for (const Id source : this->CopySources)
+    {
+      this->Points.push_back(this->Points[static_cast<std::size_t>(source)]);
+    }
+  }
+  this->Edges = EdgeTable(this->Triangles);
+  if (!this->Features.empty())
+  {
+    this->EdgeFeatures.resize(this->Edges.edgeCount());
+    for (std::size_t e = 0; e < this->Edges.edgeCount(); ++e)
+    {
+      const Edge& edge = this->Edges.edge(static_cast<Id>(e));
+      this->EdgeFeatures[e] =
+        this->Features.find(this->sourcePoint(edge.low), this->sourcePoint(edge.high));
+    }
+    for (std::size_t t = 0; t < this->Triangles.size(); ++t)
+    {
+      if (hasRepeatedCorner(this->Triangles[t]))
+      {
+        continue;
+      }
+      for (int k = 0; k < 3; ++k)
+      {
+        const Id f = this->edgeFeature(this->Edges.sideEdge(static_cast<Id>(t), k));
+        if (f >= 0 && this->Features.isCurved(f))
+        {
+          this->FeatureTriangles.push_back(static_cast<Id>(t));
+          break;
+        }
+      }
+    }
+  }
+
   // Edge neighbours of every vertex (compressed rows), for the perturbation.
   std::vector<Id> degree(this->Points.size() + 1, 0);
   for (std::size_t e = 0; e < this->Edges.edgeCount(); ++e)
@@ -58,14 +120,17 @@ PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle>
     }
   }
 
+  // Given normals for the input's points; feature points (and their copies)
+  // and points with no usable given normal get the angle-weighted one.
   std::vector<glm::dvec3> computed;
-  bool needComputed = normals.size() != this->Points.size();
-  if (!needComputed)
+  bool needComputed = normals.size() != this->InputPointCount || !this->Features.empty();
+  if (normals.size() == this->InputPointCount)
   {
-    this->Normals.resize(normals.size());
+    this->Normals.resize(this->Points.size(), glm::dvec3(0.0));
     for (std::size_t i = 0; i < normals.size(); ++i)
     {
-      this->Normals[i] = safeNormalize(normals[i]);
+      this->Normals[i] =
+        this->onFeature(static_cast<Id>(i)) ? glm::dvec3(0.0) : safeNormalize(normals[i]);
       needComputed = needComputed || this->Normals[i] == glm::dvec3(0.0);
     }
   }
@@ -120,6 +185,16 @@ struct EdgeSilhouettePoint
   double HighWeight = 0; // parameter from the edge's low end to its high end
 };
 
+// A point of a polygon being fanned in a re-meshed triangle: its output id and
+// where it sits in the triangle's parameter domain (barycentric in the
+// re-meshed corner order). Corners and silhouette points may be fan apexes.
+struct PolygonPoint
+{
+  Id Point = -1;
+  glm::dvec3 Bary{ 0.0 };
+  bool Apex = false;
+};
+
 class SilhouettePass
 {
 public:
@@ -138,12 +213,36 @@ public:
     this->G = vertexVisibility(this->Mesh, this->View, this->For);
     this->findSilhouetteTriangles();
     this->computeSilhouettePoints();
+    this->countFeatureSamples();
     std::vector<std::vector<Id>> segments;
-    segments.reserve(this->Result.SilhouetteTriangles.size());
-    for (const Id t : this->Result.SilhouetteTriangles)
+    segments.reserve(this->Silhouette.size());
+    // Silhouette triangles and feature triangles, merged in ascending order.
+    const std::vector<Id>& features = this->Mesh.featureTriangles();
+    std::size_t i = 0;
+    std::size_t j = 0;
+    while (i < this->Silhouette.size() || j < features.size())
     {
-      this->remeshTriangle(t, segments);
+      const bool takeSilhouette =
+        j == features.size() || (i < this->Silhouette.size() && this->Silhouette[i] <= features[j]);
+      const Id t = takeSilhouette ? this->Silhouette[i] : features[j];
+      const bool silhouette = takeSilhouette;
+      const bool feature = j < features.size() && features[j] == t;
+      i += takeSilhouette ? 1 : 0;
+      j += feature ? 1 : 0;
+      this->Result.RemeshedTriangles.push_back(t);
+      if (feature)
+      {
+        this->remeshWithFeatures(t, silhouette, segments);
+        this->Result.RemeshKinds.push_back(RemeshKind::Feature);
+      }
+      else
+      {
+        this->remeshTriangle(t, segments);
+        this->Result.RemeshKinds.push_back(RemeshKind::Silhouette);
+      }
+      this->Result.ReplacementOffsets.push_back(this->Result.Replacements.size());
     }
+    this->Result.SilhouetteTriangleCount = this->Silhouette.size();
     this->Result.Polylines = chainSegments(segments);
     this->Result.ConcaveSegmentCount = this->Concave.size();
     if (this->Parameters.PerturbConcaveSilhouettes && !this->Concave.empty())
@@ -151,6 +250,13 @@ public:
       this->Result.MovedPoints = perturbVerticesBelowConcaveSegments(this->Concave,
         this->Mesh.points(), this->Mesh.normals(), this->Mesh.triangles(),
         this->Mesh.neighbourOffsets(), this->Mesh.neighbours());
+      // A feature point has a copy on the other side of its crease that
+      // does not move with it: moving one would open the crease.
+      auto& moved = this->Result.MovedPoints;
+      moved.erase(
+        std::remove_if(moved.begin(), moved.end(),
+          [this](const std::pair<Id, glm::dvec3>& m) { return this->Mesh.onFeature(m.first); }),
+        moved.end());
       this->keepOutputFacingOut();
     }
     return std::move(this->Result);
@@ -179,18 +285,19 @@ private:
     {
       if (isSilhouette[t])
       {
-        this->Result.SilhouetteTriangles.push_back(static_cast<Id>(t));
+        this->Silhouette.push_back(static_cast<Id>(t));
       }
     }
   }
 
   // One silhouette point per mixed edge, in ascending edge order, so both
-  // triangles of an edge use the same point (DESIGN 3.2).
+  // triangles of an edge use the same point (DESIGN 3.2). On a feature edge
+  // the silhouette bridge is the edge's feature segment (III-D, case (a)).
   void computeSilhouettePoints()
   {
     const EdgeTable& edges = this->Mesh.edges();
     std::vector<Id> mixedEdges;
-    for (const Id t : this->Result.SilhouetteTriangles)
+    for (const Id t : this->Silhouette)
     {
       for (int k = 0; k < 3; ++k)
       {
@@ -220,10 +327,19 @@ private:
           this->View.towardViewerFrom(points[hi]));
       const double u = std::clamp(silhouetteParameter(h, this->G[lo], this->G[hi]),
         EdgeParameterMargin, 1.0 - EdgeParameterMargin);
-      const HermiteCurve bridge =
-        makeCircleApproximatingCurve(points[lo], normals[lo], points[hi], normals[hi]);
       NewPoint p;
-      p.Position = bridge.evaluate(u);
+      const Id feature = this->Mesh.edgeFeature(e);
+      if (feature >= 0)
+      {
+        const bool forward =
+          this->Mesh.sourcePoint(edge.low) == this->Mesh.features().edges()[feature].first;
+        p.Position = this->Mesh.features().curve(feature).evaluate(forward ? u : 1.0 - u);
+      }
+      else
+      {
+        p.Position = makeCircleApproximatingCurve(points[lo], normals[lo], points[hi], normals[hi])
+                       .evaluate(u);
+      }
       p.Normal = safeNormalize((1.0 - u) * normals[lo] + u * normals[hi]);
       if (p.Normal == glm::dvec3(0.0))
       {
@@ -239,6 +355,31 @@ private:
       this->Result.NewPoints.push_back(p);
       this->EdgePoints.push_back(sp);
     }
+  }
+
+  // Points per smoothed feature segment in this view (both ends counted), by
+  // the same rule as silhouette segments. Both sides of a crease use the
+  // segment's one count, so their samples coincide.
+  void countFeatureSamples()
+  {
+    if (this->Mesh.featureTriangles().empty())
+    {
+      return;
+    }
+    const FeatureCurves& features = this->Mesh.features();
+    this->FeatureSampleCounts.assign(features.edges().size(), 2);
+    this->For(features.edges().size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t f = begin; f < end; ++f)
+      {
+        if (features.isCurved(static_cast<Id>(f)))
+        {
+          const HermiteCurve& curve = features.curve(static_cast<Id>(f));
+          // Eq. 8 wants the arc's turning: the end tangents give it here.
+          this->FeatureSampleCounts[f] = silhouetteSampleCount(
+            curve, safeNormalize(curve.T0), safeNormalize(curve.T1), this->View, this->Sampling);
+        }
+      }
+    });
   }
 
   const EdgeSilhouettePoint& silhouettePointOf(Id edge) const
@@ -264,86 +405,291 @@ private:
       : this->Result.NewPoints[static_cast<std::size_t>(point - pointCount)].Normal;
   }
 
+  Id nextPointId() const
+  {
+    return static_cast<Id>(this->Mesh.points().size() + this->Result.NewPoints.size());
+  }
+
+  // The corner that differs in visibility from the other two.
+  int loneCorner(const Triangle& tri) const
+  {
+    const bool v0 = isVisible(this->G[static_cast<std::size_t>(tri[0])]);
+    const bool v1 = isVisible(this->G[static_cast<std::size_t>(tri[1])]);
+    return (v0 == v1) ? 2 : (isVisible(this->G[static_cast<std::size_t>(tri[2])]) == v0 ? 1 : 0);
+  }
+
+  // Samples the silhouette segment from P to Q across the triangle with
+  // corners (a, b, c), a the lone one, adding its interior samples as new
+  // points; records it if concave. P and Q are given with their barycentric
+  // positions in (a, b, c); the samples lie on the chord between them there.
+  std::vector<PolygonPoint> sampleSilhouetteSegment(
+    Id t, const std::array<Id, 3>& corners, const PolygonPoint& p, const PolygonPoint& q)
+  {
+    std::vector<PolygonPoint> interior;
+    if (p.Point == q.Point)
+    {
+      return interior;
+    }
+    const glm::dvec3 nP = this->normalOf(p.Point);
+    const glm::dvec3 nQ = this->normalOf(q.Point);
+    const HermiteCurve segment =
+      makeCircleApproximatingCurve(this->positionOf(p.Point), nP, this->positionOf(q.Point), nQ);
+    const int samples = silhouetteSampleCount(segment, nP, nQ, this->View, this->Sampling);
+    if (isConcaveSegment(segment.P0, nP, segment.P1, nQ))
+    {
+      const glm::dvec3 midNormal = safeNormalize(nP + nQ);
+      if (midNormal != glm::dvec3(0.0))
+      {
+        const glm::dvec3 middle = segment.evaluate(0.5);
+        this->Concave.push_back({ t, segment.P0, segment.P1, middle, midNormal,
+          safeNormalize(this->View.towardViewerFrom(middle)) });
+      }
+    }
+    for (int i = 1; i + 1 < samples; ++i)
+    {
+      const double s = static_cast<double>(i) / (samples - 1);
+      NewPoint sample;
+      sample.Position = segment.evaluate(s);
+      sample.Normal = safeNormalize((1.0 - s) * nP + s * nQ);
+      if (sample.Normal == glm::dvec3(0.0))
+      {
+        sample.Normal = s < 0.5 ? nP : nQ;
+      }
+      // Linear along the chord P -> Q in the triangle's parameter domain.
+      const glm::dvec3 bary = (1.0 - s) * p.Bary + s * q.Bary;
+      sample.Sources = { corners[0], corners[1], corners[2] };
+      sample.Weights = { bary.x, bary.y, bary.z };
+      interior.push_back({ this->nextPointId(), bary, false });
+      this->Result.NewPoints.push_back(sample);
+    }
+    return interior;
+  }
+
+  // P on side a-b and Q on side a-c of a silhouette triangle, a = corners[0].
+  std::pair<PolygonPoint, PolygonPoint> silhouettePointsOf(
+    Id t, int lone, const std::array<Id, 3>& corners) const
+  {
+    const EdgeTable& edges = this->Mesh.edges();
+    const EdgeSilhouettePoint& p = this->silhouettePointOf(edges.sideEdge(t, lone));
+    const EdgeSilhouettePoint& q = this->silhouettePointOf(edges.sideEdge(t, (lone + 2) % 3));
+    // Weight of the far corner (B for P, C for Q) in the point's combination.
+    const double pTowardB = (corners[1] > corners[0]) ? p.HighWeight : 1.0 - p.HighWeight;
+    const double qTowardC = (corners[2] > corners[0]) ? q.HighWeight : 1.0 - q.HighWeight;
+    return { { p.Point, glm::dvec3(1.0 - pTowardB, pTowardB, 0.0), true },
+      { q.Point, glm::dvec3(1.0 - qTowardC, 0.0, qTowardC), true } };
+  }
+
   void remeshTriangle(Id t, std::vector<std::vector<Id>>& segments)
   {
     const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
-    const EdgeTable& edges = this->Mesh.edges();
-    const bool v0 = isVisible(this->G[static_cast<std::size_t>(tri[0])]);
-    const bool v1 = isVisible(this->G[static_cast<std::size_t>(tri[1])]);
-    const int lone =
-      (v0 == v1) ? 2 : (isVisible(this->G[static_cast<std::size_t>(tri[2])]) == v0 ? 1 : 0);
-    const Id a = tri[lone];
-    const Id b = tri[(lone + 1) % 3];
-    const Id c = tri[(lone + 2) % 3];
-    const EdgeSilhouettePoint& p = this->silhouettePointOf(edges.sideEdge(t, lone));
-    const EdgeSilhouettePoint& q = this->silhouettePointOf(edges.sideEdge(t, (lone + 2) % 3));
-
-    // Weight of the far corner (B for P, C for Q) in the point's combination.
-    const double pTowardB = (b > a) ? p.HighWeight : 1.0 - p.HighWeight;
-    const double qTowardC = (c > a) ? q.HighWeight : 1.0 - q.HighWeight;
+    const int lone = this->loneCorner(tri);
+    const std::array<Id, 3> corners{ { tri[lone], tri[(lone + 1) % 3], tri[(lone + 2) % 3] } };
+    const auto [p, q] = this->silhouettePointsOf(t, lone, corners);
 
     // The re-meshing works in the flat triangle, where P and Q sit on their
     // edges and the samples on the chord between them.
-    const glm::dvec3 flatA = this->positionOf(a);
-    const glm::dvec3 flatB = this->positionOf(b);
-    const glm::dvec3 flatC = this->positionOf(c);
-    const glm::dvec3 flatP = flatA + pTowardB * (flatB - flatA);
-    const glm::dvec3 flatQ = flatA + qTowardC * (flatC - flatA);
+    const glm::dvec3 flatA = this->positionOf(corners[0]);
+    const glm::dvec3 flatB = this->positionOf(corners[1]);
+    const glm::dvec3 flatC = this->positionOf(corners[2]);
+    auto flat = [&](const glm::dvec3& bary) {
+      return bary.x * flatA + bary.y * flatB + bary.z * flatC;
+    };
     SilhouetteTriangleLayout layout;
-    layout.Lone = a;
-    layout.BaseFirst = b;
-    layout.BaseSecond = c;
+    layout.Lone = corners[0];
+    layout.BaseFirst = corners[1];
+    layout.BaseSecond = corners[2];
     layout.BaseFirstPosition = flatB;
     layout.BaseSecondPosition = flatC;
     layout.Chain.push_back(p.Point);
-    layout.ChainPositions.push_back(flatP);
-
-    if (p.Point != q.Point)
+    layout.ChainPositions.push_back(flat(p.Bary));
+    for (const PolygonPoint& sample : this->sampleSilhouetteSegment(t, corners, p, q))
     {
-      const glm::dvec3 nP = this->normalOf(p.Point);
-      const glm::dvec3 nQ = this->normalOf(q.Point);
-      const HermiteCurve segment =
-        makeCircleApproximatingCurve(this->positionOf(p.Point), nP, this->positionOf(q.Point), nQ);
-      const int samples = silhouetteSampleCount(segment, nP, nQ, this->View, this->Sampling);
-      if (isConcaveSegment(segment.P0, nP, segment.P1, nQ))
-      {
-        const glm::dvec3 midNormal = safeNormalize(nP + nQ);
-        if (midNormal != glm::dvec3(0.0))
-        {
-          const glm::dvec3 middle = segment.evaluate(0.5);
-          this->Concave.push_back({ t, segment.P0, segment.P1, middle, midNormal,
-            safeNormalize(this->View.towardViewerFrom(middle)) });
-        }
-      }
-      const Id pointCount = static_cast<Id>(this->Mesh.points().size());
-      for (int i = 1; i + 1 < samples; ++i)
-      {
-        const double s = static_cast<double>(i) / (samples - 1);
-        NewPoint sample;
-        sample.Position = segment.evaluate(s);
-        sample.Normal = safeNormalize((1.0 - s) * nP + s * nQ);
-        if (sample.Normal == glm::dvec3(0.0))
-        {
-          sample.Normal = s < 0.5 ? nP : nQ;
-        }
-        // Linear along the chord P -> Q in the triangle's parameter domain.
-        sample.Sources = { a, b, c };
-        sample.Weights = { (1.0 - s) * (1.0 - pTowardB) + s * (1.0 - qTowardC),
-          (1.0 - s) * pTowardB, s * qTowardC };
-        layout.Chain.push_back(pointCount + static_cast<Id>(this->Result.NewPoints.size()));
-        layout.ChainPositions.push_back((1.0 - s) * flatP + s * flatQ);
-        this->Result.NewPoints.push_back(sample);
-      }
+      layout.Chain.push_back(sample.Point);
+      layout.ChainPositions.push_back(flat(sample.Bary));
     }
     layout.Chain.push_back(q.Point);
-    layout.ChainPositions.push_back(flatQ);
+    layout.ChainPositions.push_back(flat(q.Bary));
 
     remeshSilhouetteTriangle(layout, this->Result.Replacements);
-    this->Result.ReplacementOffsets.push_back(this->Result.Replacements.size());
     if (layout.Chain.front() != layout.Chain.back())
     {
       segments.push_back(layout.Chain);
     }
+  }
+
+  // The interior samples of the feature segment on edge e, made once per
+  // frame and shared by the edge's triangles; returns the first sample's id
+  // (the rest follow, in the segment's own direction) and their number.
+  std::pair<Id, int> featureSamples(Id e)
+  {
+    const auto found = this->FeatureSamplePoints.find(e);
+    if (found != this->FeatureSamplePoints.end())
+    {
+      return found->second;
+    }
+    const Id f = this->Mesh.edgeFeature(e);
+    const FeatureCurves& features = this->Mesh.features();
+    const Edge& edge = this->Mesh.edges().edge(e);
+    const bool forward = this->Mesh.sourcePoint(edge.low) == features.edges()[f].first;
+    const Id from = forward ? edge.low : edge.high;
+    const Id to = forward ? edge.high : edge.low;
+    const glm::dvec3 n0 = this->normalOf(from);
+    const glm::dvec3 n1 = this->normalOf(to);
+    const HermiteCurve& curve = features.curve(f);
+    const int samples = this->FeatureSampleCounts[static_cast<std::size_t>(f)];
+    const std::pair<Id, int> range{ this->nextPointId(), samples - 2 };
+    for (int i = 1; i + 1 < samples; ++i)
+    {
+      const double s = static_cast<double>(i) / (samples - 1);
+      NewPoint sample;
+      sample.Position = curve.evaluate(s);
+      sample.Normal = safeNormalize((1.0 - s) * n0 + s * n1);
+      if (sample.Normal == glm::dvec3(0.0))
+      {
+        sample.Normal = s < 0.5 ? n0 : n1;
+      }
+      sample.Sources = { from, to, to };
+      sample.Weights = { 1.0 - s, s, 0.0 };
+      this->Result.NewPoints.push_back(sample);
+    }
+    this->FeatureSamplePoints.emplace(e, range);
+    return range;
+  }
+
+  // Re-meshing with feature segments (Fig. 12): the triangle's outline runs
+  // through the samples of its smoothed feature sides (and its silhouette
+  // points); a silhouette triangle is cut along its silhouette segment into
+  // two polygons. Each polygon is convex in the triangle's parameter domain
+  // and is fanned from its best vertex (the vertex opposite a single feature
+  // side, Fig. 12a) or from an added centre point (Fig. 12b).
+  void remeshWithFeatures(Id t, bool silhouette, std::vector<std::vector<Id>>& segments)
+  {
+    const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
+    const EdgeTable& edges = this->Mesh.edges();
+    const FeatureCurves& features = this->Mesh.features();
+    const int first = silhouette ? this->loneCorner(tri) : 0;
+    const std::array<Id, 3> corners{ { tri[first], tri[(first + 1) % 3], tri[(first + 2) % 3] } };
+    PolygonPoint p;
+    PolygonPoint q;
+    if (silhouette)
+    {
+      std::tie(p, q) = this->silhouettePointsOf(t, first, corners);
+    }
+
+    std::vector<PolygonPoint> outline;
+    std::size_t pIndex = 0;
+    std::size_t qIndex = 0;
+    for (int j = 0; j < 3; ++j)
+    {
+      glm::dvec3 from(0.0);
+      from[j] = 1.0;
+      glm::dvec3 to(0.0);
+      to[(j + 1) % 3] = 1.0;
+      outline.push_back({ corners[static_cast<std::size_t>(j)], from, true });
+      // Points inside the side, by their parameter from this corner.
+      std::vector<std::pair<double, PolygonPoint>> inside;
+      const Id e = edges.sideEdge(t, (first + j) % 3);
+      const Id f = this->Mesh.edgeFeature(e);
+      if (f >= 0 && features.isCurved(f))
+      {
+        const bool forward =
+          this->Mesh.sourcePoint(corners[static_cast<std::size_t>(j)]) == features.edges()[f].first;
+        const auto [firstSample, count] = this->featureSamples(e);
+        for (int i = 0; i < count; ++i)
+        {
+          const double s = static_cast<double>(i + 1) / (count + 1);
+          const double along = forward ? s : 1.0 - s;
+          inside.push_back(
+            { along, { firstSample + i, (1.0 - along) * from + along * to, false } });
+        }
+      }
+      if (silhouette && (j == 0 || j == 2))
+      {
+        const PolygonPoint& point = j == 0 ? p : q;
+        inside.push_back({ j == 0 ? point.Bary.y : 1.0 - point.Bary.z, point });
+      }
+      std::stable_sort(inside.begin(), inside.end(),
+        [](const auto& x, const auto& y) { return x.first < y.first; });
+      for (const auto& entry : inside)
+      {
+        if (silhouette && entry.second.Point == p.Point)
+        {
+          pIndex = outline.size();
+        }
+        if (silhouette && entry.second.Point == q.Point)
+        {
+          qIndex = outline.size();
+        }
+        outline.push_back(entry.second);
+      }
+    }
+
+    if (!silhouette)
+    {
+      this->fanPolygon(corners, outline);
+      return;
+    }
+    const std::vector<PolygonPoint> chain = this->sampleSilhouetteSegment(t, corners, p, q);
+    // The lone corner's side: a ... P, the segment, Q ... back to a.
+    std::vector<PolygonPoint> lone(outline.begin(), outline.begin() + pIndex + 1);
+    lone.insert(lone.end(), chain.begin(), chain.end());
+    lone.insert(lone.end(), outline.begin() + qIndex, outline.end());
+    // The base side: P ... b ... c ... Q, then the segment back to P.
+    std::vector<PolygonPoint> base(outline.begin() + pIndex, outline.begin() + qIndex + 1);
+    base.insert(base.end(), chain.rbegin(), chain.rend());
+    this->fanPolygon(corners, lone);
+    this->fanPolygon(corners, base);
+
+    std::vector<Id> segment{ p.Point };
+    for (const PolygonPoint& sample : chain)
+    {
+      segment.push_back(sample.Point);
+    }
+    segment.push_back(q.Point);
+    segments.push_back(std::move(segment));
+  }
+
+  void fanPolygon(const std::array<Id, 3>& corners, const std::vector<PolygonPoint>& polygon)
+  {
+    const glm::dvec3 flatA = this->positionOf(corners[0]);
+    const glm::dvec3 flatB = this->positionOf(corners[1]);
+    const glm::dvec3 flatC = this->positionOf(corners[2]);
+    std::vector<Id> ids;
+    std::vector<glm::dvec3> flat;
+    std::vector<unsigned char> apex;
+    glm::dvec3 centre(0.0);
+    int apexCount = 0;
+    for (const PolygonPoint& point : polygon)
+    {
+      ids.push_back(point.Point);
+      flat.push_back(point.Bary.x * flatA + point.Bary.y * flatB + point.Bary.z * flatC);
+      apex.push_back(point.Apex ? 1 : 0);
+      if (point.Apex)
+      {
+        centre += point.Bary;
+        ++apexCount;
+      }
+    }
+    centre /= std::max(apexCount, 1);
+    const glm::dvec3 flatCentre = centre.x * flatA + centre.y * flatB + centre.z * flatC;
+    const int chosen = chooseFanApex(ids, flat, apex, flatCentre);
+    Id centreId = -1;
+    if (chosen < 0)
+    {
+      NewPoint point;
+      point.Position = flatCentre;
+      point.Normal = safeNormalize(centre.x * this->normalOf(corners[0]) +
+        centre.y * this->normalOf(corners[1]) + centre.z * this->normalOf(corners[2]));
+      if (point.Normal == glm::dvec3(0.0))
+      {
+        point.Normal = this->normalOf(corners[0]);
+      }
+      point.Sources = corners;
+      point.Weights = { centre.x, centre.y, centre.z };
+      centreId = this->nextPointId();
+      this->Result.NewPoints.push_back(point);
+    }
+    emitFan(ids, chosen, centreId, this->Result.Replacements);
   }
 
   // The output triangles around the moved points (kept input triangles and
@@ -364,8 +710,8 @@ private:
     std::size_t next = 0;
     for (std::size_t t = 0; t < triangles.size(); ++t)
     {
-      if (next < this->Result.SilhouetteTriangles.size() &&
-        this->Result.SilhouetteTriangles[next] == static_cast<Id>(t))
+      if (next < this->Result.RemeshedTriangles.size() &&
+        this->Result.RemeshedTriangles[next] == static_cast<Id>(t))
       {
         ++next; // replaced: its replacements are checked below
         continue;
@@ -393,7 +739,10 @@ private:
   const SamplingParameters& Sampling;
   const ParallelFor& For;
   std::vector<double> G;
+  std::vector<Id> Silhouette;
   std::vector<EdgeSilhouettePoint> EdgePoints;
+  std::vector<int> FeatureSampleCounts;
+  std::unordered_map<Id, std::pair<Id, int>> FeatureSamplePoints;
   std::vector<ConcaveSegment> Concave;
   SmoothingResult Result;
 };
@@ -417,15 +766,15 @@ void assembleTriangles(const PreparedMesh& mesh, const SmoothingResult& result,
   const std::vector<Triangle>& input = mesh.triangles();
   for (std::size_t t = 0; t < input.size(); ++t)
   {
-    if (next < result.SilhouetteTriangles.size() &&
-      result.SilhouetteTriangles[next] == static_cast<Id>(t))
+    if (next < result.RemeshedTriangles.size() &&
+      result.RemeshedTriangles[next] == static_cast<Id>(t))
     {
       for (std::size_t r = result.ReplacementOffsets[next]; r < result.ReplacementOffsets[next + 1];
            ++r)
       {
         triangles.push_back(result.Replacements[r]);
         sourceTriangle.push_back(static_cast<Id>(t));
-        isNew.push_back(1);
+        isNew.push_back(static_cast<unsigned char>(result.RemeshKinds[next]));
       }
       ++next;
       continue;

@@ -10,6 +10,7 @@
 #pragma once
 
 #include "AdaptiveSampling.h"
+#include "FeatureCurves.h"
 #include "MeshTopology.h"
 #include "ViewGeometry.h"
 
@@ -23,21 +24,53 @@
 namespace silsmooth
 {
 
-/// The view-independent state: points, triangles, unit shading normals and
-/// the edge table. Build it when the input changes, reuse it every frame.
+/// The view-independent state: points, triangles, unit shading normals, the
+/// edge table and the feature curves. Build it when the input changes, reuse
+/// it every frame.
+///
+/// With feature edges, every point on one is split into one point per smooth
+/// group (FeatureCurves.h): the prepared points are the input's, with their
+/// ids, followed by the copies, and the triangles refer to the copies where
+/// they belong to another group. Without feature edges nothing is split.
 class PreparedMesh
 {
 public:
   /// `normals` may be empty (angle-weighted normals are computed) or hold one
   /// normal per point; a given normal that is zero or not finite is replaced
-  /// by the angle-weighted one.
+  /// by the angle-weighted one. Points on feature edges always get the
+  /// angle-weighted normal of their smooth group (one given normal cannot
+  /// serve two sides of a crease). `featureEdges` are pairs of point ids.
   PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
-    const std::vector<glm::dvec3>& normals = {});
+    const std::vector<glm::dvec3>& normals = {}, std::vector<FeatureEdge> featureEdges = {});
 
+  /// Input points, then the copies made by splitting feature points.
   const std::vector<glm::dvec3>& points() const { return this->Points; }
   const std::vector<Triangle>& triangles() const { return this->Triangles; }
   const std::vector<glm::dvec3>& normals() const { return this->Normals; }
   const EdgeTable& edges() const { return this->Edges; }
+  /// How many of points() are the input's (the rest are copies).
+  std::size_t inputPointCount() const { return this->InputPointCount; }
+  /// The input point that prepared point p is (or copies).
+  Id sourcePoint(Id p) const
+  {
+    return static_cast<std::size_t>(p) < this->InputPointCount
+      ? p
+      : this->CopySources[static_cast<std::size_t>(p) - this->InputPointCount];
+  }
+  /// Whether prepared point p lies on a feature edge.
+  bool onFeature(Id p) const
+  {
+    return !this->OnFeature.empty() && this->OnFeature[static_cast<std::size_t>(p)] != 0;
+  }
+  const FeatureCurves& features() const { return this->Features; }
+  /// The feature edge (index into features()) that edge e lies on, or -1.
+  Id edgeFeature(Id e) const
+  {
+    return this->EdgeFeatures.empty() ? -1 : this->EdgeFeatures[static_cast<std::size_t>(e)];
+  }
+  /// Triangles with a side on a smoothed feature edge, ascending: they are
+  /// re-meshed in every frame so that the feature curve is drawn smooth.
+  const std::vector<Id>& featureTriangles() const { return this->FeatureTriangles; }
   /// The vertices joined to v by an edge are
   /// neighbours()[neighbourOffsets()[v] .. neighbourOffsets()[v + 1]).
   const std::vector<Id>& neighbourOffsets() const { return this->NeighbourOffsets; }
@@ -48,6 +81,12 @@ private:
   std::vector<Triangle> Triangles;
   std::vector<glm::dvec3> Normals;
   EdgeTable Edges;
+  std::size_t InputPointCount = 0;
+  std::vector<Id> CopySources;
+  std::vector<unsigned char> OnFeature;
+  FeatureCurves Features;
+  std::vector<Id> EdgeFeatures;
+  std::vector<Id> FeatureTriangles;
   std::vector<Id> NeighbourOffsets;
   std::vector<Id> Neighbours;
 };
@@ -70,13 +109,25 @@ struct NewPoint
   std::array<double, 3> Weights{ { 0.0, 0.0, 0.0 } };
 };
 
+/// How a re-meshed triangle was re-meshed (the VTK filter's NewGeometry).
+enum class RemeshKind : unsigned char
+{
+  Silhouette = 1, ///< along a silhouette segment only
+  Feature = 2     ///< with one or more feature segments (Fig. 12)
+};
+
 struct SmoothingResult
 {
-  /// Added points; the i-th has id pointCount + i in the output.
+  /// Added points; the i-th has id points().size() + i in the output.
   std::vector<NewPoint> NewPoints;
-  /// Input triangles that were re-meshed, ascending.
-  std::vector<Id> SilhouetteTriangles;
-  /// The triangles replacing SilhouetteTriangles[i] are
+  /// Prepared triangles that were re-meshed, ascending: the silhouette
+  /// triangles and the triangles with a side on a smoothed feature edge.
+  std::vector<Id> RemeshedTriangles;
+  /// Per entry of RemeshedTriangles: how it was re-meshed.
+  std::vector<RemeshKind> RemeshKinds;
+  /// How many of RemeshedTriangles the silhouette crosses.
+  std::size_t SilhouetteTriangleCount = 0;
+  /// The triangles replacing RemeshedTriangles[i] are
   /// Replacements[ReplacementOffsets[i] .. ReplacementOffsets[i + 1]).
   std::vector<std::size_t> ReplacementOffsets{ 0 };
   std::vector<Triangle> Replacements;
@@ -116,8 +167,9 @@ std::vector<double> vertexVisibility(
   const PreparedMesh& mesh, const ViewGeometry& view, const ParallelFor& parallelFor = serialFor);
 
 /// Convenience for tests and tools: all output triangles, in input order with
-/// each silhouette triangle replaced in place, and per triangle the input
-/// triangle it came from and whether it is new geometry.
+/// each re-meshed triangle replaced in place, and per triangle the input
+/// triangle it came from and whether it is new geometry (0 for a kept
+/// triangle, else the RemeshKind's value).
 void assembleTriangles(const PreparedMesh& mesh, const SmoothingResult& result,
   std::vector<Triangle>& triangles, std::vector<Id>& sourceTriangle,
   std::vector<unsigned char>& isNew);

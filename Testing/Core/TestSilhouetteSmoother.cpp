@@ -105,7 +105,7 @@ TEST(SilhouetteSmoother, OctahedronStaysClosedFromManyViews)
     const glm::dvec3 direction = glm::normalize(glm::dvec3(gauss(rng), gauss(rng), gauss(rng)));
     const ViewGeometry view = perspectiveFrom(direction * (2.0 + 3.0 * (i % 5)));
     const SmoothingResult result = smoothSilhouettes(mesh, view, SmoothingParameters{});
-    ASSERT_FALSE(result.SilhouetteTriangles.empty());
+    ASSERT_FALSE(result.RemeshedTriangles.empty());
     const Check c = check(mesh, result);
     EXPECT_EQ(c.Unpaired, 0);
     EXPECT_EQ(c.Repeated, 0);
@@ -166,7 +166,7 @@ TEST(SilhouetteSmoother, NoSilhouetteLeavesTheMeshAlone)
   const PreparedMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 } });
   const SmoothingResult result =
     smoothSilhouettes(mesh, perspectiveFrom({ 0.2, 0.2, 5 }), SmoothingParameters{});
-  EXPECT_TRUE(result.SilhouetteTriangles.empty());
+  EXPECT_TRUE(result.RemeshedTriangles.empty());
   EXPECT_TRUE(result.NewPoints.empty());
   EXPECT_TRUE(result.Polylines.empty());
 }

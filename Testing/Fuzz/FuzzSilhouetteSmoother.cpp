@@ -119,7 +119,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   {
     require(moved.first >= 0 && moved.first < static_cast<Id>(pointCount) && finite(moved.second));
   }
-  require(result.ReplacementOffsets.size() == result.SilhouetteTriangles.size() + 1);
+  require(result.ReplacementOffsets.size() == result.RemeshedTriangles.size() + 1);
   for (const Triangle& t : result.Replacements)
   {
     for (const Id id : t)

@@ -1,0 +1,345 @@
+#include "FeatureCurves.h"
+
+#include "ShadingNormals.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+
+namespace silsmooth
+{
+
+std::vector<FeatureEdge> normalizedFeatureEdges(std::vector<FeatureEdge> edges)
+{
+  for (FeatureEdge& e : edges)
+  {
+    if (e.first > e.second)
+    {
+      std::swap(e.first, e.second);
+    }
+  }
+  edges.erase(std::remove_if(edges.begin(), edges.end(),
+                [](const FeatureEdge& e) { return e.first == e.second || e.first < 0; }),
+    edges.end());
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+std::vector<FeatureEdge> featureEdgesByAngle(const std::vector<glm::dvec3>& points,
+  const std::vector<Triangle>& triangles, double angleDegrees)
+{
+  const EdgeTable table(triangles);
+  // The triangles of each edge: first two, and how many.
+  std::vector<std::array<Id, 2>> sides(table.edgeCount(), { { -1, -1 } });
+  std::vector<int> count(table.edgeCount(), 0);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::size_t e = static_cast<std::size_t>(table.sideEdge(static_cast<Id>(t), k));
+      if (count[e] < 2)
+      {
+        sides[e][static_cast<std::size_t>(count[e])] = static_cast<Id>(t) * 3 + k;
+      }
+      ++count[e];
+    }
+  }
+  auto faceNormal = [&](Id t) {
+    const Triangle& tri = triangles[static_cast<std::size_t>(t)];
+    const glm::dvec3& a = points[static_cast<std::size_t>(tri[0])];
+    return safeNormalize(glm::cross(
+      points[static_cast<std::size_t>(tri[1])] - a, points[static_cast<std::size_t>(tri[2])] - a));
+  };
+  const double cosLimit = std::cos(angleDegrees * 3.14159265358979323846 / 180.0);
+  std::vector<FeatureEdge> result;
+  for (std::size_t e = 0; e < table.edgeCount(); ++e)
+  {
+    const Edge& edge = table.edge(static_cast<Id>(e));
+    if (count[e] != 2 || edge.low == edge.high)
+    {
+      continue;
+    }
+    const Id t0 = sides[e][0] / 3;
+    const Id t1 = sides[e][1] / 3;
+    if (hasRepeatedCorner(triangles[static_cast<std::size_t>(t0)]) ||
+      hasRepeatedCorner(triangles[static_cast<std::size_t>(t1)]))
+    {
+      continue;
+    }
+    const glm::dvec3 n0 = faceNormal(t0);
+    glm::dvec3 n1 = faceNormal(t1);
+    if (n0 == glm::dvec3(0.0) || n1 == glm::dvec3(0.0))
+    {
+      continue;
+    }
+    // Both triangles walking the edge the same way means one of them is
+    // turned over: compare it the right way up, or every edge would count.
+    const Triangle& a = triangles[static_cast<std::size_t>(t0)];
+    const Triangle& b = triangles[static_cast<std::size_t>(t1)];
+    const int ka = static_cast<int>(sides[e][0] % 3);
+    const int kb = static_cast<int>(sides[e][1] % 3);
+    if (a[static_cast<std::size_t>(ka)] == b[static_cast<std::size_t>(kb)])
+    {
+      n1 = -n1;
+    }
+    if (glm::dot(n0, n1) < cosLimit)
+    {
+      result.emplace_back(edge.low, edge.high);
+    }
+  }
+  return result; // the edge table is sorted by (low, high)
+}
+
+glm::dvec3 circleTangentAlong(const glm::dvec3& direction, const glm::dvec3& chord)
+{
+  const double chordLength = glm::length(chord);
+  const double directionLength = glm::length(direction);
+  if (!(chordLength > 0.0) || !(directionLength > 0.0) || !std::isfinite(directionLength))
+  {
+    return chord;
+  }
+  glm::dvec3 unit = direction / directionLength;
+  double cosTheta = glm::dot(unit, chord) / chordLength;
+  if (cosTheta < 0.0)
+  {
+    unit = -unit;
+    cosTheta = -cosTheta;
+  }
+  cosTheta = std::min(cosTheta, 1.0);
+  return unit * (2.0 * chordLength / (1.0 + cosTheta));
+}
+
+FeatureCurves::FeatureCurves(const std::vector<glm::dvec3>& points, std::vector<FeatureEdge> edges)
+{
+  edges = normalizedFeatureEdges(std::move(edges));
+  const Id pointCount = static_cast<Id>(points.size());
+  edges.erase(std::remove_if(edges.begin(), edges.end(),
+                [pointCount](const FeatureEdge& e) { return e.second >= pointCount; }),
+    edges.end());
+  this->Edges = std::move(edges);
+  const std::size_t n = this->Edges.size();
+  this->Curves.resize(n);
+  this->Curved.assign(n, 0);
+
+  // Feature neighbours of every point (compressed rows).
+  std::vector<std::size_t> offsets(points.size() + 1, 0);
+  for (const FeatureEdge& e : this->Edges)
+  {
+    ++offsets[static_cast<std::size_t>(e.first) + 1];
+    ++offsets[static_cast<std::size_t>(e.second) + 1];
+  }
+  std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+  std::vector<Id> neighbours(offsets.back());
+  std::vector<std::size_t> fill(offsets.begin(), offsets.end() - 1);
+  for (const FeatureEdge& e : this->Edges)
+  {
+    neighbours[fill[static_cast<std::size_t>(e.first)]++] = e.second;
+    neighbours[fill[static_cast<std::size_t>(e.second)]++] = e.first;
+  }
+
+  // Inside a polyline (two feature edges, no sharp turn): the eq. 1 tangent.
+  const double cosCorner = std::cos(FeatureCornerAngleDegrees * 3.14159265358979323846 / 180.0);
+  std::vector<glm::dvec3> insideTangent(points.size(), glm::dvec3(0.0));
+  std::vector<unsigned char> inside(points.size(), 0);
+  for (std::size_t v = 0; v < points.size(); ++v)
+  {
+    if (offsets[v + 1] - offsets[v] != 2)
+    {
+      continue;
+    }
+    const glm::dvec3 w0 = points[v] - points[static_cast<std::size_t>(neighbours[offsets[v]])];
+    const glm::dvec3 w1 = points[static_cast<std::size_t>(neighbours[offsets[v] + 1])] - points[v];
+    const double l0 = glm::length(w0);
+    const double l1 = glm::length(w1);
+    if (!(l0 > 0.0) || !(l1 > 0.0) || !std::isfinite(l0 * l1))
+    {
+      continue;
+    }
+    if (glm::dot(w0, w1) < cosCorner * l0 * l1)
+    {
+      continue; // a corner: ends two polylines
+    }
+    insideTangent[v] = safeNormalize(l1 * w0 + l0 * w1);
+    inside[v] = insideTangent[v] != glm::dvec3(0.0) ? 1 : 0;
+  }
+
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const std::size_t a = static_cast<std::size_t>(this->Edges[i].first);
+    const std::size_t b = static_cast<std::size_t>(this->Edges[i].second);
+    const glm::dvec3 chord = points[b] - points[a];
+    HermiteCurve& curve = this->Curves[i];
+    curve.P0 = points[a];
+    curve.P1 = points[b];
+    curve.T0 = chord;
+    curve.T1 = chord;
+    if (!inside[a] && !inside[b])
+    {
+      continue; // a polyline of one edge, or an edge between two corners
+    }
+    // At an end, the circle through the end and the next two points: its
+    // tangent at the next point (eq. 1 there) mirrored in the chord's
+    // perpendicular bisector.
+    auto endTangent = [&](std::size_t next, const glm::dvec3& towardNext) {
+      const glm::dvec3 u = safeNormalize(towardNext);
+      const glm::dvec3& t = insideTangent[next];
+      return 2.0 * glm::dot(t, u) * u - t;
+    };
+    const glm::dvec3 directionA = inside[a] ? insideTangent[a] : endTangent(b, chord);
+    const glm::dvec3 directionB = inside[b] ? insideTangent[b] : endTangent(a, -chord);
+    curve.T0 = circleTangentAlong(directionA, chord);
+    curve.T1 = circleTangentAlong(directionB, chord);
+    this->Curved[i] = 1;
+    ++this->CurvedCount;
+  }
+}
+
+Id FeatureCurves::find(Id a, Id b) const
+{
+  const FeatureEdge key = a < b ? FeatureEdge(a, b) : FeatureEdge(b, a);
+  const auto it = std::lower_bound(this->Edges.begin(), this->Edges.end(), key);
+  return (it != this->Edges.end() && *it == key) ? static_cast<Id>(it - this->Edges.begin()) : -1;
+}
+
+namespace
+{
+
+class DisjointSets
+{
+public:
+  explicit DisjointSets(std::size_t n)
+    : Parent(n)
+  {
+    std::iota(this->Parent.begin(), this->Parent.end(), std::size_t{ 0 });
+  }
+  std::size_t find(std::size_t x)
+  {
+    while (this->Parent[x] != x)
+    {
+      this->Parent[x] = this->Parent[this->Parent[x]];
+      x = this->Parent[x];
+    }
+    return x;
+  }
+  void unite(std::size_t a, std::size_t b)
+  {
+    a = this->find(a);
+    b = this->find(b);
+    if (a != b)
+    {
+      this->Parent[std::max(a, b)] = std::min(a, b); // the lowest corner is the root
+    }
+  }
+
+private:
+  std::vector<std::size_t> Parent;
+};
+
+} // namespace
+
+FeatureSplit splitAtFeatureEdges(
+  std::size_t pointCount, const std::vector<Triangle>& triangles, const FeatureCurves& features)
+{
+  FeatureSplit split;
+  split.Triangles = triangles;
+  split.OnFeature.assign(pointCount, 0);
+  for (const FeatureEdge& e : features.edges())
+  {
+    if (static_cast<std::size_t>(e.second) < pointCount)
+    {
+      split.OnFeature[static_cast<std::size_t>(e.first)] = 1;
+      split.OnFeature[static_cast<std::size_t>(e.second)] = 1;
+    }
+  }
+  if (features.empty())
+  {
+    return split;
+  }
+
+  // Corners 3t + k at feature points are joined across non-feature edges:
+  // each class of joined corners around a point is one smooth group.
+  const EdgeTable table(triangles);
+  std::vector<Id> firstSide(table.edgeCount(), -1);
+  DisjointSets groups(triangles.size() * 3);
+  auto cornerOf = [&](Id t, Id v) -> std::size_t {
+    const Triangle& tri = triangles[static_cast<std::size_t>(t)];
+    const int k = tri[0] == v ? 0 : (tri[1] == v ? 1 : 2);
+    return static_cast<std::size_t>(t) * 3 + static_cast<std::size_t>(k);
+  };
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const Triangle& tri = triangles[t];
+    if (hasRepeatedCorner(tri))
+    {
+      continue; // keeps its ids: never re-meshed
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const Id u = tri[static_cast<std::size_t>(k)];
+      const Id w = tri[static_cast<std::size_t>((k + 1) % 3)];
+      if (!split.OnFeature[static_cast<std::size_t>(u)] &&
+        !split.OnFeature[static_cast<std::size_t>(w)])
+      {
+        continue;
+      }
+      if (features.find(u, w) >= 0)
+      {
+        continue; // a feature edge separates the groups
+      }
+      const std::size_t e = static_cast<std::size_t>(table.sideEdge(static_cast<Id>(t), k));
+      if (firstSide[e] < 0)
+      {
+        firstSide[e] = static_cast<Id>(t);
+        continue;
+      }
+      groups.unite(cornerOf(firstSide[e], u), cornerOf(static_cast<Id>(t), u));
+      groups.unite(cornerOf(firstSide[e], w), cornerOf(static_cast<Id>(t), w));
+    }
+  }
+
+  // The group holding a point's lowest corner keeps the point's id; every
+  // other group gets a copy, in corner order (deterministic).
+  std::vector<Id> keeper(pointCount, -1); // root corner that kept the id
+  std::vector<Id> copyOfRoot(triangles.size() * 3, -1);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    Triangle& tri = split.Triangles[t];
+    if (hasRepeatedCorner(tri))
+    {
+      continue;
+    }
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      const Id v = tri[k];
+      if (!split.OnFeature[static_cast<std::size_t>(v)])
+      {
+        continue;
+      }
+      const std::size_t root = groups.find(t * 3 + k);
+      Id& kept = keeper[static_cast<std::size_t>(v)];
+      if (kept < 0)
+      {
+        kept = static_cast<Id>(root);
+      }
+      if (kept == static_cast<Id>(root))
+      {
+        continue;
+      }
+      Id& copy = copyOfRoot[root];
+      if (copy < 0)
+      {
+        copy = static_cast<Id>(pointCount + split.CopySources.size());
+        split.CopySources.push_back(v);
+        split.OnFeature.push_back(1);
+      }
+      tri[k] = copy;
+    }
+  }
+  return split;
+}
+
+} // namespace silsmooth

@@ -333,7 +333,9 @@ private:
       {
         const bool forward =
           this->Mesh.sourcePoint(edge.low) == this->Mesh.features().edges()[feature].first;
-        p.Position = this->Mesh.features().curve(feature).evaluate(forward ? u : 1.0 - u);
+        const double along = forward ? u : 1.0 - u;
+        p.Position = this->Mesh.features().curve(feature).evaluate(along);
+        this->FeatureSilhouettePoints.push_back({ feature, e, along });
       }
       else
       {
@@ -517,10 +519,12 @@ private:
     }
   }
 
-  // The interior samples of the feature segment on edge e, made once per
-  // frame and shared by the edge's triangles; returns the first sample's id
-  // (the rest follow, in the segment's own direction) and their number.
-  std::pair<Id, int> featureSamples(Id e)
+  // The points inside the feature segment on edge e, made once per frame and
+  // shared by the edge's triangles, as (parameter along the segment, point id):
+  // its samples, and the silhouette points that the other sides of the crease
+  // have on the same segment (copies with this side's normal), so that both
+  // sides split the curve at the same points (no crack, no T-junction).
+  const std::vector<std::pair<double, Id>>& featureSamples(Id e)
   {
     const auto found = this->FeatureSamplePoints.find(e);
     if (found != this->FeatureSamplePoints.end())
@@ -537,10 +541,22 @@ private:
     const glm::dvec3 n1 = this->normalOf(to);
     const HermiteCurve& curve = features.curve(f);
     const int samples = this->FeatureSampleCounts[static_cast<std::size_t>(f)];
-    const std::pair<Id, int> range{ this->nextPointId(), samples - 2 };
+    std::vector<double> parameters;
     for (int i = 1; i + 1 < samples; ++i)
     {
-      const double s = static_cast<double>(i) / (samples - 1);
+      parameters.push_back(static_cast<double>(i) / (samples - 1));
+    }
+    for (const FeatureSilhouettePoint& other : this->FeatureSilhouettePoints)
+    {
+      if (other.Feature == f && other.Edge != e)
+      {
+        parameters.push_back(other.Along);
+      }
+    }
+    std::vector<std::pair<double, Id>> points;
+    for (const double s : parameters)
+    {
+      points.emplace_back(s, this->nextPointId());
       NewPoint sample;
       sample.Position = curve.evaluate(s);
       sample.Normal = safeNormalize((1.0 - s) * n0 + s * n1);
@@ -552,8 +568,7 @@ private:
       sample.Weights = { 1.0 - s, s, 0.0 };
       this->Result.NewPoints.push_back(sample);
     }
-    this->FeatureSamplePoints.emplace(e, range);
-    return range;
+    return this->FeatureSamplePoints.emplace(e, std::move(points)).first->second;
   }
 
   // Re-meshing with feature segments (Fig. 12): the triangle's outline runs
@@ -594,13 +609,10 @@ private:
       {
         const bool forward =
           this->Mesh.sourcePoint(corners[static_cast<std::size_t>(j)]) == features.edges()[f].first;
-        const auto [firstSample, count] = this->featureSamples(e);
-        for (int i = 0; i < count; ++i)
+        for (const auto& [s, id] : this->featureSamples(e))
         {
-          const double s = static_cast<double>(i + 1) / (count + 1);
           const double along = forward ? s : 1.0 - s;
-          inside.push_back(
-            { along, { firstSample + i, (1.0 - along) * from + along * to, false } });
+          inside.push_back({ along, { id, (1.0 - along) * from + along * to, false } });
         }
       }
       if (silhouette && (j == 0 || j == 2))
@@ -742,7 +754,14 @@ private:
   std::vector<Id> Silhouette;
   std::vector<EdgeSilhouettePoint> EdgePoints;
   std::vector<int> FeatureSampleCounts;
-  std::unordered_map<Id, std::pair<Id, int>> FeatureSamplePoints;
+  std::unordered_map<Id, std::vector<std::pair<double, Id>>> FeatureSamplePoints;
+  struct FeatureSilhouettePoint
+  {
+    Id Feature;
+    Id Edge;
+    double Along; // parameter along the feature segment
+  };
+  std::vector<FeatureSilhouettePoint> FeatureSilhouettePoints;
   std::vector<ConcaveSegment> Concave;
   SmoothingResult Result;
 };

@@ -1,0 +1,323 @@
+// Feature edges, feature segments and the splitting of feature points
+// (FeatureCurves.h), with answers known in closed form.
+#include "FeatureCurves.h"
+#include "SilhouetteSmoother.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <random>
+#include <set>
+
+using namespace silsmooth;
+
+namespace
+{
+
+constexpr double Pi = 3.14159265358979323846;
+
+std::vector<glm::dvec3> circlePoints(int n, double radius, double firstAngle = 0.0)
+{
+  std::vector<glm::dvec3> points;
+  for (int i = 0; i < n; ++i)
+  {
+    const double a = firstAngle + 2.0 * Pi * i / n;
+    points.emplace_back(radius * std::cos(a), radius * std::sin(a), 0.0);
+  }
+  return points;
+}
+
+double worstRadiusError(const FeatureCurves& curves, double radius)
+{
+  double worst = 0.0;
+  for (std::size_t i = 0; i < curves.edges().size(); ++i)
+  {
+    for (int k = 0; k <= 64; ++k)
+    {
+      const glm::dvec3 p = curves.curve(static_cast<Id>(i)).evaluate(k / 64.0);
+      worst = std::max(worst, std::abs(glm::length(p) - radius));
+    }
+  }
+  return worst;
+}
+
+// A closed n-gon's edges.
+std::vector<FeatureEdge> loop(int n, Id offset = 0)
+{
+  std::vector<FeatureEdge> edges;
+  for (int i = 0; i < n; ++i)
+  {
+    edges.emplace_back(offset + i, offset + (i + 1) % n);
+  }
+  return edges;
+}
+
+} // namespace
+
+TEST(FeatureCurves, ClosedPolygonOnACircleGivesTheCircle)
+{
+  // 12 segments of 30 degrees: the cubic arc error is about 2e-6 of the radius
+  // (the straight edges are 3.4e-2 off).
+  const double radius = 3.0;
+  const FeatureCurves curves(circlePoints(12, radius), loop(12));
+  ASSERT_EQ(curves.curvedCount(), 12u);
+  EXPECT_LT(worstRadiusError(curves, radius), 1e-5 * radius);
+  // G1: at every vertex the two segments' tangents are parallel.
+  for (int i = 0; i < 12; ++i)
+  {
+    const Id into = curves.find(static_cast<Id>((i + 11) % 12), static_cast<Id>(i));
+    const Id out = curves.find(static_cast<Id>(i), static_cast<Id>((i + 1) % 12));
+    ASSERT_GE(into, 0);
+    ASSERT_GE(out, 0);
+    // Tangent at vertex i as each segment leaves or arrives there.
+    const auto tangentAt = [&](Id e) {
+      const HermiteCurve& c = curves.curve(e);
+      return curves.edges()[static_cast<std::size_t>(e)].first == i ? c.T0 : c.T1;
+    };
+    const glm::dvec3 a = glm::normalize(tangentAt(into));
+    const glm::dvec3 b = glm::normalize(tangentAt(out));
+    EXPECT_GT(std::abs(glm::dot(a, b)), 1.0 - 1e-12);
+  }
+}
+
+TEST(FeatureCurves, OpenArcEndsFollowTheCircleToo)
+{
+  // A quarter circle in 4 edges: the end segments use the circle through the
+  // end and its next two points.
+  std::vector<glm::dvec3> points;
+  for (int i = 0; i <= 4; ++i)
+  {
+    const double a = 0.5 * Pi * i / 4;
+    points.emplace_back(std::cos(a), std::sin(a), 0.0);
+  }
+  const FeatureCurves curves(points, { { 0, 1 }, { 1, 2 }, { 2, 3 }, { 3, 4 } });
+  ASSERT_EQ(curves.curvedCount(), 4u);
+  EXPECT_LT(worstRadiusError(curves, 1.0), 1e-5);
+}
+
+TEST(FeatureCurves, SingleEdgesAndCornersStayStraight)
+{
+  // A square's outline turns by 90 degrees at every vertex: corners.
+  const std::vector<glm::dvec3> square{ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 } };
+  const FeatureCurves corners(square, loop(4));
+  EXPECT_EQ(corners.curvedCount(), 0u);
+  // A lone edge is not smoothed; its segment is the edge.
+  const FeatureCurves lone(square, { { 2, 0 } });
+  ASSERT_EQ(lone.edges().size(), 1u);
+  EXPECT_FALSE(lone.isCurved(0));
+  const glm::dvec3 middle = lone.curve(0).evaluate(0.5);
+  EXPECT_NEAR(glm::length(middle - glm::dvec3(0.5, 0.5, 0.0)), 0.0, 1e-15);
+  // Repeats, reversed pairs, self-edges and unknown points are dropped.
+  const FeatureCurves messy(square, { { 1, 0 }, { 0, 1 }, { 2, 2 }, { 3, 9 } });
+  EXPECT_EQ(messy.edges().size(), 1u);
+  EXPECT_EQ(messy.find(1, 0), 0);
+  EXPECT_EQ(messy.find(2, 3), -1);
+}
+
+TEST(FeatureCurves, CircleTangentLengthIsTheArcApproximation)
+{
+  // A 90-degree arc of radius 1: chord sqrt(2), theta 45 degrees; the
+  // standard cubic has tangent length 4 tan(22.5 degrees).
+  const glm::dvec3 chord(-1.0, 1.0, 0.0);
+  const glm::dvec3 t = circleTangentAlong(glm::dvec3(0.0, 1.0, 0.0), chord);
+  EXPECT_NEAR(glm::length(t), 4.0 * std::tan(Pi / 8), 1e-12);
+  // A direction against the chord is turned round; none gives the chord.
+  EXPECT_GT(glm::dot(circleTangentAlong(glm::dvec3(0.0, -1.0, 0.0), chord), chord), 0.0);
+  EXPECT_EQ(circleTangentAlong(glm::dvec3(0.0), chord), chord);
+}
+
+namespace
+{
+
+// An axis-aligned cube, two outward triangles per face.
+void cube(std::vector<glm::dvec3>& points, std::vector<Triangle>& triangles)
+{
+  points.clear();
+  for (int i = 0; i < 8; ++i)
+  {
+    points.emplace_back(i & 1 ? 1.0 : -1.0, i & 2 ? 1.0 : -1.0, i & 4 ? 1.0 : -1.0);
+  }
+  const int faces[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
+    { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  triangles.clear();
+  for (const auto& f : faces)
+  {
+    triangles.push_back({ f[0], f[1], f[2] });
+    triangles.push_back({ f[0], f[2], f[3] });
+  }
+}
+
+} // namespace
+
+TEST(FeatureCurves, CubeEdgesAreDetectedAndItsCornersSplitInThree)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  cube(points, triangles);
+  const std::vector<FeatureEdge> sharp = featureEdgesByAngle(points, triangles, 30.0);
+  EXPECT_EQ(sharp.size(), 12u); // the face diagonals are flat
+  // One triangle turned over must not make its flat diagonal a feature.
+  std::vector<Triangle> turned = triangles;
+  std::swap(turned[0][1], turned[0][2]);
+  EXPECT_EQ(featureEdgesByAngle(points, turned, 30.0).size(), 12u);
+
+  const FeatureCurves features(points, sharp);
+  EXPECT_EQ(features.curvedCount(), 0u); // every vertex is a corner of three
+  const FeatureSplit split = splitAtFeatureEdges(points.size(), triangles, features);
+  EXPECT_EQ(split.CopySources.size(), 16u); // 3 groups per corner: 2 copies each
+  // Each face's two triangles share their points; no two faces share one.
+  std::map<Id, std::set<int>> facesOfPoint;
+  for (std::size_t t = 0; t < split.Triangles.size(); ++t)
+  {
+    for (const Id v : split.Triangles[t])
+    {
+      facesOfPoint[v].insert(static_cast<int>(t / 2));
+    }
+  }
+  EXPECT_EQ(facesOfPoint.size(), 24u);
+  for (const auto& entry : facesOfPoint)
+  {
+    EXPECT_EQ(entry.second.size(), 1u);
+  }
+}
+
+namespace
+{
+
+// A capped cylinder (12 sides, axis z, unit radius, z in [-1, 1]).
+void cylinder(std::vector<glm::dvec3>& points, std::vector<Triangle>& triangles)
+{
+  const int n = 12;
+  points = circlePoints(n, 1.0);
+  for (auto& p : points)
+  {
+    p.z = -1.0;
+  }
+  for (const glm::dvec3& p : circlePoints(n, 1.0))
+  {
+    points.emplace_back(p.x, p.y, 1.0);
+  }
+  points.emplace_back(0, 0, -1);
+  points.emplace_back(0, 0, 1);
+  const Id bottom = 2 * n;
+  const Id top = 2 * n + 1;
+  triangles.clear();
+  for (Id i = 0; i < n; ++i)
+  {
+    const Id j = (i + 1) % n;
+    triangles.push_back({ i, j, n + j });
+    triangles.push_back({ i, n + j, n + i });
+    triangles.push_back({ top, n + i, n + j });
+    triangles.push_back({ bottom, j, i });
+  }
+}
+
+// Closed after merging coincident points, consistently oriented.
+bool closedOnceWelded(const PreparedMesh& mesh, const SmoothingResult& result)
+{
+  std::vector<Triangle> triangles;
+  std::vector<Id> source;
+  std::vector<unsigned char> isNew;
+  assembleTriangles(mesh, result, triangles, source, isNew);
+  auto position = [&](Id id) {
+    const std::size_t n = mesh.points().size();
+    return static_cast<std::size_t>(id) < n
+      ? mesh.points()[static_cast<std::size_t>(id)]
+      : result.NewPoints[static_cast<std::size_t>(id) - n].Position;
+  };
+  std::map<std::array<double, 3>, Id> weld;
+  auto welded = [&](Id id) {
+    const glm::dvec3 p = position(id);
+    return weld.emplace(std::array<double, 3>{ { p.x, p.y, p.z } }, static_cast<Id>(weld.size()))
+      .first->second;
+  };
+  std::map<std::pair<Id, Id>, int> directed;
+  for (const Triangle& t : triangles)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      ++directed[{ welded(t[k]), welded(t[(k + 1) % 3]) }];
+    }
+  }
+  for (const auto& [edge, count] : directed)
+  {
+    const auto reverse = directed.find({ edge.second, edge.first });
+    if (count != 1 || reverse == directed.end() || reverse->second != 1)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+} // namespace
+
+TEST(FeatureCurves, CylinderRimsAreSmoothAndTheMeshStaysClosed)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  cylinder(points, triangles);
+  const PreparedMesh mesh(points, triangles, {}, featureEdgesByAngle(points, triangles, 60.0));
+  ASSERT_EQ(mesh.features().edges().size(), 24u);
+  ASSERT_EQ(mesh.features().curvedCount(), 24u);
+  EXPECT_EQ(mesh.points().size(), points.size() + 24); // a copy per rim point
+  EXPECT_EQ(mesh.featureTriangles().size(), triangles.size());
+  // The rim points' copies: one with the side's normal, one with the cap's.
+  for (std::size_t p = 0; p < mesh.points().size(); ++p)
+  {
+    const glm::dvec3 n = mesh.normals()[p];
+    if (mesh.onFeature(static_cast<Id>(p)))
+    {
+      EXPECT_TRUE(std::abs(n.z) > 1.0 - 1e-12 || std::abs(n.z) < 1e-12);
+    }
+  }
+
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * Pi);
+  std::uniform_real_distribution<double> height(-4.0, 4.0);
+  for (int v = 0; v < 200; ++v)
+  {
+    const double a = angle(random);
+    ViewGeometry view;
+    view.Eye = glm::dvec3(5.0 * std::cos(a), 5.0 * std::sin(a), height(random));
+    view.ModelToClip = glm::dmat4(0.5);
+    view.ModelToClip[3][3] = 1.0;
+    const SmoothingResult result = smoothSilhouettes(mesh, view, SmoothingParameters{});
+    ASSERT_TRUE(closedOnceWelded(mesh, result)) << "view " << v;
+    std::size_t featureKinds = 0;
+    for (const RemeshKind kind : result.RemeshKinds)
+    {
+      featureKinds += kind == RemeshKind::Feature ? 1 : 0;
+    }
+    EXPECT_EQ(featureKinds, triangles.size());
+    // Every added point between two points of one rim (feature samples and
+    // silhouette points on the rim's feature segments) lies on the rim's
+    // circle, to the cubic's arc error.
+    for (const NewPoint& p : result.NewPoints)
+    {
+      const glm::dvec3& a = mesh.points()[static_cast<std::size_t>(p.Sources[0])];
+      const glm::dvec3& b = mesh.points()[static_cast<std::size_t>(p.Sources[1])];
+      if (p.Weights[2] == 0.0 && std::abs(a.z) == 1.0 && a.z == b.z &&
+        std::abs(glm::length(glm::dvec2(a)) - 1.0) < 1e-12 &&
+        std::abs(glm::length(glm::dvec2(b)) - 1.0) < 1e-12)
+      {
+        EXPECT_NEAR(glm::length(glm::dvec2(p.Position)), 1.0, 1e-5);
+        EXPECT_EQ(p.Position.z, a.z);
+      }
+    }
+  }
+}
+
+TEST(FeatureCurves, WithoutFeaturesNothingIsSplit)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  cylinder(points, triangles);
+  const PreparedMesh mesh(points, triangles);
+  EXPECT_EQ(mesh.points().size(), points.size());
+  EXPECT_TRUE(mesh.featureTriangles().empty());
+  EXPECT_EQ(mesh.triangles(), triangles);
+}

@@ -141,6 +141,26 @@ bool ParseCameraOption(const Option& option, ArgumentList& arguments, CameraOpti
     RejectInlineValue(option);
     camera.Parallel = true;
   }
+  else if (name == "--feature-angle")
+  {
+    const std::string text = arguments.TakeValue(option);
+    const double angle = ParseNumber(name, text);
+    if (!(angle >= 0.0 && angle <= 180.0))
+    {
+      throw UsageError("option '" + name + "' needs degrees from 0 to 180, got '" + text + "'");
+    }
+    camera.FeatureAngle = angle;
+  }
+  else if (name == "--no-feature-lines")
+  {
+    RejectInlineValue(option);
+    camera.FeatureLines = false;
+  }
+  else if (name == "--no-perturbation")
+  {
+    RejectInlineValue(option);
+    camera.PerturbVertices = false;
+  }
   else
   {
     return false;
@@ -201,6 +221,17 @@ std::string CameraOptionsHelp()
                            (default 30)
   --parallel               parallel projection instead of perspective
                            (default: perspective)
+
+Smoothing options (with the camera options wherever those are taken):
+  --feature-angle DEG      edges whose faces meet at more than DEG degrees
+                           (0 to 180) are feature edges (creases): drawn as
+                           smooth curves, with a shading normal per side
+                           (default: no detection; try 30 to 60 for parts)
+  --no-feature-lines       ignore the input's line cells; by default a line
+                           segment along a triangle edge marks that edge as a
+                           feature edge
+  --no-perturbation        do not lower vertices around concave silhouette
+                           segments (the paper's III-E; default: lowered)
 
 The framing camera is vtkRenderer::ResetCamera() on the mesh's bounds: it
 looks along -Z at the centre of the bounding box, view-up +Y, from the

@@ -27,6 +27,10 @@ struct CameraOptions
   std::optional<std::array<double, 3>> ViewUp;
   double ViewAngle = 30.0;
   bool Parallel = false;
+  /// Smoothing options beside the tolerance (the filter's defaults).
+  std::optional<double> FeatureAngle; ///< detect feature edges sharper than this
+  bool FeatureLines = true;           ///< line cells mark feature edges
+  bool PerturbVertices = true;
 };
 
 /// Largest accepted viewport side, to keep images and buffers sane.

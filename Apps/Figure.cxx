@@ -1,6 +1,7 @@
 #include "Figure.h"
 
 #include "CliErrors.h"
+#include "Smoothing.h"
 #include "MeshIO.h"
 #include "Rendering.h"
 #include "RenderingBackend.h"
@@ -92,7 +93,7 @@ void RenderPanels(const silhouette_eval::ModelVersions& model, const FigureOptio
   smoother->SetInputData(model.Coarse);
   smoother->SetCamera(camera);
   smoother->SetViewportSize(width, height);
-  smoother->SetTolerance(options.Camera.Tolerance);
+  ApplySmoothingOptions(smoother, options.Camera);
   smoother->Update();
   // The fine mesh's own limit normals, through a filter so the shaded style
   // is drawn exactly as for the others.

@@ -25,7 +25,7 @@ SmoothingRun SmoothSilhouette(vtkPolyData* mesh, vtkCamera* camera, const Camera
   // The camera and viewport before the first update, as the renderer will use them.
   filter->SetCamera(camera);
   filter->SetViewportSize(options.ViewportSize[0], options.ViewportSize[1]);
-  filter->SetTolerance(options.Tolerance);
+  ApplySmoothingOptions(filter, options);
 
   auto timedUpdate = [&]() {
     errors.Clear();
@@ -46,6 +46,18 @@ SmoothingRun SmoothSilhouette(vtkPolyData* mesh, vtkCamera* camera, const Camera
     milliseconds.begin(), milliseconds.begin() + milliseconds.size() / 2, milliseconds.end());
   run.MedianMilliseconds = milliseconds[milliseconds.size() / 2];
   return run;
+}
+
+void ApplySmoothingOptions(vtkSilhouetteSmoothingFilter* filter, const CameraOptions& options)
+{
+  filter->SetTolerance(options.Tolerance);
+  filter->SetFeatureEdgeDetection(options.FeatureAngle.has_value());
+  if (options.FeatureAngle)
+  {
+    filter->SetFeatureAngle(*options.FeatureAngle);
+  }
+  filter->SetFeatureLines(options.FeatureLines);
+  filter->SetPerturbVertices(options.PerturbVertices);
 }
 
 } // namespace cli

@@ -36,6 +36,9 @@ struct SmoothingRun
  */
 SmoothingRun SmoothSilhouette(vtkPolyData* mesh, vtkCamera* camera, const CameraOptions& options);
 
+/// Sets the filter's tolerance, feature and perturbation options from `options`.
+void ApplySmoothingOptions(vtkSilhouetteSmoothingFilter* filter, const CameraOptions& options);
+
 } // namespace cli
 
 #endif

@@ -5,6 +5,7 @@
 #include "MeshIO.h"
 #include "Rendering.h"
 #include "RenderingBackend.h"
+#include "Smoothing.h"
 #include "VtkErrorLog.h"
 
 #include "EvaluationModels.h"
@@ -332,7 +333,7 @@ void Viewer::BuildWindow(Mode mode)
   VtkErrorLog::Instance().Watch(this->Filter);
   this->Filter->SetInputData(this->Mesh);
   this->Filter->SetRenderer(this->MainRenderer);
-  this->Filter->SetTolerance(this->Options.Camera.Tolerance);
+  ApplySmoothingOptions(this->Filter, this->Options.Camera);
   this->Filter->AddObserver(vtkCommand::StartEvent, this, &Viewer::OnFilterStart);
   this->Filter->AddObserver(vtkCommand::EndEvent, this, &Viewer::OnFilterEnd);
 

@@ -1,6 +1,7 @@
 // libFuzzer target for the algorithm core: random meshes (repeated ids,
 // non-manifold fans, inconsistent orientation, zero normals, coordinates from
-// 1e-30 to 1e30) and random views go through the whole smoothing pass, which
+// 1e-30 to 1e30), random feature edges and random views go through the whole
+// smoothing pass, which
 // must not crash, hang, or produce non-finite points, out-of-range ids or
 // triangles that repeat an id.
 #include "SilhouetteSmoother.h"
@@ -84,40 +85,65 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       id = static_cast<Id>(bytes.byte() % pointCount);
     }
   }
-  const PreparedMesh mesh(points, triangles, normals);
-
   ViewGeometry view;
   view.Parallel = bytes.byte() % 4 == 0;
   view.Eye = 3.0 * scale * glm::dvec3(bytes.unit(), bytes.unit(), bytes.unit());
   view.TowardViewer = glm::dvec3(bytes.unit(), bytes.unit(), 1.0 + bytes.unit());
-  view.TowardViewer = glm::length(view.TowardViewer) > 0 ? glm::normalize(view.TowardViewer)
-                                                         : glm::dvec3(0, 0, 1);
+  view.TowardViewer =
+    glm::length(view.TowardViewer) > 0 ? glm::normalize(view.TowardViewer) : glm::dvec3(0, 0, 1);
   view.ViewportWidth = 1 + bytes.byte() * 8;
   view.ViewportHeight = 1 + bytes.byte() * 8;
   const glm::dvec3 target = scale * glm::dvec3(bytes.unit(), bytes.unit(), bytes.unit());
   if (target != view.Eye)
   {
-    const glm::dvec3 up = std::abs(glm::normalize(target - view.Eye).y) < 0.9
-      ? glm::dvec3(0, 1, 0)
-      : glm::dvec3(1, 0, 0);
-    view.ModelToClip = glm::perspective(0.5, 1.0, 1e-3 * scale, 1e3 * scale) *
-      glm::lookAt(view.Eye, target, up);
+    const glm::dvec3 up = std::abs(glm::normalize(target - view.Eye).y) < 0.9 ? glm::dvec3(0, 1, 0)
+                                                                              : glm::dvec3(1, 0, 0);
+    view.ModelToClip =
+      glm::perspective(0.5, 1.0, 1e-3 * scale, 1e3 * scale) * glm::lookAt(view.Eye, target, up);
   }
 
   SmoothingParameters parameters;
   parameters.Sampling.TolerancePixels = 0.1 + (bytes.byte() % 50) / 10.0;
   parameters.Sampling.MaximumSamples = 64;
   parameters.PerturbConcaveSilhouettes = bytes.byte() % 2 == 0;
+
+  // Feature edges last, so that older inputs keep their meaning: none, by a
+  // random dihedral angle, or random pairs (some of them triangle sides,
+  // some not, some repeated or reversed).
+  std::vector<FeatureEdge> features;
+  const int featureMode = bytes.byte() % 3;
+  if (featureMode == 1)
+  {
+    features = featureEdgesByAngle(points, triangles, 180.0 * (bytes.byte() / 255.0));
+  }
+  else if (featureMode == 2)
+  {
+    const int count = bytes.byte() % 32;
+    for (int i = 0; i < count; ++i)
+    {
+      const Triangle& t = triangles[bytes.byte() % triangleCount];
+      const int k = bytes.byte() % 4;
+      features.emplace_back(k < 3 ? t[static_cast<std::size_t>(k)] : bytes.byte() % pointCount,
+        t[static_cast<std::size_t>((k + 1) % 3)]);
+    }
+  }
+  const PreparedMesh mesh(points, triangles, normals, features);
   const SmoothingResult result = smoothSilhouettes(mesh, view, parameters);
 
-  const Id total = static_cast<Id>(pointCount + result.NewPoints.size());
+  const Id prepared = static_cast<Id>(mesh.points().size());
+  require(prepared >= static_cast<Id>(pointCount));
+  for (const glm::dvec3& n : mesh.normals())
+  {
+    require(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z));
+  }
+  const Id total = static_cast<Id>(prepared + result.NewPoints.size());
   for (const NewPoint& p : result.NewPoints)
   {
     require(finite(p.Position) && finite(p.Normal));
   }
   for (const auto& moved : result.MovedPoints)
   {
-    require(moved.first >= 0 && moved.first < static_cast<Id>(pointCount) && finite(moved.second));
+    require(moved.first >= 0 && moved.first < prepared && finite(moved.second));
   }
   require(result.ReplacementOffsets.size() == result.RemeshedTriangles.size() + 1);
   for (const Triangle& t : result.Replacements)

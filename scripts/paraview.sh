@@ -1,0 +1,223 @@
+#!/usr/bin/env bash
+# The ParaView stage (issue 7): builds the ParaView plugin in ParaView/ and runs
+# its pvbatch tests (an image test, and an MPI test on two ranks).
+#
+# Debian's ParaView 5.11 cannot share a system with libvtk9-dev (installing
+# python3-paraview removes it), and the main suite needs libvtk9-dev. So this
+# stage never touches the host's packages: it makes a separate Debian bookworm
+# root with debootstrap, installs ParaView there, bind-mounts this source tree
+# into it read-only, and builds and tests inside it with chroot.
+#
+# The root lives at $SILHOUETTE_PARAVIEW_ROOT (default
+# /var/cache/silhouette-paraview/root, outside the source tree, about 2 GB) and
+# is reused by later runs: a run on a ready root only rebuilds and tests. The
+# build is in /build/paraview inside the root. Remove the root with
+#   bash scripts/paraview.sh --remove-root
+# (it refuses while anything is mounted under it). To work inside the root
+# (the source tree is at /src, read-only; the build at /build/paraview):
+#   bash scripts/paraview.sh --run bash
+# runs a command there with the mounts in place, after making the root.
+#
+# The mirror is the host's: read at run time from its apt configuration.
+# Needs root (or sudo) for debootstrap, mount and chroot.
+set -euo pipefail
+
+here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+root="${SILHOUETTE_PARAVIEW_ROOT:-/var/cache/silhouette-paraview/root}"
+suite=bookworm
+packages=(
+  # ParaView 5.11 and its development files (the CMake package).
+  paraview paraview-dev python3-paraview
+  # paraview-dev's CMake config looks for these Qt 5 packages.
+  qtbase5-dev qttools5-dev libqt5svg5-dev libqt5x11extras5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev
+  qtxmlpatterns5-dev-tools
+  # Our module: a compiler, GLM for the core, OpenSubdiv for vtkOpenSubdivRefiner.
+  cmake make g++ libglm-dev libosd-dev
+  # pvbatch renders through X: a virtual X server. Two ranks: Open MPI (its
+  # development files too: ParaView's VTK finds MPI when it is configured).
+  xvfb xauth openmpi-bin libopenmpi-dev)
+
+log() { echo "paraview: $*"; }
+die() {
+  echo "paraview: FAILED: $*" >&2
+  exit 1
+}
+
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || die "needs root (or sudo) for debootstrap, mount and chroot"
+  exec sudo --preserve-env=SILHOUETTE_PARAVIEW_ROOT bash "$0" "$@"
+fi
+
+# Mounts made by this run, in order; unmounted in reverse on any exit.
+mounts=()
+unmount_all() {
+  local i
+  for ((i = ${#mounts[@]} - 1; i >= 0; i--)); do
+    umount "${mounts[i]}" 2>/dev/null || umount -l "${mounts[i]}" 2>/dev/null ||
+      echo "paraview: could not unmount ${mounts[i]}" >&2
+  done
+  mounts=()
+}
+trap unmount_all EXIT
+trap 'exit 130' INT TERM
+
+mounted_under_root() { findmnt -rn -o TARGET | grep -F -- "$root/" || true; }
+
+if [ "${1:-}" = "--remove-root" ]; then
+  [ -z "$(mounted_under_root)" ] || die "something is mounted under $root: $(mounted_under_root)"
+  rm -rf --one-file-system "$root"
+  log "removed $root"
+  exit 0
+fi
+
+# One run at a time on one root.
+mkdir -p "$(dirname "$root")"
+exec 9>"$root.lock"
+flock 9
+
+# Seconds per step, printed as they end and again at the close.
+timings=()
+step_start() { step_t0=$SECONDS; }
+step_end() {
+  local took=$((SECONDS - step_t0))
+  timings+=("$1: ${took} s")
+  log "$1 took ${took} s"
+}
+
+# The host's Debian mirror, from its apt configuration.
+host_mirror() {
+  local file uri=""
+  for file in /etc/apt/sources.list.d/*.sources; do
+    [ -f "$file" ] || continue
+    uri="$(awk 'tolower($1) == "uris:" { print $2; exit }' "$file")"
+    [ -n "$uri" ] && break
+  done
+  if [ -z "$uri" ] && [ -f /etc/apt/sources.list ]; then
+    uri="$(awk '$1 == "deb" && $0 ~ / '"$suite"' / { for (i = 2; i <= NF; i++) if ($i ~ /:\/\//) { print $i; exit } }' \
+      /etc/apt/sources.list)"
+  fi
+  [ -n "$uri" ] || die "no Debian mirror found in /etc/apt/sources.list.d/*.sources or /etc/apt/sources.list"
+  echo "$uri"
+}
+
+in_root() {
+  chroot "$root" /usr/bin/env -i PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin HOME=/root \
+    LANG=C.UTF-8 DEBIAN_FRONTEND=noninteractive "$@"
+}
+
+# 1. The root.
+step_start
+if [ ! -f "$root/.silhouette-root-complete" ]; then
+  command -v debootstrap >/dev/null || {
+    log "installing debootstrap on the host (nothing else is installed there)"
+    apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends debootstrap >/dev/null
+  }
+  if [ -e "$root" ]; then
+    [ -z "$(mounted_under_root)" ] || die "an unfinished root at $root has mounts in it: $(mounted_under_root)"
+    log "removing an unfinished root at $root"
+    rm -rf --one-file-system "$root"
+  fi
+  mirror="$(host_mirror)"
+  log "creating a $suite root (minbase) at $root"
+  debootstrap --variant=minbase "$suite" "$root" "$mirror" >"$root.debootstrap.log" 2>&1 ||
+    { tail -30 "$root.debootstrap.log" >&2; die "debootstrap failed (log: $root.debootstrap.log)"; }
+  touch "$root/.silhouette-root-complete"
+  step_end "root creation"
+else
+  log "reusing the root at $root"
+  step_end "root check"
+fi
+
+# 2. Mounts: the kernel's file systems, a private /dev/shm (Open MPI's shared
+# memory) and the source tree, read-only.
+[ -z "$(mounted_under_root)" ] || die "something is already mounted under $root: $(mounted_under_root)"
+bind() { # bind SOURCE TARGET [ro]
+  mkdir -p "$2"
+  mount --bind "$1" "$2"
+  mounts+=("$2")
+  mount --make-private "$2"
+  if [ "${3:-}" = ro ]; then
+    mount -o remount,bind,ro "$2"
+  fi
+}
+bind /proc "$root/proc"
+bind /sys "$root/sys" ro
+bind /dev "$root/dev"
+bind /dev/pts "$root/dev/pts"
+mkdir -p "$root/dev/shm"
+mount -t tmpfs -o size=1g,mode=1777 tmpfs "$root/dev/shm"
+mounts+=("$root/dev/shm")
+bind "$here" "$root/src" ro
+# Name resolution for apt, and localhost for Open MPI.
+cp /etc/resolv.conf "$root/etc/resolv.conf" 2>/dev/null || true
+cp /etc/hosts "$root/etc/hosts" 2>/dev/null || true
+
+# 3. Packages, when some are missing. The root's apt uses the host's sources
+# and the host's date checks (a mirror snapshot has an old Release date).
+need=()
+for package in "${packages[@]}"; do
+  if ! in_root dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
+    need+=("$package")
+  fi
+done
+step_start
+if [ "${#need[@]}" -gt 0 ]; then
+  rm -f "$root/etc/apt/sources.list"
+  rm -f "$root"/etc/apt/sources.list.d/*
+  if compgen -G "/etc/apt/sources.list.d/*.sources" >/dev/null; then
+    cp /etc/apt/sources.list.d/*.sources "$root/etc/apt/sources.list.d/"
+  fi
+  if [ -f /etc/apt/sources.list ]; then cp /etc/apt/sources.list "$root/etc/apt/sources.list"; fi
+  apt-config dump | grep -E '^Acquire::(Check-Valid-Until|Check-Date) ' >"$root/etc/apt/apt.conf.d/99host-checks" || true
+  log "installing ${#need[@]} packages in the root: ${need[*]}"
+  in_root apt-get update -qq >"$root.apt.log" 2>&1 || { tail -30 "$root.apt.log" >&2; die "apt-get update failed"; }
+  in_root apt-get install -y -q --no-install-recommends "${need[@]}" >>"$root.apt.log" 2>&1 ||
+    { tail -30 "$root.apt.log" >&2; die "package installation failed (log: $root.apt.log)"; }
+  in_root apt-get clean
+  step_end "package install"
+else
+  step_end "package check"
+fi
+
+if [ "${1:-}" = "--run" ]; then
+  shift
+  set +e
+  in_root "$@"
+  exit $?
+fi
+
+# 4. The plugin.
+step_start
+log "building the plugin in $root/build/paraview"
+mkdir -p "$root/build/paraview"
+in_root cmake -S /src/ParaView -B /build/paraview -DCMAKE_BUILD_TYPE=Release >"$root/build/paraview/configure.log" 2>&1 ||
+  { tail -40 "$root/build/paraview/configure.log" >&2; die "configuring the plugin failed"; }
+in_root cmake --build /build/paraview -j "$(nproc 2>/dev/null || echo 2)" >"$root/build/paraview/build.log" 2>&1 ||
+  { grep -B2 -A8 -m5 'error' "$root/build/paraview/build.log" >&2 || tail -40 "$root/build/paraview/build.log" >&2; die "building the plugin failed"; }
+step_end "plugin build"
+
+# 5. The tests, under a private X server (pvbatch renders through X).
+step_start
+set +e
+in_root xvfb-run -a -s "-screen 0 1280x1024x24" ctest --test-dir /build/paraview --output-on-failure \
+  --repeat until-pass:2 2>&1 | tee "$root/build/paraview/ctest.log"
+status=${PIPESTATUS[0]}
+set -e
+step_end "tests"
+
+total="$(sed -n 's/.* tests failed out of \([0-9][0-9]*\).*/\1/p' "$root/build/paraview/ctest.log" | tail -1)"
+failed="$(sed -n 's/.*, \([0-9][0-9]*\) tests failed out of.*/\1/p' "$root/build/paraview/ctest.log" | tail -1)"
+total="${total:-0}"
+failed="${failed:-0}"
+log "times: $(
+  IFS=';'
+  echo "${timings[*]}"
+)"
+log "test outputs in $root/build/paraview/Testing/Temporary"
+if [ "$status" -ne 0 ] || [ "$total" -eq 0 ]; then
+  [ "$failed" -gt 0 ] || failed=1
+  echo "paraview: $((total - failed < 0 ? 0 : total - failed)) passed, $failed failed"
+  die "the ParaView tests failed (ctest exit $status)"
+fi
+echo "paraview: $total passed, 0 failed"

@@ -104,6 +104,25 @@ std::vector<double> vertexVisibility(
   return g;
 }
 
+const VisibilityHierarchy& PreparedMesh::visibilityHierarchy() const
+{
+  std::call_once(this->Hierarchy->Once,
+    [this] { this->Hierarchy->Hierarchy = VisibilityHierarchy(this->Points, this->Normals); });
+  return this->Hierarchy->Hierarchy;
+}
+
+std::vector<double> vertexVisibility(const PreparedMesh& mesh, const ViewGeometry& view,
+  VisibilityMethod method, const ParallelFor& parallelFor)
+{
+  if (method != VisibilityMethod::Hierarchical)
+  {
+    return vertexVisibility(mesh, view, parallelFor);
+  }
+  std::vector<double> g;
+  mesh.visibilityHierarchy().classify(view, g, parallelFor);
+  return g;
+}
+
 namespace
 {
 
@@ -135,7 +154,7 @@ public:
 
   SmoothingResult run()
   {
-    this->G = vertexVisibility(this->Mesh, this->View, this->For);
+    this->G = vertexVisibility(this->Mesh, this->View, this->Parameters.Visibility, this->For);
     this->findSilhouetteTriangles();
     this->computeSilhouettePoints();
     std::vector<std::vector<Id>> segments;
@@ -218,8 +237,11 @@ private:
       const VisibilityQuadratic h =
         visibilityAlongEdge(normals[lo], this->View.towardViewerFrom(points[lo]), normals[hi],
           this->View.towardViewerFrom(points[hi]));
-      const double u = std::clamp(silhouetteParameter(h, this->G[lo], this->G[hi]),
-        EdgeParameterMargin, 1.0 - EdgeParameterMargin);
+      // G holds only signs for hierarchically decided vertices: the values here.
+      const double u =
+        std::clamp(silhouetteParameter(h, this->View.visibility(points[lo], normals[lo]),
+                     this->View.visibility(points[hi], normals[hi])),
+          EdgeParameterMargin, 1.0 - EdgeParameterMargin);
       const HermiteCurve bridge =
         makeCircleApproximatingCurve(points[lo], normals[lo], points[hi], normals[hi]);
       NewPoint p;

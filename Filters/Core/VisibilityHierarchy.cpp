@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <utility>
 
 namespace silsmooth
@@ -134,15 +133,24 @@ VisibilityHierarchy::VisibilityHierarchy(
   }
 }
 
-void VisibilityHierarchy::buildTree(Tree& tree, std::vector<glm::dvec4>& vectors)
+void VisibilityHierarchy::buildTree(Tree& tree, const std::vector<glm::dvec4>& vectors)
 {
   const std::size_t n = vectors.size();
   if (n == 0)
   {
     return;
   }
-  std::vector<std::uint32_t> perm(n);
-  std::iota(perm.begin(), perm.end(), 0u);
+  // The vectors travel with their slot through the splits (sequential memory).
+  struct Item
+  {
+    glm::dvec4 U;
+    std::uint32_t Slot;
+  };
+  std::vector<Item> items(n);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    items[k] = { vectors[k], static_cast<std::uint32_t>(k) };
+  }
   tree.Nodes.clear();
   tree.Nodes.emplace_back();
   tree.Nodes[0].Begin = 0;
@@ -153,28 +161,12 @@ void VisibilityHierarchy::buildTree(Tree& tree, std::vector<glm::dvec4>& vectors
     const std::uint32_t begin = tree.Nodes[index].Begin;
     const std::uint32_t end = tree.Nodes[index].End;
 
-    // The bounding cone: the mean direction, and the largest angle from it.
-    glm::dvec4 sum(0.0);
-    glm::dvec4 low = vectors[perm[begin]];
+    glm::dvec4 low = items[begin].U;
     glm::dvec4 high = low;
     for (std::uint32_t k = begin; k < end; ++k)
     {
-      const glm::dvec4& u = vectors[perm[k]];
-      sum += u;
-      low = glm::min(low, u);
-      high = glm::max(high, u);
-    }
-    const double sumLength = std::sqrt(glm::dot(sum, sum));
-    if (sumLength > 1e-9 * (end - begin))
-    {
-      const glm::dvec4 axis = sum / sumLength;
-      double halfAngle = 0.0;
-      for (std::uint32_t k = begin; k < end; ++k)
-      {
-        halfAngle = std::max(halfAngle, angleBetween(axis, vectors[perm[k]]));
-      }
-      tree.Nodes[index].Axis = axis;
-      tree.Nodes[index].HalfAngle = halfAngle;
+      low = glm::min(low, items[k].U);
+      high = glm::max(high, items[k].U);
     }
 
     // Split at the median of the widest coordinate, unless small or flat.
@@ -192,8 +184,8 @@ void VisibilityHierarchy::buildTree(Tree& tree, std::vector<glm::dvec4>& vectors
       continue;
     }
     const std::uint32_t middle = begin + (end - begin) / 2;
-    std::nth_element(perm.begin() + begin, perm.begin() + middle, perm.begin() + end,
-      [&](std::uint32_t a, std::uint32_t b) { return vectors[a][dim] < vectors[b][dim]; });
+    std::nth_element(items.begin() + begin, items.begin() + middle, items.begin() + end,
+      [dim](const Item& a, const Item& b) { return a.U[dim] < b.U[dim]; });
     const std::int32_t first = static_cast<std::int32_t>(tree.Nodes.size());
     tree.Nodes[index].FirstChild = first;
     Node left;
@@ -206,6 +198,52 @@ void VisibilityHierarchy::buildTree(Tree& tree, std::vector<glm::dvec4>& vectors
     tree.Nodes.push_back(right);
     depth.push_back(depth[index] + 1);
     depth.push_back(depth[index] + 1);
+  }
+
+  // Bounding cones, bottom-up (children follow their parent): the axis is the
+  // mean direction. A leaf's half-angle is the largest angle to a member; a
+  // parent's bounds the children's cones (angles obey the triangle
+  // inequality on the sphere), looser than from the members but linear time.
+  std::vector<glm::dvec4> sums(tree.Nodes.size(), glm::dvec4(0.0));
+  for (std::size_t index = tree.Nodes.size(); index-- > 0;)
+  {
+    Node& node = tree.Nodes[index];
+    const bool leaf = node.FirstChild < 0;
+    const std::size_t first = static_cast<std::size_t>(node.FirstChild);
+    if (leaf)
+    {
+      for (std::uint32_t k = node.Begin; k < node.End; ++k)
+      {
+        sums[index] += items[k].U;
+      }
+    }
+    else
+    {
+      sums[index] = sums[first] + sums[first + 1];
+    }
+    const double sumLength = std::sqrt(glm::dot(sums[index], sums[index]));
+    if (!(sumLength > 1e-9 * (node.End - node.Begin)))
+    {
+      continue; // no useful axis: never decided (HalfAngle stays > pi)
+    }
+    node.Axis = sums[index] / sumLength;
+    double halfAngle = 0.0;
+    if (leaf)
+    {
+      for (std::uint32_t k = node.Begin; k < node.End; ++k)
+      {
+        halfAngle = std::max(halfAngle, angleBetween(node.Axis, items[k].U));
+      }
+    }
+    else
+    {
+      for (std::size_t c = first; c < first + 2; ++c)
+      {
+        halfAngle = std::max(
+          halfAngle, angleBetween(node.Axis, tree.Nodes[c].Axis) + tree.Nodes[c].HalfAngle);
+      }
+    }
+    node.HalfAngle = halfAngle;
   }
 
   // Nodes are in breadth-first order: the tasks are the nodes at TaskDepth
@@ -224,11 +262,12 @@ void VisibilityHierarchy::buildTree(Tree& tree, std::vector<glm::dvec4>& vectors
   std::vector<glm::dvec3> points(tree.Points.empty() ? 0 : n);
   for (std::size_t k = 0; k < n; ++k)
   {
-    order[k] = tree.Order[perm[k]];
-    normals[k] = tree.Normals[perm[k]];
+    const std::uint32_t slot = items[k].Slot;
+    order[k] = tree.Order[slot];
+    normals[k] = tree.Normals[slot];
     if (!points.empty())
     {
-      points[k] = tree.Points[perm[k]];
+      points[k] = tree.Points[slot];
     }
   }
   tree.Order = std::move(order);

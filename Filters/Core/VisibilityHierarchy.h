@@ -99,7 +99,7 @@ private:
     std::vector<glm::dvec3> Normals;
   };
 
-  static void buildTree(Tree& tree, std::vector<glm::dvec4>& vectors);
+  static void buildTree(Tree& tree, const std::vector<glm::dvec4>& vectors);
   static void classifySubtree(const Tree& tree, std::int32_t root, const ViewGeometry& view,
     const glm::dvec4& query, double* g, Statistics& statistics);
 

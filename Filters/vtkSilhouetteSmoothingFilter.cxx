@@ -648,6 +648,9 @@ int vtkSilhouetteSmoothingFilter::RequestData(
 
   silsmooth::SmoothingParameters parameters;
   parameters.PerturbConcaveSilhouettes = this->PerturbVertices;
+  parameters.Visibility = this->VisibilityMethod == HIERARCHICAL
+    ? silsmooth::VisibilityMethod::Hierarchical
+    : silsmooth::VisibilityMethod::PerVertex;
   silsmooth::SamplingParameters& sampling = parameters.Sampling;
   sampling.TolerancePixels = this->Tolerance;
   sampling.MinimumSamples = this->MinimumSamples;
@@ -712,4 +715,6 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PerturbVertices: " << (this->PerturbVertices ? "On" : "Off") << "\n";
   os << indent << "SamplingRule: "
      << (this->SamplingRule == SECOND_DIFFERENCE ? "SecondDifference" : "WangEquation8") << "\n";
+  os << indent << "VisibilityMethod: "
+     << (this->VisibilityMethod == HIERARCHICAL ? "Hierarchical" : "PerVertex") << "\n";
 }

@@ -11,7 +11,8 @@
 // agree: the corner test is not conservative. Here every cluster is a node of
 // a binary tree (median splits of the unit vectors along their widest
 // coordinate) bounded by a cone: unit axis A and half-angle T such that every
-// member is within T of A. For a unit query Q at angle a from A, all members
+// member is within T of A (leaves measure T from their members, parents bound
+// their children's cones). For a unit query Q at angle a from A, all members
 // are visible when a + T < pi/2 - margin and all invisible when
 // a - T > pi/2 + margin; otherwise the children decide, and leaves evaluate
 // each vertex exactly.
@@ -19,7 +20,7 @@
 // Exactness: classify() makes bitwise the same decisions as
 // ViewGeometry::visibility() >= 0. Undecided vertices get exactly that value.
 // A vertex in a decided cluster gets +1 or -1, and a decision is only taken
-// when the true g is at least about 3e-8 |N| |E - V| away from zero, nine
+// when the true g is at least about 3.7e-8 |N| |E - V| away from zero, nine
 // orders of magnitude beyond the rounding of the direct dot product, so the
 // direct evaluation has the same sign. For conditioning, the perspective
 // vectors are built in coordinates centred on the bounding box and scaled by
@@ -49,9 +50,11 @@ public:
     std::function<void(std::size_t, const std::function<void(std::size_t, std::size_t)>&)>;
 
   VisibilityHierarchy() = default;
-  /// `normals` holds one normal per point (unit ones give the best clusters;
-  /// any length is handled exactly). Sizes must match; extra entries of the
-  /// longer one are ignored.
+  /// `normals` holds one normal per point (any length is handled exactly;
+  /// they are compared as directions). A point without a normal (normals
+  /// shorter than points) counts as having a zero one; extra normals are
+  /// ignored. Keeps copies of the points and normals in tree order (about
+  /// 80 bytes a vertex with the nodes), so the caller's arrays may go.
   VisibilityHierarchy(
     const std::vector<glm::dvec3>& points, const std::vector<glm::dvec3>& normals);
 

@@ -169,6 +169,25 @@ std::vector<double> vertexVisibility(
   return g;
 }
 
+const VisibilityHierarchy& PreparedMesh::visibilityHierarchy() const
+{
+  std::call_once(this->Hierarchy->Once,
+    [this] { this->Hierarchy->Hierarchy = VisibilityHierarchy(this->Points, this->Normals); });
+  return this->Hierarchy->Hierarchy;
+}
+
+std::vector<double> vertexVisibility(const PreparedMesh& mesh, const ViewGeometry& view,
+  VisibilityMethod method, const ParallelFor& parallelFor)
+{
+  if (method != VisibilityMethod::Hierarchical)
+  {
+    return vertexVisibility(mesh, view, parallelFor);
+  }
+  std::vector<double> g;
+  mesh.visibilityHierarchy().classify(view, g, parallelFor);
+  return g;
+}
+
 namespace
 {
 
@@ -210,7 +229,7 @@ public:
 
   SmoothingResult run()
   {
-    this->G = vertexVisibility(this->Mesh, this->View, this->For);
+    this->G = vertexVisibility(this->Mesh, this->View, this->Parameters.Visibility, this->For);
     this->findSilhouetteTriangles();
     this->computeSilhouettePoints();
     this->countFeatureSamples();
@@ -332,8 +351,11 @@ private:
       const std::size_t b = lowFirst ? hi : lo;
       const VisibilityQuadratic h = visibilityAlongEdge(normals[a],
         this->View.towardViewerFrom(points[a]), normals[b], this->View.towardViewerFrom(points[b]));
-      const double t = std::clamp(silhouetteParameter(h, this->G[a], this->G[b]),
-        EdgeParameterMargin, 1.0 - EdgeParameterMargin);
+      // G holds only signs for hierarchically decided vertices: the values here.
+      const double t =
+        std::clamp(silhouetteParameter(h, this->View.visibility(points[a], normals[a]),
+                     this->View.visibility(points[b], normals[b])),
+          EdgeParameterMargin, 1.0 - EdgeParameterMargin);
       NewPoint p;
       const Id feature = this->Mesh.edgeFeature(e);
       if (feature >= 0)

@@ -387,6 +387,11 @@ private:
       this->Result.NewPoints.push_back(p);
       this->EdgePoints.push_back(sp);
     }
+    // By feature edge, for featureSamples().
+    std::sort(this->FeatureSilhouettePoints.begin(), this->FeatureSilhouettePoints.end(),
+      [](const FeatureSilhouettePoint& x, const FeatureSilhouettePoint& y) {
+        return x.Feature != y.Feature ? x.Feature < y.Feature : x.Edge < y.Edge;
+      });
   }
 
   // Points per smoothed feature segment in this view (both ends counted), by
@@ -576,11 +581,16 @@ private:
     {
       parameters.push_back(static_cast<double>(i) / (samples - 1));
     }
-    for (const FeatureSilhouettePoint& other : this->FeatureSilhouettePoints)
+    const auto onFeature = std::equal_range(this->FeatureSilhouettePoints.begin(),
+      this->FeatureSilhouettePoints.end(), FeatureSilhouettePoint{ f, -1, 0.0 },
+      [](const FeatureSilhouettePoint& x, const FeatureSilhouettePoint& y) {
+        return x.Feature < y.Feature;
+      });
+    for (auto other = onFeature.first; other != onFeature.second; ++other)
     {
-      if (other.Feature == f && other.Edge != e)
+      if (other->Edge != e)
       {
-        parameters.push_back(other.Along);
+        parameters.push_back(other->Along);
       }
     }
     std::vector<std::pair<double, Id>> points;

@@ -690,6 +690,9 @@ int vtkSilhouetteSmoothingFilter::RequestData(
 
   silsmooth::SmoothingParameters parameters;
   parameters.PerturbConcaveSilhouettes = this->PerturbVertices;
+  parameters.Visibility = this->VisibilityMethod == HIERARCHICAL
+    ? silsmooth::VisibilityMethod::Hierarchical
+    : silsmooth::VisibilityMethod::PerVertex;
   silsmooth::SamplingParameters& sampling = parameters.Sampling;
   sampling.TolerancePixels = this->Tolerance;
   sampling.MinimumSamples = this->MinimumSamples;
@@ -763,4 +766,6 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "SamplingRule: "
      << (this->SamplingRule == SECOND_DIFFERENCE ? "SecondDifference" : "WangEquation8") << "\n";
+  os << indent << "VisibilityMethod: "
+     << (this->VisibilityMethod == HIERARCHICAL ? "Hierarchical" : "PerVertex") << "\n";
 }

@@ -169,6 +169,25 @@ std::vector<double> vertexVisibility(
   return g;
 }
 
+const VisibilityHierarchy& PreparedMesh::visibilityHierarchy() const
+{
+  std::call_once(this->Hierarchy->Once,
+    [this] { this->Hierarchy->Hierarchy = VisibilityHierarchy(this->Points, this->Normals); });
+  return this->Hierarchy->Hierarchy;
+}
+
+std::vector<double> vertexVisibility(const PreparedMesh& mesh, const ViewGeometry& view,
+  VisibilityMethod method, const ParallelFor& parallelFor)
+{
+  if (method != VisibilityMethod::Hierarchical)
+  {
+    return vertexVisibility(mesh, view, parallelFor);
+  }
+  std::vector<double> g;
+  mesh.visibilityHierarchy().classify(view, g, parallelFor);
+  return g;
+}
+
 namespace
 {
 
@@ -210,7 +229,7 @@ public:
 
   SmoothingResult run()
   {
-    this->G = vertexVisibility(this->Mesh, this->View, this->For);
+    this->G = vertexVisibility(this->Mesh, this->View, this->Parameters.Visibility, this->For);
     this->findSilhouetteTriangles();
     this->computeSilhouettePoints();
     this->countFeatureSamples();
@@ -322,32 +341,43 @@ private:
       const Edge& edge = edges.edge(e);
       const std::size_t lo = static_cast<std::size_t>(edge.low);
       const std::size_t hi = static_cast<std::size_t>(edge.high);
-      const VisibilityQuadratic h =
-        visibilityAlongEdge(normals[lo], this->View.towardViewerFrom(points[lo]), normals[hi],
-          this->View.towardViewerFrom(points[hi]));
-      const double u = std::clamp(silhouetteParameter(h, this->G[lo], this->G[hi]),
-        EdgeParameterMargin, 1.0 - EdgeParameterMargin);
+      // Walked from the end with the smaller position (x, then y, then z; the
+      // id only for coincident ends), not the smaller id: then the point comes
+      // out bit for bit the same in every piece of a partitioned mesh (the
+      // ids differ between pieces), and pieces meet without a crack.
+      const bool lowFirst = std::make_tuple(points[lo].x, points[lo].y, points[lo].z, lo) <
+        std::make_tuple(points[hi].x, points[hi].y, points[hi].z, hi);
+      const std::size_t a = lowFirst ? lo : hi;
+      const std::size_t b = lowFirst ? hi : lo;
+      const VisibilityQuadratic h = visibilityAlongEdge(normals[a],
+        this->View.towardViewerFrom(points[a]), normals[b], this->View.towardViewerFrom(points[b]));
+      // G holds only signs for hierarchically decided vertices: the values here.
+      const double t =
+        std::clamp(silhouetteParameter(h, this->View.visibility(points[a], normals[a]),
+                     this->View.visibility(points[b], normals[b])),
+          EdgeParameterMargin, 1.0 - EdgeParameterMargin);
       NewPoint p;
       const Id feature = this->Mesh.edgeFeature(e);
       if (feature >= 0)
       {
-        const bool forward =
-          this->Mesh.sourcePoint(edge.low) == this->Mesh.features().edges()[feature].first;
-        const double along = forward ? u : 1.0 - u;
+        const bool forward = this->Mesh.sourcePoint(static_cast<Id>(a)) ==
+          this->Mesh.features().edges()[feature].first;
+        const double along = forward ? t : 1.0 - t;
         p.Position = this->Mesh.features().curve(feature).evaluate(along);
         this->FeatureSilhouettePoints.push_back({ feature, e, along });
       }
       else
       {
-        p.Position = makeCircleApproximatingCurve(points[lo], normals[lo], points[hi], normals[hi])
-                       .evaluate(u);
+        p.Position =
+          makeCircleApproximatingCurve(points[a], normals[a], points[b], normals[b]).evaluate(t);
       }
-      p.Normal = safeNormalize((1.0 - u) * normals[lo] + u * normals[hi]);
+      p.Normal = safeNormalize((1.0 - t) * normals[a] + t * normals[b]);
       if (p.Normal == glm::dvec3(0.0))
       {
         // Opposite normals at the ends: no interpolated direction exists.
-        p.Normal = u < 0.5 ? normals[lo] : normals[hi];
+        p.Normal = t < 0.5 ? normals[a] : normals[b];
       }
+      const double u = lowFirst ? t : 1.0 - t; // from the low id to the high id
       p.Sources = { edge.low, edge.high, edge.high };
       p.Weights = { 1.0 - u, u, 0.0 };
       EdgeSilhouettePoint sp;
@@ -357,6 +387,11 @@ private:
       this->Result.NewPoints.push_back(p);
       this->EdgePoints.push_back(sp);
     }
+    // By feature edge, for featureSamples().
+    std::sort(this->FeatureSilhouettePoints.begin(), this->FeatureSilhouettePoints.end(),
+      [](const FeatureSilhouettePoint& x, const FeatureSilhouettePoint& y) {
+        return x.Feature != y.Feature ? x.Feature < y.Feature : x.Edge < y.Edge;
+      });
   }
 
   // Points per smoothed feature segment in this view (both ends counted), by
@@ -546,11 +581,16 @@ private:
     {
       parameters.push_back(static_cast<double>(i) / (samples - 1));
     }
-    for (const FeatureSilhouettePoint& other : this->FeatureSilhouettePoints)
+    const auto onFeature = std::equal_range(this->FeatureSilhouettePoints.begin(),
+      this->FeatureSilhouettePoints.end(), FeatureSilhouettePoint{ f, -1, 0.0 },
+      [](const FeatureSilhouettePoint& x, const FeatureSilhouettePoint& y) {
+        return x.Feature < y.Feature;
+      });
+    for (auto other = onFeature.first; other != onFeature.second; ++other)
     {
-      if (other.Feature == f && other.Edge != e)
+      if (other->Edge != e)
       {
-        parameters.push_back(other.Along);
+        parameters.push_back(other->Along);
       }
     }
     std::vector<std::pair<double, Id>> points;

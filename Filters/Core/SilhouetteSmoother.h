@@ -13,11 +13,14 @@
 #include "FeatureCurves.h"
 #include "MeshTopology.h"
 #include "ViewGeometry.h"
+#include "VisibilityHierarchy.h"
 
 #include <glm/vec3.hpp>
 
 #include <array>
 #include <functional>
+#include <memory>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -75,6 +78,9 @@ public:
   /// neighbours()[neighbourOffsets()[v] .. neighbourOffsets()[v + 1]).
   const std::vector<Id>& neighbourOffsets() const { return this->NeighbourOffsets; }
   const std::vector<Id>& neighbours() const { return this->Neighbours; }
+  /// The clustering for VisibilityMethod::Hierarchical, built on first use
+  /// (thread-safe); copies of the mesh share it.
+  const VisibilityHierarchy& visibilityHierarchy() const;
 
 private:
   std::vector<glm::dvec3> Points;
@@ -89,6 +95,22 @@ private:
   std::vector<Id> FeatureTriangles;
   std::vector<Id> NeighbourOffsets;
   std::vector<Id> Neighbours;
+  struct LazyHierarchy
+  {
+    std::once_flag Once;
+    VisibilityHierarchy Hierarchy;
+  };
+  std::shared_ptr<LazyHierarchy> Hierarchy = std::make_shared<LazyHierarchy>();
+};
+
+/// How the pass finds the vertices facing the viewer (paper III-B). Both make
+/// bitwise the same decisions, so the output does not depend on the choice.
+enum class VisibilityMethod
+{
+  /// g = N . (E - V) at every vertex: one dot product each.
+  PerVertex,
+  /// Clusters of vertices decided by one cone test (VisibilityHierarchy.h).
+  Hierarchical
 };
 
 struct SmoothingParameters
@@ -97,6 +119,7 @@ struct SmoothingParameters
   /// Lower the vertices around concave silhouette segments so that the
   /// smoothed curve is not blocked (see VertexPerturbation.h).
   bool PerturbConcaveSilhouettes = true;
+  VisibilityMethod Visibility = VisibilityMethod::PerVertex;
 };
 
 /// A point the pass adds. Its other attributes (texture coordinates, scalars)
@@ -165,6 +188,10 @@ SmoothingResult smoothSilhouettes(const PreparedMesh& mesh, const ViewGeometry& 
 /// The visibility value g of every point (parallel over points).
 std::vector<double> vertexVisibility(
   const PreparedMesh& mesh, const ViewGeometry& view, const ParallelFor& parallelFor = serialFor);
+/// The same decisions by either method; with Hierarchical, vertices of
+/// decided clusters hold +1 or -1 instead of g (the sign is what counts).
+std::vector<double> vertexVisibility(const PreparedMesh& mesh, const ViewGeometry& view,
+  VisibilityMethod method, const ParallelFor& parallelFor = serialFor);
 
 /// Convenience for tests and tools: all output triangles, in input order with
 /// each re-meshed triangle replaced in place, and per triangle the input

@@ -4,6 +4,9 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+#include <cmath>
 #include <map>
 #include <random>
 #include <utility>
@@ -186,4 +189,143 @@ TEST(SilhouetteSmoother, ZeroNormalsAndEyeOnTheSurface)
       std::isfinite(p.Position.x) && std::isfinite(p.Position.y) && std::isfinite(p.Position.z));
   }
   EXPECT_EQ(check(mesh, onSurface).Unpaired, 0);
+}
+
+namespace
+{
+
+// A UV sphere with exact normals: `rings` latitude bands, `sectors` around.
+void uvSphere(int rings, int sectors, std::vector<glm::dvec3>& points, std::vector<Triangle>& tris)
+{
+  const double pi = 3.14159265358979323846;
+  points.clear();
+  tris.clear();
+  points.emplace_back(0, 0, 1);
+  for (int r = 1; r < rings; ++r)
+  {
+    const double theta = pi * r / rings;
+    for (int s = 0; s < sectors; ++s)
+    {
+      const double phi = 2.0 * pi * s / sectors + 0.1 * r;
+      points.emplace_back(
+        std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+    }
+  }
+  points.emplace_back(0, 0, -1);
+  const Id south = static_cast<Id>(points.size() - 1);
+  auto ring = [sectors](int r, int s) {
+    return static_cast<Id>(1 + (r - 1) * sectors + s % sectors);
+  };
+  for (int s = 0; s < sectors; ++s)
+  {
+    tris.push_back({ 0, ring(1, s), ring(1, s + 1) });
+    tris.push_back({ south, ring(rings - 1, s + 1), ring(rings - 1, s) });
+    for (int r = 1; r + 1 < rings; ++r)
+    {
+      tris.push_back({ ring(r, s), ring(r + 1, s), ring(r + 1, s + 1) });
+      tris.push_back({ ring(r, s), ring(r + 1, s + 1), ring(r, s + 1) });
+    }
+  }
+}
+
+} // namespace
+
+// A mesh cut into two pieces, each with its own point numbering (the second
+// reversed), with the whole mesh's normals: the pieces' outputs together are
+// the whole output, crack-free where the pieces meet (the silhouette points
+// on the cut come out bit for bit the same on both sides).
+TEST(SilhouetteSmoother, PiecesMeetWithoutCracks)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  uvSphere(9, 14, points, triangles);
+  const PreparedMesh whole(points, triangles, points);
+
+  // Piece k holds the triangles whose centroid has the sign k of x + 0.3 y.
+  std::vector<PreparedMesh> pieces;
+  for (int k = 0; k < 2; ++k)
+  {
+    std::map<Id, Id> local;
+    std::vector<Triangle> own;
+    for (const Triangle& t : triangles)
+    {
+      const glm::dvec3 c = points[t[0]] + points[t[1]] + points[t[2]];
+      if ((c.x + 0.3 * c.y > 0.0) == (k == 0))
+      {
+        own.push_back(t);
+        for (const Id v : t)
+        {
+          local.emplace(v, 0);
+        }
+      }
+    }
+    std::vector<Id> order;
+    for (const auto& entry : local)
+    {
+      order.push_back(entry.first);
+    }
+    if (k == 1)
+    {
+      std::reverse(order.begin(), order.end());
+    }
+    std::vector<glm::dvec3> piecePoints;
+    for (std::size_t i = 0; i < order.size(); ++i)
+    {
+      local[order[i]] = static_cast<Id>(i);
+      piecePoints.push_back(points[order[i]]);
+    }
+    for (Triangle& t : own)
+    {
+      for (Id& v : t)
+      {
+        v = local[v];
+      }
+    }
+    pieces.emplace_back(piecePoints, own, piecePoints);
+  }
+
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> gauss;
+  for (int i = 0; i < 200; ++i)
+  {
+    const glm::dvec3 direction = glm::normalize(glm::dvec3(gauss(rng), gauss(rng), gauss(rng)));
+    const ViewGeometry view = perspectiveFrom(direction * (1.5 + i % 4));
+    std::size_t wholeCount = 0;
+    std::map<std::pair<std::array<double, 3>, std::array<double, 3>>, int> directed;
+    auto add = [&](const PreparedMesh& mesh, bool count) {
+      const SmoothingResult result = smoothSilhouettes(mesh, view, SmoothingParameters{});
+      std::vector<Triangle> out;
+      std::vector<Id> source;
+      std::vector<unsigned char> isNew;
+      assembleTriangles(mesh, result, out, source, isNew);
+      const std::size_t n = mesh.points().size();
+      auto at = [&](Id id) {
+        const glm::dvec3 p = static_cast<std::size_t>(id) < n
+          ? mesh.points()[static_cast<std::size_t>(id)]
+          : result.NewPoints[static_cast<std::size_t>(id) - n].Position;
+        return std::array<double, 3>{ { p.x, p.y, p.z } };
+      };
+      if (count)
+      {
+        wholeCount = out.size();
+        return std::size_t{ 0 };
+      }
+      for (const Triangle& t : out)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          ++directed[{ at(t[k]), at(t[(k + 1) % 3]) }];
+        }
+      }
+      return out.size();
+    };
+    add(whole, true);
+    const std::size_t pieceCount = add(pieces[0], false) + add(pieces[1], false);
+    ASSERT_EQ(pieceCount, wholeCount) << "view " << i;
+    for (const auto& [edge, uses] : directed)
+    {
+      ASSERT_EQ(uses, 1);
+      ASSERT_EQ(directed.count({ edge.second, edge.first }), 1u) << "a crack, view " << i;
+    }
+  }
 }

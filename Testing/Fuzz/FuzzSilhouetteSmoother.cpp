@@ -128,7 +128,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     }
   }
   const PreparedMesh mesh(points, triangles, normals, features);
+  parameters.Visibility =
+    bytes.byte() % 2 == 0 ? VisibilityMethod::PerVertex : VisibilityMethod::Hierarchical;
   const SmoothingResult result = smoothSilhouettes(mesh, view, parameters);
+
+  // Both visibility methods decide alike, vertex by vertex.
+  const std::vector<double> plain = vertexVisibility(mesh, view, VisibilityMethod::PerVertex);
+  const std::vector<double> clustered =
+    vertexVisibility(mesh, view, VisibilityMethod::Hierarchical);
+  require(plain.size() == clustered.size());
+  for (std::size_t i = 0; i < plain.size(); ++i)
+  {
+    require((plain[i] >= 0.0) == (clustered[i] >= 0.0));
+  }
 
   const Id prepared = static_cast<Id>(mesh.points().size());
   require(prepared >= static_cast<Id>(pointCount));

@@ -1,0 +1,118 @@
+"""The Python package (issue 7): every class of the module imports beside
+Debian's vtkmodules and works in a pipeline with VTK's own classes; errors
+reach Python as VTK errors; the README's example runs and draws the bunny.
+
+    PYTHONPATH=<build>/lib/python3.11/dist-packages python3 TestSilhouetteSmoothing.py DATA_DIR
+"""
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.vtkRenderingCore import vtkCamera
+
+import silhouette_smoothing
+from silhouette_smoothing import (vtkIcosphereSource, vtkOpenSubdivRefiner,
+                                  vtkSilhouetteSmoothingFilter, vtkTorusSurfaceSource)
+
+DATA = sys.argv.pop(1) if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), "..",
+                                                                 "..", "Data")
+EXAMPLE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "Examples",
+                       "Python", "smooth_and_render.py")
+
+
+def field(mesh, name):
+    return mesh.GetFieldData().GetArray(name).GetValue(0)
+
+
+class SilhouetteSmoothingTest(unittest.TestCase):
+    def test_package(self):
+        self.assertEqual(silhouette_smoothing.__version__.count("."), 2)
+        for cls in (vtkIcosphereSource, vtkOpenSubdivRefiner, vtkSilhouetteSmoothingFilter,
+                    vtkTorusSurfaceSource):
+            self.assertTrue(cls().IsA("vtkAlgorithm"), cls.__name__)
+
+    def test_sphere_silhouette_is_the_exact_circle(self):
+        # 80 triangles on the unit sphere with exact normals, eye at distance
+        # about 5: the exact contour is seen at the angle asin(1 / d) from the
+        # line of sight to the centre; 1e-3 rad is 1.4 px at 1024 x 768.
+        sphere = vtkIcosphereSource()
+        sphere.SetSubdivisionLevel(1)
+        camera = vtkCamera()
+        camera.SetPosition(0.3, 0.4, 5.0)
+        camera.SetFocalPoint(0.0, 0.0, 0.0)
+        eye = camera.GetPosition()
+        distance = math.sqrt(sum(c * c for c in eye))
+        exact = math.asin(1.0 / distance)
+        smoother = vtkSilhouetteSmoothingFilter()
+        smoother.SetInputConnection(sphere.GetOutputPort())
+        smoother.SetCamera(camera)
+        smoother.Update()
+        out = smoother.GetOutput()
+        self.assertEqual(field(out, "InputTriangleCount"), 80)
+        self.assertGreater(field(out, "SilhouetteTriangleCount"), 0)
+        self.assertEqual(out.GetNumberOfPolys(), field(out, "OutputTriangleCount"))
+        kinds = out.GetCellData().GetArray("NewGeometry")
+        self.assertEqual(set(int(kinds.GetValue(i)) for i in range(kinds.GetNumberOfTuples())),
+                         {0, 1})
+        lines = smoother.GetSilhouetteOutput()
+        self.assertGreater(lines.GetNumberOfPoints(), 20)
+
+        def angle_from_axis(x):
+            ray = [a - b for a, b in zip(x, eye)]
+            cosine = -sum(a * b for a, b in zip(ray, eye)) / (
+                math.sqrt(sum(a * a for a in ray)) * distance)
+            return math.acos(max(-1.0, min(1.0, cosine)))
+
+        worst = max(abs(angle_from_axis(lines.GetPoint(i)) - exact)
+                    for i in range(lines.GetNumberOfPoints()))
+        print("sphere silhouette: %d points, at most %.2e rad from the exact contour"
+              % (lines.GetNumberOfPoints(), worst))
+        self.assertLess(worst, 1e-3)
+
+    def test_refiner_and_torus(self):
+        torus = vtkTorusSurfaceSource()
+        refiner = vtkOpenSubdivRefiner()
+        refiner.SetInputConnection(torus.GetOutputPort())
+        refiner.SetLevel(1)
+        refiner.Update()
+        torus.Update()
+        self.assertEqual(refiner.GetOutput().GetNumberOfPolys(),
+                         4 * torus.GetOutput().GetNumberOfPolys())
+
+    def test_missing_camera_is_a_vtk_error(self):
+        errors = []
+        sphere = vtkIcosphereSource()  # kept: a port does not keep its producer alive
+        smoother = vtkSilhouetteSmoothingFilter()
+        smoother.SetInputConnection(sphere.GetOutputPort())
+        smoother.AddObserver(vtkCommand.ErrorEvent, lambda caller, event: errors.append(event))
+        self.assertEqual(smoother.GetExecutive().Update(), 0)
+        self.assertTrue(errors)
+        self.assertEqual(smoother.GetOutput().GetNumberOfPoints(), 0)
+
+    def test_readme_example_draws_the_bunny(self):
+        with tempfile.TemporaryDirectory() as folder:
+            image = os.path.join(folder, "bunny.png")
+            result = subprocess.run([sys.executable, EXAMPLE,
+                                     os.path.join(DATA, "bunny_coarse.ply"), image],
+                                    capture_output=True, text=True, check=False)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            self.assertIn("silhouette triangles:", result.stdout)
+            reader = vtkPNGReader()
+            reader.SetFileName(image)
+            reader.Update()
+            pixels = reader.GetOutput().GetPointData().GetScalars()
+            covered = sum(1 for i in range(pixels.GetNumberOfTuples())
+                          if pixels.GetTuple(i)[:3] != (255.0, 255.0, 255.0))
+            fraction = covered / pixels.GetNumberOfTuples()
+            print("example image: %.1f%% of the pixels show the bunny" % (100.0 * fraction))
+            self.assertGreater(fraction, 0.1)
+            self.assertLess(fraction, 0.6)
+
+
+if __name__ == "__main__":
+    unittest.main(verbosity=2)

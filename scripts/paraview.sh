@@ -26,16 +26,16 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 root="${SILHOUETTE_PARAVIEW_ROOT:-/var/cache/silhouette-paraview/root}"
 suite=bookworm
 packages=(
-  # ParaView 5.11 and its development files (the CMake package).
+  # ParaView 5.11 and its development files (its CMake package).
   paraview paraview-dev python3-paraview
-  # paraview-dev's CMake config looks for these Qt 5 packages.
-  qtbase5-dev qttools5-dev libqt5svg5-dev libqt5x11extras5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev
-  qtxmlpatterns5-dev-tools
+  # What paraview-dev's CMake package looks for when a plugin asks for the
+  # few components it needs (ParaView/CMakeLists.txt). Qt is not among them:
+  # a plugin with no GUI part needs no Qt development packages.
+  libopenmpi-dev libdouble-conversion-dev liblzma-dev liblz4-dev libutfcpp-dev zlib1g-dev libexpat1-dev
   # Our module: a compiler, GLM for the core, OpenSubdiv for vtkOpenSubdivRefiner.
   cmake make g++ libglm-dev libosd-dev
-  # pvbatch renders through X: a virtual X server. Two ranks: Open MPI (its
-  # development files too: ParaView's VTK finds MPI when it is configured).
-  xvfb xauth openmpi-bin libopenmpi-dev)
+  # pvbatch renders through X: a virtual X server. Two ranks: Open MPI.
+  xvfb xauth openmpi-bin)
 
 log() { echo "paraview: $*"; }
 die() {

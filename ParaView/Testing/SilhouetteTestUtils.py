@@ -44,3 +44,14 @@ def field_value(polydata, name):
 def triangle_count(polydata):
     cells = polydata.GetPolys()
     return cells.GetNumberOfCells() if cells is not None else 0
+
+
+def finish(failures):
+    """Prints the verdict; on failures, raises: pvbatch 5.11 then exits with
+    code 1, where sys.exit with a non-zero code after rendering crashes it
+    (SIGSEGV) and os._exit loses the captured output."""
+    for failure in failures:
+        print("FAILED: " + failure)
+    if failures:
+        raise RuntimeError("%d check(s) failed" % len(failures))
+    print("passed")

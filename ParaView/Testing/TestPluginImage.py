@@ -9,7 +9,7 @@ from paraview import simple, servermanager
 from vtkmodules.vtkImagingCore import vtkImageDifference
 from vtkmodules.vtkIOImage import vtkPNGReader
 
-from SilhouetteTestUtils import copy_camera, field_value, load_plugin, setting, triangle_count
+from SilhouetteTestUtils import copy_camera, field_value, finish, load_plugin, setting, triangle_count
 
 SilhouetteSmoothing = load_plugin()
 simple._DisableFirstRenderCameraReset()
@@ -86,12 +86,12 @@ else:
     difference.SetImageConnection(readers[1].GetOutputPort())
     difference.Update()
     error = difference.GetThresholdedError()
-    print("image difference: %.3f (limit 10)" % error)
-    if error > 10.0:
+    # llvmpipe under Xvfb renders this identically run after run (0.000); the
+    # same scene with the 3,674-triangle bunny instead of the coarse one
+    # scores 2.9, so 1 catches a changed result and leaves room for noise.
+    limit = 1.0
+    print("image difference: %.3f (limit %g)" % (error, limit))
+    if error > limit:
         failures.append("the image differs from %s by %.3f" % (baseline, error))
 
-if failures:
-    for failure in failures:
-        print("FAILED: " + failure)
-    sys.exit(1)
-print("passed")
+finish(failures)

@@ -18,7 +18,7 @@ from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
-from SilhouetteTestUtils import copy_camera, field_value, load_plugin, setting, triangle_count
+from SilhouetteTestUtils import copy_camera, field_value, finish, load_plugin, setting, triangle_count
 
 ranks = vtkMultiProcessController.GetGlobalController().GetNumberOfProcesses()
 print("ranks: %d" % ranks)
@@ -240,8 +240,4 @@ if sum(perturbed["pieces"]) != perturbed["whole"]:
     failures.append("with perturbation, triangle counts differ: pieces %d, whole %d"
         % (sum(perturbed["pieces"]), perturbed["whole"]))
 
-if failures:
-    for failure in failures:
-        print("FAILED: " + failure)
-    sys.exit(1)
-print("passed")
+finish(failures)

@@ -84,19 +84,24 @@ step_end() {
   log "$1 took ${took} s"
 }
 
-# The host's Debian mirror, from its apt configuration.
+# The host's Debian mirror, from its apt configuration: the URI of the first
+# deb822 stanza (or one-line entry) that serves the suite itself.
 host_mirror() {
-  local file uri=""
-  for file in /etc/apt/sources.list.d/*.sources; do
-    [ -f "$file" ] || continue
-    uri="$(awk 'tolower($1) == "uris:" { print $2; exit }' "$file")"
-    [ -n "$uri" ] && break
-  done
+  local uri=""
+  if compgen -G "/etc/apt/sources.list.d/*.sources" >/dev/null; then
+    uri="$(awk -v suite="$suite" '
+      function check() { if (uris != "" && (" " suites " ") ~ (" " suite " ") && types ~ /(^| )deb( |$)/) { print uris; exit } }
+      /^[ \t]*$/ { check(); uris = suites = types = ""; next }
+      tolower($1) == "uris:" { uris = $2 }
+      tolower($1) == "suites:" { $1 = ""; suites = $0 }
+      tolower($1) == "types:" { $1 = ""; types = $0 }
+      END { check() }' /etc/apt/sources.list.d/*.sources)"
+  fi
   if [ -z "$uri" ] && [ -f /etc/apt/sources.list ]; then
-    uri="$(awk '$1 == "deb" && $0 ~ / '"$suite"' / { for (i = 2; i <= NF; i++) if ($i ~ /:\/\//) { print $i; exit } }' \
+    uri="$(awk -v suite="$suite" '$1 == "deb" { for (i = 2; i < NF; i++) if ($i ~ /:\/\// && $(i + 1) == suite) { print $i; exit } }' \
       /etc/apt/sources.list)"
   fi
-  [ -n "$uri" ] || die "no Debian mirror found in /etc/apt/sources.list.d/*.sources or /etc/apt/sources.list"
+  [ -n "$uri" ] || die "no Debian $suite mirror found in /etc/apt/sources.list.d/*.sources or /etc/apt/sources.list"
   echo "$uri"
 }
 
@@ -130,8 +135,17 @@ else
 fi
 
 # 2. Mounts: the kernel's file systems, a private /dev/shm (Open MPI's shared
-# memory) and the source tree, read-only.
-[ -z "$(mounted_under_root)" ] || die "something is already mounted under $root: $(mounted_under_root)"
+# memory) and the source tree, read-only. Mounts left by a run that was
+# killed (we hold the lock, so no run is using them) are undone first,
+# deepest first.
+stale="$(mounted_under_root)"
+if [ -n "$stale" ]; then
+  log "undoing mounts left by an earlier run: $(echo $stale)"
+  while read -r target; do
+    umount "$target" 2>/dev/null || umount -l "$target"
+  done < <(echo "$stale" | awk '{ print length($0) " " $0 }' | sort -rn | cut -d' ' -f2-)
+  [ -z "$(mounted_under_root)" ] || die "could not undo the mounts under $root: $(mounted_under_root)"
+fi
 bind() { # bind SOURCE TARGET [ro]
   mkdir -p "$2"
   mount --bind "$1" "$2"

@@ -63,17 +63,18 @@ trap 'exit 130' INT TERM
 
 mounted_under_root() { findmnt -rn -o TARGET | grep -F -- "$root/" || true; }
 
-if [ "${1:-}" = "--remove-root" ]; then
-  [ -z "$(mounted_under_root)" ] || die "something is mounted under $root: $(mounted_under_root)"
-  rm -rf --one-file-system "$root"
-  log "removed $root"
-  exit 0
-fi
-
 # One run at a time on one root.
 mkdir -p "$(dirname "$root")"
 exec 9>"$root.lock"
 flock 9
+
+if [ "${1:-}" = "--remove-root" ]; then
+  [ -z "$(mounted_under_root)" ] || die "something is mounted under $root: $(mounted_under_root)"
+  rm -rf --one-file-system "$root"
+  rm -f "$root.debootstrap.log" "$root.apt.log"
+  log "removed $root"
+  exit 0
+fi
 
 # Seconds per step, printed as they end and again at the close.
 timings=()
@@ -140,7 +141,7 @@ fi
 # deepest first.
 stale="$(mounted_under_root)"
 if [ -n "$stale" ]; then
-  log "undoing mounts left by an earlier run: $(echo $stale)"
+  log "undoing mounts left by an earlier run: ${stale//$'\n'/ }"
   while read -r target; do
     umount "$target" 2>/dev/null || umount -l "$target"
   done < <(echo "$stale" | awk '{ print length($0) " " $0 }' | sort -rn | cut -d' ' -f2-)
@@ -171,6 +172,7 @@ cp /etc/hosts "$root/etc/hosts" 2>/dev/null || true
 # and the host's date checks (a mirror snapshot has an old Release date).
 need=()
 for package in "${packages[@]}"; do
+  # shellcheck disable=SC2016 # dpkg-query's own format, not the shell's
   if ! in_root dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed"; then
     need+=("$package")
   fi
@@ -224,10 +226,12 @@ total="$(sed -n 's/.* tests failed out of \([0-9][0-9]*\).*/\1/p' "$root/build/p
 failed="$(sed -n 's/.*, \([0-9][0-9]*\) tests failed out of.*/\1/p' "$root/build/paraview/ctest.log" | tail -1)"
 total="${total:-0}"
 failed="${failed:-0}"
-log "times: $(
-  IFS=';'
-  echo "${timings[*]}"
-)"
+# The tests' own figures (ctest shows a passing test's output only in its log).
+grep -hE '^(input triangles|output triangles|silhouette|image difference|ranks|PerturbVertices|  [a-z])' \
+  "$root/build/paraview/Testing/Temporary/LastTest.log" 2>/dev/null | sed 's/^/paraview:   /' || true
+summary=""
+for timing in "${timings[@]}"; do summary+="${summary:+, }$timing"; done
+log "times: $summary"
 log "test outputs in $root/build/paraview/Testing/Temporary"
 if [ "$status" -ne 0 ] || [ "$total" -eq 0 ]; then
   [ "$failed" -gt 0 ] || failed=1

@@ -91,7 +91,9 @@ host_mirror() {
   local uri=""
   if compgen -G "/etc/apt/sources.list.d/*.sources" >/dev/null; then
     uri="$(awk -v suite="$suite" '
-      function check() { if (uris != "" && (" " suites " ") ~ (" " suite " ") && types ~ /(^| )deb( |$)/) { print uris; exit } }
+      function check() {
+        if (!done && uris != "" && (" " suites " ") ~ (" " suite " ") && types ~ /(^| )deb( |$)/) { print uris; done = 1; exit }
+      }
       /^[ \t]*$/ { check(); uris = suites = types = ""; next }
       tolower($1) == "uris:" { uris = $2 }
       tolower($1) == "suites:" { $1 = ""; suites = $0 }
@@ -125,9 +127,22 @@ if [ ! -f "$root/.silhouette-root-complete" ]; then
     rm -rf --one-file-system "$root"
   fi
   mirror="$(host_mirror)"
+  [[ "$mirror" =~ ^[a-z+]+://[^[:space:]]+$ ]] || die "not one mirror URI: '$mirror'"
   log "creating a $suite root (minbase) at $root"
-  debootstrap --variant=minbase "$suite" "$root" "$mirror" >"$root.debootstrap.log" 2>&1 ||
-    { tail -30 "$root.debootstrap.log" >&2; die "debootstrap failed (log: $root.debootstrap.log)"; }
+  # Up to three tries: a mirror can fail one request now and then.
+  for attempt in 1 2 3; do
+    if debootstrap --variant=minbase "$suite" "$root" "$mirror" >"$root.debootstrap.log" 2>&1; then
+      break
+    fi
+    [ -z "$(mounted_under_root)" ] || die "debootstrap failed and left mounts under $root: $(mounted_under_root)"
+    rm -rf --one-file-system "$root"
+    if [ "$attempt" -eq 3 ]; then
+      tail -30 "$root.debootstrap.log" >&2
+      die "debootstrap failed three times (log: $root.debootstrap.log)"
+    fi
+    log "debootstrap failed (try $attempt of 3), trying again in 10 s"
+    sleep 10
+  done
   touch "$root/.silhouette-root-complete"
   step_end "root creation"
 else
@@ -187,8 +202,8 @@ if [ "${#need[@]}" -gt 0 ]; then
   if [ -f /etc/apt/sources.list ]; then cp /etc/apt/sources.list "$root/etc/apt/sources.list"; fi
   apt-config dump | grep -E '^Acquire::(Check-Valid-Until|Check-Date) ' >"$root/etc/apt/apt.conf.d/99host-checks" || true
   log "installing ${#need[@]} packages in the root: ${need[*]}"
-  in_root apt-get update -qq >"$root.apt.log" 2>&1 || { tail -30 "$root.apt.log" >&2; die "apt-get update failed"; }
-  in_root apt-get install -y -q --no-install-recommends "${need[@]}" >>"$root.apt.log" 2>&1 ||
+  in_root apt-get -o Acquire::Retries=3 update -qq >"$root.apt.log" 2>&1 || { tail -30 "$root.apt.log" >&2; die "apt-get update failed"; }
+  in_root apt-get -o Acquire::Retries=3 install -y -q --no-install-recommends "${need[@]}" >>"$root.apt.log" 2>&1 ||
     { tail -30 "$root.apt.log" >&2; die "package installation failed (log: $root.apt.log)"; }
   in_root apt-get clean
   step_end "package install"

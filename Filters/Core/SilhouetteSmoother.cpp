@@ -64,6 +64,26 @@ PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle>
     }
   }
   this->Edges = EdgeTable(this->Triangles);
+  {
+    std::vector<int> uses(this->Edges.edgeCount(), 0);
+    for (std::size_t t = 0; t < this->Triangles.size(); ++t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        ++uses[static_cast<std::size_t>(this->Edges.sideEdge(static_cast<Id>(t), k))];
+      }
+    }
+    this->OnBoundary.assign(this->Points.size(), 0);
+    for (std::size_t e = 0; e < uses.size(); ++e)
+    {
+      if (uses[e] == 1)
+      {
+        const Edge& edge = this->Edges.edge(static_cast<Id>(e));
+        this->OnBoundary[static_cast<std::size_t>(edge.low)] = 1;
+        this->OnBoundary[static_cast<std::size_t>(edge.high)] = 1;
+      }
+    }
+  }
   if (!this->Features.empty())
   {
     this->EdgeFeatures.resize(this->Edges.edgeCount());
@@ -270,11 +290,14 @@ public:
         this->Mesh.points(), this->Mesh.normals(), this->Mesh.triangles(),
         this->Mesh.neighbourOffsets(), this->Mesh.neighbours());
       // A feature point has a copy on the other side of its crease that
-      // does not move with it: moving one would open the crease.
+      // does not move with it: moving one would open the crease. A point on
+      // a boundary may be on a seam whose other side is another piece of
+      // the mesh, which cannot know about the move.
       auto& moved = this->Result.MovedPoints;
-      moved.erase(
-        std::remove_if(moved.begin(), moved.end(),
-          [this](const std::pair<Id, glm::dvec3>& m) { return this->Mesh.onFeature(m.first); }),
+      moved.erase(std::remove_if(moved.begin(), moved.end(),
+                    [this](const std::pair<Id, glm::dvec3>& m) {
+                      return this->Mesh.onFeature(m.first) || this->Mesh.onBoundary(m.first);
+                    }),
         moved.end());
       this->keepOutputFacingOut();
     }

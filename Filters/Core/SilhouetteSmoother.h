@@ -65,6 +65,11 @@ public:
   {
     return !this->OnFeature.empty() && this->OnFeature[static_cast<std::size_t>(p)] != 0;
   }
+  /// Whether prepared point p lies on a boundary edge (an edge of one
+  /// triangle): the edge of an open mesh, or a seam where a partitioned mesh
+  /// was cut. Such points are never moved by the perturbation, so pieces
+  /// still meet.
+  bool onBoundary(Id p) const { return this->OnBoundary[static_cast<std::size_t>(p)] != 0; }
   const FeatureCurves& features() const { return this->Features; }
   /// The feature edge (index into features()) that edge e lies on, or -1.
   Id edgeFeature(Id e) const
@@ -90,6 +95,7 @@ private:
   std::size_t InputPointCount = 0;
   std::vector<Id> CopySources;
   std::vector<unsigned char> OnFeature;
+  std::vector<unsigned char> OnBoundary;
   FeatureCurves Features;
   std::vector<Id> EdgeFeatures;
   std::vector<Id> FeatureTriangles;

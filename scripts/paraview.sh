@@ -16,7 +16,8 @@
 # (it refuses while anything is mounted under it). To work inside the root
 # (the source tree is at /src, read-only; the build at /build/paraview):
 #   bash scripts/paraview.sh --run bash
-# runs a command there with the mounts in place, after making the root.
+# runs a command there with the mounts in place, after making the root (give
+# xvfb-run there a display number of your own, -n 300 say, rather than -a).
 #
 # The mirror is the host's: read at run time from its apt configuration.
 # Needs root (or sudo) for debootstrap, mount and chroot.
@@ -228,10 +229,25 @@ in_root cmake --build /build/paraview -j "$(nproc 2>/dev/null || echo 2)" >"$roo
   { grep -B2 -A8 -m5 'error' "$root/build/paraview/build.log" >&2 || tail -40 "$root/build/paraview/build.log" >&2; die "building the plugin failed"; }
 step_end "plugin build"
 
-# 5. The tests, under a private X server (pvbatch renders through X).
+# 5. The tests, under a private X server (pvbatch renders through X). Its
+# display number is chosen here, not by xvfb-run -a inside the root: the root
+# cannot see the host's X lock files, but shares its abstract X sockets, so
+# it would pick :99 where the host's own xvfb-run may already serve.
+free_display() {
+  local n
+  for n in $(seq 200 999); do
+    if [ ! -e "/tmp/.X$n-lock" ] && [ ! -e "$root/tmp/.X$n-lock" ] &&
+      ! grep -q "/tmp/.X11-unix/X$n\$" /proc/net/unix 2>/dev/null; then
+      echo "$n"
+      return
+    fi
+  done
+  die "no free X display number between 200 and 999"
+}
+display="$(free_display)"
 step_start
 set +e
-in_root xvfb-run -a -s "-screen 0 1280x1024x24" ctest --test-dir /build/paraview --output-on-failure \
+in_root xvfb-run -n "$display" -s "-screen 0 1280x1024x24" ctest --test-dir /build/paraview --output-on-failure \
   --repeat until-pass:2 2>&1 | tee "$root/build/paraview/ctest.log"
 status=${PIPESTATUS[0]}
 set -e

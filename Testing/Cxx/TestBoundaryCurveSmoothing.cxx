@@ -11,11 +11,15 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkExecutive.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkPNTriangleFilter.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkTestErrorObserver.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "SilhouetteTestSupport.h"
@@ -23,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace
 {
@@ -147,10 +152,56 @@ bool MeasureSphere(int level, Accuracy& result)
   return true;
 }
 
+// Awkward input: empty in, empty out; a missing camera and cells naming
+// missing points are errors (for both baseline filters where they apply).
+bool CheckAwkwardInput()
+{
+  vtkNew<vtkPolyData> empty;
+  vtkNew<vtkCamera> camera;
+  vtkNew<vtkBoundaryCurveSmoothingFilter> curves;
+  curves->SetInputData(empty);
+  curves->SetCamera(camera);
+  curves->Update();
+  CHECK(curves->GetOutput()->GetNumberOfPoints() == 0, "empty in, empty out");
+
+  vtkNew<vtkPolyData> bad;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  bad->SetPoints(points);
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType ids[3] = { 0, 1, 7 };
+  polys->InsertNextCell(3, ids);
+  bad->SetPolys(polys);
+  vtkNew<vtkTest::ErrorObserver> errors;
+  vtkNew<vtkTest::ErrorObserver> executiveErrors;
+  vtkNew<vtkPNTriangleFilter> pn;
+  pn->AddObserver(vtkCommand::ErrorEvent, errors);
+  pn->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executiveErrors);
+  pn->SetInputData(bad);
+  pn->Update();
+  CHECK(errors->GetError() &&
+      errors->GetErrorMessage().find("points that do not exist") != std::string::npos,
+    "PN: cells naming missing points are an error");
+  errors->Clear();
+  vtkNew<vtkBoundaryCurveSmoothingFilter> noCamera;
+  noCamera->AddObserver(vtkCommand::ErrorEvent, errors);
+  noCamera->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executiveErrors);
+  noCamera->SetInputData(silhouette_test::Icosphere(1));
+  noCamera->Update();
+  CHECK(errors->GetError() && errors->GetErrorMessage().find("No camera") != std::string::npos,
+    "2003: a missing camera is an error");
+  return true;
+}
+
 } // namespace
 
 int TestBoundaryCurveSmoothing(int, char*[])
 {
+  if (!CheckAwkwardInput())
+  {
+    return 1;
+  }
   // The curves interpolate the projected vertices of the silhouette edges,
   // which zigzag inside the contour on a coarse mesh: the method is only as
   // near the contour as those vertices, and converges as the mesh is refined.

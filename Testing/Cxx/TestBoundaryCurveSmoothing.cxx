@@ -194,11 +194,73 @@ bool CheckAwkwardInput()
   return true;
 }
 
+// Parallel projection: the contour of the unit sphere is the circle of radius
+// 1 about the centre; the curves must come nearer it than the straight edges.
+bool CheckParallel()
+{
+  auto sphere = silhouette_test::Icosphere(2);
+  vtkNew<vtkBoundaryCurveSmoothingFilter> filter;
+  filter->SetInputData(sphere);
+  filter->SetViewportSize(1024, 1024);
+  const double scale = 1.3; // half the viewport height in model units
+  const double pixels = 512.0 / scale;
+  double curveSum = 0.0;
+  double edgeSum = 0.0;
+  long curveCount = 0;
+  long edgeCount = 0;
+  for (const auto& direction : silhouette_test::SphereDirections(12))
+  {
+    auto camera = silhouette_test::CameraLookingAtOrigin(direction, 4.0);
+    camera->ParallelProjectionOn();
+    camera->SetParallelScale(scale);
+    filter->SetCamera(camera);
+    filter->Update();
+    CHECK(silhouette_test::AnalyzeTopology(filter->GetOutput()).closedManifold(),
+      "closed manifold in parallel projection");
+    double d[3] = { direction[0], direction[1], direction[2] };
+    vtkMath::Normalize(d);
+    auto offContour = [&](const double p[3]) {
+      const double along = vtkMath::Dot(p, d);
+      return std::abs(std::sqrt(std::max(0.0, vtkMath::Dot(p, p) - along * along)) - 1.0) * pixels;
+    };
+    vtkPolyData* lines = filter->GetSilhouetteOutput();
+    auto it = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType n = 0;
+      const vtkIdType* ids = nullptr;
+      it->GetCurrentCell(n, ids);
+      double a[3];
+      double b[3];
+      lines->GetPoint(ids[0], a);
+      lines->GetPoint(ids[n - 1], b);
+      for (vtkIdType k = 0; k < n; ++k)
+      {
+        double p[3];
+        lines->GetPoint(ids[k], p);
+        curveSum += offContour(p);
+        ++curveCount;
+        const double u = static_cast<double>(k) / (n - 1);
+        const double q[3] = { (1 - u) * a[0] + u * b[0], (1 - u) * a[1] + u * b[1],
+          (1 - u) * a[2] + u * b[2] };
+        edgeSum += offContour(q);
+        ++edgeCount;
+      }
+    }
+  }
+  std::printf("parallel projection, 320-triangle sphere, 12 views: curves %.2f px, straight edges "
+              "%.2f px from the contour on average\n",
+    curveSum / curveCount, edgeSum / edgeCount);
+  CHECK(curveCount > 0 && curveSum / curveCount < edgeSum / edgeCount,
+    "parallel: the curves are nearer the contour than the edges");
+  return true;
+}
+
 } // namespace
 
 int TestBoundaryCurveSmoothing(int, char*[])
 {
-  if (!CheckAwkwardInput())
+  if (!CheckAwkwardInput() || !CheckParallel())
   {
     return 1;
   }

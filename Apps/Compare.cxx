@@ -64,7 +64,15 @@ std::string JsonVariant(const VariantFigures& v)
       << ", \"exact_max_px\": " << Fixed(v.MaxExact, 3);
   }
   s << ", \"filter_ms\": " << Fixed(v.FilterMilliseconds, 3)
-    << ", \"frame_ms\": " << Fixed(v.FrameMilliseconds, 3) << "}";
+    << ", \"frame_ms\": " << Fixed(v.FrameMilliseconds, 3);
+  if (v.CoherenceMean >= 0)
+  {
+    s << ", \"coherence_mean_px\": " << Fixed(v.CoherenceMean, 3)
+      << ", \"coherence_max_px\": " << Fixed(v.CoherenceMax, 3)
+      << ", \"coherence_ratio_to_fine\": " << Fixed(v.CoherenceRatio, 3)
+      << ", \"coherence_excess_px\": " << Fixed(v.CoherenceExcess, 3);
+  }
+  s << "}";
   return s.str();
 }
 
@@ -85,7 +93,26 @@ void PrintText(const ModelComparison& c, const CompareOptions& options)
   };
   row("coarse", c.Coarse, false);
   row("coarse+smoothing", c.Smoothed, true);
+  row("wang 2003", c.Wang2003, true);
+  row(("PN triangles k=" + std::to_string(c.PNLevel)).c_str(), c.PN, true);
   row(("fine (Loop " + std::to_string(options.FineLevel) + ")").c_str(), c.Fine, false);
+  std::cout << "  (PN triangles: the level k >= 1 whose count is nearest coarse+smoothing's; its "
+               "filter ms is the one-off tessellation)\n";
+  if (c.Fine.CoherenceMean >= 0)
+  {
+    std::cout << "  coherence over " << options.Frames
+              << " 1-degree steps, outline change per step (px): mean, largest, mean over fine's, "
+                 "largest excess over fine's in the same step:\n";
+    auto coherence = [](const char* name, const VariantFigures& v) {
+      std::printf(
+        "  %-18s %10.3f %10.3f %10.2f\n", name, v.CoherenceMean, v.CoherenceMax, v.CoherenceRatio);
+    };
+    coherence("coarse", c.Coarse);
+    coherence("coarse+smoothing", c.Smoothed);
+    coherence("wang 2003", c.Wang2003);
+    coherence("PN triangles", c.PN);
+    coherence("fine", c.Fine);
+  }
   std::cout << "  deviation, smoothed / coarse: " << Fixed(DeviationRatio(c), 2)
             << " (target <= 0.33: " << (DeviationRatio(c) <= TargetRatio ? "met" : "MISSED")
             << ")\n"
@@ -132,10 +159,75 @@ void PrintMarkdown(const std::vector<ModelComparison>& results, const CompareOpt
       }
     }
   }
+  std::cout
+    << "\n| model | triangles: ours / Wang 2003 / PN (k) | deviation from fine, mean / max px: "
+       "ours | Wang 2003 | PN | frame ms: ours / Wang 2003 / PN | filter ms: ours / Wang "
+       "2003 / PN (once) |\n|---|---:|---:|---:|---:|---:|---:|\n";
+  for (const ModelComparison& c : results)
+  {
+    std::cout << "| " << c.Name << " | " << Fixed(c.Smoothed.Triangles, 0) << " / "
+              << Fixed(c.Wang2003.Triangles, 0) << " / " << Fixed(c.PN.Triangles, 0) << " ("
+              << c.PNLevel << ") | " << Fixed(c.Smoothed.MeanDeviation, 2) << " / "
+              << Fixed(c.Smoothed.MaxDeviation, 1) << " | " << Fixed(c.Wang2003.MeanDeviation, 2)
+              << " / " << Fixed(c.Wang2003.MaxDeviation, 1) << " | " << Fixed(c.PN.MeanDeviation, 2)
+              << " / " << Fixed(c.PN.MaxDeviation, 1) << " | "
+              << Fixed(c.Smoothed.FrameMilliseconds, 1) << " / "
+              << Fixed(c.Wang2003.FrameMilliseconds, 1) << " / " << Fixed(c.PN.FrameMilliseconds, 1)
+              << " | " << Fixed(c.Smoothed.FilterMilliseconds, 2) << " / "
+              << Fixed(c.Wang2003.FilterMilliseconds, 2) << " / "
+              << Fixed(c.PN.FilterMilliseconds, 2) << " |\n";
+  }
+  if (anyExact)
+  {
+    std::cout << "\n| model | distance to the exact silhouette, mean / max px: ours | Wang 2003 | "
+                 "PN |\n|---|---:|---:|---:|\n";
+    for (const ModelComparison& c : results)
+    {
+      if (c.Coarse.MeanExact >= 0)
+      {
+        std::cout << "| " << c.Name << " | " << Fixed(c.Smoothed.MeanExact, 2) << " / "
+                  << Fixed(c.Smoothed.MaxExact, 1) << " | " << Fixed(c.Wang2003.MeanExact, 2)
+                  << " / " << Fixed(c.Wang2003.MaxExact, 1) << " | " << Fixed(c.PN.MeanExact, 2)
+                  << " / " << Fixed(c.PN.MaxExact, 1) << " |\n";
+      }
+    }
+  }
+  bool anyCoherence = false;
+  for (const ModelComparison& c : results)
+  {
+    anyCoherence = anyCoherence || c.Fine.CoherenceMean >= 0;
+  }
+  if (anyCoherence)
+  {
+    std::cout << "\n| model | outline change per 1-degree step, mean / largest px: coarse | ours | "
+                 "Wang 2003 | PN | fine | mean over fine's: ours | Wang 2003 | PN | largest excess "
+                 "over fine's step, px: ours | Wang 2003 | PN |\n"
+                 "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+    for (const ModelComparison& c : results)
+    {
+      std::cout << "| " << c.Name;
+      for (const VariantFigures* v : { &c.Coarse, &c.Smoothed, &c.Wang2003, &c.PN, &c.Fine })
+      {
+        std::cout << " | " << Fixed(v->CoherenceMean, 2) << " / " << Fixed(v->CoherenceMax, 1);
+      }
+      for (const VariantFigures* v : { &c.Smoothed, &c.Wang2003, &c.PN })
+      {
+        std::cout << " | " << Fixed(v->CoherenceRatio, 2);
+      }
+      for (const VariantFigures* v : { &c.Smoothed, &c.Wang2003, &c.PN })
+      {
+        std::cout << " | " << Fixed(v->CoherenceExcess, 1);
+      }
+      std::cout << " |\n";
+    }
+  }
   std::cout << "\n"
             << options.Views << " views, " << options.Frames << " timed orbit frames, "
             << options.ViewportSize[0] << "x" << options.ViewportSize[1] << ", tolerance "
-            << options.Tolerance << " px, fine = Loop level " << options.FineLevel << ".\n";
+            << options.Tolerance << " px, fine = Loop level " << options.FineLevel
+            << "; Wang 2003 at the same tolerance; PN at the level k >= 1 whose triangle count is "
+               "nearest ours; coherence over "
+            << options.Frames << " 1-degree steps.\n";
 }
 
 } // namespace
@@ -163,6 +255,7 @@ void RunCompare(const CompareOptions& options)
   comparison.Height = options.ViewportSize[1];
   comparison.Views = options.Views;
   comparison.TimedFrames = options.Frames;
+  comparison.CoherenceSteps = options.Frames;
   comparison.Tolerance = options.Tolerance;
   comparison.Progress = [](const std::string& line) {
     std::cerr << "compare: " << line << std::endl;
@@ -225,7 +318,8 @@ void RunCompare(const CompareOptions& options)
                 << ", \"silhouette_triangles\": " << Fixed(c.SilhouetteTriangles, 1)
                 << ", \"coarse\": " << JsonVariant(c.Coarse)
                 << ", \"smoothed\": " << JsonVariant(c.Smoothed)
-                << ", \"fine\": " << JsonVariant(c.Fine)
+                << ", \"wang2003\": " << JsonVariant(c.Wang2003) << ", \"pn_level\": " << c.PNLevel
+                << ", \"pn\": " << JsonVariant(c.PN) << ", \"fine\": " << JsonVariant(c.Fine)
                 << ", \"deviation_ratio\": " << Fixed(DeviationRatio(c), 3)
                 << ", \"frame_ratio\": " << Fixed(FrameRatio(c), 3) << "}";
     }
@@ -238,16 +332,31 @@ std::string CompareHelp()
   return R"(Usage: silhouette compare MODEL|MESH|all ... [options]
 
 Xing's evaluation with numbers: for each input, a coarse version (quadric
-decimation of the original), the coarse version with silhouette smoothing,
+decimation of the original), the coarse version with silhouette smoothing
+(Wang et al. 2008, this project), the coarse version with the methods the
+2008 paper compares with -- Wang et al. 2003 boundary-curve interpolation
+(same tolerance) and PN triangles (Vlachos et al. 2001) at the level k >= 1
+whose triangle count, coarse x (k+1)^2, is nearest the smoothed mesh's --
 and a fine reference (OpenSubdiv Loop refinement of the original, projected
 to the limit surface) are rendered from the same cameras. For each it prints
 the triangles rendered, the distance of its outline to the fine reference's
 outline (pixels; every boundary pixel of each mask measured to the other's
 boundary with a Euclidean distance transform, mean over the views and max),
-and the whole-frame time (camera move, filter when smoothing, render to
-completion; median over an orbit). For the sphere and the torus it also
-prints the distance to the exact silhouette (the exact circle for the
-sphere, a 518,400-triangle torus rendering for the torus).
+and the whole-frame time (camera move, filter when view-dependent, render
+to completion; median over an orbit). 'filter ms' is per frame for the
+view-dependent methods and the one-off tessellation for PN triangles. For
+the sphere and the torus it also prints the distance to the exact
+silhouette (the exact circle for the sphere, a 518,400-triangle torus
+rendering for the torus).
+Temporal coherence: from the first view the camera turns in --frames steps
+of 1 degree; for each variant, each step compares the outline with its
+outline one step before (both ways, by distance transform). It prints the
+mean distance of a step averaged over the steps (how far the outline
+moves), the largest distance in any step (the worst local jump), the
+first over the fine reference's (1: the outline moves as the smooth
+surface's does; more: it jumps about), and the largest amount by which a
+step's largest distance exceeds the fine reference's in the same step (a
+jump the smooth surface did not make).
 Targets: smoothed deviation at most 1/3 of the coarse one, and smoothed
 frame time at most 1/3 of the fine one; each line says whether they are met.
 Progress goes to stderr. Where there is no X display it renders through
@@ -263,13 +372,16 @@ Options:
                         (default 3)
   --views N             camera positions for the deviations (default 12)
   --frames N            timed orbit frames per variant, at least 30 for the
-                        README's figures (default 30)
+                        README's figures, and the number of 1-degree steps
+                        of the coherence orbit (default 30)
   --size WxH            image size (default 1024x768)
-  --tolerance PX        the filter's Tolerance (default 0.5)
+  --tolerance PX        the filters' Tolerance, ours and Wang 2003's
+                        (default 0.5)
   --data DIR            the folder that holds bunny.ply (default: the
                         project's Data/ folder)
   --json                one JSON array, an object per model
-  --markdown            the README's tables
+  --markdown            the README's tables (the earlier methods and the
+                        coherence in tables of their own)
 )" + RenderBackendHelp(24) +
     R"(  -h, --help            show this help and exit
 )";

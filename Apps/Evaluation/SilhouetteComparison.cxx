@@ -3,11 +3,13 @@
 #include "SilhouetteMasks.h"
 
 #include "vtkActor.h"
+#include "vtkBoundaryCurveSmoothingFilter.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
+#include "vtkPNTriangleFilter.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -17,6 +19,7 @@
 #include "vtkTorusSurfaceSource.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <tuple>
@@ -95,18 +98,45 @@ OrbitTimer::OrbitTimer(const ComparisonOptions& options)
 
 OrbitTimer::~OrbitTimer() = default;
 
-FrameTiming OrbitTimer::Time(vtkPolyData* mesh, bool smoothing)
+int NearestPNLevel(double triangles, double target)
+{
+  int best = 1;
+  for (int k = 2; k <= 16; ++k)
+  {
+    if (std::abs(triangles * (k + 1) * (k + 1) - target) <
+      std::abs(triangles * (best + 1) * (best + 1) - target))
+    {
+      best = k;
+    }
+  }
+  return best;
+}
+
+FrameTiming OrbitTimer::Time(vtkPolyData* mesh, FrameFilter filter)
 {
   vtkRenderer* renderer = this->Renderer;
   renderer->RemoveAllViewProps();
   vtkNew<vtkPolyDataMapper> mapper;
   vtkNew<vtkSilhouetteSmoothingFilter> smoother;
-  if (smoothing)
+  vtkNew<vtkBoundaryCurveSmoothingFilter> curves;
+  vtkPolyDataAlgorithm* running = nullptr;
+  if (filter == FrameFilter::Smoothing2008)
   {
     smoother->SetInputData(mesh);
     smoother->SetRenderer(renderer);
     smoother->SetTolerance(this->Options.Tolerance);
-    mapper->SetInputConnection(smoother->GetOutputPort());
+    running = smoother;
+  }
+  else if (filter == FrameFilter::BoundaryCurves2003)
+  {
+    curves->SetInputData(mesh);
+    curves->SetRenderer(renderer);
+    curves->SetTolerance(this->Options.Tolerance);
+    running = curves;
+  }
+  if (running)
+  {
+    mapper->SetInputConnection(running->GetOutputPort());
   }
   else
   {
@@ -127,9 +157,9 @@ FrameTiming OrbitTimer::Time(vtkPolyData* mesh, bool smoothing)
     const Clock::time_point start = Clock::now();
     renderer->GetActiveCamera()->Azimuth(360.0 / this->Options.TimedFrames);
     renderer->ResetCameraClippingRange();
-    if (smoothing)
+    if (running)
     {
-      smoother->Update();
+      running->Update();
       filterMs.push_back(Since(start));
     }
     this->Window->Render();
@@ -139,8 +169,8 @@ FrameTiming OrbitTimer::Time(vtkPolyData* mesh, bool smoothing)
   FrameTiming timing;
   timing.FrameMilliseconds = Median(frameMs);
   timing.FilterMilliseconds = Median(filterMs);
-  timing.Triangles = smoothing ? Count(smoother->GetOutput(), "OutputTriangleCount")
-                               : static_cast<double>(mesh->GetNumberOfPolys());
+  timing.Triangles = running ? Count(running->GetOutput(), "OutputTriangleCount")
+                             : static_cast<double>(mesh->GetNumberOfPolys());
   renderer->RemoveAllViewProps();
   return timing;
 }
@@ -170,6 +200,11 @@ ModelComparison CompareModel(const ModelVersions& model, const ComparisonOptions
   smoother->SetCamera(framing->GetActiveCamera());
   smoother->SetViewportSize(options.Width, options.Height);
   smoother->SetTolerance(options.Tolerance);
+  vtkNew<vtkBoundaryCurveSmoothingFilter> curves; // Wang et al. 2003
+  curves->SetInputData(model.Coarse);
+  curves->SetCamera(framing->GetActiveCamera());
+  curves->SetViewportSize(options.Width, options.Height);
+  curves->SetTolerance(options.Tolerance);
 
   vtkSmartPointer<vtkPolyData> exactTorus;
   if (model.Exact == ExactShape::Torus)
@@ -187,11 +222,15 @@ ModelComparison CompareModel(const ModelVersions& model, const ComparisonOptions
     PlaceCamera(framing, model.Original, view, options.Views);
     vtkCamera* camera = framing->GetActiveCamera();
     smoother->Update();
+    curves->Update();
     const Mask fine = masks.Render(model.Fine, camera);
     const Mask coarse = masks.Render(model.Coarse, camera);
     const Mask smoothed = masks.Render(smoother->GetOutput(), camera);
+    const Mask wang2003 = masks.Render(curves->GetOutput(), camera);
     Accumulate(result.Coarse, OutlineDeviation(coarse, fine), false, options.Views);
     Accumulate(result.Smoothed, OutlineDeviation(smoothed, fine), false, options.Views);
+    Accumulate(result.Wang2003, OutlineDeviation(wang2003, fine), false, options.Views);
+    result.Wang2003.Triangles += Count(curves->GetOutput(), "OutputTriangleCount") / options.Views;
     result.Smoothed.Triangles +=
       Count(smoother->GetOutput(), "OutputTriangleCount") / options.Views;
     result.SilhouetteTriangles +=
@@ -208,6 +247,7 @@ ModelComparison CompareModel(const ModelVersions& model, const ComparisonOptions
       const double cy = options.Height / 2.0;
       Accumulate(result.Coarse, DistanceToCircle(coarse, cx, cy, radius), true, options.Views);
       Accumulate(result.Smoothed, DistanceToCircle(smoothed, cx, cy, radius), true, options.Views);
+      Accumulate(result.Wang2003, DistanceToCircle(wang2003, cx, cy, radius), true, options.Views);
       Accumulate(result.Fine, DistanceToCircle(fine, cx, cy, radius), true, options.Views);
     }
     else if (model.Exact == ExactShape::Torus)
@@ -215,22 +255,118 @@ ModelComparison CompareModel(const ModelVersions& model, const ComparisonOptions
       const Mask exact = masks.Render(exactTorus, camera);
       Accumulate(result.Coarse, OutlineDeviation(coarse, exact), true, options.Views);
       Accumulate(result.Smoothed, OutlineDeviation(smoothed, exact), true, options.Views);
+      Accumulate(result.Wang2003, OutlineDeviation(wang2003, exact), true, options.Views);
       Accumulate(result.Fine, OutlineDeviation(fine, exact), true, options.Views);
     }
   }
   result.Coarse.Triangles = static_cast<double>(model.Coarse->GetNumberOfPolys());
   result.Fine.Triangles = static_cast<double>(model.Fine->GetNumberOfPolys());
 
+  // PN triangles at the level whose count is nearest ours (view-independent:
+  // made once, its time is the one-off tessellation).
+  result.PNLevel = NearestPNLevel(result.Coarse.Triangles, result.Smoothed.Triangles);
+  progress("PN triangles at level " + std::to_string(result.PNLevel));
+  vtkNew<vtkPNTriangleFilter> pnFilter;
+  pnFilter->SetInputData(model.Coarse);
+  pnFilter->SetLevel(result.PNLevel);
+  const Clock::time_point pnStart = Clock::now();
+  pnFilter->Update();
+  result.PN.FilterMilliseconds = Since(pnStart);
+  vtkSmartPointer<vtkPolyData> pn = pnFilter->GetOutput();
+  result.PN.Triangles = static_cast<double>(pn->GetNumberOfPolys());
+  for (int view = 0; view < options.Views; ++view)
+  {
+    PlaceCamera(framing, model.Original, view, options.Views);
+    vtkCamera* camera = framing->GetActiveCamera();
+    const Mask fine = masks.Render(model.Fine, camera);
+    const Mask pnMask = masks.Render(pn, camera);
+    Accumulate(result.PN, OutlineDeviation(pnMask, fine), false, options.Views);
+    if (model.Exact == ExactShape::UnitSphere)
+    {
+      const double d = camera->GetDistance();
+      const double radius = std::tan(std::asin(1.0 / d)) /
+        std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle() / 2.0)) * options.Height / 2.0;
+      Accumulate(result.PN,
+        DistanceToCircle(pnMask, options.Width / 2.0, options.Height / 2.0, radius), true,
+        options.Views);
+    }
+    else if (model.Exact == ExactShape::Torus)
+    {
+      Accumulate(
+        result.PN, OutlineDeviation(pnMask, masks.Render(exactTorus, camera)), true, options.Views);
+    }
+  }
+
+  // Temporal coherence: an orbit of 1-degree steps from the first view; every
+  // variant's outline is compared with its own outline one step before.
+  if (options.CoherenceSteps > 0)
+  {
+    progress("coherence over " + std::to_string(options.CoherenceSteps) + " 1-degree steps");
+    VariantFigures* figures[5] = { &result.Coarse, &result.Smoothed, &result.Wang2003, &result.PN,
+      &result.Fine };
+    std::array<Mask, 5> previous;
+    std::array<double, 5> sum{};
+    std::array<double, 5> largest{};
+    std::array<double, 5> excess{};
+    std::array<double, 5> stepMax{};
+    PlaceCamera(framing, model.Original, 0, 1);
+    for (int step = 0; step <= options.CoherenceSteps; ++step)
+    {
+      vtkCamera* camera = framing->GetActiveCamera();
+      if (step > 0)
+      {
+        camera->Azimuth(1.0);
+        framing->ResetCameraClippingRange();
+      }
+      smoother->Update();
+      curves->Update();
+      vtkPolyData* meshes[5] = { model.Coarse, smoother->GetOutput(), curves->GetOutput(), pn,
+        model.Fine };
+      for (int v = 0; v < 5; ++v)
+      {
+        Mask current = masks.Render(meshes[v], camera);
+        if (step > 0)
+        {
+          const BoundaryDistance change = OutlineDeviation(previous[v], current);
+          sum[v] += change.Mean;
+          largest[v] = std::max(largest[v], change.Max);
+          stepMax[v] = change.Max;
+        }
+        previous[v] = std::move(current);
+      }
+      for (int v = 0; step > 0 && v < 5; ++v)
+      {
+        excess[v] = std::max(excess[v], stepMax[v] - stepMax[4]);
+      }
+    }
+    for (int v = 0; v < 5; ++v)
+    {
+      figures[v]->CoherenceMean = sum[v] / options.CoherenceSteps;
+      figures[v]->CoherenceMax = largest[v];
+      figures[v]->CoherenceExcess = excess[v];
+    }
+    for (int v = 0; v < 5; ++v)
+    {
+      figures[v]->CoherenceRatio =
+        result.Fine.CoherenceMean > 0 ? figures[v]->CoherenceMean / result.Fine.CoherenceMean : -1;
+    }
+  }
+
   progress("timing " + std::to_string(options.TimedFrames) + " orbit frames of each variant");
   OrbitTimer timer(options);
-  for (auto [mesh, smoothing, figures] :
-    { std::make_tuple(model.Coarse.Get(), false, &result.Coarse),
-      std::make_tuple(model.Coarse.Get(), true, &result.Smoothed),
-      std::make_tuple(model.Fine.Get(), false, &result.Fine) })
+  for (auto [mesh, filter, figures] :
+    { std::make_tuple(model.Coarse.Get(), FrameFilter::None, &result.Coarse),
+      std::make_tuple(model.Coarse.Get(), FrameFilter::Smoothing2008, &result.Smoothed),
+      std::make_tuple(model.Coarse.Get(), FrameFilter::BoundaryCurves2003, &result.Wang2003),
+      std::make_tuple(pn.Get(), FrameFilter::None, &result.PN),
+      std::make_tuple(model.Fine.Get(), FrameFilter::None, &result.Fine) })
   {
-    const FrameTiming timing = timer.Time(mesh, smoothing);
+    const FrameTiming timing = timer.Time(mesh, filter);
     figures->FrameMilliseconds = timing.FrameMilliseconds;
-    figures->FilterMilliseconds = timing.FilterMilliseconds;
+    if (filter != FrameFilter::None)
+    {
+      figures->FilterMilliseconds = timing.FilterMilliseconds;
+    }
   }
   return result;
 }

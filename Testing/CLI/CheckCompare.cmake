@@ -53,3 +53,28 @@ at_most("torus: smoothed distance to the exact silhouette, px" "${torus_smoothed
 if (NOT torus_smoothed_exact LESS torus_coarse_exact)
   message(FATAL_ERROR "torus: smoothing should bring the outline nearer the exact one")
 endif ()
+
+# The earlier methods (issue 8): present for both models; PN triangles at a
+# level k >= 1 with coarse x (k+1)^2 triangles; on the sphere both the 2003
+# boundary curves and PN triangles bring the outline nearer the fine one than
+# the coarse mesh, and ours nearer than either (measured at 640x480: coarse
+# 4.8, Wang 2003 2.2, PN 1.4, ours 0.28 px); coherence figures for every variant.
+foreach (model 0 1)
+  string(JSON pn_level GET "${json}" ${model} pn_level)
+  figure(${model} coarse triangles coarse_triangles)
+  figure(${model} pn triangles pn_triangles)
+  math(EXPR expected "${coarse_triangles} * (${pn_level} + 1) * (${pn_level} + 1)")
+  if (pn_level LESS 1 OR NOT pn_triangles EQUAL expected)
+    message(FATAL_ERROR "model ${model}: PN level ${pn_level} with ${pn_triangles} triangles")
+  endif ()
+  foreach (variant coarse smoothed wang2003 pn fine)
+    figure(${model} ${variant} coherence_mean_px coherence)
+    figure(${model} ${variant} coherence_excess_px excess)
+  endforeach ()
+endforeach ()
+figure(0 wang2003 deviation_mean_px sphere_wang2003)
+figure(0 pn deviation_mean_px sphere_pn)
+at_most("sphere: Wang 2003 deviation below the coarse one" "${sphere_wang2003}" "${sphere_coarse}")
+at_most("sphere: PN deviation below the coarse one" "${sphere_pn}" "${sphere_coarse}")
+at_most("sphere: ours below Wang 2003" "${sphere_smoothed}" "${sphere_wang2003}")
+at_most("sphere: ours below PN" "${sphere_smoothed}" "${sphere_pn}")

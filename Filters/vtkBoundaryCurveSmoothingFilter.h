@@ -1,0 +1,110 @@
+/**
+ * @class   vtkBoundaryCurveSmoothingFilter
+ * @brief   Wang et al. 2003: silhouette smoothing by boundary curve interpolation (a baseline)
+ *
+ * The earlier method that the 2008 paper (vtkSilhouetteSmoothingFilter) is
+ * compared with: B. Wang, W. Wang, J. Wu, J. Sun, "Silhouette Smoothing by
+ * Boundary Curve Interpolation", CAD/Graphics 2003. For the current camera,
+ * every silhouette *edge* (a mesh edge between a front- and a back-facing
+ * triangle) is projected to the view plane and replaced by a 2D cubic Hermite
+ * curve (tangents: the projected vertex normals turned by pi/2, magnitudes
+ * from rho), which is back-projected to 3D and sampled; the two triangles of
+ * the edge are fanned from their opposite vertices to the samples. New points
+ * get linearly interpolated normals. Filters/Core/BoundaryCurveSmoother.h
+ * lists the choices the paper leaves open (and why rho is cos t / (1 + cos t)).
+ *
+ * It is kept for comparison (`silhouette compare`), not as an alternative:
+ * the curves depend on which edges are silhouette edges, which changes in
+ * jumps as the view moves (the paper says coherence is not ensured).
+ *
+ * The view is given as for vtkSilhouetteSmoothingFilter (SetCamera or
+ * SetRenderer, SetViewportSize, SetProp3D or SetModelMatrix), and the filter
+ * re-runs when the view changes by value. Output: the input's points (ids and
+ * positions kept), then the added points; cell `NewGeometry` (0 kept, 1 made
+ * by re-meshing), cell `OriginalCellId`, point `Normals` (the input's, or
+ * angle-weighted; interpolated for added points), other point data
+ * interpolated, cell data copied. Verts and lines pass through; polygons and
+ * strips come out as triangles. Output port 1: the smoothed silhouette, one
+ * polyline per silhouette edge. A closed manifold stays closed: each edge's
+ * curve is computed once and shared by its two triangles.
+ *
+ * Errors: no camera, cells naming missing points, NaN/infinite points, a
+ * degenerate view or viewport.
+ */
+#ifndef vtkBoundaryCurveSmoothingFilter_h
+#define vtkBoundaryCurveSmoothingFilter_h
+
+#include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkWeakPointer.h" // For the renderer
+
+#include <memory> // For the internals
+
+class vtkCamera;
+class vtkMatrix4x4;
+class vtkProp3D;
+class vtkRenderer;
+
+class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkBoundaryCurveSmoothingFilter
+  : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkBoundaryCurveSmoothingFilter* New();
+  vtkTypeMacro(vtkBoundaryCurveSmoothingFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** The view, as for vtkSilhouetteSmoothingFilter. */
+  virtual void SetCamera(vtkCamera*);
+  vtkGetObjectMacro(Camera, vtkCamera);
+  virtual void SetProp3D(vtkProp3D*);
+  vtkProp3D* GetProp3D();
+  virtual void SetModelMatrix(vtkMatrix4x4*);
+  vtkGetObjectMacro(ModelMatrix, vtkMatrix4x4);
+  virtual void SetRenderer(vtkRenderer*);
+  vtkRenderer* GetRenderer();
+  vtkSetVector2Macro(ViewportSize, int);
+  vtkGetVector2Macro(ViewportSize, int);
+  ///@}
+
+  ///@{
+  /**
+   * Points per curve, both ends counted. 0 (default): adaptive, so that the
+   * polyline stays within Tolerance pixels of the 2D curve (the bound the
+   * 2008 filter uses); the paper uses fixed counts of 3 to 5.
+   */
+  vtkSetClampMacro(SamplesPerCurve, int, 0, 65536);
+  vtkGetMacro(SamplesPerCurve, int);
+  vtkSetClampMacro(Tolerance, double, 1e-3, VTK_DOUBLE_MAX);
+  vtkGetMacro(Tolerance, double);
+  ///@}
+
+  /** The smoothed silhouette polylines (output port 1). */
+  vtkPolyData* GetSilhouetteOutput();
+
+  /** Changes when the view changes (compared by value). */
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkBoundaryCurveSmoothingFilter();
+  ~vtkBoundaryCurveSmoothingFilter() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  vtkCamera* Camera = nullptr;
+  vtkWeakPointer<vtkProp3D> Prop3D;
+  vtkMatrix4x4* ModelMatrix = nullptr;
+  vtkWeakPointer<vtkRenderer> Renderer;
+  int ViewportSize[2] = { 1024, 768 };
+  int SamplesPerCurve = 0;
+  double Tolerance = 0.5;
+
+private:
+  vtkBoundaryCurveSmoothingFilter(const vtkBoundaryCurveSmoothingFilter&) = delete;
+  void operator=(const vtkBoundaryCurveSmoothingFilter&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

@@ -1,0 +1,392 @@
+#include "vtkSilhouetteFilterSupport.h"
+
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkMatrix4x4.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProp3D.h"
+#include "vtkRenderer.h"
+#include "vtkSmartPointer.h"
+#include "vtkUnsignedCharArray.h"
+
+#include "ShadingNormals.h"
+
+#include <glm/matrix.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <numeric>
+
+namespace vtkSilhouetteFilterSupport
+{
+
+vtkCamera* ActiveCamera(vtkCamera* camera, vtkRenderer* renderer)
+{
+  if (camera)
+  {
+    return camera;
+  }
+  return renderer && renderer->IsActiveCameraCreated() ? renderer->GetActiveCamera() : nullptr;
+}
+
+void ModelMatrixOf(vtkProp3D* prop, vtkMatrix4x4* matrix, double out[16])
+{
+  if (prop)
+  {
+    prop->GetMatrix(out);
+  }
+  else if (matrix)
+  {
+    std::copy(&matrix->Element[0][0], &matrix->Element[0][0] + 16, out);
+  }
+  else
+  {
+    vtkMatrix4x4::Identity(out);
+  }
+}
+
+std::array<int, 2> ViewportOf(vtkRenderer* renderer, const int fallback[2])
+{
+  if (renderer)
+  {
+    const int* size = renderer->GetSize();
+    if (size[0] > 0 && size[1] > 0)
+    {
+      return { size[0], size[1] };
+    }
+  }
+  return { fallback[0], fallback[1] };
+}
+
+vtkMTimeType ViewTracker::Update(
+  vtkCamera* camera, const double model[16], std::array<int, 2> viewport)
+{
+  std::array<double, 16 + 16 + 17 + 16> now{};
+  double* v = now.data();
+  std::copy(&camera->GetModelViewTransformMatrix()->Element[0][0],
+    &camera->GetModelViewTransformMatrix()->Element[0][0] + 16, v);
+  if (camera->GetUseExplicitProjectionTransformMatrix() &&
+    camera->GetExplicitProjectionTransformMatrix())
+  {
+    std::copy(&camera->GetExplicitProjectionTransformMatrix()->Element[0][0],
+      &camera->GetExplicitProjectionTransformMatrix()->Element[0][0] + 16, v + 16);
+  }
+  double* p = v + 32;
+  p[0] = camera->GetViewAngle();
+  p[1] = camera->GetParallelScale();
+  p[2] = camera->GetParallelProjection();
+  p[3] = camera->GetUseHorizontalViewAngle();
+  camera->GetWindowCenter(p + 4);
+  camera->GetViewShear(p + 6);
+  p[9] = camera->GetEyeAngle();
+  p[10] = camera->GetUseExplicitProjectionTransformMatrix();
+  p[11] = camera->GetUseOffAxisProjection();
+  p[12] = camera->GetEyeSeparation();
+  camera->GetScreenBottomLeft(p + 13);
+  p[16] = camera->GetLeftEye();
+  std::copy(model, model + 16, v + 49);
+  // Bitwise: a NaN in the view compares equal to itself.
+  if (!this->Have || std::memcmp(now.data(), this->Last.data(), sizeof(now)) != 0 ||
+    viewport != this->LastViewport)
+  {
+    this->Last = now;
+    this->LastViewport = viewport;
+    this->Have = true;
+    this->Time.Modified();
+  }
+  return this->Time.GetMTime();
+}
+
+namespace
+{
+
+bool AllFinite(const double* values, int count)
+{
+  for (int i = 0; i < count; ++i)
+  {
+    if (!std::isfinite(values[i]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+} // namespace
+
+std::string MakeViewGeometry(vtkCamera* camera, const double model[16], std::array<int, 2> viewport,
+  silsmooth::ViewGeometry& view, glm::dmat3* normalToEye)
+{
+  // Model -> eye is the camera's model-view matrix (with its model and
+  // user-view transforms) times the model matrix; the eye is its inverse
+  // applied to the origin, the direction towards the viewer to +z.
+  double modelView[16];
+  vtkMatrix4x4::Multiply4x4(
+    &camera->GetModelViewTransformMatrix()->Element[0][0], model, modelView);
+  const double determinant = vtkMatrix4x4::Determinant(modelView);
+  if (!AllFinite(model, 16) || !AllFinite(modelView, 16) || !(std::abs(determinant) > 0.0) ||
+    !std::isfinite(determinant) || model[12] != 0.0 || model[13] != 0.0 || model[14] != 0.0 ||
+    model[15] != 1.0)
+  {
+    return "The view is degenerate: the model matrix or the camera is singular, not affine, or "
+           "not finite.";
+  }
+  if (viewport[0] < 1 || viewport[1] < 1)
+  {
+    return "The viewport size must be at least 1 x 1 pixels, not " + std::to_string(viewport[0]) +
+      " x " + std::to_string(viewport[1]) + ".";
+  }
+  double inverse[16];
+  vtkMatrix4x4::Invert(modelView, inverse);
+  view.Parallel = camera->GetParallelProjection() != 0;
+  view.ViewportWidth = viewport[0];
+  view.ViewportHeight = viewport[1];
+  double eye[4] = { 0, 0, 0, 1 };
+  vtkMatrix4x4::MultiplyPoint(inverse, eye, eye);
+  view.Eye = glm::dvec3(eye[0], eye[1], eye[2]) / eye[3];
+  double toward[4] = { 0, 0, 1, 0 };
+  vtkMatrix4x4::MultiplyPoint(inverse, toward, toward);
+  view.TowardViewer = silsmooth::safeNormalize(glm::dvec3(toward[0], toward[1], toward[2]));
+
+  // Model -> clip = (projection * view) * model, into glm's column-major form.
+  double composite[16];
+  vtkMatrix4x4::DeepCopy(composite,
+    camera->GetCompositeProjectionTransformMatrix(
+      static_cast<double>(viewport[0]) / viewport[1], -1.0, 1.0));
+  double clip[16];
+  vtkMatrix4x4::Multiply4x4(composite, model, clip);
+  for (int row = 0; row < 4; ++row)
+  {
+    for (int col = 0; col < 4; ++col)
+    {
+      view.ModelToClip[col][row] = clip[row * 4 + col];
+    }
+  }
+  if (normalToEye)
+  {
+    glm::dmat3 linear;
+    for (int row = 0; row < 3; ++row)
+    {
+      for (int col = 0; col < 3; ++col)
+      {
+        linear[col][row] = modelView[row * 4 + col];
+      }
+    }
+    *normalToEye = glm::transpose(glm::inverse(linear));
+  }
+  return std::string();
+}
+
+std::string ReadTriangles(vtkPolyData* input, Triangles& out)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  out = Triangles();
+  out.Points.resize(static_cast<std::size_t>(numPoints));
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      ++out.NonFinitePoints;
+    }
+    out.Points[static_cast<std::size_t>(i)] = glm::dvec3(p[0], p[1], p[2]);
+  }
+  vtkIdType npts = 0;
+  const vtkIdType* pts = nullptr;
+  vtkIdType cellId = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell(), ++cellId)
+  {
+    polys->GetCurrentCell(npts, pts);
+    for (vtkIdType k = 1; k + 1 < npts; ++k)
+    {
+      out.Cells.push_back({ pts[0], pts[k], pts[k + 1] });
+      out.CellIds.push_back(cellId);
+    }
+  }
+  auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
+  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell(), ++cellId)
+  {
+    strips->GetCurrentCell(npts, pts);
+    for (vtkIdType k = 0; k + 2 < npts; ++k)
+    {
+      if (k % 2 == 0)
+      {
+        out.Cells.push_back({ pts[k], pts[k + 1], pts[k + 2] });
+      }
+      else
+      {
+        out.Cells.push_back({ pts[k + 1], pts[k], pts[k + 2] });
+      }
+      out.CellIds.push_back(cellId);
+    }
+  }
+  for (const silsmooth::Triangle& t : out.Cells)
+  {
+    for (const silsmooth::Id id : t)
+    {
+      if (id < 0 || id >= numPoints)
+      {
+        return "Input cells refer to points that do not exist.";
+      }
+    }
+  }
+  for (vtkCellArray* cells : { input->GetVerts(), input->GetLines() })
+  {
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      it->GetCurrentCell(npts, pts);
+      for (vtkIdType k = 0; k < npts; ++k)
+      {
+        if (pts[k] < 0 || pts[k] >= numPoints)
+        {
+          return "Input cells refer to points that do not exist.";
+        }
+      }
+    }
+  }
+  vtkDataArray* given = input->GetPointData()->GetNormals();
+  if (given && given->GetNumberOfComponents() == 3 && given->GetNumberOfTuples() == numPoints)
+  {
+    out.Normals.resize(static_cast<std::size_t>(numPoints));
+    for (vtkIdType i = 0; i < numPoints; ++i)
+    {
+      double n[3];
+      given->GetTuple(i, n);
+      out.Normals[static_cast<std::size_t>(i)] = glm::dvec3(n[0], n[1], n[2]);
+    }
+  }
+  return std::string();
+}
+
+void WriteMesh(vtkPolyData* input, vtkPolyData* output, const std::vector<glm::dvec3>& inputNormals,
+  const std::vector<glm::dvec3>& addedPoints, const std::vector<glm::dvec3>& addedNormals,
+  const std::vector<PointSource>& addedSources, const std::vector<silsmooth::Triangle>& triangles,
+  const std::vector<vtkIdType>& originalCell, const std::vector<unsigned char>& newGeometry)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  const vtkIdType total = numPoints + static_cast<vtkIdType>(addedPoints.size());
+
+  vtkNew<vtkPoints> points;
+  vtkPoints* inPoints = input->GetPoints();
+  points->SetDataType(inPoints ? inPoints->GetDataType() : VTK_FLOAT);
+  points->SetNumberOfPoints(total);
+  if (numPoints > 0)
+  {
+    points->GetData()->InsertTuples(0, numPoints, 0, inPoints->GetData());
+  }
+  vtkIdType id = numPoints;
+  for (const glm::dvec3& p : addedPoints)
+  {
+    points->SetPoint(id++, p.x, p.y, p.z);
+  }
+  output->SetPoints(points);
+
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  vtkDataArray* inNormals = inPD->GetNormals();
+  outPD->CopyAllOn();
+  outPD->CopyNormalsOff();
+  outPD->InterpolateAllocate(inPD, total);
+  if (numPoints > 0)
+  {
+    outPD->CopyData(inPD, 0, numPoints, 0);
+  }
+  vtkNew<vtkIdList> sources;
+  sources->SetNumberOfIds(3);
+  id = numPoints;
+  for (const PointSource& s : addedSources)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      sources->SetId(k, s.Ids[static_cast<std::size_t>(k)]);
+    }
+    double weights[3] = { s.Weights[0], s.Weights[1], s.Weights[2] };
+    outPD->InterpolatePoint(inPD, id++, sources, weights);
+  }
+  if (inNormals && inNormals->GetName() && outPD->GetArray(inNormals->GetName()))
+  {
+    outPD->RemoveArray(inNormals->GetName());
+  }
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName(inNormals && inNormals->GetName() ? inNormals->GetName() : "Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(total);
+  float* n = normals->GetPointer(0);
+  for (const std::vector<glm::dvec3>* list : { &inputNormals, &addedNormals })
+  {
+    for (const glm::dvec3& normal : *list)
+    {
+      *n++ = static_cast<float>(normal.x);
+      *n++ = static_cast<float>(normal.y);
+      *n++ = static_cast<float>(normal.z);
+    }
+  }
+  outPD->SetNormals(normals);
+
+  output->SetVerts(input->GetVerts());
+  output->SetLines(input->GetLines());
+  const vtkIdType passThrough = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  const vtkIdType outCells = passThrough + static_cast<vtkIdType>(triangles.size());
+  vtkNew<vtkIdTypeArray> offsets;
+  vtkNew<vtkIdTypeArray> connectivity;
+  offsets->SetNumberOfValues(static_cast<vtkIdType>(triangles.size() + 1));
+  connectivity->SetNumberOfValues(static_cast<vtkIdType>(triangles.size() * 3));
+  for (std::size_t t = 0; t <= triangles.size(); ++t)
+  {
+    offsets->SetValue(static_cast<vtkIdType>(t), static_cast<vtkIdType>(t * 3));
+  }
+  vtkIdType* conn = connectivity->GetPointer(0);
+  for (const silsmooth::Triangle& t : triangles)
+  {
+    *conn++ = t[0];
+    *conn++ = t[1];
+    *conn++ = t[2];
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+  output->SetPolys(polys);
+
+  vtkNew<vtkIdTypeArray> originalCellId;
+  originalCellId->SetName("OriginalCellId");
+  originalCellId->SetNumberOfValues(outCells);
+  vtkNew<vtkUnsignedCharArray> kinds;
+  kinds->SetName("NewGeometry");
+  kinds->SetNumberOfValues(outCells);
+  vtkIdType* origin = originalCellId->GetPointer(0);
+  std::iota(origin, origin + passThrough, vtkIdType{ 0 });
+  std::copy(originalCell.begin(), originalCell.end(), origin + passThrough);
+  unsigned char* kind = kinds->GetPointer(0);
+  std::fill(kind, kind + passThrough, static_cast<unsigned char>(0));
+  std::copy(newGeometry.begin(), newGeometry.end(), kind + passThrough);
+
+  vtkCellData* inCD = input->GetCellData();
+  vtkCellData* outCD = output->GetCellData();
+  if (inCD->GetNumberOfArrays() > 0)
+  {
+    vtkNew<vtkIdList> source;
+    source->SetNumberOfIds(outCells);
+    std::copy(origin, origin + outCells, source->begin());
+    vtkNew<vtkIdList> destination;
+    destination->SetNumberOfIds(outCells);
+    std::iota(destination->begin(), destination->end(), vtkIdType{ 0 });
+    outCD->CopyAllOn();
+    outCD->CopyAllocate(inCD, outCells);
+    outCD->CopyData(inCD, source, destination);
+  }
+  outCD->AddArray(kinds);
+  outCD->AddArray(originalCellId);
+}
+
+} // namespace vtkSilhouetteFilterSupport

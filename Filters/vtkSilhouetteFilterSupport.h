@@ -1,0 +1,107 @@
+// Pieces shared by the module's view-dependent filters
+// (vtkSilhouetteSmoothingFilter, vtkBoundaryCurveSmoothingFilter) and its
+// mesh-output filters (vtkBoundaryCurveSmoothingFilter, vtkPNTriangleFilter):
+// the camera, the model matrix and the viewport in the data's model
+// coordinates; the view signature that decides when a view change re-runs a
+// filter; reading triangles from a vtkPolyData; writing a mesh with the
+// module's provenance arrays. Private to the module (not wrapped, not
+// installed).
+#ifndef vtkSilhouetteFilterSupport_h
+#define vtkSilhouetteFilterSupport_h
+
+#include "vtkTimeStamp.h"
+#include "vtkType.h"
+
+#include "MeshTopology.h"
+#include "ViewGeometry.h"
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <string>
+#include <vector>
+
+class vtkCamera;
+class vtkMatrix4x4;
+class vtkPolyData;
+class vtkProp3D;
+class vtkRenderer;
+
+namespace vtkSilhouetteFilterSupport
+{
+
+/// The given camera, else the renderer's active camera if it exists (asking
+/// for it would create one, and a renderer that already has a camera skips
+/// its first automatic reset).
+vtkCamera* ActiveCamera(vtkCamera* camera, vtkRenderer* renderer);
+
+/// The prop's matrix, else the given matrix, else the identity.
+void ModelMatrixOf(vtkProp3D* prop, vtkMatrix4x4* matrix, double out[16]);
+
+/// The renderer's size when it has one, else the fallback.
+std::array<int, 2> ViewportOf(vtkRenderer* renderer, const int fallback[2]);
+
+/// Remembers the last view a filter saw, compared by value. The camera's own
+/// MTime is not enough: renderers reset its clipping range every frame, which
+/// would re-run the filter for nothing, while a prop's matrix or a window's
+/// size can change without touching the camera at all. So the view is the
+/// camera's model-view matrix (position, orientation, model and user-view
+/// transforms) and its projection parameters (not the clipping range), the
+/// model matrix and the viewport, compared bitwise (a NaN in the view compares
+/// equal to itself instead of re-running the filter on every update).
+class ViewTracker
+{
+public:
+  /// The time the view last changed (updated by this call).
+  vtkMTimeType Update(vtkCamera* camera, const double model[16], std::array<int, 2> viewport);
+
+private:
+  std::array<double, 16 + 16 + 17 + 16> Last{};
+  std::array<int, 2> LastViewport{};
+  bool Have = false;
+  vtkTimeStamp Time;
+};
+
+/// The view in the data's model coordinates for the core, and (optionally)
+/// the matrix that takes model normals to eye coordinates. Returns an empty
+/// string, or the error to report (a degenerate view or viewport).
+std::string MakeViewGeometry(vtkCamera* camera, const double model[16], std::array<int, 2> viewport,
+  silsmooth::ViewGeometry& view, glm::dmat3* normalToEye = nullptr);
+
+/// The triangles of a vtkPolyData: polygons as fans, strips with alternating
+/// orientation, with the input cell id of each. Also the points and the
+/// active point normals (empty when there are none of the right shape).
+struct Triangles
+{
+  std::vector<glm::dvec3> Points;
+  std::vector<glm::dvec3> Normals;
+  std::vector<silsmooth::Triangle> Cells;
+  std::vector<vtkIdType> CellIds;
+  vtkIdType NonFinitePoints = 0;
+};
+/// Returns an empty string, or the error to report (cells naming missing
+/// points).
+std::string ReadTriangles(vtkPolyData* input, Triangles& out);
+
+/// An added point as a weighted sum of input points (weights sum to one).
+struct PointSource
+{
+  std::array<vtkIdType, 3> Ids{ { 0, 0, 0 } };
+  std::array<double, 3> Weights{ { 1.0, 0.0, 0.0 } };
+};
+
+/// Writes a triangle mesh: the input's points (ids kept) followed by the added
+/// points, their point data (input arrays interpolated for added points), the
+/// normals as the active `Normals` (input points: `inputNormals`), and the
+/// triangles with cell arrays `NewGeometry` (`newGeometry`, 0 kept, 1 new) and
+/// `OriginalCellId`, and the input's cell data copied from the original cell.
+/// Verts and lines pass through.
+void WriteMesh(vtkPolyData* input, vtkPolyData* output, const std::vector<glm::dvec3>& inputNormals,
+  const std::vector<glm::dvec3>& addedPoints, const std::vector<glm::dvec3>& addedNormals,
+  const std::vector<PointSource>& addedSources, const std::vector<silsmooth::Triangle>& triangles,
+  const std::vector<vtkIdType>& originalCell, const std::vector<unsigned char>& newGeometry);
+
+} // namespace vtkSilhouetteFilterSupport
+
+#endif

@@ -1,0 +1,108 @@
+// vtkPNTriangleFilter (Vlachos et al. 2001): triangle count = input x (k+1)^2,
+// input points kept (ids and positions), watertight output for a closed input
+// (shared edge points), flat triangles with face normals stay flat, and on a
+// sphere with exact normals the patches are nearer the sphere than flat
+// subdivision.
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFloatArray.h"
+#include "vtkNew.h"
+#include "vtkPNTriangleFilter.h"
+#include "vtkPlaneSource.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkTriangleFilter.h"
+
+#include "SilhouetteTestSupport.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace
+{
+
+bool Run()
+{
+  auto sphere = silhouette_test::Icosphere(1);
+  const vtkIdType inputTriangles = sphere->GetNumberOfPolys();
+  vtkNew<vtkPNTriangleFilter> pn;
+  pn->SetInputData(sphere);
+  for (int level = 0; level <= 4; ++level)
+  {
+    pn->SetLevel(level);
+    pn->Update();
+    vtkPolyData* out = pn->GetOutput();
+    CHECK(out->GetNumberOfPolys() == inputTriangles * (level + 1) * (level + 1),
+      "triangle count = input x (k+1)^2");
+    const auto report = silhouette_test::AnalyzeTopology(out);
+    CHECK(report.closedManifold(), report.summary().c_str());
+    CHECK(
+      report.FlippedTriangles == 0 && report.DegenerateTriangles == 0, report.summary().c_str());
+    for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+    {
+      double a[3];
+      double b[3];
+      sphere->GetPoint(i, a);
+      out->GetPoint(i, b);
+      CHECK(a[0] == b[0] && a[1] == b[1] && a[2] == b[2], "input points kept");
+    }
+    CHECK(out->GetCellData()->GetArray("NewGeometry") &&
+        out->GetCellData()->GetArray("OriginalCellId") && out->GetPointData()->GetNormals(),
+      "provenance arrays and normals");
+    // Distance to the unit sphere, against the flat triangles' midpoints.
+    double worst = 0.0;
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      out->GetPoint(i, p);
+      worst = std::max(worst, std::abs(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]) - 1.0));
+    }
+    std::printf("PN level %d: %lld triangles, largest |r - 1| = %.4f\n", level,
+      static_cast<long long>(out->GetNumberOfPolys()), worst);
+    if (level >= 2)
+    {
+      // Flat 80-triangle faces are up to 1 - 0.795 = 0.205 inside at their centres.
+      CHECK(worst < 0.05, "PN patches hug the sphere");
+    }
+  }
+
+  // A flat mesh with the plane's normal everywhere stays in the plane.
+  vtkNew<vtkPlaneSource> plane;
+  plane->SetResolution(4, 3);
+  plane->SetOrigin(-1.0, -1.0, 0.0);
+  plane->SetPoint1(1.0, -1.0, 0.0);
+  plane->SetPoint2(-1.0, 1.5, 0.0);
+  vtkNew<vtkTriangleFilter> triangulate;
+  triangulate->SetInputConnection(plane->GetOutputPort());
+  triangulate->Update();
+  vtkNew<vtkPolyData> flat;
+  flat->DeepCopy(triangulate->GetOutput());
+  vtkNew<vtkPNTriangleFilter> pnFlat;
+  pnFlat->SetInputData(flat);
+  pnFlat->SetLevel(3);
+  pnFlat->Update();
+  vtkPolyData* out = pnFlat->GetOutput();
+  CHECK(out->GetNumberOfPolys() == flat->GetNumberOfPolys() * 16, "flat count");
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    CHECK(std::abs(p[2]) < 1e-7, "flat stays flat");
+    double n[3];
+    out->GetPointData()->GetNormals()->GetTuple(i, n);
+    CHECK(std::abs(n[2] - 1.0) < 1e-6, "flat normals stay the plane's");
+  }
+  const auto flatReport = silhouette_test::AnalyzeTopology(out);
+  CHECK(flatReport.NonManifoldEdges == 0 && flatReport.OrientationConflicts == 0 &&
+      flatReport.BoundaryEdges == 2 * (4 + 3) * 4,
+    flatReport.summary().c_str());
+  return true;
+}
+
+} // namespace
+
+int TestPNTriangleFilter(int, char*[])
+{
+  return Run() ? 0 : 1;
+}

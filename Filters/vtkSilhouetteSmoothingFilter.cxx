@@ -25,6 +25,7 @@
 
 #include "ShadingNormals.h"
 #include "SilhouetteSmoother.h"
+#include "SilhouetteViewSupport.h"
 
 #include <algorithm>
 #include <array>
@@ -39,70 +40,6 @@ vtkStandardNewMacro(vtkSilhouetteSmoothingFilter);
 
 namespace
 {
-
-// Everything about the view that changes the result. The camera's own MTime
-// is not enough: renderers reset its clipping range every frame, which would
-// re-run the filter for nothing, while a prop's matrix or a window's size can
-// change without touching the camera at all.
-// The camera enters through its model-view matrix (position, orientation,
-// model and user-view transforms) and its projection parameters, which do
-// not depend on the clipping range. Signatures are compared bitwise, so a NaN
-// in the view compares equal to itself instead of re-running the filter on
-// every update.
-struct ViewSignature
-{
-  std::array<double, 16> ModelView{};
-  std::array<double, 16> ExplicitProjection{};
-  std::array<double, 17> Projection{};
-  std::array<double, 16> Model{};
-  std::array<int, 2> Viewport{};
-
-  bool operator==(const ViewSignature& o) const { return std::memcmp(this, &o, sizeof(o)) == 0; }
-  bool operator!=(const ViewSignature& o) const { return !(*this == o); }
-};
-
-ViewSignature SignatureOf(vtkCamera* camera, const double model[16], std::array<int, 2> viewport)
-{
-  ViewSignature view; // value-initialised: no padding garbage for memcmp
-  std::memset(&view, 0, sizeof(view));
-  std::copy(&camera->GetModelViewTransformMatrix()->Element[0][0],
-    &camera->GetModelViewTransformMatrix()->Element[0][0] + 16, view.ModelView.begin());
-  if (camera->GetUseExplicitProjectionTransformMatrix() &&
-    camera->GetExplicitProjectionTransformMatrix())
-  {
-    std::copy(&camera->GetExplicitProjectionTransformMatrix()->Element[0][0],
-      &camera->GetExplicitProjectionTransformMatrix()->Element[0][0] + 16,
-      view.ExplicitProjection.begin());
-  }
-  double* p = view.Projection.data();
-  p[0] = camera->GetViewAngle();
-  p[1] = camera->GetParallelScale();
-  p[2] = camera->GetParallelProjection();
-  p[3] = camera->GetUseHorizontalViewAngle();
-  camera->GetWindowCenter(p + 4);
-  camera->GetViewShear(p + 6);
-  p[9] = camera->GetEyeAngle();
-  p[10] = camera->GetUseExplicitProjectionTransformMatrix();
-  p[11] = camera->GetUseOffAxisProjection();
-  p[12] = camera->GetEyeSeparation();
-  camera->GetScreenBottomLeft(p + 13); // with UseOffAxisProjection
-  p[16] = camera->GetLeftEye();
-  std::copy(model, model + 16, view.Model.begin());
-  view.Viewport = viewport;
-  return view;
-}
-
-bool AllFinite(const double* values, int count)
-{
-  for (int i = 0; i < count; ++i)
-  {
-    if (!std::isfinite(values[i]))
-    {
-      return false;
-    }
-  }
-  return true;
-}
 
 void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
 {
@@ -335,9 +272,7 @@ struct vtkSilhouetteSmoothingFilter::Internals
   std::array<double, 3> CachedFeatureSettings{ { -1.0, -1.0, -1.0 } };
 
   // The last view seen by GetMTime(), and when it last changed.
-  ViewSignature LastView;
-  bool HaveView = false;
-  vtkTimeStamp ViewTime;
+  silsmooth_vtk::ViewTracker View;
 
   bool Rebuild(vtkPolyData* input, bool useLines, bool detect, double featureAngle);
 };
@@ -366,50 +301,13 @@ bool vtkSilhouetteSmoothingFilter::Internals::Rebuild(
   // Triangulate: polygons as fans, strips with alternating orientation, so
   // every triangle keeps its cell's orientation.
   std::vector<silsmooth::Triangle> triangles;
-  this->TriangleCell.clear();
-  this->TooSmallPolygons = 0;
-  const vtkIdType cellOffset = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  if (!silsmooth_vtk::ExtractTriangles(
+        input, triangles, this->TriangleCell, this->TooSmallPolygons))
+  {
+    return false;
+  }
   vtkIdType npts = 0;
   const vtkIdType* pts = nullptr;
-  vtkIdType cellId = cellOffset;
-  auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell(), ++cellId)
-  {
-    polys->GetCurrentCell(npts, pts);
-    this->TooSmallPolygons += npts < 3 ? 1 : 0;
-    for (vtkIdType k = 1; k + 1 < npts; ++k)
-    {
-      triangles.push_back({ pts[0], pts[k], pts[k + 1] });
-      this->TriangleCell.push_back(cellId);
-    }
-  }
-  auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
-  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell(), ++cellId)
-  {
-    strips->GetCurrentCell(npts, pts);
-    for (vtkIdType k = 0; k + 2 < npts; ++k)
-    {
-      if (k % 2 == 0)
-      {
-        triangles.push_back({ pts[k], pts[k + 1], pts[k + 2] });
-      }
-      else
-      {
-        triangles.push_back({ pts[k + 1], pts[k], pts[k + 2] });
-      }
-      this->TriangleCell.push_back(cellId);
-    }
-  }
-  for (const silsmooth::Triangle& t : triangles)
-  {
-    for (const silsmooth::Id id : t)
-    {
-      if (id < 0 || id >= numPoints)
-      {
-        return false;
-      }
-    }
-  }
   // Verts and lines pass through, so their ids must be valid too.
   for (vtkCellArray* cells : { input->GetVerts(), input->GetLines() })
   {
@@ -427,20 +325,7 @@ bool vtkSilhouetteSmoothingFilter::Internals::Rebuild(
     }
   }
 
-  std::vector<glm::dvec3> normals;
-  if (vtkDataArray* given = input->GetPointData()->GetNormals())
-  {
-    if (given->GetNumberOfComponents() == 3 && given->GetNumberOfTuples() == numPoints)
-    {
-      normals.resize(static_cast<std::size_t>(numPoints));
-      for (vtkIdType i = 0; i < numPoints; ++i)
-      {
-        double n[3];
-        given->GetTuple(i, n);
-        normals[static_cast<std::size_t>(i)] = glm::dvec3(n[0], n[1], n[2]);
-      }
-    }
-  }
+  const std::vector<glm::dvec3> normals = silsmooth_vtk::PointNormalsOf(input);
   // Feature edges: the segments of line cells (marked), and edges sharper
   // than the feature angle (detected).
   std::vector<silsmooth::FeatureEdge> features;
@@ -517,70 +402,19 @@ vtkPolyData* vtkSilhouetteSmoothingFilter::GetSilhouetteOutput()
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
 }
 
-namespace
-{
-
-// The renderer's camera only if it exists: asking for it would create one,
-// and a renderer that already has a camera skips its first automatic reset.
-vtkCamera* ActiveCamera(vtkCamera* camera, vtkRenderer* renderer)
-{
-  if (camera)
-  {
-    return camera;
-  }
-  return renderer && renderer->IsActiveCameraCreated() ? renderer->GetActiveCamera() : nullptr;
-}
-
-void ModelMatrixOf(vtkProp3D* prop, vtkMatrix4x4* matrix, double out[16])
-{
-  if (prop)
-  {
-    prop->GetMatrix(out);
-  }
-  else if (matrix)
-  {
-    std::copy(&matrix->Element[0][0], &matrix->Element[0][0] + 16, out);
-  }
-  else
-  {
-    vtkMatrix4x4::Identity(out);
-  }
-}
-
-std::array<int, 2> ViewportOf(vtkRenderer* renderer, const int fallback[2])
-{
-  if (renderer)
-  {
-    const int* size = renderer->GetSize();
-    if (size[0] > 0 && size[1] > 0)
-    {
-      return { size[0], size[1] };
-    }
-  }
-  return { fallback[0], fallback[1] };
-}
-
-} // namespace
-
 vtkMTimeType vtkSilhouetteSmoothingFilter::GetMTime()
 {
   vtkMTimeType mtime = this->Superclass::GetMTime();
-  vtkCamera* camera = ActiveCamera(this->Camera, this->Renderer);
+  vtkCamera* camera = silsmooth_vtk::ActiveCamera(this->Camera, this->Renderer);
   if (!camera)
   {
     return mtime;
   }
   double model[16];
-  ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
-  const ViewSignature view =
-    SignatureOf(camera, model, ViewportOf(this->Renderer, this->ViewportSize));
-  if (!this->Internal->HaveView || view != this->Internal->LastView)
-  {
-    this->Internal->LastView = view;
-    this->Internal->HaveView = true;
-    this->Internal->ViewTime.Modified();
-  }
-  return std::max(mtime, this->Internal->ViewTime.GetMTime());
+  silsmooth_vtk::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
+  return std::max(mtime,
+    this->Internal->View.Update(
+      camera, model, silsmooth_vtk::ViewportOf(this->Renderer, this->ViewportSize)));
 }
 
 int vtkSilhouetteSmoothingFilter::RequestData(
@@ -595,7 +429,7 @@ int vtkSilhouetteSmoothingFilter::RequestData(
     return 0;
   }
 
-  vtkCamera* camera = ActiveCamera(this->Camera, this->Renderer);
+  vtkCamera* camera = silsmooth_vtk::ActiveCamera(this->Camera, this->Renderer);
   if (!camera && this->Renderer)
   {
     // The renderer asks for the bounds before it creates its camera (to reset
@@ -634,58 +468,16 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   }
   this->UpdateProgress(0.2);
 
-  // The view in the data's model coordinates: model -> eye is the camera's
-  // model-view matrix (which includes its model and user-view transforms)
-  // times the prop's matrix; the eye is its inverse applied to the origin, and
-  // the direction towards the viewer its inverse applied to +z.
+  // The view in the data's model coordinates (SilhouetteViewSupport.h).
   double model[16];
-  ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
-  double modelView[16];
-  vtkMatrix4x4::Multiply4x4(
-    &camera->GetModelViewTransformMatrix()->Element[0][0], model, modelView);
-  const double determinant = vtkMatrix4x4::Determinant(modelView);
-  if (!AllFinite(model, 16) || !AllFinite(modelView, 16) || !(std::abs(determinant) > 0.0) ||
-    !std::isfinite(determinant) || model[12] != 0.0 || model[13] != 0.0 || model[14] != 0.0 ||
-    model[15] != 1.0)
-  {
-    vtkErrorMacro("The view is degenerate: the model matrix or the camera is singular, not "
-                  "affine, or not finite.");
-    return 0;
-  }
-  double inverse[16];
-  vtkMatrix4x4::Invert(modelView, inverse);
-  const std::array<int, 2> viewport = ViewportOf(this->Renderer, this->ViewportSize);
-  if (viewport[0] < 1 || viewport[1] < 1)
-  {
-    vtkErrorMacro("The viewport size must be at least 1 x 1 pixels, not " << viewport[0] << " x "
-                                                                          << viewport[1] << ".");
-    return 0;
-  }
-
+  silsmooth_vtk::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
   silsmooth::ViewGeometry view;
-  view.Parallel = camera->GetParallelProjection() != 0;
-  view.ViewportWidth = viewport[0];
-  view.ViewportHeight = viewport[1];
-  double eye[4] = { 0, 0, 0, 1 };
-  vtkMatrix4x4::MultiplyPoint(inverse, eye, eye);
-  view.Eye = glm::dvec3(eye[0], eye[1], eye[2]) / eye[3];
-  double toward[4] = { 0, 0, 1, 0 };
-  vtkMatrix4x4::MultiplyPoint(inverse, toward, toward);
-  view.TowardViewer = silsmooth::safeNormalize(glm::dvec3(toward[0], toward[1], toward[2]));
-
-  // Model -> clip = (projection * view) * model, into glm's column-major form.
-  double composite[16];
-  vtkMatrix4x4::DeepCopy(composite,
-    camera->GetCompositeProjectionTransformMatrix(
-      static_cast<double>(viewport[0]) / viewport[1], -1.0, 1.0));
-  double clip[16];
-  vtkMatrix4x4::Multiply4x4(composite, model, clip);
-  for (int row = 0; row < 4; ++row)
+  const std::string viewError = silsmooth_vtk::MakeViewGeometry(
+    camera, model, silsmooth_vtk::ViewportOf(this->Renderer, this->ViewportSize), view);
+  if (!viewError.empty())
   {
-    for (int col = 0; col < 4; ++col)
-    {
-      view.ModelToClip[col][row] = clip[row * 4 + col];
-    }
+    vtkErrorMacro(<< viewError);
+    return 0;
   }
 
   silsmooth::SmoothingParameters parameters;

@@ -81,6 +81,9 @@ int main(int argc, char* argv[])
       case cli::CommandLine::Action::View:
         cli::RunView(commandLine.View);
         break;
+      case cli::CommandLine::Action::Simplify:
+        cli::RunSimplify(commandLine.Simplify);
+        break;
     }
     return cli::ExitSuccess;
   }

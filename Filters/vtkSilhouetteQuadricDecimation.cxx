@@ -65,7 +65,9 @@ int vtkSilhouetteQuadricDecimation::RequestData(
   silsmooth::SimplificationParameters parameters;
   parameters.TargetTriangles = static_cast<std::size_t>(this->TargetTriangles);
   parameters.NearFactor = this->NearFactor;
-  vtkDataArray* labels = input->GetPointData()->GetArray(this->DistanceArrayName.c_str());
+  vtkDataArray* labels = this->DistanceArrayName.empty()
+    ? nullptr
+    : input->GetPointData()->GetArray(this->DistanceArrayName.c_str());
   if (labels && labels->GetNumberOfComponents() == 1 && labels->GetNumberOfTuples() == numPoints)
   {
     parameters.Near.resize(static_cast<std::size_t>(numPoints));

@@ -70,7 +70,10 @@ public:
   ///@}
 
   ///@{
-  /** The point array of distance labels. Default "SilhouetteDistance". */
+  /**
+   * The point array of distance labels. Default "SilhouetteDistance"; an
+   * empty name (or a missing array) makes it a plain quadric decimation.
+   */
   void SetDistanceArrayName(const std::string& name);
   const std::string& GetDistanceArrayName() const { return this->DistanceArrayName; }
   ///@}

@@ -4,6 +4,8 @@
 #include "Figures.h"
 #include "MeshIO.h"
 #include "Rendering.h"
+#include "RenderingBackend.h"
+#include "SilhouetteMasks.h"
 #include "VtkErrorLog.h"
 
 #include <vtkCamera.h>
@@ -62,8 +64,16 @@ Options:
                       contour, so N may not be reached: the figures say so)
   --plain             ignore the contour: plain quadric simplification, for
                       comparison (the camera options then play no part)
+  --measure           also render INPUT and the result as flat masks at
+                      --size with the camera, and print the distance between
+                      their outlines in pixels (every boundary pixel of each
+                      mask to the other's boundary, Euclidean distance
+                      transform; mean and max), as 'compare' measures; needs
+                      a display or OSMesa, like 'render' (default: no
+                      rendering)
   --json              print the figures as one JSON object instead of text
-  -h, --help          show this help and exit
+)" + RenderBackendHelp(22) +
+    R"(  -h, --help          show this help and exit
 
 Only --size and the camera of the camera options below matter here;
 --tolerance and the smoothing options are accepted and ignored.
@@ -74,10 +84,11 @@ Figures: input and output triangles, whether N was reached, output points
 and how many of them are near the contour, e, the worst quadric error near
 the contour and elsewhere, the grid's size in cells and a cell's side in
 pixels, and the time of the proximity labelling and of the simplification
-in milliseconds. With --json the keys are input, output, input_triangles,
-output_triangles, reached_target, output_points, near_points, threshold,
-worst_near_error, worst_far_error, near_factor, grid [w, h], cell_pixels,
-proximity_ms, simplify_ms.
+in milliseconds; with --measure the outline deviation. With --json the keys
+are input, output, input_triangles, output_triangles, reached_target,
+output_points, near_points, threshold, worst_near_error, worst_far_error,
+near_factor, grid [w, h], cell_pixels, proximity_ms, simplify_ms, and with
+--measure outline_mean_px and outline_max_px.
 )";
 }
 
@@ -140,6 +151,11 @@ bool ParseSimplifyOption(const Option& option, ArgumentList& arguments, Simplify
     RejectInlineValue(option);
     options.Plain = true;
   }
+  else if (option.Name == "--measure")
+  {
+    RejectInlineValue(option);
+    options.Measure = true;
+  }
   else
   {
     return false;
@@ -167,6 +183,10 @@ void RunSimplify(const SimplifyOptions& options)
 {
   using Clock = std::chrono::steady_clock;
   CheckMeshOutputPath(options.Output);
+  if (options.Measure)
+  {
+    RequireDisplay();
+  }
   vtkSmartPointer<vtkPolyData> mesh = ReadMesh(options.Input);
   const vtkIdType inputTriangles = CountTriangles(mesh);
   if (inputTriangles == 0)
@@ -229,6 +249,18 @@ void RunSimplify(const SimplifyOptions& options)
   const double simplifyMs =
     std::chrono::duration<double, std::milli>(simplified - labelled).count();
   const double factor = options.Plain ? 1.0 : options.NearFactor;
+  silhouette_eval::BoundaryDistance outline;
+  if (options.Measure)
+  {
+    errors.Clear();
+    silhouette_eval::MaskRenderer masks(
+      options.Camera.ViewportSize[0], options.Camera.ViewportSize[1]);
+    vtkCamera* camera = view.Renderer->GetActiveCamera();
+    const silhouette_eval::Mask before = masks.Render(mesh, camera);
+    const silhouette_eval::Mask after = masks.Render(out, camera);
+    errors.ThrowIfErrors("rendering failed");
+    outline = silhouette_eval::OutlineDeviation(before, after);
+  }
 
   std::ostringstream text;
   if (options.Json)
@@ -243,7 +275,12 @@ void RunSimplify(const SimplifyOptions& options)
          << ", \"worst_near_error\": " << worstNear << ", \"worst_far_error\": " << worstFar
          << ", \"near_factor\": " << factor << ", \"grid\": [" << gridSize->GetComponent(0, 0)
          << ", " << gridSize->GetComponent(0, 1) << "], \"cell_pixels\": " << cellPixels
-         << ", \"proximity_ms\": " << labelMs << ", \"simplify_ms\": " << simplifyMs << "}\n";
+         << ", \"proximity_ms\": " << labelMs << ", \"simplify_ms\": " << simplifyMs;
+    if (options.Measure)
+    {
+      text << ", \"outline_mean_px\": " << outline.Mean << ", \"outline_max_px\": " << outline.Max;
+    }
+    text << "}\n";
   }
   else
   {
@@ -262,6 +299,11 @@ void RunSimplify(const SimplifyOptions& options)
          << gridSize->GetComponent(0, 1) << " cells of " << cellPixels << " px\n"
          << "proximity labels:   " << labelMs << " ms\n"
          << "simplification:     " << simplifyMs << " ms\n";
+    if (options.Measure)
+    {
+      text << "outline deviation:  " << outline.Mean << " px mean, " << outline.Max
+           << " px max (from the input's outline, same camera)\n";
+    }
   }
   std::cout << text.str();
   std::cout.flush();

@@ -22,7 +22,8 @@ struct SimplifyOptions
   double NearMinimum = 1.0;
   double NearMaximum = 3.0;
   double NearFactor = 0.1;
-  bool Plain = false; ///< no proximity: plain quadric simplification
+  bool Plain = false;   ///< no proximity: plain quadric simplification
+  bool Measure = false; ///< render input and output masks, print the outline deviation
 };
 
 /// The help text of `simplify`.

@@ -36,6 +36,13 @@ void SelectBackendFor(const cli::CommandLine& commandLine, char* argv[])
       cli::SelectRenderBackend(commandLine.Backend, false, argv);
       cli::GuardRenderingAborts(argv);
       break;
+    case Action::Simplify:
+      if (commandLine.Simplify.Measure)
+      {
+        cli::SelectRenderBackend(commandLine.Backend, false, argv);
+        cli::GuardRenderingAborts(argv);
+      }
+      break;
     case Action::View:
     {
       const bool headless = commandLine.View.Orbit || !commandLine.View.PlayLog.empty();

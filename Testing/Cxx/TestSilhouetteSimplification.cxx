@@ -2,14 +2,18 @@
 // et al.): labels on an icosphere, the triangle budget, the e and f * e
 // bounds measured on the output, closed manifold in and out, and the outline
 // of the bunny simplified with and without the proximity labels, measured
-// against the original's outline from the same camera.
+// against the original's outline from the same camera; pipeline and errors.
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkTestErrorObserver.h"
 
 #include "vtkSilhouetteProximity.h"
 #include "vtkSilhouetteQuadricDecimation.h"
@@ -132,11 +136,68 @@ bool CheckBunnyOutline(int argc, char* argv[])
   return true;
 }
 
+// The proximity follows the view by value; missing cameras and bad cells
+// fail with a message; an empty mesh passes.
+bool CheckPipelineAndErrors()
+{
+  vtkSmartPointer<vtkPolyData> sphere = silhouette_test::Icosphere(2);
+  vtkSmartPointer<vtkCamera> camera = silhouette_test::CameraLookingAtOrigin({ 0, 0, 1 }, 4);
+  vtkNew<vtkSilhouetteProximity> proximity;
+  proximity->SetInputData(sphere);
+  proximity->SetCamera(camera);
+  proximity->Update();
+  const vtkMTimeType first = proximity->GetMTime();
+  camera->SetClippingRange(0.1, 50);
+  CHECK(proximity->GetMTime() == first, "a clipping-range change does not re-run it");
+  camera->Elevation(20);
+  CHECK(proximity->GetMTime() > first, "a camera move re-runs it");
+  proximity->SetViewportSize(800, 800);
+  proximity->Update();
+  CHECK(proximity->GetOutput()->GetFieldData()->GetArray("ProximityGridSize"), "grid size");
+
+  vtkNew<vtkTest::ErrorObserver> errors;
+  vtkNew<vtkTest::ErrorObserver> executive;
+  vtkNew<vtkSilhouetteProximity> noCamera;
+  noCamera->AddObserver(vtkCommand::ErrorEvent, errors);
+  noCamera->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executive);
+  noCamera->SetInputData(sphere);
+  CHECK(noCamera->GetExecutive()->Update() == 0, "no camera fails");
+  CHECK(errors->GetError() &&
+      std::string(errors->GetErrorMessage()).find("No camera") != std::string::npos,
+    "the missing camera is named");
+
+  vtkNew<vtkPolyData> bad;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  bad->SetPoints(points);
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType ids[3] = { 0, 1, 7 };
+  polys->InsertNextCell(3, ids);
+  bad->SetPolys(polys);
+  vtkNew<vtkTest::ErrorObserver> decimateErrors;
+  vtkNew<vtkTest::ErrorObserver> decimateExecutive;
+  vtkNew<vtkSilhouetteQuadricDecimation> decimate;
+  decimate->AddObserver(vtkCommand::ErrorEvent, decimateErrors);
+  decimate->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, decimateExecutive);
+  decimate->SetInputData(bad);
+  CHECK(decimate->GetExecutive()->Update() == 0, "a cell naming a missing point fails");
+  CHECK(decimateErrors->GetError() &&
+      std::string(decimateErrors->GetErrorMessage()).find("do not exist") != std::string::npos,
+    "the missing points are named");
+  vtkNew<vtkPolyData> empty;
+  decimate->SetInputData(empty);
+  CHECK(decimate->GetExecutive()->Update() == 1, "an empty mesh passes");
+  CHECK(decimate->GetOutput()->GetNumberOfPolys() == 0, "and stays empty");
+  return true;
+}
+
 } // namespace
 
 int TestSilhouetteSimplification(int argc, char* argv[])
 {
   bool ok = CheckIcosphere();
   ok = CheckBunnyOutline(argc, argv) && ok;
+  ok = CheckPipelineAndErrors() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -51,62 +51,17 @@ print(*(["--camera-position"] + c["position"] + ["--focal-point"] + c["focal_poi
 done
 
 mkdir -p "$here/docs/figures"
-"${display[@]}" /usr/bin/python3 - "$work" "$here/docs/figures/simplification.png" "$triangles" <<'PY'
+labels=()
+for variant in plain aware; do
+  labels+=("$(/usr/bin/python3 -c '
 import json, sys
-from vtkmodules.vtkIOImage import vtkPNGReader, vtkPNGWriter
-from vtkmodules.vtkRenderingCore import (vtkImageActor, vtkRenderer, vtkRenderWindow,
-                                         vtkTextActor, vtkWindowToImageFilter)
-import vtkmodules.vtkRenderingOpenGL2
-import vtkmodules.vtkRenderingFreeType
-
-work, out, triangles = sys.argv[1], sys.argv[2], sys.argv[3]
-w, h = 560, 480
-window = vtkRenderWindow()
-window.SetOffScreenRendering(1)
-window.SetMultiSamples(0)
-window.SetSize(2 * w, 2 * h)
-keep = []
-for col, variant in enumerate(["plain", "aware"]):
-    figures = json.load(open(f"{work}/{variant}.json"))
-    title = ("plain quadric" if variant == "plain" else
-             f"silhouette-aware, f = {figures['near_factor']:g}")
-    label = (f"{title}, {figures['output_triangles']} triangles\n"
-             f"outline off the original's: {figures['outline_mean_px']:.2f} px mean, "
-             f"{figures['outline_max_px']:.2f} px max")
-    for row, style in enumerate(["wireframe", "shaded"]):
-        reader = vtkPNGReader()
-        reader.SetFileName(f"{work}/{variant}_{style}.png")
-        reader.Update()
-        actor = vtkImageActor()
-        actor.GetMapper().SetInputConnection(reader.GetOutputPort())
-        renderer = vtkRenderer()
-        renderer.SetViewport(col / 2, (1 - row) / 2, (col + 1) / 2, (2 - row) / 2)
-        renderer.AddActor(actor)
-        camera = renderer.GetActiveCamera()
-        camera.ParallelProjectionOn()
-        camera.SetFocalPoint((w - 1) / 2, (h - 1) / 2, 0)
-        camera.SetPosition((w - 1) / 2, (h - 1) / 2, 1000)
-        camera.SetParallelScale(h / 2)
-        renderer.ResetCameraClippingRange()
-        if row == 0:
-            text = vtkTextActor()
-            text.SetInput(label)
-            text.GetTextProperty().SetFontSize(15)
-            text.GetTextProperty().SetColor(0, 0, 0)
-            text.GetPositionCoordinate().SetCoordinateSystemToNormalizedViewport()
-            text.GetPositionCoordinate().SetValue(0.02, 0.89)
-            renderer.AddActor2D(text)
-            keep.append(text)
-        window.AddRenderer(renderer)
-        keep += [reader, actor, renderer]
-window.Render()
-grab = vtkWindowToImageFilter()
-grab.SetInput(window)
-grab.ReadFrontBufferOff()
-grab.Update()
-writer = vtkPNGWriter()
-writer.SetFileName(out)
-writer.SetInputConnection(grab.GetOutputPort())
-writer.Write()
-print("wrote", out)
-PY
+f = json.load(open(sys.argv[1]))
+title = "plain quadric" if sys.argv[2] == "plain" else "silhouette-aware, f = %g" % f["near_factor"]
+print("%s, %d triangles\\noutline off the original\x27s: %.2f px mean, %.2f px max"
+      % (title, f["output_triangles"], f["outline_mean_px"], f["outline_max_px"]))' \
+    "$work/$variant.json" "$variant")")
+done
+"${display[@]}" /usr/bin/python3 "$here/scripts/compose_panels.py" \
+  "$here/docs/figures/simplification.png" 2 \
+  "$work/plain_wireframe.png" "${labels[0]}" "$work/aware_wireframe.png" "${labels[1]}" \
+  "$work/plain_shaded.png" "" "$work/aware_shaded.png" ""

@@ -49,6 +49,37 @@ inline void unitSphere(int rings, int sectors, std::vector<glm::dvec3>& points,
   }
 }
 
+/// A torus about z (ring radius 1, tube radius r), u x v quads split in two.
+inline void torus(int u, int v, double r, std::vector<glm::dvec3>& points,
+  std::vector<silsmooth::Triangle>& triangles)
+{
+  using silsmooth::Id;
+  const double pi = 3.14159265358979323846;
+  points.clear();
+  triangles.clear();
+  for (int i = 0; i < u; ++i)
+  {
+    const double a = 2.0 * pi * i / u;
+    for (int j = 0; j < v; ++j)
+    {
+      const double b = 2.0 * pi * j / v;
+      points.emplace_back((1.0 + r * std::cos(b)) * std::cos(a),
+        (1.0 + r * std::cos(b)) * std::sin(a), r * std::sin(b));
+    }
+  }
+  auto at = [u, v](int i, int j) {
+    return static_cast<Id>((i % u) * v + j % v);
+  };
+  for (int i = 0; i < u; ++i)
+  {
+    for (int j = 0; j < v; ++j)
+    {
+      triangles.push_back({ at(i, j), at(i + 1, j), at(i + 1, j + 1) });
+      triangles.push_back({ at(i, j), at(i + 1, j + 1), at(i, j + 1) });
+    }
+  }
+}
+
 /// Directed-edge bookkeeping: a closed, consistently oriented 2-manifold has
 /// every directed edge once and its reverse once.
 struct ManifoldCheck

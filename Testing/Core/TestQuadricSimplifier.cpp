@@ -62,6 +62,26 @@ TEST(QuadricSimplifier, ReachesTheCountAndStaysClosed)
   }
 }
 
+TEST(QuadricSimplifier, TorusKeepsItsGenus)
+{
+  // Genus 1: the Euler characteristic stays 0, whatever the budget.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::torus(40, 20, 0.4, points, triangles); // 1,600 triangles
+  for (const std::size_t target : { 800u, 200u, 60u })
+  {
+    SimplificationParameters p;
+    p.TargetTriangles = target;
+    p.Near = equatorBand(points);
+    p.NearFactor = 0.2;
+    const SimplificationResult r = simplifyQuadric(points, triangles, p);
+    EXPECT_TRUE(coretest::checkManifold(r.Triangles).closedManifold()) << target;
+    EXPECT_EQ(eulerCharacteristic(r), 0) << target;
+    EXPECT_TRUE(r.ReachedTarget) << target;
+    EXPECT_LE(r.Triangles.size(), target);
+  }
+}
+
 TEST(QuadricSimplifier, NearPointsKeepTheSmallerError)
 {
   const Sphere s(20, 40);

@@ -18,7 +18,7 @@
 #include "vtkSMPTools.h"
 
 #include "FaceSilhouetteLines.h"
-#include "SilhouetteViewSupport.h"
+#include "vtkSilhouetteFilterSupport.h"
 
 #include <algorithm>
 #include <cmath>
@@ -31,7 +31,7 @@ struct vtkFaceSilhouetteLines::Internals
   vtkPolyData* CachedInput = nullptr;
   vtkMTimeType CachedInputTime = 0;
   bool NonFinite = false;
-  silsmooth_vtk::ViewTracker View;
+  vtkSilhouetteFilterSupport::ViewTracker View;
 };
 
 vtkFaceSilhouetteLines::vtkFaceSilhouetteLines()
@@ -79,13 +79,13 @@ vtkRenderer* vtkFaceSilhouetteLines::GetRenderer()
 vtkMTimeType vtkFaceSilhouetteLines::GetMTime()
 {
   const vtkMTimeType mtime = this->Superclass::GetMTime();
-  vtkCamera* camera = silsmooth_vtk::ActiveCamera(this->Camera, this->Renderer);
+  vtkCamera* camera = vtkSilhouetteFilterSupport::ActiveCamera(this->Camera, this->Renderer);
   if (!camera)
   {
     return mtime;
   }
   double model[16];
-  silsmooth_vtk::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
+  vtkSilhouetteFilterSupport::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
   // The viewport plays no part in the lines: a fixed one keeps window
   // resizes from re-running the filter.
   return std::max(mtime, this->Internal->View.Update(camera, model, { 1, 1 }));
@@ -101,7 +101,7 @@ int vtkFaceSilhouetteLines::RequestData(
     vtkErrorMacro("Missing input or output polydata.");
     return 0;
   }
-  vtkCamera* camera = silsmooth_vtk::ActiveCamera(this->Camera, this->Renderer);
+  vtkCamera* camera = vtkSilhouetteFilterSupport::ActiveCamera(this->Camera, this->Renderer);
   if (!camera && this->Renderer)
   {
     return 1; // the renderer has no camera yet: nothing to draw until it has
@@ -117,26 +117,16 @@ int vtkFaceSilhouetteLines::RequestData(
     internal.CachedInputTime != input->GetMTime())
   {
     internal.Mesh.reset();
-    std::vector<silsmooth::Triangle> triangles;
-    std::vector<vtkIdType> triangleCell;
-    vtkIdType tooSmall = 0;
-    if (!silsmooth_vtk::ExtractTriangles(input, triangles, triangleCell, tooSmall))
+    vtkSilhouetteFilterSupport::Triangles mesh;
+    const std::string readError = vtkSilhouetteFilterSupport::ReadTriangles(input, mesh);
+    if (!readError.empty())
     {
-      vtkErrorMacro("Input cells refer to points that do not exist.");
+      vtkErrorMacro(<< readError);
       return 0;
     }
-    const vtkIdType numPoints = input->GetNumberOfPoints();
-    std::vector<glm::dvec3> points(static_cast<std::size_t>(numPoints));
-    internal.NonFinite = false;
-    for (vtkIdType i = 0; i < numPoints; ++i)
-    {
-      double p[3];
-      input->GetPoint(i, p);
-      internal.NonFinite |= !std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]);
-      points[static_cast<std::size_t>(i)] = glm::dvec3(p[0], p[1], p[2]);
-    }
+    internal.NonFinite = mesh.NonFinitePoints > 0;
     internal.Mesh = std::make_unique<silsmooth::PreparedMesh>(
-      std::move(points), std::move(triangles), silsmooth_vtk::PointNormalsOf(input));
+      std::move(mesh.Points), std::move(mesh.Cells), mesh.Normals);
     internal.CachedInput = input;
     internal.CachedInputTime = input->GetMTime();
   }
@@ -147,9 +137,10 @@ int vtkFaceSilhouetteLines::RequestData(
   }
 
   double model[16];
-  silsmooth_vtk::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
+  vtkSilhouetteFilterSupport::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
   silsmooth::ViewGeometry view;
-  const std::string viewError = silsmooth_vtk::MakeViewGeometry(camera, model, { 1, 1 }, view);
+  const std::string viewError =
+    vtkSilhouetteFilterSupport::MakeViewGeometry(camera, model, { 1, 1 }, view);
   if (!viewError.empty())
   {
     vtkErrorMacro(<< viewError);

@@ -15,7 +15,7 @@
 #include "vtkRenderer.h"
 
 #include "SilhouetteProximity.h"
-#include "SilhouetteViewSupport.h"
+#include "vtkSilhouetteFilterSupport.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,7 +24,7 @@ vtkStandardNewMacro(vtkSilhouetteProximity);
 
 struct vtkSilhouetteProximity::Internals
 {
-  silsmooth_vtk::ViewTracker View;
+  vtkSilhouetteFilterSupport::ViewTracker View;
 };
 
 vtkSilhouetteProximity::vtkSilhouetteProximity()
@@ -72,16 +72,16 @@ vtkRenderer* vtkSilhouetteProximity::GetRenderer()
 vtkMTimeType vtkSilhouetteProximity::GetMTime()
 {
   const vtkMTimeType mtime = this->Superclass::GetMTime();
-  vtkCamera* camera = silsmooth_vtk::ActiveCamera(this->Camera, this->Renderer);
+  vtkCamera* camera = vtkSilhouetteFilterSupport::ActiveCamera(this->Camera, this->Renderer);
   if (!camera)
   {
     return mtime;
   }
   double model[16];
-  silsmooth_vtk::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
+  vtkSilhouetteFilterSupport::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
   return std::max(mtime,
     this->Internal->View.Update(
-      camera, model, silsmooth_vtk::ViewportOf(this->Renderer, this->ViewportSize)));
+      camera, model, vtkSilhouetteFilterSupport::ViewportOf(this->Renderer, this->ViewportSize)));
 }
 
 int vtkSilhouetteProximity::RequestData(
@@ -94,38 +94,34 @@ int vtkSilhouetteProximity::RequestData(
     vtkErrorMacro("Missing input or output polydata.");
     return 0;
   }
-  vtkCamera* camera = silsmooth_vtk::ActiveCamera(this->Camera, this->Renderer);
+  vtkCamera* camera = vtkSilhouetteFilterSupport::ActiveCamera(this->Camera, this->Renderer);
   if (!camera)
   {
     vtkErrorMacro("No camera: call SetCamera() or SetRenderer() before updating.");
     return 0;
   }
-  std::vector<silsmooth::Triangle> triangles;
-  std::vector<vtkIdType> triangleCell;
-  vtkIdType tooSmall = 0;
-  if (!silsmooth_vtk::ExtractTriangles(input, triangles, triangleCell, tooSmall))
+  vtkSilhouetteFilterSupport::Triangles mesh;
+  const std::string readError = vtkSilhouetteFilterSupport::ReadTriangles(input, mesh);
+  if (!readError.empty())
   {
-    vtkErrorMacro("Input cells refer to points that do not exist.");
+    vtkErrorMacro(<< readError);
+    return 0;
+  }
+  if (mesh.NonFinitePoints > 0)
+  {
+    vtkErrorMacro(
+      "Input has " << mesh.NonFinitePoints << " points with NaN or infinite coordinates.");
     return 0;
   }
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  std::vector<glm::dvec3> points(static_cast<std::size_t>(numPoints));
-  for (vtkIdType i = 0; i < numPoints; ++i)
-  {
-    double p[3];
-    input->GetPoint(i, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-    {
-      vtkErrorMacro("Input has points with NaN or infinite coordinates (point " << i << ").");
-      return 0;
-    }
-    points[static_cast<std::size_t>(i)] = glm::dvec3(p[0], p[1], p[2]);
-  }
+  std::vector<glm::dvec3>& points = mesh.Points;
+  std::vector<silsmooth::Triangle>& triangles = mesh.Cells;
+  std::vector<vtkIdType>& triangleCell = mesh.CellIds;
   double model[16];
-  silsmooth_vtk::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
+  vtkSilhouetteFilterSupport::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
   silsmooth::ViewGeometry view;
-  const std::string viewError = silsmooth_vtk::MakeViewGeometry(
-    camera, model, silsmooth_vtk::ViewportOf(this->Renderer, this->ViewportSize), view);
+  const std::string viewError = vtkSilhouetteFilterSupport::MakeViewGeometry(camera, model,
+    vtkSilhouetteFilterSupport::ViewportOf(this->Renderer, this->ViewportSize), view);
   if (!viewError.empty())
   {
     vtkErrorMacro(<< viewError);

@@ -15,7 +15,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include "QuadricSimplifier.h"
-#include "SilhouetteViewSupport.h"
+#include "vtkSilhouetteFilterSupport.h"
 
 #include <cmath>
 
@@ -40,27 +40,23 @@ int vtkSilhouetteQuadricDecimation::RequestData(
     vtkErrorMacro("Missing input or output polydata.");
     return 0;
   }
-  std::vector<silsmooth::Triangle> triangles;
-  std::vector<vtkIdType> triangleCell;
-  vtkIdType tooSmall = 0;
-  if (!silsmooth_vtk::ExtractTriangles(input, triangles, triangleCell, tooSmall))
+  vtkSilhouetteFilterSupport::Triangles mesh;
+  const std::string readError = vtkSilhouetteFilterSupport::ReadTriangles(input, mesh);
+  if (!readError.empty())
   {
-    vtkErrorMacro("Input cells refer to points that do not exist.");
+    vtkErrorMacro(<< readError);
+    return 0;
+  }
+  if (mesh.NonFinitePoints > 0)
+  {
+    vtkErrorMacro(
+      "Input has " << mesh.NonFinitePoints << " points with NaN or infinite coordinates.");
     return 0;
   }
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  std::vector<glm::dvec3> points(static_cast<std::size_t>(numPoints));
-  for (vtkIdType i = 0; i < numPoints; ++i)
-  {
-    double p[3];
-    input->GetPoint(i, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-    {
-      vtkErrorMacro("Input has points with NaN or infinite coordinates (point " << i << ").");
-      return 0;
-    }
-    points[static_cast<std::size_t>(i)] = glm::dvec3(p[0], p[1], p[2]);
-  }
+  std::vector<glm::dvec3>& points = mesh.Points;
+  std::vector<silsmooth::Triangle>& triangles = mesh.Cells;
+  std::vector<vtkIdType>& triangleCell = mesh.CellIds;
 
   silsmooth::SimplificationParameters parameters;
   parameters.TargetTriangles = static_cast<std::size_t>(this->TargetTriangles);

@@ -28,6 +28,9 @@ Commands:
       render INPUT offscreen to a PNG image and print the same figures
   generate sphere|torus -o OUTPUT [shape options]
       write an analytic test mesh with exact normals
+  simplify INPUT -o OUTPUT --triangles N [options] [camera options]
+      quadric simplification to N triangles keeping more detail near the
+      contour of one view (Mata et al.'s silhouette proximity)
   compare MODEL|MESH|all ... [options]
       coarse, coarse + smoothing and a fine OpenSubdiv reference, measured
       from the same cameras: outline deviations and whole-frame times
@@ -116,9 +119,12 @@ Options:
                                         of the silhouette show too)
   --no-smoothing          draw the unsmoothed input in the same style: shaded
                           still uses the filter's shading normals; lines draws
-                          VTK's vtkPolyDataSilhouette of the input for the
-                          same camera, a stand-in for now (default: smoothed).
-                          The figures still describe the smoothing.
+                          the face-based silhouette (vtkFaceSilhouetteLines:
+                          in each silhouette triangle the straight segment
+                          between the zero crossings of the linearly
+                          interpolated N.(E-V) on its two mixed edges, with
+                          the filter's normals) (default: smoothed). The
+                          figures still describe the smoothing.
   --json                  print the figures as one JSON object instead of text
                           (default: text); its "output" is the image
 )" + RenderBackendHelp(26) +
@@ -183,8 +189,8 @@ side-by-side fine reference is OpenSubdiv Loop refinement of the original
 w, n and l switch to their style, or back to shaded when it is on already.
 f makes the fine reference the first time (Loop level --fine-level of the
 original; the status line says so, it takes a moment), then shows it on the
-right, sharing the camera: shaded, or as vtkPolyDataSilhouette lines in the
-lines style. + and - double and halve the tolerance within the slider's 0.1
+right, sharing the camera: shaded, or as its face-based silhouette lines in
+the lines style. + and - double and halve the tolerance within the slider's 0.1
 to 5 px. r goes back to the camera of the camera options, keeping the
 projection. c writes silhouette_view_NNNN.png (the first free number) to the
 screenshot folder and prints where. VTK's other trackball keys (3 stereo,
@@ -490,6 +496,10 @@ std::string HelpOf(const std::string& command)
   {
     return ViewHelp();
   }
+  if (command == "simplify")
+  {
+    return SimplifyHelp();
+  }
   if (command == "help")
   {
     return MainHelp();
@@ -744,6 +754,16 @@ CommandLine ParseCommandLine(int argc, char* argv[])
   {
     result.What = CommandLine::Action::View;
     result.View = ParseView(arguments, result.Backend);
+  }
+  else if (command == "simplify")
+  {
+    result.What = CommandLine::Action::Simplify;
+    SimplifyOptions& simplify = result.Simplify;
+    ParseCommand(
+      command, arguments, simplify, [&simplify](const Option& option, ArgumentList& args) {
+        return ParseSimplifyOption(option, args, simplify);
+      });
+    CheckSimplifyOptions(simplify);
   }
   else if (command == "smooth")
   {

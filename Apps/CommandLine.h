@@ -6,6 +6,7 @@
 #include "Figure.h"
 #include "Generate.h"
 #include "RenderingBackend.h"
+#include "Simplify.h"
 
 #include <optional>
 #include <string>
@@ -75,7 +76,8 @@ struct CommandLine
     Generate,
     Compare,
     Figure,
-    View
+    View,
+    Simplify
   };
   Action What = Action::ShowHelp;
   std::string HelpText;
@@ -85,6 +87,7 @@ struct CommandLine
   CompareOptions Compare;
   FigureOptions Figure;
   ViewOptions View;
+  SimplifyOptions Simplify;
   /// --backend of the commands that render (render, compare, figure, view).
   RenderBackend Backend = RenderBackend::Auto;
 };

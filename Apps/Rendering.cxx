@@ -11,13 +11,13 @@
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkFaceSilhouetteLines.h>
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
-#include <vtkPolyDataSilhouette.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
@@ -99,25 +99,17 @@ vtkSmartPointer<vtkActor> MakeActor(vtkPolyData* mesh)
   return actor;
 }
 
-// VTK's face-based silhouette edges of `input` for the renderer's camera:
-// the stand-in for the unsmoothed silhouette.
-vtkSmartPointer<vtkPolyDataSilhouette> MakeVtkSilhouette(vtkPolyData* input, vtkCamera* camera)
+// The face-based silhouette of `input` (vtkFaceSilhouetteLines, Xing's Fig.
+// 6b) for the renderer's camera, with the shading normals and visibility
+// rule of the smoothing filter: what the silhouette is before smoothing.
+vtkSmartPointer<vtkFaceSilhouetteLines> MakeFaceSilhouette(
+  vtkPolyData* input, vtkRenderer* renderer)
 {
-  auto silhouette = vtkSmartPointer<vtkPolyDataSilhouette>::New();
-  VtkErrorLog::Instance().Watch(silhouette);
-  silhouette->SetInputData(input);
-  silhouette->SetCamera(camera);
-  if (camera->GetParallelProjection())
-  {
-    silhouette->SetDirectionToCameraVector();
-  }
-  else
-  {
-    silhouette->SetDirectionToCameraOrigin();
-  }
-  silhouette->SetEnableFeatureAngle(0);
-  silhouette->BorderEdgesOff();
-  return silhouette;
+  auto lines = vtkSmartPointer<vtkFaceSilhouetteLines>::New();
+  VtkErrorLog::Instance().Watch(lines);
+  lines->SetInputData(input);
+  lines->SetRenderer(renderer);
+  return lines;
 }
 
 } // namespace
@@ -204,7 +196,7 @@ void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter,
     {
       vtkSmartPointer<vtkActor> actor = smoothed
         ? MakeActor(filter->GetOutputPort(1))
-        : MakeActor(MakeVtkSilhouette(input, renderer->GetActiveCamera())->GetOutputPort());
+        : MakeActor(MakeFaceSilhouette(input, renderer)->GetOutputPort());
       vtkProperty* property = actor->GetProperty();
       property->SetColor(Black[0], Black[1], Black[2]);
       property->SetLineWidth(2.0);

@@ -512,7 +512,7 @@ void Viewer::RebuildActors()
     if (this->ShowFine && this->Fine)
     {
       const std::string label = std::string("fine reference\n") +
-        (this->CurrentStyle == RenderStyle::Lines ? "vtkPolyDataSilhouette of " : "") +
+        (this->CurrentStyle == RenderStyle::Lines ? "face-based silhouette of " : "") +
         "Loop level " + std::to_string(this->Options.FineLevel) + ", " +
         Grouped(this->Fine->GetNumberOfPolys()) + " triangles";
       this->FineLabel->SetInput(label.c_str());

@@ -36,6 +36,13 @@ void SelectBackendFor(const cli::CommandLine& commandLine, char* argv[])
       cli::SelectRenderBackend(commandLine.Backend, false, argv);
       cli::GuardRenderingAborts(argv);
       break;
+    case Action::Simplify:
+      if (commandLine.Simplify.Measure)
+      {
+        cli::SelectRenderBackend(commandLine.Backend, false, argv);
+        cli::GuardRenderingAborts(argv);
+      }
+      break;
     case Action::View:
     {
       const bool headless = commandLine.View.Orbit || !commandLine.View.PlayLog.empty();
@@ -80,6 +87,9 @@ int main(int argc, char* argv[])
         break;
       case cli::CommandLine::Action::View:
         cli::RunView(commandLine.View);
+        break;
+      case cli::CommandLine::Action::Simplify:
+        cli::RunSimplify(commandLine.Simplify);
         break;
     }
     return cli::ExitSuccess;

@@ -1,0 +1,217 @@
+#include "vtkFaceSilhouetteLines.h"
+
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProp3D.h"
+#include "vtkRenderer.h"
+#include "vtkSMPTools.h"
+
+#include "FaceSilhouetteLines.h"
+#include "vtkSilhouetteFilterSupport.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkFaceSilhouetteLines);
+
+struct vtkFaceSilhouetteLines::Internals
+{
+  std::unique_ptr<silsmooth::PreparedMesh> Mesh;
+  vtkPolyData* CachedInput = nullptr;
+  vtkMTimeType CachedInputTime = 0;
+  bool NonFinite = false;
+  vtkSilhouetteFilterSupport::ViewTracker View;
+};
+
+vtkFaceSilhouetteLines::vtkFaceSilhouetteLines()
+  : Internal(new Internals)
+{
+}
+
+vtkFaceSilhouetteLines::~vtkFaceSilhouetteLines()
+{
+  this->SetCamera(nullptr);
+  this->SetModelMatrix(nullptr);
+}
+
+vtkCxxSetObjectMacro(vtkFaceSilhouetteLines, Camera, vtkCamera);
+vtkCxxSetObjectMacro(vtkFaceSilhouetteLines, ModelMatrix, vtkMatrix4x4);
+
+void vtkFaceSilhouetteLines::SetProp3D(vtkProp3D* prop)
+{
+  if (this->Prop3D != prop)
+  {
+    this->Prop3D = prop;
+    this->Modified();
+  }
+}
+
+vtkProp3D* vtkFaceSilhouetteLines::GetProp3D()
+{
+  return this->Prop3D;
+}
+
+void vtkFaceSilhouetteLines::SetRenderer(vtkRenderer* renderer)
+{
+  if (this->Renderer != renderer)
+  {
+    this->Renderer = renderer;
+    this->Modified();
+  }
+}
+
+vtkRenderer* vtkFaceSilhouetteLines::GetRenderer()
+{
+  return this->Renderer;
+}
+
+vtkMTimeType vtkFaceSilhouetteLines::GetMTime()
+{
+  const vtkMTimeType mtime = this->Superclass::GetMTime();
+  vtkCamera* camera = vtkSilhouetteFilterSupport::ActiveCamera(this->Camera, this->Renderer);
+  if (!camera)
+  {
+    return mtime;
+  }
+  double model[16];
+  vtkSilhouetteFilterSupport::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
+  // The viewport plays no part in the lines: a fixed one keeps window
+  // resizes from re-running the filter.
+  return std::max(mtime, this->Internal->View.Update(camera, model, { 1, 1 }));
+}
+
+int vtkFaceSilhouetteLines::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    vtkErrorMacro("Missing input or output polydata.");
+    return 0;
+  }
+  vtkCamera* camera = vtkSilhouetteFilterSupport::ActiveCamera(this->Camera, this->Renderer);
+  if (!camera && this->Renderer)
+  {
+    return 1; // the renderer has no camera yet: nothing to draw until it has
+  }
+  if (!camera)
+  {
+    vtkErrorMacro("No camera: call SetCamera() or SetRenderer() before updating.");
+    return 0;
+  }
+
+  Internals& internal = *this->Internal;
+  if (!internal.Mesh || internal.CachedInput != input ||
+    internal.CachedInputTime != input->GetMTime())
+  {
+    internal.Mesh.reset();
+    vtkSilhouetteFilterSupport::Triangles mesh;
+    const std::string readError = vtkSilhouetteFilterSupport::ReadTriangles(input, mesh);
+    if (!readError.empty())
+    {
+      vtkErrorMacro(<< readError);
+      return 0;
+    }
+    internal.NonFinite = mesh.NonFinitePoints > 0;
+    internal.Mesh = std::make_unique<silsmooth::PreparedMesh>(
+      std::move(mesh.Points), std::move(mesh.Cells), mesh.Normals);
+    internal.CachedInput = input;
+    internal.CachedInputTime = input->GetMTime();
+  }
+  if (internal.NonFinite)
+  {
+    vtkErrorMacro("Input has points with NaN or infinite coordinates.");
+    return 0;
+  }
+
+  double model[16];
+  vtkSilhouetteFilterSupport::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
+  silsmooth::ViewGeometry view;
+  const std::string viewError =
+    vtkSilhouetteFilterSupport::MakeViewGeometry(camera, model, { 1, 1 }, view);
+  if (!viewError.empty())
+  {
+    vtkErrorMacro(<< viewError);
+    return 0;
+  }
+  const silsmooth::ParallelFor smpFor =
+    [](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
+      vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&body](vtkIdType begin, vtkIdType end) {
+        body(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
+      });
+    };
+  const silsmooth::FaceSilhouette lines = silsmooth::faceSilhouette(*internal.Mesh, view, smpFor);
+
+  const vtkIdType count = static_cast<vtkIdType>(lines.Crossings.size());
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(count);
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(count);
+  vtkNew<vtkIdTypeArray> ends;
+  ends->SetName("EdgeEnds");
+  ends->SetNumberOfComponents(2);
+  ends->SetNumberOfTuples(count);
+  vtkNew<vtkDoubleArray> parameter;
+  parameter->SetName("EdgeParameter");
+  parameter->SetNumberOfTuples(count);
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  outPD->CopyNormalsOff(); // replaced by the normalised interpolation below
+  outPD->InterpolateAllocate(inPD, count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    const silsmooth::EdgeCrossing& c = lines.Crossings[static_cast<std::size_t>(i)];
+    points->SetPoint(i, c.Position.x, c.Position.y, c.Position.z);
+    normals->SetTuple3(i, c.Normal.x, c.Normal.y, c.Normal.z);
+    ends->SetTypedComponent(i, 0, c.Low);
+    ends->SetTypedComponent(i, 1, c.High);
+    parameter->SetValue(i, c.T);
+    outPD->InterpolateEdge(inPD, i, c.Low, c.High, c.T);
+  }
+  output->SetPoints(points);
+  outPD->AddArray(ends);
+  outPD->AddArray(parameter);
+  outPD->SetNormals(normals);
+
+  vtkNew<vtkCellArray> polylines;
+  for (const std::vector<silsmooth::Id>& chain : lines.Polylines)
+  {
+    polylines->InsertNextCell(static_cast<vtkIdType>(chain.size()));
+    for (const silsmooth::Id id : chain)
+    {
+      polylines->InsertCellPoint(id);
+    }
+  }
+  output->SetLines(polylines);
+
+  vtkNew<vtkIdTypeArray> triangleCount;
+  triangleCount->SetName("SilhouetteTriangleCount");
+  triangleCount->SetNumberOfTuples(1);
+  triangleCount->SetValue(0, static_cast<vtkIdType>(lines.Triangles.size()));
+  output->GetFieldData()->AddArray(triangleCount);
+  return 1;
+}
+
+void vtkFaceSilhouetteLines::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Camera: " << this->Camera << "\n";
+  os << indent << "Prop3D: " << this->Prop3D.GetPointer() << "\n";
+  os << indent << "ModelMatrix: " << this->ModelMatrix << "\n";
+  os << indent << "Renderer: " << this->Renderer.GetPointer() << "\n";
+}

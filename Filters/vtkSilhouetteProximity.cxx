@@ -1,0 +1,190 @@
+#include "vtkSilhouetteProximity.h"
+
+#include "vtkCamera.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkMatrix4x4.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkProp3D.h"
+#include "vtkRenderer.h"
+
+#include "SilhouetteProximity.h"
+#include "vtkSilhouetteFilterSupport.h"
+
+#include <algorithm>
+#include <cmath>
+
+vtkStandardNewMacro(vtkSilhouetteProximity);
+
+struct vtkSilhouetteProximity::Internals
+{
+  vtkSilhouetteFilterSupport::ViewTracker View;
+};
+
+vtkSilhouetteProximity::vtkSilhouetteProximity()
+  : Internal(new Internals)
+{
+}
+
+vtkSilhouetteProximity::~vtkSilhouetteProximity()
+{
+  this->SetCamera(nullptr);
+  this->SetModelMatrix(nullptr);
+}
+
+vtkCxxSetObjectMacro(vtkSilhouetteProximity, Camera, vtkCamera);
+vtkCxxSetObjectMacro(vtkSilhouetteProximity, ModelMatrix, vtkMatrix4x4);
+
+void vtkSilhouetteProximity::SetProp3D(vtkProp3D* prop)
+{
+  if (this->Prop3D != prop)
+  {
+    this->Prop3D = prop;
+    this->Modified();
+  }
+}
+
+vtkProp3D* vtkSilhouetteProximity::GetProp3D()
+{
+  return this->Prop3D;
+}
+
+void vtkSilhouetteProximity::SetRenderer(vtkRenderer* renderer)
+{
+  if (this->Renderer != renderer)
+  {
+    this->Renderer = renderer;
+    this->Modified();
+  }
+}
+
+vtkRenderer* vtkSilhouetteProximity::GetRenderer()
+{
+  return this->Renderer;
+}
+
+vtkMTimeType vtkSilhouetteProximity::GetMTime()
+{
+  const vtkMTimeType mtime = this->Superclass::GetMTime();
+  vtkCamera* camera = vtkSilhouetteFilterSupport::ActiveCamera(this->Camera, this->Renderer);
+  if (!camera)
+  {
+    return mtime;
+  }
+  double model[16];
+  vtkSilhouetteFilterSupport::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
+  return std::max(mtime,
+    this->Internal->View.Update(
+      camera, model, vtkSilhouetteFilterSupport::ViewportOf(this->Renderer, this->ViewportSize)));
+}
+
+int vtkSilhouetteProximity::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    vtkErrorMacro("Missing input or output polydata.");
+    return 0;
+  }
+  vtkCamera* camera = vtkSilhouetteFilterSupport::ActiveCamera(this->Camera, this->Renderer);
+  if (!camera)
+  {
+    vtkErrorMacro("No camera: call SetCamera() or SetRenderer() before updating.");
+    return 0;
+  }
+  vtkSilhouetteFilterSupport::Triangles mesh;
+  const std::string readError = vtkSilhouetteFilterSupport::ReadTriangles(input, mesh);
+  if (!readError.empty())
+  {
+    vtkErrorMacro(<< readError);
+    return 0;
+  }
+  if (mesh.NonFinitePoints > 0)
+  {
+    vtkErrorMacro(
+      "Input has " << mesh.NonFinitePoints << " points with NaN or infinite coordinates.");
+    return 0;
+  }
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  std::vector<glm::dvec3>& points = mesh.Points;
+  std::vector<silsmooth::Triangle>& triangles = mesh.Cells;
+  std::vector<vtkIdType>& triangleCell = mesh.CellIds;
+  double model[16];
+  vtkSilhouetteFilterSupport::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
+  silsmooth::ViewGeometry view;
+  const std::string viewError = vtkSilhouetteFilterSupport::MakeViewGeometry(camera, model,
+    vtkSilhouetteFilterSupport::ViewportOf(this->Renderer, this->ViewportSize), view);
+  if (!viewError.empty())
+  {
+    vtkErrorMacro(<< viewError);
+    return 0;
+  }
+
+  const silsmooth::ProximityGrid grid =
+    silsmooth::silhouetteProximity(points, triangles, view, this->Resolution);
+
+  output->ShallowCopy(input);
+  vtkNew<vtkDoubleArray> pointDistance;
+  pointDistance->SetName("SilhouetteDistance");
+  pointDistance->SetNumberOfTuples(numPoints);
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    pointDistance->SetValue(i, grid.PointDistance[static_cast<std::size_t>(i)]);
+  }
+  output->GetPointData()->AddArray(pointDistance);
+
+  const vtkIdType numCells = input->GetNumberOfCells();
+  vtkNew<vtkDoubleArray> cellDistance;
+  cellDistance->SetName("SilhouetteDistance");
+  cellDistance->SetNumberOfTuples(numCells);
+  cellDistance->Fill(-1.0);
+  // A polygon's or strip's label: the least over its triangles, -1 if any is -1.
+  std::vector<char> seen(static_cast<std::size_t>(numCells), 0);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const vtkIdType c = triangleCell[t];
+    const double d = grid.TriangleDistance[t];
+    const double old = cellDistance->GetValue(c);
+    if (!seen[static_cast<std::size_t>(c)])
+    {
+      cellDistance->SetValue(c, d);
+      seen[static_cast<std::size_t>(c)] = 1;
+    }
+    else if (old >= 0.0)
+    {
+      cellDistance->SetValue(c, d < 0.0 ? -1.0 : std::min(old, d));
+    }
+  }
+  output->GetCellData()->AddArray(cellDistance);
+
+  vtkNew<vtkIntArray> gridSize;
+  gridSize->SetName("ProximityGridSize");
+  gridSize->SetNumberOfComponents(2);
+  gridSize->InsertNextTuple2(grid.Width, grid.Height);
+  output->GetFieldData()->AddArray(gridSize);
+  vtkNew<vtkDoubleArray> cellSize;
+  cellSize->SetName("ProximityCellSize");
+  cellSize->InsertNextValue(grid.CellSize);
+  output->GetFieldData()->AddArray(cellSize);
+  return 1;
+}
+
+void vtkSilhouetteProximity::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Camera: " << this->Camera << "\n";
+  os << indent << "Prop3D: " << this->Prop3D.GetPointer() << "\n";
+  os << indent << "ModelMatrix: " << this->ModelMatrix << "\n";
+  os << indent << "Renderer: " << this->Renderer.GetPointer() << "\n";
+  os << indent << "ViewportSize: " << this->ViewportSize[0] << " x " << this->ViewportSize[1]
+     << "\n";
+  os << indent << "Resolution: " << this->Resolution << "\n";
+}

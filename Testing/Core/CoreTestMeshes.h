@@ -1,0 +1,116 @@
+// Small exact meshes shared by the core tests of the seeds' other systems.
+#pragma once
+
+#include "MeshTopology.h"
+
+#include <glm/vec3.hpp>
+
+#include <cmath>
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace coretest
+{
+
+/// A unit UV sphere, outward, poles on z; every point is on the sphere, so
+/// the points are also the exact normals.
+inline void unitSphere(int rings, int sectors, std::vector<glm::dvec3>& points,
+  std::vector<silsmooth::Triangle>& triangles)
+{
+  using silsmooth::Id;
+  const double pi = 3.14159265358979323846;
+  points.assign(1, glm::dvec3(0, 0, 1));
+  triangles.clear();
+  for (int r = 1; r < rings; ++r)
+  {
+    const double theta = pi * r / rings;
+    for (int s = 0; s < sectors; ++s)
+    {
+      const double phi = 2.0 * pi * s / sectors;
+      points.emplace_back(
+        std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
+    }
+  }
+  points.emplace_back(0, 0, -1);
+  const Id south = static_cast<Id>(points.size() - 1);
+  auto at = [sectors](int r, int s) {
+    return static_cast<Id>(1 + (r - 1) * sectors + s % sectors);
+  };
+  for (int s = 0; s < sectors; ++s)
+  {
+    triangles.push_back({ 0, at(1, s), at(1, s + 1) });
+    triangles.push_back({ south, at(rings - 1, s + 1), at(rings - 1, s) });
+    for (int r = 1; r + 1 < rings; ++r)
+    {
+      triangles.push_back({ at(r, s), at(r + 1, s), at(r + 1, s + 1) });
+      triangles.push_back({ at(r, s), at(r + 1, s + 1), at(r, s + 1) });
+    }
+  }
+}
+
+/// A torus about z (ring radius 1, tube radius r), u x v quads split in two.
+inline void torus(int u, int v, double r, std::vector<glm::dvec3>& points,
+  std::vector<silsmooth::Triangle>& triangles)
+{
+  using silsmooth::Id;
+  const double pi = 3.14159265358979323846;
+  points.clear();
+  triangles.clear();
+  for (int i = 0; i < u; ++i)
+  {
+    const double a = 2.0 * pi * i / u;
+    for (int j = 0; j < v; ++j)
+    {
+      const double b = 2.0 * pi * j / v;
+      points.emplace_back((1.0 + r * std::cos(b)) * std::cos(a),
+        (1.0 + r * std::cos(b)) * std::sin(a), r * std::sin(b));
+    }
+  }
+  auto at = [u, v](int i, int j) {
+    return static_cast<Id>((i % u) * v + j % v);
+  };
+  for (int i = 0; i < u; ++i)
+  {
+    for (int j = 0; j < v; ++j)
+    {
+      triangles.push_back({ at(i, j), at(i + 1, j), at(i + 1, j + 1) });
+      triangles.push_back({ at(i, j), at(i + 1, j + 1), at(i, j + 1) });
+    }
+  }
+}
+
+/// Directed-edge bookkeeping: a closed, consistently oriented 2-manifold has
+/// every directed edge once and its reverse once.
+struct ManifoldCheck
+{
+  int Unpaired = 0;
+  int Repeated = 0;
+  int Degenerate = 0;
+  bool closedManifold() const { return Unpaired == 0 && Repeated == 0 && Degenerate == 0; }
+};
+
+inline ManifoldCheck checkManifold(const std::vector<silsmooth::Triangle>& triangles)
+{
+  ManifoldCheck check;
+  std::map<std::pair<silsmooth::Id, silsmooth::Id>, int> directed;
+  for (const silsmooth::Triangle& t : triangles)
+  {
+    if (silsmooth::hasRepeatedCorner(t))
+    {
+      ++check.Degenerate;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      ++directed[{ t[static_cast<std::size_t>(k)], t[static_cast<std::size_t>((k + 1) % 3)] }];
+    }
+  }
+  for (const auto& [edge, count] : directed)
+  {
+    check.Repeated += count > 1 ? 1 : 0;
+    check.Unpaired += directed.count({ edge.second, edge.first }) ? 0 : 1;
+  }
+  return check;
+}
+
+} // namespace coretest

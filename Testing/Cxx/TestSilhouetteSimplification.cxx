@@ -1,0 +1,203 @@
+// Silhouette proximity and silhouette-aware simplification (issue 8, Mata
+// et al.): labels on an icosphere, the triangle budget, the e and f * e
+// bounds measured on the output, closed manifold in and out, and the outline
+// of the bunny simplified with and without the proximity labels, measured
+// against the original's outline from the same camera; pipeline and errors.
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkExecutive.h"
+#include "vtkFieldData.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkTestErrorObserver.h"
+
+#include "vtkSilhouetteProximity.h"
+#include "vtkSilhouetteQuadricDecimation.h"
+
+#include "SilhouetteMasks.h"
+#include "SilhouetteTestSupport.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+
+namespace
+{
+
+struct Bounds
+{
+  double NearWorst = 0.0;
+  double FarWorst = 0.0;
+  double Threshold = 0.0;
+};
+
+Bounds ErrorBounds(vtkPolyData* out)
+{
+  Bounds b;
+  vtkDataArray* error = out->GetPointData()->GetArray("QuadricError");
+  vtkDataArray* near = out->GetPointData()->GetArray("NearContour");
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double& worst = near->GetTuple1(i) != 0 ? b.NearWorst : b.FarWorst;
+    worst = std::max(worst, error->GetTuple1(i));
+  }
+  b.Threshold = out->GetFieldData()->GetArray("ErrorThreshold")->GetTuple1(0);
+  return b;
+}
+
+bool CheckIcosphere()
+{
+  vtkSmartPointer<vtkPolyData> sphere = silhouette_test::Icosphere(4); // 5,120 triangles
+  vtkSmartPointer<vtkCamera> camera = silhouette_test::CameraLookingAtOrigin({ 0.3, 0.2, 1 }, 4);
+  vtkNew<vtkSilhouetteProximity> proximity;
+  proximity->SetInputData(sphere);
+  proximity->SetCamera(camera);
+  proximity->SetResolution(100);
+  proximity->Update();
+  vtkDataArray* labels = proximity->GetOutput()->GetPointData()->GetArray("SilhouetteDistance");
+  CHECK(labels, "the point labels");
+  double range[2];
+  labels->GetRange(range);
+  // Every point projects inside the outline; the contour cells are 1; the
+  // middle of the disk is about half the grid (50 cells) from the contour.
+  std::printf("icosphere 4: point labels from %.2f to %.2f cells\n", range[0], range[1]);
+  CHECK(range[0] == 1.0, "points on the contour have label 1");
+  CHECK(range[1] > 45.0 && range[1] <= 51.0, "the deepest points are half the grid in");
+  CHECK(proximity->GetOutput()->GetCellData()->GetArray("SilhouetteDistance"), "the cell labels");
+
+  for (const double factor : { 1.0, 0.1, 0.0 })
+  {
+    vtkNew<vtkSilhouetteQuadricDecimation> decimate;
+    decimate->SetInputConnection(proximity->GetOutputPort());
+    decimate->SetTargetTriangles(800);
+    decimate->SetNearFactor(factor);
+    decimate->Update();
+    vtkPolyData* out = decimate->GetOutput();
+    const silhouette_test::TopologyReport topology = silhouette_test::AnalyzeTopology(out);
+    const Bounds b = ErrorBounds(out);
+    std::printf("f = %.1f: %lld triangles, e = %.3g, worst near %.3g, far %.3g, %s\n", factor,
+      static_cast<long long>(out->GetNumberOfPolys()), b.Threshold, b.NearWorst, b.FarWorst,
+      topology.summary().c_str());
+    CHECK(topology.closedManifold() && topology.DegenerateTriangles == 0,
+      "closed manifold in, closed manifold out");
+    CHECK(b.FarWorst <= b.Threshold * (1 + 1e-9), "error at most e away from the contour");
+    CHECK(b.NearWorst <= factor * b.Threshold * (1 + 1e-9), "error at most f * e near it");
+    if (factor > 0.0)
+    {
+      CHECK(out->GetNumberOfPolys() <= 800 && out->GetNumberOfPolys() >= 799,
+        "the requested triangle count");
+    }
+  }
+  return true;
+}
+
+bool CheckBunnyOutline(int argc, char* argv[])
+{
+  vtkSmartPointer<vtkPolyData> bunny =
+    silhouette_test::ReadMesh(silhouette_test::DataFile(argc, argv, "bunny.ply"));
+  CHECK(bunny, "read bunny.ply");
+  vtkSmartPointer<vtkCamera> camera =
+    silhouette_test::CameraAroundMesh(bunny, { 0, 0, 1 }, 3.0, false);
+  vtkNew<vtkSilhouetteProximity> proximity;
+  proximity->SetInputData(bunny);
+  proximity->SetCamera(camera);
+  proximity->SetViewportSize(1024, 768);
+  silhouette_eval::MaskRenderer masks(1024, 768);
+  const silhouette_eval::Mask original = masks.Render(bunny, camera);
+  for (const vtkIdType target : { 1000, 600 })
+  {
+    double deviation[2][2];
+    for (int aware = 0; aware < 2; ++aware)
+    {
+      vtkNew<vtkSilhouetteQuadricDecimation> decimate;
+      decimate->SetInputConnection(proximity->GetOutputPort());
+      decimate->SetTargetTriangles(target);
+      decimate->SetNearFactor(aware ? 0.1 : 1.0);
+      decimate->Update();
+      vtkPolyData* out = decimate->GetOutput();
+      CHECK(out->GetNumberOfPolys() <= target && out->GetNumberOfPolys() >= target - 1,
+        "the requested triangle count");
+      const silhouette_eval::BoundaryDistance d =
+        silhouette_eval::OutlineDeviation(original, masks.Render(out, camera));
+      deviation[aware][0] = d.Mean;
+      deviation[aware][1] = d.Max;
+    }
+    std::printf("bunny %lld triangles: outline deviation from the original, plain %.2f / %.2f px, "
+                "silhouette-aware %.2f / %.2f px (mean / max)\n",
+      static_cast<long long>(target), deviation[0][0], deviation[0][1], deviation[1][0],
+      deviation[1][1]);
+    CHECK(deviation[1][0] < deviation[0][0], "the aware outline is nearer the original's");
+  }
+  return true;
+}
+
+// The proximity follows the view by value; missing cameras and bad cells
+// fail with a message; an empty mesh passes.
+bool CheckPipelineAndErrors()
+{
+  vtkSmartPointer<vtkPolyData> sphere = silhouette_test::Icosphere(2);
+  vtkSmartPointer<vtkCamera> camera = silhouette_test::CameraLookingAtOrigin({ 0, 0, 1 }, 4);
+  vtkNew<vtkSilhouetteProximity> proximity;
+  proximity->SetInputData(sphere);
+  proximity->SetCamera(camera);
+  proximity->Update();
+  const vtkMTimeType first = proximity->GetMTime();
+  camera->SetClippingRange(0.1, 50);
+  CHECK(proximity->GetMTime() == first, "a clipping-range change does not re-run it");
+  camera->Elevation(20);
+  CHECK(proximity->GetMTime() > first, "a camera move re-runs it");
+  proximity->SetViewportSize(800, 800);
+  proximity->Update();
+  CHECK(proximity->GetOutput()->GetFieldData()->GetArray("ProximityGridSize"), "grid size");
+
+  vtkNew<vtkTest::ErrorObserver> errors;
+  vtkNew<vtkTest::ErrorObserver> executive;
+  vtkNew<vtkSilhouetteProximity> noCamera;
+  noCamera->AddObserver(vtkCommand::ErrorEvent, errors);
+  noCamera->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executive);
+  noCamera->SetInputData(sphere);
+  CHECK(noCamera->GetExecutive()->Update() == 0, "no camera fails");
+  CHECK(errors->GetError() &&
+      std::string(errors->GetErrorMessage()).find("No camera") != std::string::npos,
+    "the missing camera is named");
+
+  vtkNew<vtkPolyData> bad;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  bad->SetPoints(points);
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType ids[3] = { 0, 1, 7 };
+  polys->InsertNextCell(3, ids);
+  bad->SetPolys(polys);
+  vtkNew<vtkTest::ErrorObserver> decimateErrors;
+  vtkNew<vtkTest::ErrorObserver> decimateExecutive;
+  vtkNew<vtkSilhouetteQuadricDecimation> decimate;
+  decimate->AddObserver(vtkCommand::ErrorEvent, decimateErrors);
+  decimate->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, decimateExecutive);
+  decimate->SetInputData(bad);
+  CHECK(decimate->GetExecutive()->Update() == 0, "a cell naming a missing point fails");
+  CHECK(decimateErrors->GetError() &&
+      std::string(decimateErrors->GetErrorMessage()).find("do not exist") != std::string::npos,
+    "the missing points are named");
+  vtkNew<vtkPolyData> empty;
+  decimate->SetInputData(empty);
+  CHECK(decimate->GetExecutive()->Update() == 1, "an empty mesh passes");
+  CHECK(decimate->GetOutput()->GetNumberOfPolys() == 0, "and stays empty");
+  return true;
+}
+
+} // namespace
+
+int TestSilhouetteSimplification(int argc, char* argv[])
+{
+  bool ok = CheckIcosphere();
+  ok = CheckBunnyOutline(argc, argv) && ok;
+  ok = CheckPipelineAndErrors() && ok;
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}

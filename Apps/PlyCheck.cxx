@@ -122,14 +122,7 @@ public:
   void Check()
   {
     const Header header = this->ReadHeader();
-    this->VertexCount = 0;
-    for (const Element& element : header.Elements)
-    {
-      if (element.Name == "vertex")
-      {
-        this->VertexCount = element.Count;
-      }
-    }
+    this->CheckElements(header);
     this->Position = header.BodyOffset;
     for (const Element& element : header.Elements)
     {
@@ -276,6 +269,52 @@ private:
     }
     header.BodyOffset = position;
     return header;
+  }
+
+  // vtkPLYReader 9.1 goes on after its "Cannot read geometry" error with the
+  // file closed, and crashes: it needs a vertex element with scalar x, y and
+  // z. Elements are looked up by name, so a repeated one is ambiguous, and a
+  // face's vertex indices are read as a list whatever the header says.
+  void CheckElements(const Header& header)
+  {
+    const Element* vertices = nullptr;
+    for (std::size_t e = 0; e < header.Elements.size(); ++e)
+    {
+      const Element& element = header.Elements[e];
+      for (std::size_t other = 0; other < e; ++other)
+      {
+        if (header.Elements[other].Name == element.Name)
+        {
+          this->Fail("element '" + element.Name + "' appears twice");
+        }
+      }
+      if (element.Name == "vertex")
+      {
+        vertices = &element;
+      }
+      for (const Property& property : element.Properties)
+      {
+        if (element.Name == "face" && !property.IsList &&
+          (property.Name == "vertex_indices" || property.Name == "vertex_index"))
+        {
+          this->Fail("the face property '" + property.Name + "' is not a list");
+        }
+      }
+    }
+    if (!vertices)
+    {
+      this->Fail("there is no vertex element");
+    }
+    for (const char* axis : { "x", "y", "z" })
+    {
+      const auto found = std::find_if(vertices->Properties.begin(), vertices->Properties.end(),
+        [axis](const Property& property) { return property.Name == axis; });
+      if (found == vertices->Properties.end() || found->IsList)
+      {
+        this->Fail(std::string("the vertex element has no scalar '") + axis + "' property");
+      }
+    }
+    this->VertexCount = vertices->Count;
   }
 
   static bool IsVertexIndexList(const Element& element, const Property& property)

@@ -3,6 +3,7 @@
 #include "CliErrors.h"
 #include "ObjCheck.h"
 #include "PlyCheck.h"
+#include "StlCheck.h"
 #include "VtkErrorLog.h"
 
 #include <vtkCellArray.h>
@@ -89,6 +90,7 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, const std::str
   }
   if (extension == ".stl")
   {
+    CheckStlFile(path); // vtkSTLReader allocates for any triangle count a binary header declares
     auto reader = vtkSmartPointer<vtkSTLReader>::New();
     reader->SetFileName(path.c_str());
     return reader;

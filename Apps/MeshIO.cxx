@@ -1,6 +1,7 @@
 #include "MeshIO.h"
 
 #include "CliErrors.h"
+#include "LegacyCheck.h"
 #include "ObjCheck.h"
 #include "PlyCheck.h"
 #include "StlCheck.h"
@@ -106,6 +107,7 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, const std::str
     auto reader = vtkSmartPointer<vtkPolyDataReader>::New();
     reader->SetFileName(path.c_str());
     RequireLegacyPolyData(reader, path);
+    CheckLegacyVtkFile(path); // vtkPolyDataReader crashes on short or unparsable cell sections
     return reader;
   }
   throw RuntimeError(Quoted(path) + ": unknown mesh format '" + extension +

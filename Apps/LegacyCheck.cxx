@@ -1,0 +1,308 @@
+#include "LegacyCheck.h"
+
+#include "CliErrors.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <vector>
+
+namespace cli
+{
+namespace
+{
+
+// vtkDataReader reads header lines into 256-character buffers.
+constexpr std::size_t MaximumLine = 255;
+
+std::string Lower(std::string text)
+{
+  std::transform(text.begin(), text.end(), text.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+// Bytes per value of a legacy data type in a BINARY file; 0 if unknown.
+std::size_t BinarySize(const std::string& type)
+{
+  static const std::pair<const char*, std::size_t> sizes[] = { { "char", 1 },
+    { "unsigned_char", 1 }, { "short", 2 }, { "unsigned_short", 2 }, { "int", 4 },
+    { "unsigned_int", 4 }, { "long", 8 }, { "unsigned_long", 8 }, { "float", 4 }, { "double", 8 },
+    { "vtktypeint64", 8 }, { "vtktypeuint64", 8 }, { "vtkidtype", 8 } };
+  for (const auto& size : sizes)
+  {
+    if (type == size.first)
+    {
+      return size.second;
+    }
+  }
+  return 0;
+}
+
+class LegacyChecker
+{
+public:
+  LegacyChecker(const std::string& path, std::string bytes)
+    : Path(path)
+    , Bytes(std::move(bytes))
+  {
+  }
+
+  void Check()
+  {
+    const std::string version = this->Line();
+    if (version.rfind("# vtk DataFile Version", 0) != 0)
+    {
+      this->Fail("the first line is not '# vtk DataFile Version ...'");
+    }
+    this->MajorVersion = std::atoi(version.c_str() + std::strlen("# vtk DataFile Version"));
+    this->Line(); // the title
+    const std::string format = Lower(this->Line());
+    this->Binary = format.rfind("binary", 0) == 0;
+    if (!this->Binary && format.rfind("ascii", 0) != 0)
+    {
+      this->Fail("the third line is neither ASCII nor BINARY");
+    }
+    if (Lower(this->Word()) != "dataset" || Lower(this->Word()) != "polydata")
+    {
+      this->Fail("no 'DATASET POLYDATA' line");
+    }
+    while (true)
+    {
+      const std::string keyword = Lower(this->Word());
+      if (keyword == "points")
+      {
+        const long long count = this->Count("POINTS");
+        const std::string type = Lower(this->Word());
+        this->Values(3 * count, type, "POINTS");
+      }
+      else if (keyword == "vertices" || keyword == "lines" || keyword == "polygons" ||
+        keyword == "triangle_strips")
+      {
+        this->Cells(keyword);
+      }
+      else
+      {
+        return; // attributes, field data, the end of the file or an error of the reader's own
+      }
+    }
+  }
+
+private:
+  [[noreturn]] void Fail(const std::string& problem) const
+  {
+    throw RuntimeError("cannot read '" + this->Path + "': malformed legacy VTK file: " + problem);
+  }
+
+  std::string Line()
+  {
+    const std::size_t end = this->Bytes.find('\n', this->Position);
+    if (end == std::string::npos || end - this->Position > MaximumLine)
+    {
+      this->Fail("a header line is missing or longer than 255 characters");
+    }
+    std::string line = this->Bytes.substr(this->Position, end - this->Position);
+    this->Position = end + 1;
+    return line;
+  }
+
+  // The next whitespace-separated word, "" at the end of the file.
+  std::string Word()
+  {
+    const auto space = [](unsigned char c) {
+      return std::isspace(c) != 0;
+    };
+    while (this->Position < this->Bytes.size() && space(this->Bytes[this->Position]))
+    {
+      ++this->Position;
+    }
+    const std::size_t start = this->Position;
+    while (this->Position < this->Bytes.size() && !space(this->Bytes[this->Position]))
+    {
+      ++this->Position;
+    }
+    return this->Bytes.substr(start, this->Position - start);
+  }
+
+  // An ASCII integer as iostream reads it: digits only, in range.
+  long long Integer(const std::string& what)
+  {
+    const std::string word = this->Word();
+    if (word.empty())
+    {
+      this->Fail(what + ": the file ends inside the data");
+    }
+    const bool digits = !word.empty() &&
+      std::all_of(word.begin() + (word[0] == '-' || word[0] == '+'), word.end(),
+        [](unsigned char c) { return std::isdigit(c) != 0; });
+    errno = 0;
+    const long long value = digits ? std::strtoll(word.c_str(), nullptr, 10) : 0;
+    if (!digits || errno == ERANGE)
+    {
+      this->Fail(what + ": '" + word + "' is not an integer");
+    }
+    return value;
+  }
+
+  long long Count(const std::string& what)
+  {
+    const long long count = this->Integer(what);
+    if (count < 0 || count > static_cast<long long>(this->Bytes.size()))
+    {
+      this->Fail(what + ": a count of " + std::to_string(count) + " cannot fit in the file");
+    }
+    return count;
+  }
+
+  // After a section's header line: BINARY data starts on the next line.
+  void SkipToNextLine()
+  {
+    const std::size_t end = this->Bytes.find('\n', this->Position);
+    this->Position = end == std::string::npos ? this->Bytes.size() : end + 1;
+  }
+
+  // `count` values of `type`; returned (as integers) only when `keep`.
+  std::vector<long long> Values(
+    long long count, const std::string& type, const std::string& what, bool keep = false)
+  {
+    std::vector<long long> kept;
+    const std::size_t size = BinarySize(type);
+    if (size == 0)
+    {
+      this->Fail(what + ": unknown data type '" + type + "'");
+    }
+    const bool integer = type != "float" && type != "double";
+    if (this->Binary)
+    {
+      this->SkipToNextLine();
+      if (static_cast<unsigned long long>(count) * size > this->Bytes.size() - this->Position)
+      {
+        this->Fail(what + ": the file ends inside the data (truncated binary data)");
+      }
+      for (long long i = 0; keep && i < count; ++i)
+      {
+        long long value = 0; // big-endian, signed
+        const auto* raw =
+          reinterpret_cast<const unsigned char*>(this->Bytes.data() + this->Position + i * size);
+        value = (raw[0] & 0x80) ? -1 : 0;
+        for (std::size_t b = 0; b < size; ++b)
+        {
+          value = static_cast<long long>((static_cast<unsigned long long>(value) << 8) | raw[b]);
+        }
+        kept.push_back(value);
+      }
+      this->Position += count * size;
+      return kept;
+    }
+    for (long long i = 0; i < count; ++i)
+    {
+      if (integer)
+      {
+        const long long value = this->Integer(what);
+        if (size == 4 && (value < INT32_MIN || value > UINT32_MAX))
+        {
+          this->Fail(what + ": " + std::to_string(value) + " does not fit in 32 bits");
+        }
+        if (keep)
+        {
+          kept.push_back(value);
+        }
+        continue;
+      }
+      const std::string word = this->Word();
+      if (word.empty())
+      {
+        this->Fail(what + ": the file ends inside the data");
+      }
+      char* end = nullptr;
+      std::strtod(word.c_str(), &end);
+      const bool plain = std::all_of(word.begin(), word.end(), [](unsigned char c) {
+        return std::isdigit(c) || c == '+' || c == '-' || c == '.' || c == 'e' || c == 'E';
+      });
+      if (word.empty() || *end != '\0' || !plain)
+      {
+        this->Fail(what + ": '" + word + "' is not a number");
+      }
+    }
+    return kept;
+  }
+
+  void Cells(const std::string& keyword)
+  {
+    std::string what = keyword;
+    std::transform(what.begin(), what.end(), what.begin(),
+      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    const long long first = this->Count(what);
+    const long long second = this->Count(what);
+    if (this->MajorVersion >= 5)
+    {
+      // "POLYGONS offsets connectivity", then OFFSETS and CONNECTIVITY arrays.
+      if (Lower(this->Word()) != "offsets")
+      {
+        this->Fail(what + ": no OFFSETS array");
+      }
+      const std::vector<long long> offsets =
+        this->Values(first, Lower(this->Word()), what + " OFFSETS", true);
+      for (std::size_t i = 0; i < offsets.size(); ++i)
+      {
+        if ((i == 0 && offsets[i] != 0) || (i > 0 && offsets[i] < offsets[i - 1]) ||
+          offsets[i] > second)
+        {
+          this->Fail(what + ": offset " + std::to_string(i) + " is out of order or range");
+        }
+      }
+      if (!offsets.empty() && offsets.back() != second)
+      {
+        this->Fail(what + ": the offsets do not end at the connectivity size");
+      }
+      if (Lower(this->Word()) != "connectivity")
+      {
+        this->Fail(what + ": no CONNECTIVITY array");
+      }
+      this->Values(second, Lower(this->Word()), what + " CONNECTIVITY");
+      return;
+    }
+    // Legacy layout: "POLYGONS cells size", then size ints: n id id ... per cell.
+    const std::vector<long long> data = this->Values(second, "int", what, true);
+    std::size_t at = 0;
+    for (long long cell = 0; cell < first; ++cell)
+    {
+      if (at >= data.size() || data[at] < 0 ||
+        static_cast<unsigned long long>(data[at]) >= data.size() - at)
+      {
+        this->Fail(what + ": cell " + std::to_string(cell) + " does not fit in the declared size");
+      }
+      at += static_cast<std::size_t>(data[at]) + 1;
+    }
+    if (at != data.size())
+    {
+      this->Fail(what + ": the cells do not fill the declared size");
+    }
+  }
+
+  std::string Path;
+  std::string Bytes;
+  std::size_t Position = 0;
+  int MajorVersion = 0;
+  bool Binary = false;
+};
+
+} // namespace
+
+void CheckLegacyVtkFile(const std::string& path)
+{
+  std::ifstream file(path, std::ios::binary);
+  if (!file)
+  {
+    throw RuntimeError("cannot read '" + path + "': " + std::strerror(errno));
+  }
+  std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  LegacyChecker(path, std::move(bytes)).Check();
+}
+
+} // namespace cli

@@ -273,8 +273,8 @@ private:
 
   // vtkPLYReader 9.1 goes on after its "Cannot read geometry" error with the
   // file closed, and crashes: it needs a vertex element with scalar x, y and
-  // z. Elements are looked up by name, so a repeated one is ambiguous, and a
-  // face's vertex indices are read as a list whatever the header says.
+  // z. Elements are looked up by name, so a repeated one is ambiguous. Faces
+  // need their vertex indices as a list (vertex_indices or vertex_index).
   void CheckElements(const Header& header)
   {
     const Element* vertices = nullptr;
@@ -292,13 +292,12 @@ private:
       {
         vertices = &element;
       }
-      for (const Property& property : element.Properties)
+      // The reader frees an uninitialised pointer for each face without indices.
+      if (element.Name == "face" && element.Count > 0 &&
+        std::none_of(element.Properties.begin(), element.Properties.end(),
+          [&element](const Property& property) { return IsVertexIndexList(element, property); }))
       {
-        if (element.Name == "face" && !property.IsList &&
-          (property.Name == "vertex_indices" || property.Name == "vertex_index"))
-        {
-          this->Fail("the face property '" + property.Name + "' is not a list");
-        }
+        this->Fail("the face element has no 'vertex_indices' list");
       }
     }
     if (!vertices)

@@ -42,7 +42,7 @@ void CheckObjFile(const std::string& path)
     {
       char* end = nullptr;
       const double value = std::strtod(word.c_str(), &end);
-      if (*end != '\0' || !std::isfinite(value))
+      if (end != word.c_str() + word.size() || !std::isfinite(value)) // a NUL byte stops strtod
       {
         throw RuntimeError("cannot read " + where + ": '" + word + "' is not a finite number");
       }

@@ -160,6 +160,10 @@ private:
         this->Fail(lineNumber == 0 ? "empty file" : "the header has no end_header line");
       }
       std::string line = this->Bytes.substr(position, end - position);
+      if (line.find('\0') != std::string::npos)
+      {
+        this->Fail("header line " + std::to_string(lineNumber + 1) + " holds a NUL byte");
+      }
       position = end + 1;
       ++lineNumber;
       if (!line.empty() && line.back() == '\r')
@@ -359,7 +363,12 @@ private:
       {
         end = this->Bytes.size();
       }
-      std::istringstream line(this->Bytes.substr(this->Position, end - this->Position));
+      const std::string text = this->Bytes.substr(this->Position, end - this->Position);
+      if (text.find('\0') != std::string::npos)
+      {
+        this->Fail(where + " holds a NUL byte"); // vtkPLYReader's line would end there
+      }
+      std::istringstream line(text);
       this->Position = end + 1;
       words.assign(std::istream_iterator<std::string>(line), std::istream_iterator<std::string>());
     }
@@ -372,7 +381,9 @@ private:
       const std::string& word = words[next++];
       char* end = nullptr;
       const double value = std::strtod(word.c_str(), &end);
-      if (word.empty() || *end != '\0' || (IsInteger(type) && std::trunc(value) != value))
+      // The whole word: a NUL byte inside it ends the reader's line early.
+      if (word.empty() || end != word.c_str() + word.size() ||
+        (IsInteger(type) && std::trunc(value) != value))
       {
         this->Fail(where + " has a bad value '" + word + "'");
       }

@@ -20,6 +20,20 @@ namespace
 // vtkDataReader reads header lines into 256-character buffers.
 constexpr std::size_t MaximumLine = 255;
 
+// For messages: control and non-ASCII bytes as '?', at most 40 characters.
+std::string Printable(const std::string& text)
+{
+  std::string printable = text.substr(0, 40);
+  for (char& c : printable)
+  {
+    if (!std::isprint(static_cast<unsigned char>(c)))
+    {
+      c = '?';
+    }
+  }
+  return printable;
+}
+
 std::string Lower(std::string text)
 {
   std::transform(text.begin(), text.end(), text.begin(),
@@ -86,14 +100,171 @@ public:
       {
         this->Cells(keyword);
       }
+      else if (keyword == "field")
+      {
+        this->Field();
+      }
+      else if (keyword == "point_data" || keyword == "cell_data")
+      {
+        this->Attributes(this->Count(keyword));
+        return;
+      }
+      else if (keyword == "metadata")
+      {
+        this->SkipMetadata();
+      }
       else
       {
-        return; // attributes, field data, the end of the file or an error of the reader's own
+        this->RequireNotAPrefix(keyword);
+        return; // the end of the file, or a keyword the reader reports itself
       }
     }
   }
 
 private:
+  // vtkPolyDataReader compares keywords by prefix ("POINTS\x02..." is POINTS
+  // to it): such a word is an error here, not a section left unchecked.
+  void RequireNotAPrefix(const std::string& keyword)
+  {
+    for (const char* known :
+      { "field", "points", "vertices", "lines", "polygons", "triangle_strips", "cell_data",
+        "point_data", "scalars", "color_scalars", "lookup_table", "vectors", "normals",
+        "texture_coordinates", "tensors", "global_ids", "pedigree_ids", "edge_flags", "metadata" })
+    {
+      if (keyword.rfind(known, 0) == 0)
+      {
+        this->Fail("unknown keyword '" + Printable(keyword) + "'");
+      }
+    }
+  }
+
+  // The rest of the current line.
+  std::string RestOfLine()
+  {
+    const std::size_t end = std::min(this->Bytes.find('\n', this->Position), this->Bytes.size());
+    std::string rest = this->Bytes.substr(this->Position, end - this->Position);
+    this->Position = end;
+    return rest;
+  }
+
+  // An array's METADATA block (component names, information keys), which
+  // VTK 9 writes after the array and ends with a blank line.
+  void SkipMetadata()
+  {
+    this->RestOfLine();
+    while (this->Position < this->Bytes.size())
+    {
+      ++this->Position; // the newline
+      const std::string line = this->RestOfLine();
+      if (line.find_first_not_of(" \t\r") == std::string::npos)
+      {
+        return;
+      }
+    }
+  }
+
+  // FIELD name arrays, then per array: name components tuples type, values.
+  void Field()
+  {
+    this->Word(); // the name
+    const long long arrays = this->Count("FIELD");
+    for (long long a = 0; a < arrays; ++a)
+    {
+      const std::string name = this->Word();
+      if (name == "NULL_ARRAY")
+      {
+        continue;
+      }
+      const long long components = this->Count("FIELD array");
+      const long long tuples = this->Count("FIELD array");
+      if (components > 0 && tuples > static_cast<long long>(this->Bytes.size()) / components)
+      {
+        this->Fail("FIELD array: " + std::to_string(components) + " x " + std::to_string(tuples) +
+          " values cannot fit in the file");
+      }
+      this->Values(components * tuples, Lower(this->Word()), "FIELD array");
+    }
+  }
+
+  // POINT_DATA / CELL_DATA sections, to the end of the file.
+  void Attributes(long long count)
+  {
+    while (true)
+    {
+      const std::string keyword = Lower(this->Word());
+      const auto values = [&](long long perTuple, const std::string& type) {
+        this->Values(perTuple * count, type, keyword);
+      };
+      if (keyword == "scalars")
+      {
+        this->Word();
+        const std::string type = Lower(this->Word());
+        const std::string rest = this->RestOfLine();
+        const int components =
+          rest.find_first_not_of(" \t\r") == std::string::npos ? 1 : std::atoi(rest.c_str());
+        if (components < 1 || components > 4)
+        {
+          this->Fail("SCALARS: " + std::to_string(components) + " components");
+        }
+        if (Lower(this->Word()) != "lookup_table")
+        {
+          this->Fail("SCALARS: no LOOKUP_TABLE line");
+        }
+        this->Word();
+        values(components, type);
+      }
+      else if (keyword == "color_scalars")
+      {
+        this->Word();
+        values(this->Count(keyword), this->Binary ? "unsigned_char" : "float");
+      }
+      else if (keyword == "lookup_table")
+      {
+        this->Word();
+        const long long size = this->Count(keyword);
+        this->Values(4 * size, this->Binary ? "unsigned_char" : "float", keyword);
+      }
+      else if (keyword == "vectors" || keyword == "normals" || keyword == "tensors" ||
+        keyword == "tensors6" || keyword == "global_ids" || keyword == "pedigree_ids" ||
+        keyword == "edge_flags")
+      {
+        this->Word();
+        const long long perTuple = keyword == "vectors" || keyword == "normals" ? 3
+          : keyword == "tensors"                                                ? 9
+          : keyword == "tensors6"                                               ? 6
+                                                                                : 1;
+        values(perTuple, Lower(this->Word()));
+      }
+      else if (keyword == "texture_coordinates")
+      {
+        this->Word();
+        const long long dimension = this->Count(keyword);
+        if (dimension < 1 || dimension > 3)
+        {
+          this->Fail("TEXTURE_COORDINATES: dimension " + std::to_string(dimension));
+        }
+        values(dimension, Lower(this->Word()));
+      }
+      else if (keyword == "field")
+      {
+        this->Field();
+      }
+      else if (keyword == "point_data" || keyword == "cell_data")
+      {
+        count = this->Count(keyword);
+      }
+      else if (keyword == "metadata")
+      {
+        this->SkipMetadata();
+      }
+      else
+      {
+        this->RequireNotAPrefix(keyword);
+        return; // the end of the file, or a keyword the reader reports itself
+      }
+    }
+  }
+
   [[noreturn]] void Fail(const std::string& problem) const
   {
     throw RuntimeError("cannot read '" + this->Path + "': malformed legacy VTK file: " + problem);
@@ -144,7 +315,7 @@ private:
     const long long value = digits ? std::strtoll(word.c_str(), nullptr, 10) : 0;
     if (!digits || errno == ERANGE)
     {
-      this->Fail(what + ": '" + word + "' is not an integer");
+      this->Fail(what + ": '" + Printable(word) + "' is not an integer");
     }
     return value;
   }
@@ -171,10 +342,14 @@ private:
     long long count, const std::string& type, const std::string& what, bool keep = false)
   {
     std::vector<long long> kept;
+    if (count < 0 || count > static_cast<long long>(this->Bytes.size()))
+    {
+      this->Fail(what + ": " + std::to_string(count) + " values cannot fit in the file");
+    }
     const std::size_t size = BinarySize(type);
     if (size == 0)
     {
-      this->Fail(what + ": unknown data type '" + type + "'");
+      this->Fail(what + ": unknown data type '" + Printable(type) + "'");
     }
     const bool integer = type != "float" && type != "double";
     if (this->Binary)
@@ -226,7 +401,7 @@ private:
       });
       if (word.empty() || *end != '\0' || !plain)
       {
-        this->Fail(what + ": '" + word + "' is not a number");
+        this->Fail(what + ": '" + Printable(word) + "' is not a number");
       }
     }
     return kept;

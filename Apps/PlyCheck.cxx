@@ -13,6 +13,7 @@
 #include <iterator>
 #include <optional>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace cli
@@ -73,6 +74,28 @@ std::size_t SizeOf(ScalarType type)
       return 8;
     default:
       return 4;
+  }
+}
+
+// The values an integer type holds (vtkPLYReader would wrap the others around).
+std::pair<double, double> RangeOf(ScalarType type)
+{
+  switch (type)
+  {
+    case ScalarType::Int8:
+      return { -128.0, 127.0 };
+    case ScalarType::UInt8:
+      return { 0.0, 255.0 };
+    case ScalarType::Int16:
+      return { -32768.0, 32767.0 };
+    case ScalarType::UInt16:
+      return { 0.0, 65535.0 };
+    case ScalarType::Int32:
+      return { -2147483648.0, 2147483647.0 };
+    case ScalarType::UInt32:
+      return { 0.0, 4294967295.0 };
+    default:
+      return { -HUGE_VAL, HUGE_VAL };
   }
 }
 
@@ -386,6 +409,10 @@ private:
         (IsInteger(type) && std::trunc(value) != value))
       {
         this->Fail(where + " has a bad value '" + word + "'");
+      }
+      if (value < RangeOf(type).first || value > RangeOf(type).second)
+      {
+        this->Fail(where + " has a value out of range for its type: '" + word.substr(0, 40) + "'");
       }
       return value;
     };

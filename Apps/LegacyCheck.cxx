@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -74,7 +75,11 @@ public:
     {
       this->Fail("the first line is not '# vtk DataFile Version ...'");
     }
-    this->MajorVersion = std::atoi(version.c_str() + std::strlen("# vtk DataFile Version"));
+    // As vtkDataReader parses it: a version it cannot read as "%d.%d" counts
+    // as 0, and cells then have the legacy layout, however 5-like the line.
+    int major = 0, minor = 0;
+    this->MajorVersion =
+      std::sscanf(version.c_str(), "# vtk DataFile Version %d.%d", &major, &minor) == 2 ? major : 0;
     this->Line(); // the title
     const std::string format = Lower(this->Line());
     this->Binary = format.rfind("binary", 0) == 0;

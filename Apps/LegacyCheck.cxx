@@ -5,12 +5,14 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <vector>
 
 namespace cli
@@ -288,7 +290,10 @@ private:
   }
 
   // The next whitespace-separated word, "" at the end of the file.
-  std::string Word()
+  // Words are read as vtkDataReader::ReadString reads them, into 256-byte
+  // buffers: a longer word is two (its name, then its type, for a SCALARS
+  // line). Numbers are read whole, as iostream reads them.
+  std::string Word(std::size_t limit = MaximumLine)
   {
     const auto space = [](unsigned char c) {
       return std::isspace(c) != 0;
@@ -298,7 +303,8 @@ private:
       ++this->Position;
     }
     const std::size_t start = this->Position;
-    while (this->Position < this->Bytes.size() && !space(this->Bytes[this->Position]))
+    while (this->Position < this->Bytes.size() && !space(this->Bytes[this->Position]) &&
+      this->Position - start < limit)
     {
       ++this->Position;
     }
@@ -308,7 +314,7 @@ private:
   // An ASCII integer as iostream reads it: digits only, in range.
   long long Integer(const std::string& what)
   {
-    const std::string word = this->Word();
+    const std::string word = this->Word(std::string::npos);
     if (word.empty())
     {
       this->Fail(what + ": the file ends inside the data");
@@ -394,19 +400,25 @@ private:
         }
         continue;
       }
-      const std::string word = this->Word();
+      const std::string word = this->Word(std::string::npos);
       if (word.empty())
       {
         this->Fail(what + ": the file ends inside the data");
       }
       char* end = nullptr;
-      std::strtod(word.c_str(), &end);
+      const double value = std::strtod(word.c_str(), &end);
       const bool plain = std::all_of(word.begin(), word.end(), [](unsigned char c) {
         return std::isdigit(c) || c == '+' || c == '-' || c == '.' || c == 'e' || c == 'E';
       });
-      if (word.empty() || *end != '\0' || !plain)
+      if (end != word.c_str() + word.size() || !plain)
       {
         this->Fail(what + ": '" + Printable(word) + "' is not a number");
+      }
+      // iostream fails on a value its type cannot hold, and the reader with it.
+      if (!std::isfinite(value) ||
+        (type == "float" && std::abs(value) > std::numeric_limits<float>::max()))
+      {
+        this->Fail(what + ": '" + Printable(word) + "' does not fit in a " + type);
       }
     }
     return kept;

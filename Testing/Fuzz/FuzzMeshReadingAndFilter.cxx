@@ -3,12 +3,13 @@
 // Input layout: byte 0 picks the format (.ply .obj .stl .vtp .vtk), the next
 // ParameterBytes bytes pick the camera and the filter's settings, and the rest
 // is the file. The file goes through cli::ReadMesh, the code path of the
-// `silhouette` program (its PLY and OBJ pre-checks included); whatever reads
-// is smoothed by vtkSilhouetteSmoothingFilter for a camera made from the
-// parameter bytes: around the mesh or anywhere (eye inside or outside, on the
-// focal point, view-up along the view direction), parallel or perspective,
-// any viewport. The run must not crash or hang, and when the request succeeds
-// its outputs must hold only finite points and normals and in-range ids.
+// `silhouette` program (its PLY, OBJ, STL and legacy VTK pre-checks included);
+// whatever reads is smoothed by vtkSilhouetteSmoothingFilter for a camera
+// made from the parameter bytes: around the mesh or anywhere (eye inside or
+// outside, on the focal point, any view-up), parallel or perspective, any
+// viewport, then again for a second camera. The run must not crash or hang;
+// when a request succeeds its outputs must hold only finite points and
+// normals and in-range ids, and no valid input triangle may be lost.
 //
 // Seeds: scripts/fuzz.sh prefixes small meshes with a format byte and
 // ParameterBytes bytes of 0x80 (a camera around the mesh).

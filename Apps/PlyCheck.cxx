@@ -331,6 +331,25 @@ private:
     {
       this->Fail("there is no vertex element");
     }
+    // The reader reads the vertex and face elements and does not skip the
+    // others, so one before them shifts everything after it.
+    std::size_t last = 0;
+    for (std::size_t e = 0; e < header.Elements.size(); ++e)
+    {
+      if (header.Elements[e].Name == "vertex" || header.Elements[e].Name == "face")
+      {
+        last = e;
+      }
+    }
+    for (std::size_t e = 0; e < last; ++e)
+    {
+      const Element& element = header.Elements[e];
+      if (element.Name != "vertex" && element.Name != "face" && element.Count > 0)
+      {
+        this->Fail("element '" + element.Name +
+          "' comes before the vertices or faces, and vtkPLYReader cannot skip it");
+      }
+    }
     for (const char* axis : { "x", "y", "z" })
     {
       const auto found = std::find_if(vertices->Properties.begin(), vertices->Properties.end(),

@@ -23,6 +23,8 @@ namespace
 
 // The largest face vtkPLYReader 9.1 reads correctly.
 constexpr long long MaximumFaceVertices = 255;
+// The longest line it reads whole (its buffer holds 4096 bytes).
+constexpr std::size_t MaximumLineLength = 4000;
 
 enum class ScalarType
 {
@@ -169,6 +171,31 @@ private:
     throw RuntimeError("cannot read '" + this->Path + "': malformed PLY: " + problem);
   }
 
+  // vtkPLYReader reads a line into a C string of 4096 bytes and splits it at
+  // spaces and tabs only, where we split at any white space: a NUL byte, a
+  // control character (a vertical tab, say) or a longer line would give the
+  // two of us different words, and it crashes reading the ones it lacks.
+  void CheckLineText(const std::string& line, const std::string& where) const
+  {
+    if (line.size() > MaximumLineLength)
+    {
+      this->Fail(where + " is longer than " + std::to_string(MaximumLineLength) + " characters");
+    }
+    const std::size_t end = !line.empty() && line.back() == '\r' ? line.size() - 1 : line.size();
+    for (std::size_t i = 0; i < end; ++i)
+    {
+      const auto c = static_cast<unsigned char>(line[i]);
+      if (c == 0)
+      {
+        this->Fail(where + " holds a NUL byte");
+      }
+      if ((c < 0x20 && c != '\t') || c == 0x7f)
+      {
+        this->Fail(where + " holds a control character (byte " + std::to_string(c) + ")");
+      }
+    }
+  }
+
   Header ReadHeader()
   {
     Header header;
@@ -183,10 +210,7 @@ private:
         this->Fail(lineNumber == 0 ? "empty file" : "the header has no end_header line");
       }
       std::string line = this->Bytes.substr(position, end - position);
-      if (line.find('\0') != std::string::npos)
-      {
-        this->Fail("header line " + std::to_string(lineNumber + 1) + " holds a NUL byte");
-      }
+      this->CheckLineText(line, "header line " + std::to_string(lineNumber + 1));
       position = end + 1;
       ++lineNumber;
       if (!line.empty() && line.back() == '\r')
@@ -406,10 +430,7 @@ private:
         end = this->Bytes.size();
       }
       const std::string text = this->Bytes.substr(this->Position, end - this->Position);
-      if (text.find('\0') != std::string::npos)
-      {
-        this->Fail(where + " holds a NUL byte"); // vtkPLYReader's line would end there
-      }
+      this->CheckLineText(text, where);
       std::istringstream line(text);
       this->Position = end + 1;
       words.assign(std::istream_iterator<std::string>(line), std::istream_iterator<std::string>());

@@ -1,8 +1,10 @@
 #include "MeshIO.h"
 
 #include "CliErrors.h"
+#include "LegacyCheck.h"
 #include "ObjCheck.h"
 #include "PlyCheck.h"
+#include "StlCheck.h"
 #include "VtkErrorLog.h"
 
 #include <vtkCellArray.h>
@@ -89,6 +91,7 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, const std::str
   }
   if (extension == ".stl")
   {
+    CheckStlFile(path); // vtkSTLReader allocates for any triangle count a binary header declares
     auto reader = vtkSmartPointer<vtkSTLReader>::New();
     reader->SetFileName(path.c_str());
     return reader;
@@ -104,6 +107,7 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, const std::str
     auto reader = vtkSmartPointer<vtkPolyDataReader>::New();
     reader->SetFileName(path.c_str());
     RequireLegacyPolyData(reader, path);
+    CheckLegacyVtkFile(path); // vtkPolyDataReader crashes on short or unparsable cell sections
     return reader;
   }
   throw RuntimeError(Quoted(path) + ": unknown mesh format '" + extension +

@@ -8,9 +8,27 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace cli
 {
+namespace
+{
+
+// A whole word as an integer (strtol would stop at a NUL byte or a letter).
+bool ParseIndex(const std::string& word, long long& value)
+{
+  if (word.empty())
+  {
+    return false;
+  }
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtoll(word.c_str(), &end, 10);
+  return end == word.c_str() + word.size() && errno != ERANGE;
+}
+
+} // namespace
 
 void CheckObjFile(const std::string& path)
 {
@@ -19,22 +37,28 @@ void CheckObjFile(const std::string& path)
   {
     throw RuntimeError("cannot read '" + path + "': " + std::strerror(errno));
   }
-  std::string line;
-  long long lineNumber = 0;
-  long long vertex = 0;
-  while (std::getline(file, line))
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(file, line);)
   {
-    ++lineNumber;
-    std::istringstream words(line);
+    lines.push_back(std::move(line));
+  }
+  // First the vertices and the counts of texture coordinates and normals,
+  // which faces may refer to before they appear.
+  long long vertex = 0, textureCoordinates = 0, normals = 0;
+  for (std::size_t number = 0; number < lines.size(); ++number)
+  {
+    std::istringstream words(lines[number]);
     std::string keyword;
     words >> keyword;
+    textureCoordinates += keyword == "vt";
+    normals += keyword == "vn";
     if (keyword != "v")
     {
       continue;
     }
     ++vertex;
     const std::string where =
-      "'" + path + "': line " + std::to_string(lineNumber) + ", vertex " + std::to_string(vertex);
+      "'" + path + "': line " + std::to_string(number + 1) + ", vertex " + std::to_string(vertex);
     std::string word;
     int coordinates = 0;
     // x y z, then optional w or r g b.
@@ -42,7 +66,7 @@ void CheckObjFile(const std::string& path)
     {
       char* end = nullptr;
       const double value = std::strtod(word.c_str(), &end);
-      if (*end != '\0' || !std::isfinite(value))
+      if (end != word.c_str() + word.size() || !std::isfinite(value)) // a NUL byte stops strtod
       {
         throw RuntimeError("cannot read " + where + ": '" + word + "' is not a finite number");
       }
@@ -51,6 +75,59 @@ void CheckObjFile(const std::string& path)
     if (coordinates < 3)
     {
       throw RuntimeError("cannot read " + where + ": fewer than 3 coordinates");
+    }
+  }
+  // Then the corners of faces, lines and points: v, v/vt, v//vn or v/vt/vn.
+  // VTK 9.1's reader crashes on a corner such as "1/" and on a texture
+  // coordinate or normal index with none to refer to.
+  for (std::size_t number = 0; number < lines.size(); ++number)
+  {
+    std::istringstream words(lines[number]);
+    std::string keyword;
+    words >> keyword;
+    if (keyword != "f" && keyword != "l" && keyword != "p")
+    {
+      continue;
+    }
+    const std::string where = "cannot read '" + path + "': line " + std::to_string(number + 1);
+    for (std::string corner; words >> corner;)
+    {
+      std::vector<std::string> parts(1);
+      for (const char c : corner)
+      {
+        if (c == '/')
+        {
+          parts.emplace_back();
+        }
+        else
+        {
+          parts.back() += c;
+        }
+      }
+      long long index = 0;
+      const bool wellFormed = parts.size() <= 3 && ParseIndex(parts[0], index) &&
+        (parts.size() < 2 || ParseIndex(parts[1], index) ||
+          (parts.size() == 3 && parts[1].empty())) &&
+        (parts.size() < 3 || ParseIndex(parts[2], index));
+      if (!wellFormed)
+      {
+        throw RuntimeError(where + ": '" + corner + "' is not v, v/vt, v//vn or v/vt/vn");
+      }
+      const auto requireInRange = [&](const std::string& part, long long count, const char* what) {
+        if (!part.empty() && ParseIndex(part, index) && (index < 1 || index > count))
+        {
+          throw RuntimeError(where + ": '" + corner + "' refers to " + what + " " + part +
+            " but there are " + std::to_string(count));
+        }
+      };
+      if (parts.size() > 1)
+      {
+        requireInRange(parts[1], textureCoordinates, "texture coordinate");
+      }
+      if (parts.size() > 2)
+      {
+        requireInRange(parts[2], normals, "normal");
+      }
     }
   }
 }

@@ -13,6 +13,7 @@
 #include <iterator>
 #include <optional>
 #include <sstream>
+#include <utility>
 #include <vector>
 
 namespace cli
@@ -22,6 +23,8 @@ namespace
 
 // The largest face vtkPLYReader 9.1 reads correctly.
 constexpr long long MaximumFaceVertices = 255;
+// The longest line it reads whole (its buffer holds 4096 bytes).
+constexpr std::size_t MaximumLineLength = 4000;
 
 enum class ScalarType
 {
@@ -76,6 +79,28 @@ std::size_t SizeOf(ScalarType type)
   }
 }
 
+// The values an integer type holds (vtkPLYReader would wrap the others around).
+std::pair<double, double> RangeOf(ScalarType type)
+{
+  switch (type)
+  {
+    case ScalarType::Int8:
+      return { -128.0, 127.0 };
+    case ScalarType::UInt8:
+      return { 0.0, 255.0 };
+    case ScalarType::Int16:
+      return { -32768.0, 32767.0 };
+    case ScalarType::UInt16:
+      return { 0.0, 65535.0 };
+    case ScalarType::Int32:
+      return { -2147483648.0, 2147483647.0 };
+    case ScalarType::UInt32:
+      return { 0.0, 4294967295.0 };
+    default:
+      return { -HUGE_VAL, HUGE_VAL };
+  }
+}
+
 bool IsInteger(ScalarType type)
 {
   return type != ScalarType::Float32 && type != ScalarType::Float64;
@@ -122,14 +147,7 @@ public:
   void Check()
   {
     const Header header = this->ReadHeader();
-    this->VertexCount = 0;
-    for (const Element& element : header.Elements)
-    {
-      if (element.Name == "vertex")
-      {
-        this->VertexCount = element.Count;
-      }
-    }
+    this->CheckElements(header);
     this->Position = header.BodyOffset;
     for (const Element& element : header.Elements)
     {
@@ -153,6 +171,31 @@ private:
     throw RuntimeError("cannot read '" + this->Path + "': malformed PLY: " + problem);
   }
 
+  // vtkPLYReader reads a line into a C string of 4096 bytes and splits it at
+  // spaces and tabs only, where we split at any white space: a NUL byte, a
+  // control character (a vertical tab, say) or a longer line would give the
+  // two of us different words, and it crashes reading the ones it lacks.
+  void CheckLineText(const std::string& line, const std::string& where) const
+  {
+    if (line.size() > MaximumLineLength)
+    {
+      this->Fail(where + " is longer than " + std::to_string(MaximumLineLength) + " characters");
+    }
+    const std::size_t end = !line.empty() && line.back() == '\r' ? line.size() - 1 : line.size();
+    for (std::size_t i = 0; i < end; ++i)
+    {
+      const auto c = static_cast<unsigned char>(line[i]);
+      if (c == 0)
+      {
+        this->Fail(where + " holds a NUL byte");
+      }
+      if ((c < 0x20 && c != '\t') || c == 0x7f)
+      {
+        this->Fail(where + " holds a control character (byte " + std::to_string(c) + ")");
+      }
+    }
+  }
+
   Header ReadHeader()
   {
     Header header;
@@ -167,6 +210,7 @@ private:
         this->Fail(lineNumber == 0 ? "empty file" : "the header has no end_header line");
       }
       std::string line = this->Bytes.substr(position, end - position);
+      this->CheckLineText(line, "header line " + std::to_string(lineNumber + 1));
       position = end + 1;
       ++lineNumber;
       if (!line.empty() && line.back() == '\r')
@@ -278,6 +322,70 @@ private:
     return header;
   }
 
+  // vtkPLYReader 9.1 goes on after its "Cannot read geometry" error with the
+  // file closed, and crashes: it needs a vertex element with scalar x, y and
+  // z. Elements are looked up by name, so a repeated one is ambiguous. Faces
+  // need their vertex indices as a list (vertex_indices or vertex_index).
+  void CheckElements(const Header& header)
+  {
+    const Element* vertices = nullptr;
+    for (std::size_t e = 0; e < header.Elements.size(); ++e)
+    {
+      const Element& element = header.Elements[e];
+      for (std::size_t other = 0; other < e; ++other)
+      {
+        if (header.Elements[other].Name == element.Name)
+        {
+          this->Fail("element '" + element.Name + "' appears twice");
+        }
+      }
+      if (element.Name == "vertex")
+      {
+        vertices = &element;
+      }
+      // The reader frees an uninitialised pointer for each face without indices.
+      if (element.Name == "face" && element.Count > 0 &&
+        std::none_of(element.Properties.begin(), element.Properties.end(),
+          [&element](const Property& property) { return IsVertexIndexList(element, property); }))
+      {
+        this->Fail("the face element has no 'vertex_indices' list");
+      }
+    }
+    if (!vertices)
+    {
+      this->Fail("there is no vertex element");
+    }
+    // The reader reads the vertex and face elements and does not skip the
+    // others, so one before them shifts everything after it.
+    std::size_t last = 0;
+    for (std::size_t e = 0; e < header.Elements.size(); ++e)
+    {
+      if (header.Elements[e].Name == "vertex" || header.Elements[e].Name == "face")
+      {
+        last = e;
+      }
+    }
+    for (std::size_t e = 0; e < last; ++e)
+    {
+      const Element& element = header.Elements[e];
+      if (element.Name != "vertex" && element.Name != "face" && element.Count > 0)
+      {
+        this->Fail("element '" + element.Name +
+          "' comes before the vertices or faces, and vtkPLYReader cannot skip it");
+      }
+    }
+    for (const char* axis : { "x", "y", "z" })
+    {
+      const auto found = std::find_if(vertices->Properties.begin(), vertices->Properties.end(),
+        [axis](const Property& property) { return property.Name == axis; });
+      if (found == vertices->Properties.end() || found->IsList)
+      {
+        this->Fail(std::string("the vertex element has no scalar '") + axis + "' property");
+      }
+    }
+    this->VertexCount = vertices->Count;
+  }
+
   static bool IsVertexIndexList(const Element& element, const Property& property)
   {
     return element.Name == "face" && property.IsList &&
@@ -321,7 +429,9 @@ private:
       {
         end = this->Bytes.size();
       }
-      std::istringstream line(this->Bytes.substr(this->Position, end - this->Position));
+      const std::string text = this->Bytes.substr(this->Position, end - this->Position);
+      this->CheckLineText(text, where);
+      std::istringstream line(text);
       this->Position = end + 1;
       words.assign(std::istream_iterator<std::string>(line), std::istream_iterator<std::string>());
     }
@@ -334,9 +444,15 @@ private:
       const std::string& word = words[next++];
       char* end = nullptr;
       const double value = std::strtod(word.c_str(), &end);
-      if (word.empty() || *end != '\0' || (IsInteger(type) && std::trunc(value) != value))
+      // The whole word: a NUL byte inside it ends the reader's line early.
+      if (word.empty() || end != word.c_str() + word.size() ||
+        (IsInteger(type) && std::trunc(value) != value))
       {
         this->Fail(where + " has a bad value '" + word + "'");
+      }
+      if (value < RangeOf(type).first || value > RangeOf(type).second)
+      {
+        this->Fail(where + " has a value out of range for its type: '" + word.substr(0, 40) + "'");
       }
       return value;
     };

@@ -1,0 +1,500 @@
+#include "LegacyCheck.h"
+
+#include "CliErrors.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <vector>
+
+namespace cli
+{
+namespace
+{
+
+// vtkDataReader reads header lines into 256-character buffers.
+constexpr std::size_t MaximumLine = 255;
+
+// For messages: control and non-ASCII bytes as '?', at most 40 characters.
+std::string Printable(const std::string& text)
+{
+  std::string printable = text.substr(0, 40);
+  for (char& c : printable)
+  {
+    if (!std::isprint(static_cast<unsigned char>(c)))
+    {
+      c = '?';
+    }
+  }
+  return printable;
+}
+
+std::string Lower(std::string text)
+{
+  std::transform(text.begin(), text.end(), text.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return text;
+}
+
+// Bytes per value of a legacy data type in a BINARY file; 0 if unknown.
+std::size_t BinarySize(const std::string& type)
+{
+  static const std::pair<const char*, std::size_t> sizes[] = { { "char", 1 },
+    { "unsigned_char", 1 }, { "short", 2 }, { "unsigned_short", 2 }, { "int", 4 },
+    { "unsigned_int", 4 }, { "long", 8 }, { "unsigned_long", 8 }, { "float", 4 }, { "double", 8 },
+    { "vtktypeint64", 8 }, { "vtktypeuint64", 8 }, { "vtkidtype", 8 } };
+  for (const auto& size : sizes)
+  {
+    if (type == size.first)
+    {
+      return size.second;
+    }
+  }
+  return 0;
+}
+
+class LegacyChecker
+{
+public:
+  LegacyChecker(const std::string& path, std::string bytes)
+    : Path(path)
+    , Bytes(std::move(bytes))
+  {
+  }
+
+  void Check()
+  {
+    const std::string version = this->Line();
+    if (version.rfind("# vtk DataFile Version", 0) != 0)
+    {
+      this->Fail("the first line is not '# vtk DataFile Version ...'");
+    }
+    // As vtkDataReader parses it: a version it cannot read as "%d.%d" counts
+    // as 0, and cells then have the legacy layout, however 5-like the line.
+    int major = 0, minor = 0;
+    this->MajorVersion =
+      std::sscanf(version.c_str(), "# vtk DataFile Version %d.%d", &major, &minor) == 2 ? major : 0;
+    this->Line(); // the title
+    const std::string format = Lower(this->Line());
+    this->Binary = format.rfind("binary", 0) == 0;
+    if (!this->Binary && format.rfind("ascii", 0) != 0)
+    {
+      this->Fail("the third line is neither ASCII nor BINARY");
+    }
+    if (Lower(this->Word()) != "dataset" || Lower(this->Word()) != "polydata")
+    {
+      this->Fail("no 'DATASET POLYDATA' line");
+    }
+    while (true)
+    {
+      const std::string keyword = Lower(this->Word());
+      if (keyword == "points")
+      {
+        const long long count = this->Count("POINTS");
+        const std::string type = Lower(this->Word());
+        this->Values(3 * count, type, "POINTS");
+      }
+      else if (keyword == "vertices" || keyword == "lines" || keyword == "polygons" ||
+        keyword == "triangle_strips")
+      {
+        this->Cells(keyword);
+      }
+      else if (keyword == "field")
+      {
+        this->Field();
+      }
+      else if (keyword == "point_data" || keyword == "cell_data")
+      {
+        this->Attributes(this->Count(keyword));
+        return;
+      }
+      else if (keyword == "metadata")
+      {
+        this->SkipMetadata();
+      }
+      else
+      {
+        this->RequireNotAPrefix(keyword);
+        return; // the end of the file, or a keyword the reader reports itself
+      }
+    }
+  }
+
+private:
+  // vtkPolyDataReader compares keywords by prefix ("POINTS\x02..." is POINTS
+  // to it): such a word is an error here, not a section left unchecked.
+  void RequireNotAPrefix(const std::string& keyword)
+  {
+    for (const char* known :
+      { "field", "points", "vertices", "lines", "polygons", "triangle_strips", "cell_data",
+        "point_data", "scalars", "color_scalars", "lookup_table", "vectors", "normals",
+        "texture_coordinates", "tensors", "global_ids", "pedigree_ids", "edge_flags", "metadata" })
+    {
+      if (keyword.rfind(known, 0) == 0)
+      {
+        this->Fail("unknown keyword '" + Printable(keyword) + "'");
+      }
+    }
+  }
+
+  // The rest of the current line.
+  std::string RestOfLine()
+  {
+    const std::size_t end = std::min(this->Bytes.find('\n', this->Position), this->Bytes.size());
+    std::string rest = this->Bytes.substr(this->Position, end - this->Position);
+    this->Position = end;
+    return rest;
+  }
+
+  // An array's METADATA block (component names, information keys), which
+  // VTK 9 writes after the array and ends with a blank line.
+  void SkipMetadata()
+  {
+    this->RestOfLine();
+    while (this->Position < this->Bytes.size())
+    {
+      ++this->Position; // the newline
+      const std::string line = this->RestOfLine();
+      if (line.find_first_not_of(" \t\r") == std::string::npos)
+      {
+        return;
+      }
+    }
+  }
+
+  // FIELD name arrays, then per array: name components tuples type, values.
+  void Field()
+  {
+    this->Word(); // the name
+    const long long arrays = this->Count("FIELD");
+    for (long long a = 0; a < arrays; ++a)
+    {
+      const std::string name = this->Word();
+      if (name == "NULL_ARRAY")
+      {
+        continue;
+      }
+      const long long components = this->Count("FIELD array");
+      const long long tuples = this->Count("FIELD array");
+      if (components > 0 && tuples > static_cast<long long>(this->Bytes.size()) / components)
+      {
+        this->Fail("FIELD array: " + std::to_string(components) + " x " + std::to_string(tuples) +
+          " values cannot fit in the file");
+      }
+      this->Values(components * tuples, Lower(this->Word()), "FIELD array");
+    }
+  }
+
+  // POINT_DATA / CELL_DATA sections, to the end of the file.
+  void Attributes(long long count)
+  {
+    while (true)
+    {
+      const std::string keyword = Lower(this->Word());
+      const auto values = [&](long long perTuple, const std::string& type) {
+        this->Values(perTuple * count, type, keyword);
+      };
+      if (keyword == "scalars")
+      {
+        this->Word();
+        const std::string type = Lower(this->Word());
+        const std::string rest = this->RestOfLine();
+        const int components =
+          rest.find_first_not_of(" \t\r") == std::string::npos ? 1 : std::atoi(rest.c_str());
+        if (components < 1 || components > 4)
+        {
+          this->Fail("SCALARS: " + std::to_string(components) + " components");
+        }
+        if (Lower(this->Word()) != "lookup_table")
+        {
+          this->Fail("SCALARS: no LOOKUP_TABLE line");
+        }
+        this->Word();
+        values(components, type);
+      }
+      else if (keyword == "color_scalars")
+      {
+        this->Word();
+        values(this->Count(keyword), this->Binary ? "unsigned_char" : "float");
+      }
+      else if (keyword == "lookup_table")
+      {
+        this->Word();
+        const long long size = this->Count(keyword);
+        this->Values(4 * size, this->Binary ? "unsigned_char" : "float", keyword);
+      }
+      else if (keyword == "vectors" || keyword == "normals" || keyword == "tensors" ||
+        keyword == "tensors6" || keyword == "global_ids" || keyword == "pedigree_ids" ||
+        keyword == "edge_flags")
+      {
+        this->Word();
+        const long long perTuple = keyword == "vectors" || keyword == "normals" ? 3
+          : keyword == "tensors"                                                ? 9
+          : keyword == "tensors6"                                               ? 6
+                                                                                : 1;
+        values(perTuple, Lower(this->Word()));
+      }
+      else if (keyword == "texture_coordinates")
+      {
+        this->Word();
+        const long long dimension = this->Count(keyword);
+        if (dimension < 1 || dimension > 3)
+        {
+          this->Fail("TEXTURE_COORDINATES: dimension " + std::to_string(dimension));
+        }
+        values(dimension, Lower(this->Word()));
+      }
+      else if (keyword == "field")
+      {
+        this->Field();
+      }
+      else if (keyword == "point_data" || keyword == "cell_data")
+      {
+        count = this->Count(keyword);
+      }
+      else if (keyword == "metadata")
+      {
+        this->SkipMetadata();
+      }
+      else
+      {
+        this->RequireNotAPrefix(keyword);
+        return; // the end of the file, or a keyword the reader reports itself
+      }
+    }
+  }
+
+  [[noreturn]] void Fail(const std::string& problem) const
+  {
+    throw RuntimeError("cannot read '" + this->Path + "': malformed legacy VTK file: " + problem);
+  }
+
+  std::string Line()
+  {
+    const std::size_t end = this->Bytes.find('\n', this->Position);
+    if (end == std::string::npos || end - this->Position > MaximumLine)
+    {
+      this->Fail("a header line is missing or longer than 255 characters");
+    }
+    std::string line = this->Bytes.substr(this->Position, end - this->Position);
+    this->Position = end + 1;
+    return line;
+  }
+
+  // The next whitespace-separated word, "" at the end of the file.
+  // Words are read as vtkDataReader::ReadString reads them, into 256-byte
+  // buffers: a longer word is two (its name, then its type, for a SCALARS
+  // line). Numbers are read whole, as iostream reads them.
+  std::string Word(std::size_t limit = MaximumLine)
+  {
+    const auto space = [](unsigned char c) {
+      return std::isspace(c) != 0;
+    };
+    while (this->Position < this->Bytes.size() && space(this->Bytes[this->Position]))
+    {
+      ++this->Position;
+    }
+    const std::size_t start = this->Position;
+    while (this->Position < this->Bytes.size() && !space(this->Bytes[this->Position]) &&
+      this->Position - start < limit)
+    {
+      ++this->Position;
+    }
+    return this->Bytes.substr(start, this->Position - start);
+  }
+
+  // An ASCII integer as iostream reads it: digits only, in range.
+  long long Integer(const std::string& what)
+  {
+    const std::string word = this->Word(std::string::npos);
+    if (word.empty())
+    {
+      this->Fail(what + ": the file ends inside the data");
+    }
+    const bool digits = !word.empty() &&
+      std::all_of(word.begin() + (word[0] == '-' || word[0] == '+'), word.end(),
+        [](unsigned char c) { return std::isdigit(c) != 0; });
+    errno = 0;
+    const long long value = digits ? std::strtoll(word.c_str(), nullptr, 10) : 0;
+    if (!digits || errno == ERANGE)
+    {
+      this->Fail(what + ": '" + Printable(word) + "' is not an integer");
+    }
+    return value;
+  }
+
+  long long Count(const std::string& what)
+  {
+    const long long count = this->Integer(what);
+    if (count < 0 || count > static_cast<long long>(this->Bytes.size()))
+    {
+      this->Fail(what + ": a count of " + std::to_string(count) + " cannot fit in the file");
+    }
+    return count;
+  }
+
+  // After a section's header line: BINARY data starts on the next line.
+  void SkipToNextLine()
+  {
+    const std::size_t end = this->Bytes.find('\n', this->Position);
+    this->Position = end == std::string::npos ? this->Bytes.size() : end + 1;
+  }
+
+  // `count` values of `type`; returned (as integers) only when `keep`.
+  std::vector<long long> Values(
+    long long count, const std::string& type, const std::string& what, bool keep = false)
+  {
+    std::vector<long long> kept;
+    if (count < 0 || count > static_cast<long long>(this->Bytes.size()))
+    {
+      this->Fail(what + ": " + std::to_string(count) + " values cannot fit in the file");
+    }
+    const std::size_t size = BinarySize(type);
+    if (size == 0)
+    {
+      this->Fail(what + ": unknown data type '" + Printable(type) + "'");
+    }
+    const bool integer = type != "float" && type != "double";
+    if (this->Binary)
+    {
+      this->SkipToNextLine();
+      if (static_cast<unsigned long long>(count) * size > this->Bytes.size() - this->Position)
+      {
+        this->Fail(what + ": the file ends inside the data (truncated binary data)");
+      }
+      for (long long i = 0; keep && i < count; ++i)
+      {
+        long long value = 0; // big-endian, signed
+        const auto* raw =
+          reinterpret_cast<const unsigned char*>(this->Bytes.data() + this->Position + i * size);
+        value = (raw[0] & 0x80) ? -1 : 0;
+        for (std::size_t b = 0; b < size; ++b)
+        {
+          value = static_cast<long long>((static_cast<unsigned long long>(value) << 8) | raw[b]);
+        }
+        kept.push_back(value);
+      }
+      this->Position += count * size;
+      return kept;
+    }
+    for (long long i = 0; i < count; ++i)
+    {
+      if (integer)
+      {
+        const long long value = this->Integer(what);
+        if (size == 4 && (value < INT32_MIN || value > UINT32_MAX))
+        {
+          this->Fail(what + ": " + std::to_string(value) + " does not fit in 32 bits");
+        }
+        if (keep)
+        {
+          kept.push_back(value);
+        }
+        continue;
+      }
+      const std::string word = this->Word(std::string::npos);
+      if (word.empty())
+      {
+        this->Fail(what + ": the file ends inside the data");
+      }
+      char* end = nullptr;
+      const double value = std::strtod(word.c_str(), &end);
+      const bool plain = std::all_of(word.begin(), word.end(), [](unsigned char c) {
+        return std::isdigit(c) || c == '+' || c == '-' || c == '.' || c == 'e' || c == 'E';
+      });
+      if (end != word.c_str() + word.size() || !plain)
+      {
+        this->Fail(what + ": '" + Printable(word) + "' is not a number");
+      }
+      // iostream fails on a value its type cannot hold, and the reader with it.
+      if (!std::isfinite(value) ||
+        (type == "float" && std::abs(value) > std::numeric_limits<float>::max()))
+      {
+        this->Fail(what + ": '" + Printable(word) + "' does not fit in a " + type);
+      }
+    }
+    return kept;
+  }
+
+  void Cells(const std::string& keyword)
+  {
+    std::string what = keyword;
+    std::transform(what.begin(), what.end(), what.begin(),
+      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    const long long first = this->Count(what);
+    const long long second = this->Count(what);
+    if (this->MajorVersion >= 5)
+    {
+      // "POLYGONS offsets connectivity", then OFFSETS and CONNECTIVITY arrays.
+      if (Lower(this->Word()) != "offsets")
+      {
+        this->Fail(what + ": no OFFSETS array");
+      }
+      const std::vector<long long> offsets =
+        this->Values(first, Lower(this->Word()), what + " OFFSETS", true);
+      for (std::size_t i = 0; i < offsets.size(); ++i)
+      {
+        if ((i == 0 && offsets[i] != 0) || (i > 0 && offsets[i] < offsets[i - 1]) ||
+          offsets[i] > second)
+        {
+          this->Fail(what + ": offset " + std::to_string(i) + " is out of order or range");
+        }
+      }
+      if (!offsets.empty() && offsets.back() != second)
+      {
+        this->Fail(what + ": the offsets do not end at the connectivity size");
+      }
+      if (Lower(this->Word()) != "connectivity")
+      {
+        this->Fail(what + ": no CONNECTIVITY array");
+      }
+      this->Values(second, Lower(this->Word()), what + " CONNECTIVITY");
+      return;
+    }
+    // Legacy layout: "POLYGONS cells size", then size ints: n id id ... per cell.
+    const std::vector<long long> data = this->Values(second, "int", what, true);
+    std::size_t at = 0;
+    for (long long cell = 0; cell < first; ++cell)
+    {
+      if (at >= data.size() || data[at] < 0 ||
+        static_cast<unsigned long long>(data[at]) >= data.size() - at)
+      {
+        this->Fail(what + ": cell " + std::to_string(cell) + " does not fit in the declared size");
+      }
+      at += static_cast<std::size_t>(data[at]) + 1;
+    }
+    if (at != data.size())
+    {
+      this->Fail(what + ": the cells do not fill the declared size");
+    }
+  }
+
+  std::string Path;
+  std::string Bytes;
+  std::size_t Position = 0;
+  int MajorVersion = 0;
+  bool Binary = false;
+};
+
+} // namespace
+
+void CheckLegacyVtkFile(const std::string& path)
+{
+  std::ifstream file(path, std::ios::binary);
+  if (!file)
+  {
+    throw RuntimeError("cannot read '" + path + "': " + std::strerror(errno));
+  }
+  std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  LegacyChecker(path, std::move(bytes)).Check();
+}
+
+} // namespace cli

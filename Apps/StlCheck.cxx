@@ -1,0 +1,73 @@
+#include "StlCheck.h"
+
+#include "CliErrors.h"
+
+#include <vtkSTLReader.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+
+namespace cli
+{
+namespace
+{
+
+// vtkSTLReader's own ASCII/binary decision (a protected member). It returns
+// the VTK_ASCII of vtkSTLReader.cxx, 0, not the VTK_ASCII of vtkWriter.h, 1.
+constexpr int StlReaderAscii = 0;
+
+class StlTypeProbe : public vtkSTLReader
+{
+public:
+  static StlTypeProbe* New()
+  {
+    auto* probe = new StlTypeProbe;
+    probe->InitializeObjectBase();
+    return probe;
+  }
+  bool IsBinary(const std::string& path)
+  {
+    return this->GetSTLFileType(path.c_str()) != StlReaderAscii;
+  }
+};
+
+constexpr std::uint64_t HeaderBytes = 84; // 80 bytes of text, a 32-bit triangle count
+constexpr std::uint64_t TriangleBytes = 50;
+
+} // namespace
+
+void CheckStlFile(const std::string& path)
+{
+  std::ifstream file(path, std::ios::binary | std::ios::ate);
+  if (!file)
+  {
+    throw RuntimeError("cannot read '" + path + "': " + std::strerror(errno));
+  }
+  const auto size = static_cast<std::uint64_t>(file.tellg());
+  auto probe = vtkSmartPointer<StlTypeProbe>::New();
+  if (!probe->IsBinary(path))
+  {
+    return;
+  }
+  const std::string where = "cannot read '" + path + "': binary STL: ";
+  if (size < HeaderBytes)
+  {
+    throw RuntimeError(
+      where + "the file has " + std::to_string(size) + " bytes, fewer than the 84-byte header");
+  }
+  unsigned char count[4];
+  file.seekg(80);
+  file.read(reinterpret_cast<char*>(count), 4);
+  const std::uint64_t declared = count[0] | (count[1] << 8) | (count[2] << 16) |
+    (static_cast<std::uint64_t>(count[3]) << 24); // little-endian
+  const std::uint64_t held = (size - HeaderBytes) / TriangleBytes;
+  if (!file || declared > held)
+  {
+    throw RuntimeError(where + "the header declares " + std::to_string(declared) +
+      " triangles but the file holds " + std::to_string(held) + " (truncated?)");
+  }
+}
+
+} // namespace cli

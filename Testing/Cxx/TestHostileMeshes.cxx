@@ -1,0 +1,616 @@
+// Hostile meshes (issue 6, item 4): deterministic pseudo-random meshes of the
+// awkward kinds real files contain (non-manifold fans, duplicate points,
+// zero-area and repeated-id triangles, inconsistent orientation, coordinates
+// at 1e30 and 1e-30 and both at once, NaN, infinite, zero and extreme normals,
+// triangle soups) go through vtkSilhouetteSmoothingFilter for many random
+// cameras (parallel and perspective, eye outside and inside, degenerate
+// view-ups), with vertex perturbation on and off. Each request must either
+// succeed or fail with an error; a successful one must give finite points and
+// normals, ids in range on both outputs, and keep at least as many triangles
+// as the input has valid ones (three distinct ids).
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSilhouetteSmoothingFilter.h"
+#include "vtkTestErrorObserver.h"
+
+#include "SilhouetteTestSupport.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <functional>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+// SplitMix64: the same numbers on every platform and standard library.
+class Random
+{
+public:
+  explicit Random(std::uint64_t seed)
+    : State(seed)
+  {
+  }
+  std::uint64_t next()
+  {
+    std::uint64_t z = (this->State += 0x9e3779b97f4a7c15ULL);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+  }
+  double uniform(double low = 0.0, double high = 1.0)
+  {
+    return low + (high - low) * static_cast<double>(this->next() >> 11) * 0x1.0p-53;
+  }
+  vtkIdType below(vtkIdType n) { return static_cast<vtkIdType>(this->next() % n); }
+  bool chance(double p) { return this->uniform() < p; }
+
+private:
+  std::uint64_t State;
+};
+
+struct Triangle
+{
+  vtkIdType Ids[3];
+};
+
+// A mesh under construction: points, optional normals, triangles (and other polygons).
+struct Soup
+{
+  std::vector<std::array<double, 3>> Points;
+  std::vector<std::array<double, 3>> Normals; // empty: none
+  std::vector<std::vector<vtkIdType>> Polygons;
+
+  vtkIdType add(const std::array<double, 3>& p, const std::array<double, 3>& n = { 0, 0, 1 })
+  {
+    this->Points.push_back(p);
+    if (!this->Normals.empty())
+    {
+      this->Normals.push_back(n);
+    }
+    return static_cast<vtkIdType>(this->Points.size() - 1);
+  }
+
+  vtkSmartPointer<vtkPolyData> polyData() const
+  {
+    auto mesh = vtkSmartPointer<vtkPolyData>::New();
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    for (const auto& p : this->Points)
+    {
+      points->InsertNextPoint(p.data());
+    }
+    mesh->SetPoints(points);
+    vtkNew<vtkCellArray> polys;
+    for (const auto& polygon : this->Polygons)
+    {
+      polys->InsertNextCell(static_cast<vtkIdType>(polygon.size()), polygon.data());
+    }
+    mesh->SetPolys(polys);
+    if (!this->Normals.empty())
+    {
+      vtkNew<vtkDoubleArray> normals;
+      normals->SetName("Normals");
+      normals->SetNumberOfComponents(3);
+      for (const auto& n : this->Normals)
+      {
+        normals->InsertNextTuple(n.data());
+      }
+      mesh->GetPointData()->SetNormals(normals);
+    }
+    return mesh;
+  }
+};
+
+// An icosphere with its exact normals, as a soup to corrupt.
+Soup Sphere(int level)
+{
+  auto mesh = silhouette_test::Icosphere(level);
+  Soup soup;
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  if (normals)
+  {
+    soup.Normals.reserve(static_cast<std::size_t>(mesh->GetNumberOfPoints()));
+  }
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    std::array<double, 3> p, n{ 0, 0, 1 };
+    mesh->GetPoint(i, p.data());
+    if (normals)
+    {
+      normals->GetTuple(i, n.data());
+      soup.Normals.push_back(n);
+    }
+    soup.Points.push_back(p);
+  }
+  auto cell = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  vtkIdType size = 0;
+  const vtkIdType* ids = nullptr;
+  for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell())
+  {
+    cell->GetCurrentCell(size, ids);
+    soup.Polygons.emplace_back(ids, ids + size);
+  }
+  return soup;
+}
+
+// --- The corruptions ------------------------------------------------------------
+
+// Fans of 1 to 4 extra triangles on existing edges: 3 to 6 triangles per edge.
+void AddNonManifoldFans(Soup& soup, Random& random, int fans)
+{
+  for (int f = 0; f < fans; ++f)
+  {
+    const auto& polygon = soup.Polygons[static_cast<std::size_t>(
+      random.below(static_cast<vtkIdType>(soup.Polygons.size())))];
+    const vtkIdType a = polygon[0], b = polygon[1];
+    const int blades = 1 + static_cast<int>(random.below(4));
+    for (int k = 0; k < blades; ++k)
+    {
+      std::array<double, 3> tip;
+      for (int c = 0; c < 3; ++c)
+      {
+        tip[static_cast<std::size_t>(c)] =
+          0.5 * (soup.Points[a][c] + soup.Points[b][c]) + random.uniform(-0.6, 0.6);
+      }
+      const vtkIdType t = soup.add(tip, { random.uniform(-1, 1), random.uniform(-1, 1), 1.0 });
+      soup.Polygons.push_back(
+        random.chance(0.5) ? std::vector<vtkIdType>{ a, b, t } : std::vector<vtkIdType>{ b, a, t });
+    }
+  }
+}
+
+// Coincident copies of points, some triangles moved onto them (a seam of
+// duplicates), and repeated copies of whole triangles.
+void AddDuplicates(Soup& soup, Random& random, int count)
+{
+  const auto original = static_cast<vtkIdType>(soup.Points.size());
+  for (int d = 0; d < count; ++d)
+  {
+    const vtkIdType source = random.below(original);
+    const vtkIdType copy = soup.add(soup.Points[static_cast<std::size_t>(source)],
+      soup.Normals.empty() ? std::array<double, 3>{ 0, 0, 1 }
+                           : soup.Normals[static_cast<std::size_t>(source)]);
+    for (auto& polygon : soup.Polygons)
+    {
+      for (vtkIdType& id : polygon)
+      {
+        if (id == source && random.chance(0.5))
+        {
+          id = copy;
+        }
+      }
+    }
+    const auto again = soup.Polygons[static_cast<std::size_t>(
+      random.below(static_cast<vtkIdType>(soup.Polygons.size())))];
+    soup.Polygons.push_back(again);
+  }
+}
+
+// Repeated-id triangles, collinear triangles with distinct ids, triangles on
+// three coincident points, and polygons that repeat ids.
+void AddDegenerateTriangles(Soup& soup, Random& random, int count)
+{
+  const auto n = static_cast<vtkIdType>(soup.Points.size());
+  for (int d = 0; d < count; ++d)
+  {
+    const vtkIdType a = random.below(n), b = random.below(n);
+    soup.Polygons.push_back({ a, a, b });
+    soup.Polygons.push_back({ a, a, a });
+    std::array<double, 3> middle;
+    for (int c = 0; c < 3; ++c)
+    {
+      middle[static_cast<std::size_t>(c)] = 0.5 * (soup.Points[a][c] + soup.Points[b][c]);
+    }
+    const vtkIdType m = soup.add(middle);
+    soup.Polygons.push_back({ a, m, b }); // zero area, distinct ids
+    const vtkIdType p = soup.add(soup.Points[a]), q = soup.add(soup.Points[a]);
+    soup.Polygons.push_back({ a, p, q });       // three coincident points
+    soup.Polygons.push_back({ a, b, a, m, b }); // a polygon repeating ids
+    soup.Polygons.push_back({ a, b });          // a "polygon" of two points
+  }
+}
+
+void FlipSome(Soup& soup, Random& random, double fraction)
+{
+  for (auto& polygon : soup.Polygons)
+  {
+    if (random.chance(fraction))
+    {
+      std::reverse(polygon.begin(), polygon.end());
+    }
+  }
+}
+
+void Scale(Soup& soup, double factor)
+{
+  for (auto& p : soup.Points)
+  {
+    for (double& x : p)
+    {
+      x *= factor;
+    }
+  }
+}
+
+// Some points pushed out to 1e30, some pulled in to 1e-30: both scales in one mesh.
+void MixScales(Soup& soup, Random& random)
+{
+  for (auto& p : soup.Points)
+  {
+    const double r = random.uniform();
+    const double factor = r < 0.1 ? 1e30 : (r < 0.2 ? 1e-30 : 1.0);
+    for (double& x : p)
+    {
+      x *= factor;
+    }
+  }
+}
+
+// NaN, infinite, zero, tiny and huge normals.
+void SpoilNormals(Soup& soup, Random& random)
+{
+  if (soup.Normals.empty())
+  {
+    soup.Normals.assign(soup.Points.size(), { 0, 0, 1 });
+  }
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const double inf = std::numeric_limits<double>::infinity();
+  for (auto& n : soup.Normals)
+  {
+    switch (random.below(8))
+    {
+      case 0:
+        n = { nan, 0, 1 };
+        break;
+      case 1:
+        n = { nan, nan, nan };
+        break;
+      case 2:
+        n = { inf, -inf, 0 };
+        break;
+      case 3:
+        n = { 0, 0, 0 };
+        break;
+      case 4:
+        n = { 1e-300, -1e-300, 1e-310 };
+        break;
+      case 5:
+        n = { 1e300, 1e300, -1e300 };
+        break;
+      default:
+        break; // keep the good normal
+    }
+  }
+}
+
+// Random points (some coincident) and random triangles over them.
+Soup TriangleSoup(Random& random, double scale)
+{
+  Soup soup;
+  const int points = 4 + static_cast<int>(random.below(60));
+  for (int i = 0; i < points; ++i)
+  {
+    if (i > 0 && random.chance(0.1))
+    {
+      soup.add(soup.Points[static_cast<std::size_t>(random.below(i))]);
+      continue;
+    }
+    soup.add({ scale * random.uniform(-1, 1), scale * random.uniform(-1, 1),
+      scale * random.uniform(-1, 1) });
+  }
+  const int triangles = 1 + static_cast<int>(random.below(150));
+  for (int t = 0; t < triangles; ++t)
+  {
+    soup.Polygons.push_back({ random.below(points), random.below(points), random.below(points) });
+  }
+  return soup;
+}
+
+struct Case
+{
+  std::string Name;
+  Soup Mesh;
+};
+
+std::vector<Case> HostileMeshes()
+{
+  std::vector<Case> cases;
+  Random random(20080306);
+  auto sphere = [&](int level, bool normals) {
+    Soup soup = Sphere(level);
+    if (!normals)
+    {
+      soup.Normals.clear();
+    }
+    return soup;
+  };
+  for (bool normals : { true, false })
+  {
+    const std::string suffix = normals ? " (given normals)" : " (computed normals)";
+    Soup fans = sphere(2, normals);
+    AddNonManifoldFans(fans, random, 25);
+    cases.push_back({ "non-manifold fans" + suffix, fans });
+
+    Soup duplicates = sphere(2, normals);
+    AddDuplicates(duplicates, random, 40);
+    cases.push_back({ "duplicate points and triangles" + suffix, duplicates });
+
+    Soup degenerate = sphere(2, normals);
+    AddDegenerateTriangles(degenerate, random, 20);
+    cases.push_back({ "zero-area and repeated-id triangles" + suffix, degenerate });
+
+    Soup flipped = sphere(2, normals);
+    FlipSome(flipped, random, 0.3);
+    cases.push_back({ "inconsistent orientation" + suffix, flipped });
+
+    for (double scale : { 1e30, 1e-30 })
+    {
+      Soup scaled = sphere(1, normals);
+      AddNonManifoldFans(scaled, random, 5);
+      AddDegenerateTriangles(scaled, random, 5);
+      FlipSome(scaled, random, 0.2);
+      Scale(scaled, scale);
+      cases.push_back(
+        { (scale > 1 ? "everything at 1e30" : "everything at 1e-30") + suffix, scaled });
+    }
+
+    Soup mixed = sphere(2, normals);
+    MixScales(mixed, random);
+    cases.push_back({ "mixed scales 1e-30 and 1e30" + suffix, mixed });
+  }
+  Soup spoiled = Sphere(2);
+  SpoilNormals(spoiled, random);
+  cases.push_back({ "NaN, infinite, zero and extreme normals", spoiled });
+
+  Soup everything = Sphere(2);
+  AddNonManifoldFans(everything, random, 10);
+  AddDuplicates(everything, random, 10);
+  AddDegenerateTriangles(everything, random, 10);
+  FlipSome(everything, random, 0.25);
+  SpoilNormals(everything, random);
+  cases.push_back({ "all of it at once", everything });
+
+  for (int s = 0; s < 6; ++s)
+  {
+    const double scale = std::pow(10.0, -30 + 12 * s);
+    Soup soup = TriangleSoup(random, scale);
+    if (s % 2 == 1)
+    {
+      SpoilNormals(soup, random);
+    }
+    cases.push_back({ "triangle soup at 1e" + std::to_string(-30 + 12 * s), soup });
+  }
+  return cases;
+}
+
+// --- The checks -----------------------------------------------------------------
+
+bool Finite(const double v[3])
+{
+  return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
+}
+
+// Finite points and normals; every id of every cell in range.
+bool Valid(vtkPolyData* mesh, std::string& problem)
+{
+  const vtkIdType points = mesh->GetNumberOfPoints();
+  for (vtkIdType i = 0; i < points; ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    if (!Finite(p))
+    {
+      problem = "point " + std::to_string(i) + " is not finite";
+      return false;
+    }
+  }
+  if (vtkDataArray* normals = mesh->GetPointData()->GetNormals())
+  {
+    if (normals->GetNumberOfTuples() != points)
+    {
+      problem = "the normals do not match the points";
+      return false;
+    }
+    for (vtkIdType i = 0; i < points; ++i)
+    {
+      double n[3];
+      normals->GetTuple(i, n);
+      if (!Finite(n))
+      {
+        problem = "normal " + std::to_string(i) + " is not finite";
+        return false;
+      }
+    }
+  }
+  for (vtkCellArray* cells :
+    { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips() })
+  {
+    auto cell = vtk::TakeSmartPointer(cells->NewIterator());
+    vtkIdType size = 0;
+    const vtkIdType* ids = nullptr;
+    for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell())
+    {
+      cell->GetCurrentCell(size, ids);
+      for (vtkIdType k = 0; k < size; ++k)
+      {
+        if (ids[k] < 0 || ids[k] >= points)
+        {
+          problem =
+            "a cell names point " + std::to_string(ids[k]) + " of " + std::to_string(points);
+          return false;
+        }
+      }
+    }
+  }
+  return true;
+}
+
+// Triangles with three distinct ids (the output's triangles, or the input's valid ones).
+vtkIdType ValidTriangles(vtkPolyData* mesh)
+{
+  vtkIdType count = 0;
+  auto cell = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  vtkIdType size = 0;
+  const vtkIdType* ids = nullptr;
+  for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell())
+  {
+    cell->GetCurrentCell(size, ids);
+    count += size == 3 && ids[0] != ids[1] && ids[1] != ids[2] && ids[0] != ids[2];
+  }
+  return count;
+}
+
+// A random camera: around the mesh's bounding sphere (outside or inside it),
+// parallel or perspective; now and then a view-up along the view direction.
+void AimCamera(vtkCamera* camera, vtkPolyData* mesh, Random& random)
+{
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  double center[3], radius = 0.0;
+  for (int a = 0; a < 3; ++a)
+  {
+    center[a] = 0.5 * (bounds[2 * a] + bounds[2 * a + 1]);
+    radius = std::max(radius, 0.5 * (bounds[2 * a + 1] - bounds[2 * a]));
+  }
+  if (!(radius > 0.0))
+  {
+    radius = 1.0;
+  }
+  double direction[3];
+  double length = 0.0;
+  do
+  {
+    for (double& d : direction)
+    {
+      d = random.uniform(-1, 1);
+    }
+    length = std::sqrt(
+      direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
+  } while (length < 0.1 || length > 1.0);
+  const bool inside = random.chance(0.25);
+  const double distance = radius * (inside ? random.uniform(0.05, 0.9) : random.uniform(1.2, 30));
+  double focal[3], position[3];
+  for (int a = 0; a < 3; ++a)
+  {
+    focal[a] = center[a] + 0.3 * radius * random.uniform(-1, 1);
+    position[a] = focal[a] + distance * direction[a] / length;
+  }
+  camera->SetFocalPoint(focal);
+  camera->SetPosition(position);
+  if (random.chance(0.05))
+  {
+    camera->SetViewUp(direction[0], direction[1], direction[2]); // degenerate on purpose
+  }
+  else
+  {
+    camera->SetViewUp(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1));
+  }
+  camera->SetViewAngle(random.uniform(5, 120));
+  camera->SetParallelProjection(random.chance(0.4));
+  camera->SetParallelScale(radius * random.uniform(0.2, 3));
+}
+
+} // namespace
+
+int TestHostileMeshes(int, char*[])
+{
+  const auto start = std::chrono::steady_clock::now();
+  Random random(7);
+  constexpr int CamerasPerMesh = 40;
+  int succeeded = 0, failed = 0;
+  std::map<std::string, int> errorMessages; // the first sentence of each, counted
+  bool ok = true;
+  for (const Case& hostile : HostileMeshes())
+  {
+    vtkSmartPointer<vtkPolyData> input = hostile.Mesh.polyData();
+    const vtkIdType inputTriangles = ValidTriangles(input);
+    for (bool perturb : { true, false })
+    {
+      // One filter per mesh: the prepared cache serves all the cameras.
+      vtkNew<vtkSilhouetteSmoothingFilter> filter;
+      vtkNew<vtkTest::ErrorObserver> errors;
+      vtkNew<vtkTest::ErrorObserver> executiveErrors;
+      filter->AddObserver(vtkCommand::ErrorEvent, errors);
+      filter->AddObserver(vtkCommand::WarningEvent, errors);
+      filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executiveErrors);
+      filter->SetInputData(input);
+      filter->SetPerturbVertices(perturb);
+      vtkNew<vtkCamera> camera;
+      filter->SetCamera(camera);
+      for (int view = 0; view < CamerasPerMesh; ++view)
+      {
+        AimCamera(camera, input, random);
+        filter->SetViewportSize(
+          1 + static_cast<int>(random.below(2000)), 1 + static_cast<int>(random.below(2000)));
+        filter->SetTolerance(random.uniform(0.1, 3.0));
+        errors->Clear();
+        executiveErrors->Clear();
+        const int result = filter->GetExecutive()->Update();
+        const std::string where = hostile.Name + (perturb ? ", perturbation on" : ", off") +
+          ", view " + std::to_string(view);
+        if (!result)
+        {
+          ++failed;
+          if (errors->GetError())
+          {
+            // "ERROR: In file, line N\nvtkSilhouetteSmoothingFilter (0x...): Text. More"
+            std::string message = errors->GetErrorMessage();
+            const std::size_t text = message.find("): ");
+            message = message.substr(text == std::string::npos ? 0 : text + 3);
+            ++errorMessages[message.substr(0, message.find_first_of(".\n"))];
+          }
+          if (!errors->GetError())
+          {
+            std::printf("FAIL: %s: the request failed without an error\n", where.c_str());
+            ok = false;
+          }
+          continue;
+        }
+        ++succeeded;
+        std::string problem;
+        if (!Valid(filter->GetOutput(), problem) || !Valid(filter->GetSilhouetteOutput(), problem))
+        {
+          std::printf("FAIL: %s: %s\n", where.c_str(), problem.c_str());
+          ok = false;
+          continue;
+        }
+        const vtkIdType outputTriangles = ValidTriangles(filter->GetOutput());
+        if (outputTriangles < inputTriangles)
+        {
+          std::printf("FAIL: %s: %lld output triangles, fewer than the %lld valid input ones\n",
+            where.c_str(), static_cast<long long>(outputTriangles),
+            static_cast<long long>(inputTriangles));
+          ok = false;
+        }
+      }
+    }
+    std::printf("%-48s %6lld points %6lld valid triangles: checked\n", hostile.Name.c_str(),
+      static_cast<long long>(input->GetNumberOfPoints()), static_cast<long long>(inputTriangles));
+  }
+  const double seconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf(
+    "%d requests succeeded, %d failed with an error, in %.2f s\n", succeeded, failed, seconds);
+  for (const auto& message : errorMessages)
+  {
+    std::printf("  %4d x \"%s\"\n", message.second, message.first.c_str());
+  }
+  CHECK(succeeded > 0, "some requests succeed");
+  return ok ? EXIT_SUCCESS : EXIT_FAILURE;
+}

@@ -235,12 +235,29 @@ Smoothing options (with the camera options wherever those are taken):
 
 The framing camera is vtkRenderer::ResetCamera() on the mesh's bounds: it
 looks along -Z at the centre of the bounding box, view-up +Y, from the
-distance at which the bounding sphere fills the view angle. With
+distance at which the bounding sphere fills the --view-angle. With
 --camera-position the explicit camera replaces it (a parallel camera keeps
 the framing parallel scale). Then --azimuth, --elevation and --zoom are
 applied in that order, to either camera. The filter gets this camera and
 the --size viewport before it first runs.
 )";
+}
+
+namespace
+{
+// The angle, in radians, that vtkRenderer::ResetCamera() fits the bounding
+// sphere into: the view angle, turned from vertical to horizontal (or back)
+// where the viewport's aspect makes the other one the narrower, as VTK does.
+double FittingAngle(vtkCamera* camera, double viewAngle, const double aspect[2])
+{
+  const double half = 0.5 * vtkMath::RadiansFromDegrees(viewAngle);
+  const bool horizontal = camera->GetUseHorizontalViewAngle();
+  if (aspect[0] >= 1.0)
+  {
+    return horizontal ? 2.0 * std::atan(std::tan(half) / aspect[0]) : 2.0 * half;
+  }
+  return horizontal ? 2.0 * half : 2.0 * std::atan(std::tan(half) * aspect[0]);
+}
 }
 
 void SetUpCamera(vtkRenderer* renderer, const double bounds[6], const CameraOptions& options)
@@ -261,6 +278,18 @@ void SetUpCamera(vtkRenderer* renderer, const double bounds[6], const CameraOpti
   if (finiteBounds)
   {
     renderer->ResetCamera(bounds);
+    // VTK 9.1's ResetCamera() also sets the view angle back to 30 degrees,
+    // and frames the bounding sphere for that angle: put the given angle back
+    // and move the camera to the distance at which the sphere fills it.
+    const double framedAngle = camera->GetViewAngle();
+    if (framedAngle != options.ViewAngle)
+    {
+      double aspect[2];
+      renderer->GetAspect(aspect);
+      camera->Dolly(std::sin(0.5 * FittingAngle(camera, options.ViewAngle, aspect)) /
+        std::sin(0.5 * FittingAngle(camera, framedAngle, aspect)));
+      camera->SetViewAngle(options.ViewAngle);
+    }
   }
 
   if (options.CameraPosition)

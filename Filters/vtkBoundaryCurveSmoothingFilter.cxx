@@ -1,19 +1,15 @@
 #include "vtkBoundaryCurveSmoothingFilter.h"
 
-#include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkProp3D.h"
-#include "vtkRenderer.h"
 
 #include "vtkSilhouetteFilterSupport.h"
 
@@ -32,7 +28,6 @@ struct vtkBoundaryCurveSmoothingFilter::Internals
   vtkIdType NonFinitePoints = 0;
   vtkPolyData* CachedInput = nullptr;
   vtkMTimeType CachedInputTime = 0;
-  support::ViewTracker View;
 };
 
 vtkBoundaryCurveSmoothingFilter::vtkBoundaryCurveSmoothingFilter()
@@ -41,61 +36,11 @@ vtkBoundaryCurveSmoothingFilter::vtkBoundaryCurveSmoothingFilter()
   this->SetNumberOfOutputPorts(2);
 }
 
-vtkBoundaryCurveSmoothingFilter::~vtkBoundaryCurveSmoothingFilter()
-{
-  this->SetCamera(nullptr);
-  this->SetModelMatrix(nullptr);
-}
-
-vtkCxxSetObjectMacro(vtkBoundaryCurveSmoothingFilter, Camera, vtkCamera);
-vtkCxxSetObjectMacro(vtkBoundaryCurveSmoothingFilter, ModelMatrix, vtkMatrix4x4);
-
-void vtkBoundaryCurveSmoothingFilter::SetProp3D(vtkProp3D* prop)
-{
-  if (this->Prop3D != prop)
-  {
-    this->Prop3D = prop;
-    this->Modified();
-  }
-}
-
-vtkProp3D* vtkBoundaryCurveSmoothingFilter::GetProp3D()
-{
-  return this->Prop3D;
-}
-
-void vtkBoundaryCurveSmoothingFilter::SetRenderer(vtkRenderer* renderer)
-{
-  if (this->Renderer != renderer)
-  {
-    this->Renderer = renderer;
-    this->Modified();
-  }
-}
-
-vtkRenderer* vtkBoundaryCurveSmoothingFilter::GetRenderer()
-{
-  return this->Renderer;
-}
+vtkBoundaryCurveSmoothingFilter::~vtkBoundaryCurveSmoothingFilter() = default;
 
 vtkPolyData* vtkBoundaryCurveSmoothingFilter::GetSilhouetteOutput()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
-}
-
-vtkMTimeType vtkBoundaryCurveSmoothingFilter::GetMTime()
-{
-  const vtkMTimeType mtime = this->Superclass::GetMTime();
-  vtkCamera* camera = support::ActiveCamera(this->Camera, this->Renderer);
-  if (!camera)
-  {
-    return mtime;
-  }
-  double model[16];
-  support::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
-  return std::max(mtime,
-    this->Internal->View.Update(
-      camera, model, support::ViewportOf(this->Renderer, this->ViewportSize)));
 }
 
 int vtkBoundaryCurveSmoothingFilter::RequestData(
@@ -109,17 +54,17 @@ int vtkBoundaryCurveSmoothingFilter::RequestData(
     vtkErrorMacro("Missing input or output polydata.");
     return 0;
   }
-  vtkCamera* camera = support::ActiveCamera(this->Camera, this->Renderer);
-  if (!camera && this->Renderer)
+  support::View view;
+  const ViewStatus viewStatus = this->RequestView(view);
+  if (viewStatus == VIEW_NO_CAMERA_YET)
   {
     output->ShallowCopy(input); // the renderer asks for bounds before it makes its camera
     lines->Initialize();
     return 1;
   }
-  if (!camera)
+  if (viewStatus != VIEW_READY)
   {
-    vtkErrorMacro("No camera: call SetCamera() or SetRenderer() before updating.");
-    return 0;
+    return 0; // reported
   }
 
   Internals& internal = *this->Internal;
@@ -148,22 +93,11 @@ int vtkBoundaryCurveSmoothingFilter::RequestData(
     return 0;
   }
 
-  double model[16];
-  support::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
-  silsmooth::ViewGeometry view;
-  glm::dmat3 normalToEye(1.0);
-  const std::string viewError = support::MakeViewGeometry(
-    camera, model, support::ViewportOf(this->Renderer, this->ViewportSize), view, &normalToEye);
-  if (!viewError.empty())
-  {
-    vtkErrorMacro(<< viewError);
-    return 0;
-  }
   silsmooth::BoundaryCurveParameters parameters;
   parameters.SamplesPerCurve = this->SamplesPerCurve;
   parameters.TolerancePixels = this->Tolerance;
   const silsmooth::BoundaryCurveResult result =
-    internal.Mesh->smooth(view, normalToEye, parameters);
+    internal.Mesh->smooth(view.Geometry, view.NormalToEye, parameters);
 
   std::vector<vtkIdType> originalCell(result.TriangleSource.size());
   for (std::size_t t = 0; t < originalCell.size(); ++t)
@@ -214,12 +148,6 @@ int vtkBoundaryCurveSmoothingFilter::RequestData(
 void vtkBoundaryCurveSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Camera: " << this->Camera << "\n";
-  os << indent << "Prop3D: " << this->Prop3D.GetPointer() << "\n";
-  os << indent << "ModelMatrix: " << this->ModelMatrix << "\n";
-  os << indent << "Renderer: " << this->Renderer.GetPointer() << "\n";
-  os << indent << "ViewportSize: " << this->ViewportSize[0] << " x " << this->ViewportSize[1]
-     << "\n";
   os << indent << "SamplesPerCurve: " << this->SamplesPerCurve << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
 }

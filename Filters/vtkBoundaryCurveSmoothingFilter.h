@@ -18,8 +18,10 @@
  * jumps as the view moves (the paper says coherence is not ensured).
  *
  * The view is given as for vtkSilhouetteSmoothingFilter (SetCamera or
- * SetRenderer, SetViewportSize, SetProp3D or SetModelMatrix), and the filter
- * re-runs when the view changes by value. Output: the input's points (ids and
+ * SetRenderer, SetViewportSize, SetProp3D or SetModelMatrix, from
+ * vtkSilhouetteViewAlgorithm), and the filter re-runs when the view changes
+ * by value. Before a renderer has created its camera, the input passes
+ * through unchanged (port 1 empty). Output: the input's points (ids and
  * positions kept), then the added points; cell `NewGeometry` (0 kept, 1 made
  * by re-meshing), cell `OriginalCellId`, point `Normals` (the input's, or
  * angle-weighted; interpolated for added points), other point data
@@ -35,37 +37,17 @@
 #define vtkBoundaryCurveSmoothingFilter_h
 
 #include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
-#include "vtkWeakPointer.h" // For the renderer
+#include "vtkSilhouetteViewAlgorithm.h"
 
 #include <memory> // For the internals
 
-class vtkCamera;
-class vtkMatrix4x4;
-class vtkProp3D;
-class vtkRenderer;
-
 class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkBoundaryCurveSmoothingFilter
-  : public vtkPolyDataAlgorithm
+  : public vtkSilhouetteViewAlgorithm
 {
 public:
   static vtkBoundaryCurveSmoothingFilter* New();
-  vtkTypeMacro(vtkBoundaryCurveSmoothingFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkBoundaryCurveSmoothingFilter, vtkSilhouetteViewAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /** The view, as for vtkSilhouetteSmoothingFilter. */
-  virtual void SetCamera(vtkCamera*);
-  vtkGetObjectMacro(Camera, vtkCamera);
-  virtual void SetProp3D(vtkProp3D*);
-  vtkProp3D* GetProp3D();
-  virtual void SetModelMatrix(vtkMatrix4x4*);
-  vtkGetObjectMacro(ModelMatrix, vtkMatrix4x4);
-  virtual void SetRenderer(vtkRenderer*);
-  vtkRenderer* GetRenderer();
-  vtkSetVector2Macro(ViewportSize, int);
-  vtkGetVector2Macro(ViewportSize, int);
-  ///@}
 
   ///@{
   /**
@@ -82,20 +64,12 @@ public:
   /** The smoothed silhouette polylines (output port 1). */
   vtkPolyData* GetSilhouetteOutput();
 
-  /** Changes when the view changes (compared by value). */
-  vtkMTimeType GetMTime() override;
-
 protected:
   vtkBoundaryCurveSmoothingFilter();
   ~vtkBoundaryCurveSmoothingFilter() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  vtkCamera* Camera = nullptr;
-  vtkWeakPointer<vtkProp3D> Prop3D;
-  vtkMatrix4x4* ModelMatrix = nullptr;
-  vtkWeakPointer<vtkRenderer> Renderer;
-  int ViewportSize[2] = { 1024, 768 };
   int SamplesPerCurve = 0;
   double Tolerance = 0.5;
 

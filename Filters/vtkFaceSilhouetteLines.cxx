@@ -1,6 +1,5 @@
 #include "vtkFaceSilhouetteLines.h"
 
-#include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -8,13 +7,10 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkProp3D.h"
-#include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 
 #include "FaceSilhouetteLines.h"
@@ -31,65 +27,17 @@ struct vtkFaceSilhouetteLines::Internals
   vtkPolyData* CachedInput = nullptr;
   vtkMTimeType CachedInputTime = 0;
   bool NonFinite = false;
-  vtkSilhouetteFilterSupport::ViewTracker View;
 };
 
 vtkFaceSilhouetteLines::vtkFaceSilhouetteLines()
   : Internal(new Internals)
 {
-}
-
-vtkFaceSilhouetteLines::~vtkFaceSilhouetteLines()
-{
-  this->SetCamera(nullptr);
-  this->SetModelMatrix(nullptr);
-}
-
-vtkCxxSetObjectMacro(vtkFaceSilhouetteLines, Camera, vtkCamera);
-vtkCxxSetObjectMacro(vtkFaceSilhouetteLines, ModelMatrix, vtkMatrix4x4);
-
-void vtkFaceSilhouetteLines::SetProp3D(vtkProp3D* prop)
-{
-  if (this->Prop3D != prop)
-  {
-    this->Prop3D = prop;
-    this->Modified();
-  }
-}
-
-vtkProp3D* vtkFaceSilhouetteLines::GetProp3D()
-{
-  return this->Prop3D;
-}
-
-void vtkFaceSilhouetteLines::SetRenderer(vtkRenderer* renderer)
-{
-  if (this->Renderer != renderer)
-  {
-    this->Renderer = renderer;
-    this->Modified();
-  }
-}
-
-vtkRenderer* vtkFaceSilhouetteLines::GetRenderer()
-{
-  return this->Renderer;
-}
-
-vtkMTimeType vtkFaceSilhouetteLines::GetMTime()
-{
-  const vtkMTimeType mtime = this->Superclass::GetMTime();
-  vtkCamera* camera = vtkSilhouetteFilterSupport::ActiveCamera(this->Camera, this->Renderer);
-  if (!camera)
-  {
-    return mtime;
-  }
-  double model[16];
-  vtkSilhouetteFilterSupport::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
   // The viewport plays no part in the lines: a fixed one keeps window
   // resizes from re-running the filter.
-  return std::max(mtime, this->Internal->View.Update(camera, model, { 1, 1 }));
+  this->ViewportDependent = false;
 }
+
+vtkFaceSilhouetteLines::~vtkFaceSilhouetteLines() = default;
 
 int vtkFaceSilhouetteLines::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
@@ -101,15 +49,15 @@ int vtkFaceSilhouetteLines::RequestData(
     vtkErrorMacro("Missing input or output polydata.");
     return 0;
   }
-  vtkCamera* camera = vtkSilhouetteFilterSupport::ActiveCamera(this->Camera, this->Renderer);
-  if (!camera && this->Renderer)
+  vtkSilhouetteFilterSupport::View view;
+  const ViewStatus viewStatus = this->RequestView(view);
+  if (viewStatus == VIEW_NO_CAMERA_YET)
   {
     return 1; // the renderer has no camera yet: nothing to draw until it has
   }
-  if (!camera)
+  if (viewStatus != VIEW_READY)
   {
-    vtkErrorMacro("No camera: call SetCamera() or SetRenderer() before updating.");
-    return 0;
+    return 0; // reported
   }
 
   Internals& internal = *this->Internal;
@@ -136,23 +84,14 @@ int vtkFaceSilhouetteLines::RequestData(
     return 0;
   }
 
-  double model[16];
-  vtkSilhouetteFilterSupport::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
-  silsmooth::ViewGeometry view;
-  const std::string viewError =
-    vtkSilhouetteFilterSupport::MakeViewGeometry(camera, model, { 1, 1 }, view);
-  if (!viewError.empty())
-  {
-    vtkErrorMacro(<< viewError);
-    return 0;
-  }
   const silsmooth::ParallelFor smpFor =
     [](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
       vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&body](vtkIdType begin, vtkIdType end) {
         body(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
       });
     };
-  const silsmooth::FaceSilhouette lines = silsmooth::faceSilhouette(*internal.Mesh, view, smpFor);
+  const silsmooth::FaceSilhouette lines =
+    silsmooth::faceSilhouette(*internal.Mesh, view.Geometry, smpFor);
 
   const vtkIdType count = static_cast<vtkIdType>(lines.Crossings.size());
   vtkNew<vtkPoints> points;
@@ -210,8 +149,4 @@ int vtkFaceSilhouetteLines::RequestData(
 void vtkFaceSilhouetteLines::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Camera: " << this->Camera << "\n";
-  os << indent << "Prop3D: " << this->Prop3D.GetPointer() << "\n";
-  os << indent << "ModelMatrix: " << this->ModelMatrix << "\n";
-  os << indent << "Renderer: " << this->Renderer.GetPointer() << "\n";
 }

@@ -28,9 +28,11 @@
  *
  * The view: a camera (SetCamera, or the active camera of SetRenderer) and
  * optionally the prop (SetProp3D) or its matrix (SetModelMatrix), as for
- * vtkSilhouetteSmoothingFilter; GetMTime() changes when the camera or the
- * matrix changes by value (not when only the clipping range does). The
- * viewport size plays no part.
+ * vtkSilhouetteSmoothingFilter (from vtkSilhouetteViewAlgorithm); GetMTime()
+ * changes when the camera or the matrix changes by value (not when only the
+ * clipping range does). The viewport size plays no part (neither the
+ * renderer's nor SetViewportSize's). Before a renderer has created its
+ * camera, the output is empty.
  *
  * Output: polylines. Point arrays:
  * - `Normals` (float): the normalised linear interpolation of the shading
@@ -48,81 +50,29 @@
  * view fail the request with an error; triangles repeating a point id are
  * skipped; at an edge shared by more than two triangles a polyline ends.
  *
- * @sa vtkSilhouetteSmoothingFilter vtkPolyDataSilhouette
+ * @sa vtkSilhouetteSmoothingFilter vtkSilhouetteViewAlgorithm vtkPolyDataSilhouette
  */
 #ifndef vtkFaceSilhouetteLines_h
 #define vtkFaceSilhouetteLines_h
 
 #include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
-#include "vtkWeakPointer.h" // For the renderer and prop
+#include "vtkSilhouetteViewAlgorithm.h"
 
 #include <memory> // For the cached core mesh
 
-class vtkCamera;
-class vtkMatrix4x4;
-class vtkProp3D;
-class vtkRenderer;
-
 class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkFaceSilhouetteLines
-  : public vtkPolyDataAlgorithm
+  : public vtkSilhouetteViewAlgorithm
 {
 public:
   static vtkFaceSilhouetteLines* New();
-  vtkTypeMacro(vtkFaceSilhouetteLines, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkFaceSilhouetteLines, vtkSilhouetteViewAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /**
-   * The camera that defines the view. Required unless a renderer is set.
-   */
-  virtual void SetCamera(vtkCamera*);
-  vtkGetObjectMacro(Camera, vtkCamera);
-  ///@}
-
-  ///@{
-  /**
-   * Optional: the prop that renders the data; its matrix takes the eye into
-   * the data's model coordinates. Takes precedence over ModelMatrix. Held by
-   * a weak reference.
-   */
-  virtual void SetProp3D(vtkProp3D*);
-  vtkProp3D* GetProp3D();
-  ///@}
-
-  ///@{
-  /**
-   * Optional: the model-to-world matrix of the data, used when no prop is set.
-   */
-  virtual void SetModelMatrix(vtkMatrix4x4*);
-  vtkGetObjectMacro(ModelMatrix, vtkMatrix4x4);
-  ///@}
-
-  ///@{
-  /**
-   * Optional: a renderer whose active camera is used when no camera is set.
-   * Held by a weak reference.
-   */
-  virtual void SetRenderer(vtkRenderer*);
-  vtkRenderer* GetRenderer();
-  ///@}
-
-  /**
-   * Changes when the view changes (compared by value), besides the usual
-   * parameter changes.
-   */
-  vtkMTimeType GetMTime() override;
 
 protected:
   vtkFaceSilhouetteLines();
   ~vtkFaceSilhouetteLines() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-
-  vtkCamera* Camera = nullptr;
-  vtkWeakPointer<vtkProp3D> Prop3D;
-  vtkMatrix4x4* ModelMatrix = nullptr;
-  vtkWeakPointer<vtkRenderer> Renderer;
 
 private:
   vtkFaceSilhouetteLines(const vtkFaceSilhouetteLines&) = delete;

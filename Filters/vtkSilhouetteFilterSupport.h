@@ -1,11 +1,10 @@
-// Pieces shared by the module's view-dependent filters
-// (vtkSilhouetteSmoothingFilter, vtkBoundaryCurveSmoothingFilter) and its
-// mesh-output filters (vtkBoundaryCurveSmoothingFilter, vtkPNTriangleFilter):
-// the camera, the model matrix and the viewport in the data's model
-// coordinates; the view signature that decides when a view change re-runs a
-// filter; reading triangles from a vtkPolyData; writing a mesh with the
-// module's provenance arrays. Private to the module (not wrapped, not
-// installed).
+// Pieces shared by the module's view-dependent filters (through their
+// superclass vtkSilhouetteViewAlgorithm) and its mesh-output filters
+// (vtkBoundaryCurveSmoothingFilter, vtkPNTriangleFilter): the camera, the
+// model matrix and the viewport in the data's model coordinates; the view
+// signature that decides when a view change re-runs a filter; reading
+// triangles from a vtkPolyData; writing a mesh with the module's provenance
+// arrays. Private to the module (not wrapped, not installed).
 #ifndef vtkSilhouetteFilterSupport_h
 #define vtkSilhouetteFilterSupport_h
 
@@ -68,6 +67,14 @@ private:
 /// string, or the error to report (a degenerate view or viewport).
 std::string MakeViewGeometry(vtkCamera* camera, const double model[16], std::array<int, 2> viewport,
   silsmooth::ViewGeometry& view, glm::dmat3* normalToEye = nullptr);
+
+/// The view a vtkSilhouetteViewAlgorithm hands its subclasses' RequestData:
+/// MakeViewGeometry's two results.
+struct View
+{
+  silsmooth::ViewGeometry Geometry;
+  glm::dmat3 NormalToEye{ 1.0 };
+};
 
 /// The triangles of a vtkPolyData: polygons as fans, strips with alternating
 /// orientation, with the input cell id of each. Also the points and the

@@ -1,18 +1,14 @@
 #include "vtkSilhouetteProximity.h"
 
-#include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
-#include "vtkProp3D.h"
-#include "vtkRenderer.h"
 
 #include "SilhouetteProximity.h"
 #include "vtkSilhouetteFilterSupport.h"
@@ -22,67 +18,9 @@
 
 vtkStandardNewMacro(vtkSilhouetteProximity);
 
-struct vtkSilhouetteProximity::Internals
-{
-  vtkSilhouetteFilterSupport::ViewTracker View;
-};
+vtkSilhouetteProximity::vtkSilhouetteProximity() = default;
 
-vtkSilhouetteProximity::vtkSilhouetteProximity()
-  : Internal(new Internals)
-{
-}
-
-vtkSilhouetteProximity::~vtkSilhouetteProximity()
-{
-  this->SetCamera(nullptr);
-  this->SetModelMatrix(nullptr);
-}
-
-vtkCxxSetObjectMacro(vtkSilhouetteProximity, Camera, vtkCamera);
-vtkCxxSetObjectMacro(vtkSilhouetteProximity, ModelMatrix, vtkMatrix4x4);
-
-void vtkSilhouetteProximity::SetProp3D(vtkProp3D* prop)
-{
-  if (this->Prop3D != prop)
-  {
-    this->Prop3D = prop;
-    this->Modified();
-  }
-}
-
-vtkProp3D* vtkSilhouetteProximity::GetProp3D()
-{
-  return this->Prop3D;
-}
-
-void vtkSilhouetteProximity::SetRenderer(vtkRenderer* renderer)
-{
-  if (this->Renderer != renderer)
-  {
-    this->Renderer = renderer;
-    this->Modified();
-  }
-}
-
-vtkRenderer* vtkSilhouetteProximity::GetRenderer()
-{
-  return this->Renderer;
-}
-
-vtkMTimeType vtkSilhouetteProximity::GetMTime()
-{
-  const vtkMTimeType mtime = this->Superclass::GetMTime();
-  vtkCamera* camera = vtkSilhouetteFilterSupport::ActiveCamera(this->Camera, this->Renderer);
-  if (!camera)
-  {
-    return mtime;
-  }
-  double model[16];
-  vtkSilhouetteFilterSupport::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
-  return std::max(mtime,
-    this->Internal->View.Update(
-      camera, model, vtkSilhouetteFilterSupport::ViewportOf(this->Renderer, this->ViewportSize)));
-}
+vtkSilhouetteProximity::~vtkSilhouetteProximity() = default;
 
 int vtkSilhouetteProximity::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
@@ -94,11 +32,11 @@ int vtkSilhouetteProximity::RequestData(
     vtkErrorMacro("Missing input or output polydata.");
     return 0;
   }
-  vtkCamera* camera = vtkSilhouetteFilterSupport::ActiveCamera(this->Camera, this->Renderer);
-  if (!camera)
+  // A renderer without its camera yet fails too: a missing camera is an error.
+  vtkSilhouetteFilterSupport::View view;
+  if (this->RequestView(view, /*waitForRenderer=*/false) != VIEW_READY)
   {
-    vtkErrorMacro("No camera: call SetCamera() or SetRenderer() before updating.");
-    return 0;
+    return 0; // reported
   }
   vtkSilhouetteFilterSupport::Triangles mesh;
   const std::string readError = vtkSilhouetteFilterSupport::ReadTriangles(input, mesh);
@@ -117,19 +55,9 @@ int vtkSilhouetteProximity::RequestData(
   std::vector<glm::dvec3>& points = mesh.Points;
   std::vector<silsmooth::Triangle>& triangles = mesh.Cells;
   std::vector<vtkIdType>& triangleCell = mesh.CellIds;
-  double model[16];
-  vtkSilhouetteFilterSupport::ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
-  silsmooth::ViewGeometry view;
-  const std::string viewError = vtkSilhouetteFilterSupport::MakeViewGeometry(camera, model,
-    vtkSilhouetteFilterSupport::ViewportOf(this->Renderer, this->ViewportSize), view);
-  if (!viewError.empty())
-  {
-    vtkErrorMacro(<< viewError);
-    return 0;
-  }
 
   const silsmooth::ProximityGrid grid =
-    silsmooth::silhouetteProximity(points, triangles, view, this->Resolution);
+    silsmooth::silhouetteProximity(points, triangles, view.Geometry, this->Resolution);
 
   output->ShallowCopy(input);
   vtkNew<vtkDoubleArray> pointDistance;
@@ -180,11 +108,5 @@ int vtkSilhouetteProximity::RequestData(
 void vtkSilhouetteProximity::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Camera: " << this->Camera << "\n";
-  os << indent << "Prop3D: " << this->Prop3D.GetPointer() << "\n";
-  os << indent << "ModelMatrix: " << this->ModelMatrix << "\n";
-  os << indent << "Renderer: " << this->Renderer.GetPointer() << "\n";
-  os << indent << "ViewportSize: " << this->ViewportSize[0] << " x " << this->ViewportSize[1]
-     << "\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
 }

@@ -27,65 +27,27 @@
  *
  * The view: SetCamera or SetRenderer, SetProp3D or SetModelMatrix, and the
  * viewport size (SetViewportSize, or the renderer's) for the aspect ratio,
- * exactly as for vtkSilhouetteSmoothingFilter; GetMTime() follows the view by
- * value.
+ * exactly as for vtkSilhouetteSmoothingFilter (from
+ * vtkSilhouetteViewAlgorithm); GetMTime() follows the view by value.
  *
- * Errors: a missing camera, a degenerate view, NaN coordinates or cells naming
- * missing points fail the request.
+ * Errors: a missing camera (also a renderer's that it has not created yet), a degenerate view, NaN
+ * coordinates or cells naming missing points fail the request.
  *
- * @sa vtkSilhouetteQuadricDecimation
+ * @sa vtkSilhouetteQuadricDecimation vtkSilhouetteViewAlgorithm
  */
 #ifndef vtkSilhouetteProximity_h
 #define vtkSilhouetteProximity_h
 
 #include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
-#include "vtkWeakPointer.h" // For the renderer and prop
-
-#include <memory> // For the view tracker
-
-class vtkCamera;
-class vtkMatrix4x4;
-class vtkProp3D;
-class vtkRenderer;
+#include "vtkSilhouetteViewAlgorithm.h"
 
 class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkSilhouetteProximity
-  : public vtkPolyDataAlgorithm
+  : public vtkSilhouetteViewAlgorithm
 {
 public:
   static vtkSilhouetteProximity* New();
-  vtkTypeMacro(vtkSilhouetteProximity, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSilhouetteProximity, vtkSilhouetteViewAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /** The camera that defines the view. Required unless a renderer is set. */
-  virtual void SetCamera(vtkCamera*);
-  vtkGetObjectMacro(Camera, vtkCamera);
-  ///@}
-
-  ///@{
-  /** Optional: the prop whose matrix takes the eye into model coordinates (weak). */
-  virtual void SetProp3D(vtkProp3D*);
-  vtkProp3D* GetProp3D();
-  ///@}
-
-  ///@{
-  /** Optional: the model-to-world matrix, used when no prop is set. */
-  virtual void SetModelMatrix(vtkMatrix4x4*);
-  vtkGetObjectMacro(ModelMatrix, vtkMatrix4x4);
-  ///@}
-
-  ///@{
-  /** Optional: a renderer for the camera and the viewport size (weak). */
-  virtual void SetRenderer(vtkRenderer*);
-  vtkRenderer* GetRenderer();
-  ///@}
-
-  ///@{
-  /** Viewport size in pixels when no renderer is set. Default 1024 x 768. */
-  vtkSetVector2Macro(ViewportSize, int);
-  vtkGetVector2Macro(ViewportSize, int);
-  ///@}
 
   ///@{
   /**
@@ -96,28 +58,17 @@ public:
   vtkGetMacro(Resolution, int);
   ///@}
 
-  /** Changes when the view changes (by value), besides the usual parameters. */
-  vtkMTimeType GetMTime() override;
-
 protected:
   vtkSilhouetteProximity();
   ~vtkSilhouetteProximity() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  vtkCamera* Camera = nullptr;
-  vtkWeakPointer<vtkProp3D> Prop3D;
-  vtkMatrix4x4* ModelMatrix = nullptr;
-  vtkWeakPointer<vtkRenderer> Renderer;
-  int ViewportSize[2] = { 1024, 768 };
   int Resolution = 128;
 
 private:
   vtkSilhouetteProximity(const vtkSilhouetteProximity&) = delete;
   void operator=(const vtkSilhouetteProximity&) = delete;
-
-  struct Internals;
-  std::unique_ptr<Internals> Internal;
 };
 
 #endif

@@ -1,6 +1,5 @@
 #include "vtkSilhouetteSmoothingFilter.h"
 
-#include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
@@ -12,13 +11,10 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMath.h"
-#include "vtkMatrix4x4.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkProp3D.h"
-#include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
@@ -273,9 +269,6 @@ struct vtkSilhouetteSmoothingFilter::Internals
   // The feature settings the cache was built with.
   std::array<double, 3> CachedFeatureSettings{ { -1.0, -1.0, -1.0 } };
 
-  // The last view seen by GetMTime(), and when it last changed.
-  vtkSilhouetteFilterSupport::ViewTracker View;
-
   bool Rebuild(vtkPolyData* input, bool useLines, bool detect, double featureAngle);
 };
 
@@ -413,63 +406,11 @@ vtkSilhouetteSmoothingFilter::vtkSilhouetteSmoothingFilter()
   this->SetNumberOfOutputPorts(2);
 }
 
-vtkSilhouetteSmoothingFilter::~vtkSilhouetteSmoothingFilter()
-{
-  this->SetCamera(nullptr);
-  this->SetModelMatrix(nullptr);
-}
-
-vtkCxxSetObjectMacro(vtkSilhouetteSmoothingFilter, Camera, vtkCamera);
-void vtkSilhouetteSmoothingFilter::SetProp3D(vtkProp3D* prop)
-{
-  if (this->Prop3D != prop)
-  {
-    this->Prop3D = prop;
-    this->Modified();
-  }
-}
-
-vtkProp3D* vtkSilhouetteSmoothingFilter::GetProp3D()
-{
-  return this->Prop3D;
-}
-vtkCxxSetObjectMacro(vtkSilhouetteSmoothingFilter, ModelMatrix, vtkMatrix4x4);
-
-void vtkSilhouetteSmoothingFilter::SetRenderer(vtkRenderer* renderer)
-{
-  if (this->Renderer != renderer)
-  {
-    this->Renderer = renderer;
-    this->Modified();
-  }
-}
-
-vtkRenderer* vtkSilhouetteSmoothingFilter::GetRenderer()
-{
-  return this->Renderer;
-}
+vtkSilhouetteSmoothingFilter::~vtkSilhouetteSmoothingFilter() = default;
 
 vtkPolyData* vtkSilhouetteSmoothingFilter::GetSilhouetteOutput()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
-}
-
-using vtkSilhouetteFilterSupport::ActiveCamera;
-using vtkSilhouetteFilterSupport::ModelMatrixOf;
-using vtkSilhouetteFilterSupport::ViewportOf;
-
-vtkMTimeType vtkSilhouetteSmoothingFilter::GetMTime()
-{
-  vtkMTimeType mtime = this->Superclass::GetMTime();
-  vtkCamera* camera = ActiveCamera(this->Camera, this->Renderer);
-  if (!camera)
-  {
-    return mtime;
-  }
-  double model[16];
-  ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
-  return std::max(mtime,
-    this->Internal->View.Update(camera, model, ViewportOf(this->Renderer, this->ViewportSize)));
 }
 
 int vtkSilhouetteSmoothingFilter::RequestData(
@@ -484,8 +425,9 @@ int vtkSilhouetteSmoothingFilter::RequestData(
     return 0;
   }
 
-  vtkCamera* camera = ActiveCamera(this->Camera, this->Renderer);
-  if (!camera && this->Renderer)
+  vtkSilhouetteFilterSupport::View view;
+  const ViewStatus viewStatus = this->RequestView(view);
+  if (viewStatus == VIEW_NO_CAMERA_YET)
   {
     // The renderer asks for the bounds before it creates its camera (to reset
     // it): give the input, and run for real once the camera exists.
@@ -493,10 +435,9 @@ int vtkSilhouetteSmoothingFilter::RequestData(
     lines->Initialize();
     return 1;
   }
-  if (!camera)
+  if (viewStatus != VIEW_READY)
   {
-    vtkErrorMacro("No camera: call SetCamera() or SetRenderer() before updating.");
-    return 0;
+    return 0; // reported
   }
 
   Internals& internal = *this->Internal;
@@ -523,18 +464,6 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   }
   this->UpdateProgress(0.2);
 
-  // The view in the data's model coordinates.
-  double model[16];
-  ModelMatrixOf(this->Prop3D, this->ModelMatrix, model);
-  silsmooth::ViewGeometry view;
-  const std::string viewError = vtkSilhouetteFilterSupport::MakeViewGeometry(
-    camera, model, ViewportOf(this->Renderer, this->ViewportSize), view);
-  if (!viewError.empty())
-  {
-    vtkErrorMacro(<< viewError);
-    return 0;
-  }
-
   silsmooth::SmoothingParameters parameters;
   parameters.PerturbConcaveSilhouettes = this->PerturbVertices;
   parameters.Visibility = this->VisibilityMethod == HIERARCHICAL
@@ -553,7 +482,7 @@ int vtkSilhouetteSmoothingFilter::RequestData(
       });
     };
   const silsmooth::SmoothingResult result =
-    silsmooth::smoothSilhouettes(*internal.Mesh, view, parameters, smpFor);
+    silsmooth::smoothSilhouettes(*internal.Mesh, view.Geometry, parameters, smpFor);
   this->UpdateProgress(0.6);
   if (this->GetAbortExecute())
   {
@@ -598,12 +527,6 @@ int vtkSilhouetteSmoothingFilter::RequestData(
 void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Camera: " << this->Camera << "\n";
-  os << indent << "Prop3D: " << this->Prop3D.GetPointer() << "\n";
-  os << indent << "ModelMatrix: " << this->ModelMatrix << "\n";
-  os << indent << "Renderer: " << this->Renderer.GetPointer() << "\n";
-  os << indent << "ViewportSize: " << this->ViewportSize[0] << " x " << this->ViewportSize[1]
-     << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "MinimumSamples: " << this->MinimumSamples << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";

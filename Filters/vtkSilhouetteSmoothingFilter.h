@@ -19,18 +19,17 @@
  * vertex normals are computed. A given normal that is zero is replaced by the
  * computed one; a point with no defined normal at all counts as visible.
  *
- * The view: a camera (SetCamera, or the active camera of SetRenderer), the
- * viewport size in pixels (SetViewportSize, or the renderer's size), and
- * optionally the actor (SetProp3D) or its matrix (SetModelMatrix) so that the
- * eye is taken into the data's model coordinates. Perspective and parallel
- * projection are both handled, from the camera (its model-view matrix, so its
- * model and user-view transforms count too). GetMTime() changes whenever the
- * view changes in a way that changes the result (camera, prop matrix, model
- * matrix, viewport), compared by value, so a mapper fed by this filter re-runs
- * it when the view moves, and not when a renderer only resets the clipping
- * range. Before a renderer has created its camera, the input passes through
- * unchanged (the renderer asks for bounds to create it). The view-independent work (triangles,
- * edge table, shading normals) is cached and rebuilt only when the input changes.
+ * The view (from vtkSilhouetteViewAlgorithm): a camera (SetCamera, or the
+ * active camera of SetRenderer), the viewport size in pixels (SetViewportSize,
+ * or the renderer's size), and optionally the actor (SetProp3D) or its matrix
+ * (SetModelMatrix) so that the eye is taken into the data's model coordinates. Perspective and
+ * parallel projection are both handled, from the camera (its model-view matrix, so its model and
+ * user-view transforms count too). GetMTime() changes whenever the view changes in a way that
+ * changes the result (camera, prop matrix, model matrix, viewport), compared by value, so a mapper
+ * fed by this filter re-runs it when the view moves, and not when a renderer only resets the
+ * clipping range. Before a renderer has created its camera, the input passes through unchanged (the
+ * renderer asks for bounds to create it). The view-independent work (triangles, edge table, shading
+ * normals) is cached and rebuilt only when the input changes.
  *
  * Output port 0: the re-meshed mesh. All input points come first with their ids
  * unchanged (positions too, but for the perturbation below), then the added points. Arrays:
@@ -75,73 +74,23 @@
  * pixel makes the request fail with an error. Global and pedigree ids are not
  * interpolated (VTK's attribute rules): they are not in the output.
  *
- * @sa vtkPolyDataSilhouette
+ * @sa vtkSilhouetteViewAlgorithm vtkPolyDataSilhouette
  */
 #ifndef vtkSilhouetteSmoothingFilter_h
 #define vtkSilhouetteSmoothingFilter_h
 
 #include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
-#include "vtkWeakPointer.h" // For the renderer
+#include "vtkSilhouetteViewAlgorithm.h"
 
 #include <memory> // For the cached core mesh
 
-class vtkCamera;
-class vtkMatrix4x4;
-class vtkProp3D;
-class vtkRenderer;
-
 class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkSilhouetteSmoothingFilter
-  : public vtkPolyDataAlgorithm
+  : public vtkSilhouetteViewAlgorithm
 {
 public:
   static vtkSilhouetteSmoothingFilter* New();
-  vtkTypeMacro(vtkSilhouetteSmoothingFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSilhouetteSmoothingFilter, vtkSilhouetteViewAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /**
-   * The camera that defines the view. Required unless a renderer is set.
-   */
-  virtual void SetCamera(vtkCamera*);
-  vtkGetObjectMacro(Camera, vtkCamera);
-  ///@}
-
-  ///@{
-  /**
-   * Optional: the prop that renders the output; its matrix takes the eye into
-   * the data's model coordinates. Takes precedence over ModelMatrix. Held by a
-   * weak reference: the prop usually owns the mapper that owns this filter.
-   */
-  virtual void SetProp3D(vtkProp3D*);
-  vtkProp3D* GetProp3D();
-  ///@}
-
-  ///@{
-  /**
-   * Optional: the model-to-world matrix of the data, used when no prop is set.
-   */
-  virtual void SetModelMatrix(vtkMatrix4x4*);
-  vtkGetObjectMacro(ModelMatrix, vtkMatrix4x4);
-  ///@}
-
-  ///@{
-  /**
-   * Optional: a renderer to take the camera (its active camera, when no camera
-   * is set) and the viewport size from. Held by a weak reference, so the usual
-   * renderer -> actor -> mapper -> filter chain makes no reference loop.
-   */
-  virtual void SetRenderer(vtkRenderer*);
-  vtkRenderer* GetRenderer();
-  ///@}
-
-  ///@{
-  /**
-   * Viewport size in pixels, used when no renderer is set. Default 1024 x 768.
-   */
-  vtkSetVector2Macro(ViewportSize, int);
-  vtkGetVector2Macro(ViewportSize, int);
-  ///@}
 
   ///@{
   /**
@@ -246,23 +195,12 @@ public:
    */
   vtkPolyData* GetSilhouetteOutput();
 
-  /**
-   * Changes when the view changes in a way that changes the result (compared
-   * by value), besides the usual parameter changes.
-   */
-  vtkMTimeType GetMTime() override;
-
 protected:
   vtkSilhouetteSmoothingFilter();
   ~vtkSilhouetteSmoothingFilter() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  vtkCamera* Camera = nullptr;
-  vtkWeakPointer<vtkProp3D> Prop3D;
-  vtkMatrix4x4* ModelMatrix = nullptr;
-  vtkWeakPointer<vtkRenderer> Renderer;
-  int ViewportSize[2] = { 1024, 768 };
   double Tolerance = 0.5;
   int MinimumSamples = 2;
   int MaximumSamples = 256;

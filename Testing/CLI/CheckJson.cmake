@@ -1,7 +1,9 @@
 # Runs `silhouette smooth ... --json` and checks that stdout is one JSON
 # object with every documented key, of the right type, and that the counts
 # add up. Variables (-D): PROGRAM, ARGS ('|'-separated), INPUT_TRIANGLES
-# (expected), VIEWPORT (expected "W,H").
+# (expected), VIEWPORT (expected "W,H"), VIEW_ANGLE (expected camera
+# view_angle), CAMERA_Z (expected "LOW,HIGH" range of the camera position's
+# z).
 cmake_minimum_required(VERSION 3.19) # string(JSON)
 
 string(REPLACE "|" ";" arguments "${ARGS}")
@@ -71,4 +73,19 @@ endif ()
 math(EXPR expected_output "${input_triangles} - ${silhouette_triangles} + ${new_triangles}")
 if (NOT output_triangles EQUAL expected_output)
   message(FATAL_ERROR "output_triangles ${output_triangles} is not input - silhouette + new = ${expected_output}\n${report}")
+endif ()
+if (DEFINED VIEW_ANGLE)
+  string(JSON view_angle GET "${json}" camera view_angle)
+  if (NOT view_angle EQUAL VIEW_ANGLE)
+    message(FATAL_ERROR "camera.view_angle is ${view_angle}, not ${VIEW_ANGLE}\n${report}")
+  endif ()
+endif ()
+if (DEFINED CAMERA_Z)
+  string(REPLACE "," ";" range "${CAMERA_Z}")
+  list(GET range 0 low)
+  list(GET range 1 high)
+  string(JSON camera_z GET "${json}" camera position 2)
+  if (NOT (camera_z GREATER low AND camera_z LESS high))
+    message(FATAL_ERROR "camera.position z is ${camera_z}, not in (${low}, ${high})\n${report}")
+  endif ()
 endif ()

@@ -36,6 +36,20 @@ class SilhouetteSmoothingTest(unittest.TestCase):
                     vtkTorusSurfaceSource):
             self.assertTrue(cls().IsA("vtkAlgorithm"), cls.__name__)
 
+    def test_view_filters_share_the_view_superclass(self):
+        # The abstract superclass is wrapped, and the view methods of the
+        # four view-dependent filters come from it.
+        self.assertTrue(hasattr(silhouette_smoothing, "vtkSilhouetteViewAlgorithm"))
+        camera = vtkCamera()
+        for name in ("vtkSilhouetteSmoothingFilter", "vtkBoundaryCurveSmoothingFilter",
+                     "vtkFaceSilhouetteLines", "vtkSilhouetteProximity"):
+            view_filter = getattr(silhouette_smoothing, name)()
+            self.assertTrue(view_filter.IsA("vtkSilhouetteViewAlgorithm"), name)
+            view_filter.SetCamera(camera)
+            view_filter.SetViewportSize(640, 480)
+            self.assertIs(view_filter.GetCamera(), camera)
+            self.assertEqual(view_filter.GetViewportSize(), (640, 480))
+
     def test_sphere_silhouette_is_the_exact_circle(self):
         # 80 triangles on the unit sphere with exact normals, eye at distance
         # about 5: the exact contour is seen at the angle asin(1 / d) from the

@@ -504,6 +504,15 @@ void ProgressiveMesh::coarsenTo(std::size_t count)
   }
 }
 
+void ProgressiveMesh::setTriangleCount(std::size_t count)
+{
+  // Each split adds one or two triangles, so the count grows strictly with
+  // the level: coarsening to <= count then refining to >= count lands on
+  // the lowest level with >= count from either side.
+  this->coarsenTo(count);
+  this->refineTo(count);
+}
+
 std::vector<Triangle> ProgressiveMesh::triangles() const
 {
   std::vector<Triangle> out;

@@ -85,6 +85,10 @@ public:
   void refineTo(std::size_t count);
   /// Applies collapses until there are at most `count` triangles (or the base).
   void coarsenTo(std::size_t count);
+  /// Moves to the lowest level with at least `count` triangles (the input
+  /// when there is none), whatever the current level: the result depends
+  /// on `count` only.
+  void setTriangleCount(std::size_t count);
 
   /// The current mesh over the input's point ids: every point (removed ones
   /// keep their input position) and the active triangles in input order.

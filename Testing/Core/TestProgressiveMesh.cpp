@@ -218,6 +218,27 @@ TEST(ProgressiveMesh, CostFollowsThePaper)
   EXPECT_DOUBLE_EQ(ProgressiveMesh::Lambda, 1.0 / 3.0);
 }
 
+TEST(ProgressiveMesh, TriangleCountDoesNotDependOnThePath)
+{
+  const Mesh mesh = bumpySphere(6);
+  ProgressiveMesh pm(mesh.points, mesh.triangles);
+  for (std::size_t count : { 0u, 5u, 101u, 150u, 287u, 288u, 1000u })
+  {
+    pm.setLevel(0);
+    pm.setTriangleCount(count);
+    const std::size_t fromBelow = pm.level();
+    pm.setLevel(pm.splitCount());
+    pm.setTriangleCount(count);
+    EXPECT_EQ(pm.level(), fromBelow) << count;
+    EXPECT_TRUE(pm.triangleCount() >= count || pm.level() == pm.splitCount());
+    if (pm.level() > 0)
+    {
+      pm.setLevel(pm.level() - 1);
+      EXPECT_LT(pm.triangleCount(), count); // the lowest such level
+    }
+  }
+}
+
 TEST(ProgressiveMesh, MinimumTrianglesStopsTheSequence)
 {
   const Mesh mesh = bumpySphere(6);

@@ -124,13 +124,26 @@ public:
     return out;
   }
 
+  std::size_t edgeTriangleCount(Id a, Id b) const
+  {
+    std::size_t count = 0;
+    for (Id t : this->Incident[a])
+    {
+      count += cornerOf(T[t], b) >= 0 ? 1 : 0;
+    }
+    return count;
+  }
+
   bool onBorder(Id v) const
   {
-    for (Id w : this->neighbours(v))
+    for (Id t : this->Incident[v])
     {
-      if (this->edgeTriangles(v, w).size() == 1)
+      for (Id w : T[t])
       {
-        return true;
+        if (w != v && this->edgeTriangleCount(v, w) == 1)
+        {
+          return true;
+        }
       }
     }
     return false;
@@ -218,6 +231,21 @@ public:
       options.push_back({ b, a, P[b] });
       options.push_back({ std::min(a, b), std::max(a, b), 0.5 * (P[a] + P[b]) });
     }
+    // The border edges at a or b, oriented as in their triangle.
+    std::vector<std::pair<Id, Id>> borderEdges;
+    for (Id t : around)
+    {
+      const Triangle& tri = T[t];
+      for (int k = 0; k < 3; ++k)
+      {
+        const Id u = tri[k];
+        const Id w = tri[(k + 1) % 3];
+        if ((u == a || u == b || w == a || w == b) && this->edgeTriangleCount(u, w) == 1)
+        {
+          borderEdges.emplace_back(u, w);
+        }
+      }
+    }
     bool found = false;
     for (const Option& option : options)
     {
@@ -231,15 +259,6 @@ public:
         const glm::dvec3& p1 = P[tri[1]];
         const glm::dvec3& p2 = P[tri[2]];
         volume += glm::dot(option.v - p0, glm::cross(p1 - p0, p2 - p0)) / 6.0;
-        for (int k = 0; k < 3; ++k)
-        {
-          const Id u = tri[k];
-          const Id w = tri[(k + 1) % 3];
-          if ((u == a || u == b || w == a || w == b) && this->edgeTriangles(u, w).size() == 1)
-          {
-            area += 0.5 * glm::cross(P[u] - option.v, P[w] - option.v);
-          }
-        }
         if (std::find(onEdge.begin(), onEdge.end(), t) != onEdge.end())
         {
           continue;
@@ -259,6 +278,10 @@ public:
       if (flips)
       {
         continue;
+      }
+      for (const auto& [u, w] : borderEdges)
+      {
+        area += 0.5 * glm::cross(P[u] - option.v, P[w] - option.v);
       }
       const double cost = ProgressiveMesh::Lambda * std::abs(volume) * degree +
         (1.0 - ProgressiveMesh::Lambda) * length2 * glm::length(area);

@@ -256,3 +256,39 @@ TEST(ProgressiveMesh, RejectsBadIds)
   EXPECT_EQ(empty.splitCount(), 0u);
   EXPECT_EQ(empty.triangleCount(), 0u);
 }
+
+TEST(ProgressiveMesh, AwkwardInputIsKeptAndComesBackExactly)
+{
+  // A closed mesh plus: a fin (an edge in three triangles), a triangle with a
+  // repeated corner, a zero-area triangle, an unused point.
+  Mesh mesh = bumpySphere(4);
+  const Id a = mesh.triangles[0][0];
+  const Id b = mesh.triangles[0][1];
+  mesh.points.push_back(glm::dvec3(3.0, 0.0, 0.0));
+  const Id fin = static_cast<Id>(mesh.points.size() - 1);
+  mesh.triangles.push_back({ a, b, fin });
+  mesh.triangles.push_back({ a, a, b });
+  mesh.points.push_back(mesh.points[b]);
+  mesh.triangles.push_back({ b, static_cast<Id>(mesh.points.size() - 1), a });
+  mesh.points.push_back(glm::dvec3(9.0));
+  ProgressiveMesh pm(mesh.points, mesh.triangles);
+  EXPECT_GT(pm.splitCount(), 0u);
+  pm.setLevel(0);
+  for (const Triangle& t : pm.triangles())
+  {
+    for (Id v : t)
+    {
+      ASSERT_GE(v, 0);
+      ASSERT_LT(v, static_cast<Id>(mesh.points.size()));
+    }
+  }
+  pm.setLevel(pm.splitCount());
+  EXPECT_EQ(pm.points(), mesh.points);
+  EXPECT_EQ(pm.triangles(), mesh.triangles);
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  std::vector<Id> pointIds, triangleIds;
+  pm.compact(points, triangles, pointIds, triangleIds);
+  EXPECT_EQ(points.size(), mesh.points.size() - 1); // the unused point is left out
+  EXPECT_EQ(triangles.size(), mesh.triangles.size());
+}

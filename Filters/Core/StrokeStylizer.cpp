@@ -114,9 +114,9 @@ void BrushFunction::offsets(double s, std::uint64_t pointIndex, double& vx, doub
   const double w = this->Parameters.wavelength;
   vx = 0.0;
   vy = 0.0;
-  if (amplitude == 0.0)
+  if (amplitude == 0.0 || !std::isfinite(amplitude))
   {
-    return;
+    return; // no amplitude, or none that can be bounded: the stroke unmoved
   }
   switch (this->Parameters.brush)
   {

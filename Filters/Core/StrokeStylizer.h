@@ -24,10 +24,10 @@
 // gives them as fractions of the input's size). Every offset satisfies
 // |v_x| <= A and |v_y| <= A exactly (sawtooth and parabola are in [-1, 1]
 // and [0, 1]; noise knots are in [-1, 1] and interpolated by convex weights),
-// and A = 0 gives every point back unchanged. The noise is deterministic and
-// random-access: each value is the splitmix64 hash of (seed, stroke index,
-// channel, knot or point index) turned into a double by hand, so strokes do
-// not depend on the standard library or on the order they are made in.
+// and A = 0 gives every point back unchanged (as does a non-finite A). The noise is deterministic
+// and random-access: each value is the splitmix64 hash of (seed, stroke index, channel, knot or
+// point index) turned into a double by hand, so strokes do not depend on the standard library or on
+// the order they are made in.
 #pragma once
 
 #include <glm/vec3.hpp>

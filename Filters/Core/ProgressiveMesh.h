@@ -30,12 +30,17 @@
 // condition: the vertices next to both a and b are exactly the far corners
 // of the triangles on e), flip a triangle (its normal would turn by 90
 // degrees or more, or vanish), or leave a closed component with fewer than
-// four vertices. Edges with more than two triangles are never collapsed.
+// four vertices (a tetrahedron is the smallest closed base mesh). Meant for
+// manifold input; elsewhere it stays safe: the points of an edge in three or
+// more triangles and the corners of a triangle with a repeated corner are
+// frozen (never collapsed), and every input comes back exactly.
 //
-// The collapse keeps the lower-cost end's id: vertex `kept` moves to v and
-// vertex `removed` leaves the mesh; triangles on e leave, triangles at
-// `removed` get `kept` in its place. Triangle ids never change, so a level's
-// triangles are the input's triangles that are active, with corners renamed.
+// A collapse keeps one end's id: the end v sits on (the lower id for the
+// midpoint) is `kept` and moves to v, the other is `removed` and leaves the
+// mesh; triangles on e leave, triangles at `removed` get `kept` in its
+// place. Triangle ids never change, so a level's triangles are the input's
+// triangles that are active, with corners renamed; points used by no
+// triangle are never active.
 #pragma once
 
 #include "MeshTopology.h"

@@ -18,8 +18,8 @@
  * Filters/Core/StrokeStylizer.h has the formulas. |v_x| and |v_y| never
  * exceed the amplitude, and Amplitude 0 with Spacing 0 gives the input
  * points back. The noise is seeded (Seed) and repeatable. A closed polyline
- * (last point equal to the first) is stroked as an open one, so the brush
- * may leave a small step where it closes.
+ * (last point equal to the first) stays closed without a seam: its
+ * wavelength is adjusted so a whole number of periods fits its length.
  *
  * Lengths (Amplitude, Wavelength, Spacing) are fractions of the diagonal of
  * the input's bounding box, as the paper scales its brushes by the object's

@@ -77,9 +77,11 @@ const char* brushName(Brush brush)
   }
 }
 
-BrushFunction::BrushFunction(const StrokeParameters& parameters, std::uint64_t strokeIndex)
+BrushFunction::BrushFunction(
+  const StrokeParameters& parameters, std::uint64_t strokeIndex, std::uint64_t knotPeriod)
   : Parameters(parameters)
   , StrokeIndex(strokeIndex)
+  , KnotPeriod(knotPeriod)
 {
 }
 
@@ -102,8 +104,9 @@ double BrushFunction::smoothNoise(std::uint64_t channel, double s) const
   double t = std::clamp(x - cell, 0.0, 1.0);
   t = t * t * (3.0 - 2.0 * t); // smoothstep: weights 1 - t and t, both in [0, 1]
   const auto k = static_cast<std::uint64_t>(std::min(cell, 1.0e15));
-  const double a = this->noise(channel, k);
-  const double b = this->noise(channel, k + 1);
+  const std::uint64_t period = this->KnotPeriod;
+  const double a = this->noise(channel, period > 0 ? k % period : k);
+  const double b = this->noise(channel, period > 0 ? (k + 1) % period : k + 1);
   const double value = (1.0 - t) * a + t * b;
   return std::clamp(value, -1.0, 1.0);
 }
@@ -162,11 +165,30 @@ StylizedStroke stylizeStroke(const std::vector<glm::dvec3>& stroke, const Stroke
   {
     return result;
   }
-  const BrushFunction brush(parameters, strokeIndex);
+  const double length = result.arcLength.back();
+  const bool closed = n >= 3 && result.base.front() == result.base.back();
+  StrokeParameters effective = parameters;
+  std::uint64_t knotPeriod = 0;
+  if (closed && std::isfinite(length) && parameters.wavelength > 0.0 &&
+    std::isfinite(parameters.wavelength))
+  {
+    const double periods = std::clamp(std::round(length / parameters.wavelength), 1.0, 1.0e15);
+    effective.wavelength = length / periods;
+    knotPeriod = static_cast<std::uint64_t>(periods);
+  }
+  const BrushFunction brush(effective, strokeIndex, knotPeriod);
   for (std::size_t i = 0; i < n; ++i)
   {
     double vx = 0.0;
     double vy = 0.0;
+    if (closed && i == n - 1)
+    {
+      // The last point is the first: same offsets, same position.
+      result.tangentOffset[i] = result.tangentOffset[0];
+      result.normalOffset[i] = result.normalOffset[0];
+      result.points[i] = result.points[0];
+      continue;
+    }
     brush.offsets(result.arcLength[i], i, vx, vy);
     result.tangentOffset[i] = vx;
     result.normalOffset[i] = vy;
@@ -174,7 +196,8 @@ StylizedStroke stylizeStroke(const std::vector<glm::dvec3>& stroke, const Stroke
     {
       continue;
     }
-    // Tangent by the neighbours (one-sided at the ends), skipping repeated points.
+    // Tangent by the neighbours (one-sided at the ends of an open stroke,
+    // across the seam of a closed one), skipping repeated points.
     std::size_t before = i;
     while (before > 0 && result.base[before] == result.base[i])
     {
@@ -184,6 +207,14 @@ StylizedStroke stylizeStroke(const std::vector<glm::dvec3>& stroke, const Stroke
     while (after + 1 < n && result.base[after] == result.base[i])
     {
       ++after;
+    }
+    if (closed && i == 0)
+    {
+      before = n - 1;
+      while (before > 1 && result.base[before] == result.base[0])
+      {
+        --before;
+      }
     }
     const glm::dvec3 d = lineOfSight(view, result.base[i]);
     glm::dvec3 tangent = result.base[after] - result.base[before];

@@ -83,7 +83,9 @@ struct StylizedStroke
 class BrushFunction
 {
 public:
-  BrushFunction(const StrokeParameters& parameters, std::uint64_t strokeIndex);
+  /// `knotPeriod` > 0 makes the hand noise repeat every that many knots.
+  BrushFunction(
+    const StrokeParameters& parameters, std::uint64_t strokeIndex, std::uint64_t knotPeriod = 0);
   /// Offsets of the point with arc length s, the `pointIndex`-th of its stroke.
   void offsets(double s, std::uint64_t pointIndex, double& vx, double& vy) const;
 
@@ -93,11 +95,16 @@ private:
 
   StrokeParameters Parameters;
   std::uint64_t StrokeIndex;
+  std::uint64_t KnotPeriod;
 };
 
 /// Stylizes one stroke (`strokeIndex` selects its noise). Strokes of fewer
-/// than two distinct points are returned unmoved. A closed stroke (last point
-/// equal to the first) stays closed only where the brush is zero there.
+/// than two distinct points are returned unmoved. A closed stroke (three or
+/// more points, the last equal to the first) stays closed without a seam:
+/// its wavelength becomes L / m (L its length, m = max(1, round(L / W)), so
+/// a whole number of periods fits), the hand noise repeats every m knots,
+/// the tangents wrap round, and the last point is the first (same offsets).
+/// The amplitude bound is unchanged.
 StylizedStroke stylizeStroke(const std::vector<glm::dvec3>& stroke, const StrokeView& view,
   const StrokeParameters& parameters, std::uint64_t strokeIndex);
 

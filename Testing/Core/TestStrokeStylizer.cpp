@@ -178,3 +178,37 @@ TEST(StrokeStylizer, DegenerateStrokesComeBackUnmoved)
   const std::vector<glm::dvec3> depth{ glm::dvec3(0, 0, 0), glm::dvec3(0, 0, -1) };
   EXPECT_EQ(stylizeStroke(depth, StrokeView(), parameters, 0).points, depth);
 }
+
+TEST(StrokeStylizer, ClosedStrokesCloseWithoutASeam)
+{
+  std::vector<glm::dvec3> loop = circleStroke(97);
+  loop.back() = loop.front(); // exactly closed
+  for (Brush brush : allBrushes)
+  {
+    StrokeParameters parameters;
+    parameters.brush = brush;
+    parameters.amplitude = 0.02;
+    parameters.wavelength = 0.37; // not a divisor of the length
+    parameters.spacing = 0.01;
+    const StylizedStroke s = stylizeStroke(loop, StrokeView(), parameters, 1);
+    const std::size_t n = s.points.size();
+    EXPECT_EQ(s.points.front(), s.points.back()) << brushName(brush);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      ASSERT_LE(std::abs(s.tangentOffset[i]), parameters.amplitude);
+      ASSERT_LE(std::abs(s.normalOffset[i]), parameters.amplitude);
+    }
+    if (brush == Brush::Lazy || brush == Brush::Hand)
+    {
+      // Continuous brushes: the step across the seam (n-2 -> 0) is no
+      // larger than the largest step elsewhere.
+      double largest = 0.0;
+      for (std::size_t i = 1; i + 1 < n; ++i)
+      {
+        largest = std::max(largest, std::abs(s.normalOffset[i] - s.normalOffset[i - 1]));
+      }
+      EXPECT_LE(std::abs(s.normalOffset[n - 2] - s.normalOffset[0]), largest * (1 + 1e-9))
+        << brushName(brush);
+    }
+  }
+}

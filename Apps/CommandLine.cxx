@@ -117,6 +117,18 @@ Options:
                                         black, 2 pixels wide, on white,
                                         without the mesh (so hidden parts
                                         of the silhouette show too)
+                          charcoal, lazy, hand, rough
+                                        the same polylines drawn as
+                                        stylized strokes (Kim and Choe,
+                                        vtkStylizedStrokeFilter), black,
+                                        2 pixels wide: charcoal a fine
+                                        sawtooth across the stroke, lazy
+                                        slow parabolic arcs, hand gentle
+                                        noise along and across, rough
+                                        larger noise along the stroke;
+                                        seeded, so images repeat. With
+                                        --no-smoothing the strokes follow
+                                        the edges 'lines' draws then
   --no-smoothing          draw the unsmoothed input in the same style: shaded
                           still uses the filter's shading normals; lines draws
                           the face-based silhouette (vtkFaceSilhouetteLines:
@@ -208,8 +220,9 @@ is the input and the silhouette and new triangles show as 0.
 
 Options:
   --style STYLE          the style to start in: shaded, wireframe,
-                         new-geometry or lines, as 'silhouette render'
-                         draws them (default: shaded)
+                         new-geometry, lines, or a stroke style (charcoal,
+                         lazy, hand, rough), as 'silhouette render' draws
+                         them (default: shaded)
   --no-smoothing         start with smoothing off (default: on)
   --fine-reference       start with the side-by-side fine reference
                          (default: off; key f)
@@ -510,7 +523,8 @@ std::string HelpOf(const std::string& command)
 std::optional<RenderStyle> ParseRenderStyle(const std::string& name)
 {
   for (RenderStyle style :
-    { RenderStyle::Shaded, RenderStyle::Wireframe, RenderStyle::NewGeometry, RenderStyle::Lines })
+    { RenderStyle::Shaded, RenderStyle::Wireframe, RenderStyle::NewGeometry, RenderStyle::Lines,
+      RenderStyle::Charcoal, RenderStyle::Lazy, RenderStyle::Hand, RenderStyle::Rough })
   {
     if (name == NameOf(style))
     {
@@ -554,7 +568,9 @@ ViewOptions ParseView(ArgumentList& arguments, RenderBackend& backend)
       if (!style)
       {
         throw UsageError(
-          "option '--style' needs shaded, wireframe, new-geometry or lines, got '" + name + "'");
+          "option '--style' needs shaded, wireframe, new-geometry, lines, charcoal, lazy, "
+          "hand or rough, got '" +
+          name + "'");
       }
       options.Style = *style;
     }
@@ -699,6 +715,14 @@ const char* NameOf(RenderStyle style)
       return "new-geometry";
     case RenderStyle::Lines:
       return "lines";
+    case RenderStyle::Charcoal:
+      return "charcoal";
+    case RenderStyle::Lazy:
+      return "lazy";
+    case RenderStyle::Hand:
+      return "hand";
+    case RenderStyle::Rough:
+      return "rough";
     case RenderStyle::Shaded:
     default:
       return "shaded";
@@ -799,7 +823,9 @@ CommandLine ParseCommandLine(int argc, char* argv[])
         if (!style)
         {
           throw UsageError(
-            "option '--style' needs shaded, wireframe, new-geometry or lines, got '" + name + "'");
+            "option '--style' needs shaded, wireframe, new-geometry, lines, charcoal, lazy, "
+            "hand or rough, got '" +
+            name + "'");
         }
         render.Style = *style;
       }

@@ -19,8 +19,14 @@ enum class RenderStyle
   Shaded,
   Wireframe,
   NewGeometry,
-  Lines
+  Lines,
+  // Stylized strokes of the silhouette (Kim and Choe's brush functions).
+  Charcoal,
+  Lazy,
+  Hand,
+  Rough
 };
+
 const char* NameOf(RenderStyle style);
 
 struct SmoothOptions

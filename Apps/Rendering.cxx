@@ -22,6 +22,7 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSilhouetteSmoothingFilter.h>
+#include <vtkStylizedStrokeFilter.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <csignal>
@@ -146,6 +147,57 @@ void WriteWindowPng(vtkRenderWindow* window, const std::string& path)
   errors.ThrowIfErrors("cannot write '" + path + "'");
 }
 
+namespace
+{
+
+vtkSmartPointer<vtkPolyDataAlgorithm> MakeStrokes(vtkRenderer* renderer,
+  vtkSilhouetteSmoothingFilter* filter, vtkPolyData* input, RenderStyle style, bool smoothed)
+{
+  auto strokes = vtkSmartPointer<vtkStylizedStrokeFilter>::New();
+  VtkErrorLog::Instance().Watch(strokes);
+  if (smoothed)
+  {
+    strokes->SetInputConnection(filter->GetOutputPort(1));
+  }
+  else
+  {
+    // The face-based silhouette lines, already chained into polylines, so
+    // the brushes run along whole strokes.
+    strokes->SetInputConnection(MakeFaceSilhouette(input, renderer)->GetOutputPort());
+  }
+  strokes->SetCamera(renderer->GetActiveCamera());
+  // Per brush, as fractions of the silhouette's size: high frequency for
+  // charcoal, low frequency for lazy, low magnitude for hand, high for rough
+  // (the paper's Table 1).
+  switch (style)
+  {
+    case RenderStyle::Lazy:
+      strokes->SetBrushToLazy();
+      strokes->SetAmplitude(0.012);
+      strokes->SetWavelength(0.1);
+      break;
+    case RenderStyle::Hand:
+      strokes->SetBrushToHand();
+      strokes->SetAmplitude(0.004);
+      strokes->SetWavelength(0.03);
+      break;
+    case RenderStyle::Rough:
+      strokes->SetBrushToRough();
+      strokes->SetAmplitude(0.025);
+      strokes->SetSpacing(0.004);
+      break;
+    case RenderStyle::Charcoal:
+    default:
+      strokes->SetBrushToCharcoal();
+      strokes->SetAmplitude(0.004);
+      strokes->SetWavelength(0.006);
+      break;
+  }
+  return strokes;
+}
+
+} // namespace
+
 void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter, vtkPolyData* input,
   RenderStyle style, bool smoothed)
 {
@@ -197,6 +249,21 @@ void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter,
       vtkSmartPointer<vtkActor> actor = smoothed
         ? MakeActor(filter->GetOutputPort(1))
         : MakeActor(MakeFaceSilhouette(input, renderer)->GetOutputPort());
+      vtkProperty* property = actor->GetProperty();
+      property->SetColor(Black[0], Black[1], Black[2]);
+      property->SetLineWidth(2.0);
+      property->LightingOff();
+      renderer->AddActor(actor);
+      break;
+    }
+    case RenderStyle::Charcoal:
+    case RenderStyle::Lazy:
+    case RenderStyle::Hand:
+    case RenderStyle::Rough:
+    {
+      vtkSmartPointer<vtkPolyDataAlgorithm> strokes =
+        MakeStrokes(renderer, filter, input, style, smoothed);
+      vtkSmartPointer<vtkActor> actor = MakeActor(strokes->GetOutputPort());
       vtkProperty* property = actor->GetProperty();
       property->SetColor(Black[0], Black[1], Black[2]);
       property->SetLineWidth(2.0);

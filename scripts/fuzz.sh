@@ -8,8 +8,11 @@
 #                 own code (Apps/MeshIO.cxx and its pre-checks), then smoothed
 #                 by vtkSilhouetteSmoothingFilter for random cameras
 #                 (Testing/Fuzz/FuzzMeshReadingAndFilter.cxx)
+#   fuzz_progressive_strokes  random meshes and strokes through the progressive
+#                 mesh, the edge classification and the brushes
+#                 (Testing/Fuzz/FuzzProgressiveStrokes.cpp)
 #
-#   bash scripts/fuzz.sh [SECONDS]   fuzz each target SECONDS (default 30; CI: 30, a minute in all)
+#   bash scripts/fuzz.sh [SECONDS]   fuzz each target SECONDS (default 30; CI: 30, 90 s in all)
 #
 # Builds with CMake in build-fuzz/ (SILHOUETTE_FUZZ=ON; our code instrumented,
 # VTK as installed); needs what scripts/setup.sh installs, and installs clang
@@ -39,19 +42,19 @@ if [ "${#missing[@]}" -gt 0 ]; then
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-echo "fuzz: building fuzz_core and fuzz_mesh_io with clang (libFuzzer, ASan, UBSan) in $work"
+echo "fuzz: building fuzz_core, fuzz_mesh_io and fuzz_progressive_strokes with clang (libFuzzer, ASan, UBSan) in $work"
 mkdir -p "$work"
 CC=clang CXX=clang++ cmake -S "$here" -B "$work" -DSILHOUETTE_FUZZ=ON -DBUILD_TESTING=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo >"$work/fuzz-configure.log" 2>&1 ||
   { cat "$work/fuzz-configure.log" >&2; exit 1; }
-cmake --build "$work" -j "$jobs" --target fuzz_core fuzz_mesh_io >"$work/fuzz-build.log" 2>&1 ||
+cmake --build "$work" -j "$jobs" --target fuzz_core fuzz_mesh_io fuzz_progressive_strokes >"$work/fuzz-build.log" 2>&1 ||
   { tail -50 "$work/fuzz-build.log" >&2; exit 1; }
 
 # Seeds for fuzz_mesh_io: small meshes, good and bad, each prefixed with its
 # format byte (the order of Extensions in the target) and 48 parameter bytes.
 seeds="$work/seeds-mesh"
 rm -rf "$seeds"
-mkdir -p "$seeds" "$work/corpus-core" "$work/corpus-mesh" "$work/artifacts"
+mkdir -p "$seeds" "$work/corpus-core" "$work/corpus-mesh" "$work/corpus-strokes" "$work/artifacts"
 for file in "$here"/Data/sphere_ico80.vtp "$here"/Testing/CLI/Meshes/* \
   "$here"/Testing/Data/BadInput/* "$here"/Testing/Fuzz/Seeds/*; do
   case "$file" in
@@ -86,3 +89,4 @@ run fuzz_core "$work/corpus-core" 2048
 # VTK's readers leak on some error paths; see the suppression file.
 LSAN_OPTIONS="suppressions=$here/Testing/Fuzz/lsan-vtk.supp:print_suppressions=0" \
   run fuzz_mesh_io "$work/corpus-mesh" 8192 "$seeds"
+run fuzz_progressive_strokes "$work/corpus-strokes" 4096

@@ -1,0 +1,170 @@
+#include "vtkProgressiveMeshFilter.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include "ProgressiveMesh.h"
+
+#include <cmath>
+#include <optional>
+
+vtkStandardNewMacro(vtkProgressiveMeshFilter);
+
+struct vtkProgressiveMeshFilter::Internal
+{
+  std::optional<silsmooth::ProgressiveMesh> Mesh;
+  vtkPolyData* Input = nullptr;
+  vtkMTimeType InputTime = 0;
+};
+
+vtkProgressiveMeshFilter::vtkProgressiveMeshFilter()
+  : Cache(new Internal)
+{
+}
+
+vtkProgressiveMeshFilter::~vtkProgressiveMeshFilter() = default;
+
+namespace
+{
+
+void AddCount(vtkPolyData* output, const char* name, std::size_t value)
+{
+  vtkNew<vtkIdTypeArray> array;
+  array->SetName(name);
+  array->InsertNextValue(static_cast<vtkIdType>(value));
+  output->GetFieldData()->AddArray(array);
+}
+
+} // namespace
+
+int vtkProgressiveMeshFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    return 0;
+  }
+  Internal& cache = *this->Cache;
+  if (!cache.Mesh || cache.Input != input || cache.InputTime != input->GetMTime())
+  {
+    cache.Mesh.reset();
+    if (input->GetNumberOfStrips() > 0)
+    {
+      vtkErrorMacro("The input has triangle strips: run vtkTriangleFilter first.");
+      return 0;
+    }
+    std::vector<glm::dvec3> points(static_cast<std::size_t>(input->GetNumberOfPoints()));
+    for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+    {
+      input->GetPoint(i, &points[static_cast<std::size_t>(i)][0]);
+    }
+    std::vector<silsmooth::Triangle> triangles;
+    if (vtkCellArray* polys = input->GetPolys())
+    {
+      vtkIdType count = 0;
+      const vtkIdType* ids = nullptr;
+      auto iterator = vtk::TakeSmartPointer(polys->NewIterator());
+      for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
+      {
+        iterator->GetCurrentCell(count, ids);
+        if (count != 3)
+        {
+          vtkErrorMacro(
+            "The input has a polygon of " << count << " points: run vtkTriangleFilter first.");
+          return 0;
+        }
+        for (int k = 0; k < 3; ++k)
+        {
+          if (ids[k] < 0 || ids[k] >= input->GetNumberOfPoints())
+          {
+            vtkErrorMacro("The input has a triangle with a point id out of range.");
+            return 0;
+          }
+        }
+        triangles.push_back({ ids[0], ids[1], ids[2] });
+      }
+    }
+    this->UpdateProgress(0.1);
+    cache.Mesh.emplace(std::move(points), std::move(triangles));
+    cache.Input = input;
+    cache.InputTime = input->GetMTime();
+    this->UpdateProgress(0.9);
+  }
+  silsmooth::ProgressiveMesh& mesh = *cache.Mesh;
+  const std::size_t full = mesh.fullTriangleCount();
+  const std::size_t wanted = this->TriangleCount >= 0
+    ? static_cast<std::size_t>(this->TriangleCount)
+    : static_cast<std::size_t>(std::ceil(this->Fraction * static_cast<double>(full)));
+  mesh.setTriangleCount(wanted);
+
+  std::vector<glm::dvec3> points;
+  std::vector<silsmooth::Triangle> triangles;
+  std::vector<silsmooth::Id> pointIds;
+  std::vector<silsmooth::Id> triangleIds;
+  mesh.compact(points, triangles, pointIds, triangleIds);
+
+  vtkNew<vtkPoints> outPoints;
+  outPoints->SetDataTypeToDouble();
+  outPoints->SetNumberOfPoints(static_cast<vtkIdType>(points.size()));
+  vtkPointData* inPd = input->GetPointData();
+  vtkPointData* outPd = output->GetPointData();
+  outPd->CopyAllocate(inPd, static_cast<vtkIdType>(points.size()));
+  vtkNew<vtkIdTypeArray> originalPoint;
+  originalPoint->SetName("OriginalPointId");
+  originalPoint->SetNumberOfValues(static_cast<vtkIdType>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    const auto id = static_cast<vtkIdType>(i);
+    outPoints->SetPoint(id, points[i].x, points[i].y, points[i].z);
+    outPd->CopyData(inPd, static_cast<vtkIdType>(pointIds[i]), id);
+    originalPoint->SetValue(id, static_cast<vtkIdType>(pointIds[i]));
+  }
+  outPd->AddArray(originalPoint);
+
+  // Input cell ids: VTK numbers verts, then lines, then polys.
+  const vtkIdType polyOffset = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  vtkNew<vtkCellArray> polys;
+  polys->AllocateExact(
+    static_cast<vtkIdType>(triangles.size()), 3 * static_cast<vtkIdType>(triangles.size()));
+  vtkCellData* inCd = input->GetCellData();
+  vtkCellData* outCd = output->GetCellData();
+  outCd->CopyAllocate(inCd, static_cast<vtkIdType>(triangles.size()));
+  vtkNew<vtkIdTypeArray> originalCell;
+  originalCell->SetName("OriginalCellId");
+  originalCell->SetNumberOfValues(static_cast<vtkIdType>(triangles.size()));
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const vtkIdType ids[3] = { static_cast<vtkIdType>(triangles[t][0]),
+      static_cast<vtkIdType>(triangles[t][1]), static_cast<vtkIdType>(triangles[t][2]) };
+    polys->InsertNextCell(3, ids);
+    const vtkIdType inputCell = polyOffset + static_cast<vtkIdType>(triangleIds[t]);
+    outCd->CopyData(inCd, inputCell, static_cast<vtkIdType>(t));
+    originalCell->SetValue(static_cast<vtkIdType>(t), inputCell);
+  }
+  outCd->AddArray(originalCell);
+  output->SetPoints(outPoints);
+  output->SetPolys(polys);
+  AddCount(output, "BaseTriangleCount", mesh.baseTriangleCount());
+  AddCount(output, "FullTriangleCount", full);
+  AddCount(output, "SplitCount", mesh.splitCount());
+  AddCount(output, "Level", mesh.level());
+  return 1;
+}
+
+void vtkProgressiveMeshFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "TriangleCount: " << this->TriangleCount << "\n";
+  os << indent << "Fraction: " << this->Fraction << "\n";
+}

@@ -1,0 +1,70 @@
+/**
+ * @class   vtkProgressiveMeshFilter
+ * @brief   progressive mesh (Kim and Choe; Hoppe 1996) at a chosen triangle count
+ *
+ * S.-S. Kim and S.-K. Choe, "Stylized Silhouette Rendering Using Progressive
+ * Meshes" (3.1): the input triangles are coarsened by edge collapses in the
+ * order of the paper's cost F_C = lambda F_vol d + (1 - lambda) L^2 F_boun
+ * (lambda = 1/3; volume- and border-preserving; collapses that would flip a
+ * triangle or break the manifold are refused), recorded as vertex splits.
+ * The output is the mesh at the lowest level of that sequence with at least
+ * TriangleCount triangles (or Fraction of the input's, when TriangleCount is
+ * negative). The sequence is built once per input; changing the count only
+ * applies splits or collapses. At the full count the output is the input
+ * mesh exactly: same points (positions bit for bit, less points used by no
+ * triangle), same triangles in the same order. Filters/Core/ProgressiveMesh.h
+ * has the details.
+ *
+ * Input: triangles only (polygons of other sizes and strips are an error; run
+ * vtkTriangleFilter first); verts and lines are ignored. Output: the active
+ * points in input order with point data copied from the input point, the
+ * active triangles in input order with cell data copied; point
+ * `OriginalPointId` and cell `OriginalCellId` (vtkIdType, the input's ids);
+ * field `BaseTriangleCount`, `FullTriangleCount`, `SplitCount`, `Level`.
+ */
+#ifndef vtkProgressiveMeshFilter_h
+#define vtkProgressiveMeshFilter_h
+
+#include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // For std::unique_ptr
+
+class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkProgressiveMeshFilter
+  : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkProgressiveMeshFilter* New();
+  vtkTypeMacro(vtkProgressiveMeshFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Triangles wanted; negative (the default, -1) uses Fraction. */
+  vtkSetMacro(TriangleCount, vtkIdType);
+  vtkGetMacro(TriangleCount, vtkIdType);
+  ///@}
+
+  ///@{
+  /** Fraction of the input's triangles wanted when TriangleCount < 0. Default 1. */
+  vtkSetClampMacro(Fraction, double, 0.0, 1.0);
+  vtkGetMacro(Fraction, double);
+  ///@}
+
+protected:
+  vtkProgressiveMeshFilter();
+  ~vtkProgressiveMeshFilter() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  vtkIdType TriangleCount = -1;
+  double Fraction = 1.0;
+
+private:
+  vtkProgressiveMeshFilter(const vtkProgressiveMeshFilter&) = delete;
+  void operator=(const vtkProgressiveMeshFilter&) = delete;
+
+  struct Internal;
+  std::unique_ptr<Internal> Cache;
+};
+
+#endif

@@ -1,0 +1,153 @@
+#include "vtkStylizedStrokeFilter.h"
+
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include "StrokeStylizer.h"
+
+#include <cmath>
+#include <vector>
+
+vtkStandardNewMacro(vtkStylizedStrokeFilter);
+vtkCxxSetObjectMacro(vtkStylizedStrokeFilter, Camera, vtkCamera);
+
+vtkStylizedStrokeFilter::~vtkStylizedStrokeFilter()
+{
+  this->SetCamera(nullptr);
+}
+
+vtkMTimeType vtkStylizedStrokeFilter::GetMTime()
+{
+  vtkMTimeType mtime = this->Superclass::GetMTime();
+  if (this->Camera)
+  {
+    mtime = std::max(mtime, this->Camera->GetMTime());
+  }
+  return mtime;
+}
+
+int vtkStylizedStrokeFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    return 0;
+  }
+  if (!this->Camera)
+  {
+    vtkErrorMacro("No camera: call SetCamera() before updating.");
+    return 0;
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkDoubleArray> offsets;
+  offsets->SetName("BrushOffset");
+  offsets->SetNumberOfComponents(2);
+  vtkNew<vtkDoubleArray> arcLengths;
+  arcLengths->SetName("StrokeArcLength");
+  vtkNew<vtkIdTypeArray> strokeIds;
+  strokeIds->SetName("StrokeId");
+
+  vtkPoints* inPoints = input->GetPoints();
+  vtkCellArray* inLines = input->GetLines();
+  if (inPoints && inLines && inLines->GetNumberOfCells() > 0)
+  {
+    double bounds[6];
+    input->GetBounds(bounds);
+    const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+      (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+      (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+
+    silsmooth::StrokeParameters parameters;
+    parameters.brush = static_cast<silsmooth::Brush>(this->Brush);
+    parameters.amplitude = this->Amplitude * diagonal;
+    parameters.wavelength = this->Wavelength * diagonal;
+    parameters.spacing = this->Spacing * diagonal;
+    parameters.seed = this->Seed;
+
+    silsmooth::StrokeView view;
+    view.parallel = this->Camera->GetParallelProjection() != 0;
+    this->Camera->GetPosition(&view.eye[0]);
+    double direction[3];
+    this->Camera->GetDirectionOfProjection(direction);
+    view.direction = glm::dvec3(direction[0], direction[1], direction[2]);
+
+    const vtkIdType numberOfPoints = inPoints->GetNumberOfPoints();
+    vtkIdType strokeIndex = 0;
+    vtkIdType count = 0;
+    const vtkIdType* ids = nullptr;
+    const vtkIdType total = inLines->GetNumberOfCells();
+    auto iterator = vtk::TakeSmartPointer(inLines->NewIterator());
+    for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal();
+         iterator->GoToNextCell(), ++strokeIndex)
+    {
+      if (strokeIndex % 256 == 0)
+      {
+        this->UpdateProgress(static_cast<double>(strokeIndex) / total);
+        if (this->GetAbortExecute())
+        {
+          break;
+        }
+      }
+      iterator->GetCurrentCell(count, ids);
+      std::vector<glm::dvec3> stroke;
+      stroke.reserve(count);
+      for (vtkIdType k = 0; k < count; ++k)
+      {
+        if (ids[k] < 0 || ids[k] >= numberOfPoints)
+        {
+          continue; // a bad id: skip the point
+        }
+        double p[3];
+        inPoints->GetPoint(ids[k], p);
+        stroke.emplace_back(p[0], p[1], p[2]);
+      }
+      if (stroke.size() < 2)
+      {
+        continue;
+      }
+      const silsmooth::StylizedStroke result =
+        silsmooth::stylizeStroke(stroke, view, parameters, static_cast<std::uint64_t>(strokeIndex));
+      lines->InsertNextCell(static_cast<vtkIdType>(result.points.size()));
+      for (std::size_t i = 0; i < result.points.size(); ++i)
+      {
+        const glm::dvec3& q = result.points[i];
+        lines->InsertCellPoint(points->InsertNextPoint(q.x, q.y, q.z));
+        offsets->InsertNextTuple2(result.tangentOffset[i], result.normalOffset[i]);
+        arcLengths->InsertNextValue(result.arcLength[i]);
+      }
+      strokeIds->InsertNextValue(strokeIndex);
+    }
+  }
+  output->SetPoints(points);
+  output->SetLines(lines);
+  output->GetPointData()->AddArray(offsets);
+  output->GetPointData()->AddArray(arcLengths);
+  output->GetCellData()->AddArray(strokeIds);
+  return 1;
+}
+
+void vtkStylizedStrokeFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Brush: " << silsmooth::brushName(static_cast<silsmooth::Brush>(this->Brush))
+     << "\n";
+  os << indent << "Amplitude: " << this->Amplitude << "\n";
+  os << indent << "Wavelength: " << this->Wavelength << "\n";
+  os << indent << "Spacing: " << this->Spacing << "\n";
+  os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "Camera: " << this->Camera << "\n";
+}

@@ -1,0 +1,126 @@
+/**
+ * @class   vtkStylizedStrokeFilter
+ * @brief   stylized strokes (Kim and Choe): polylines offset by brush functions
+ *
+ * S.-S. Kim and S.-K. Choe, "Stylized Silhouette Rendering Using Progressive
+ * Meshes" (3.4, 3.5): every input line cell (a stroke, e.g. a smoothed
+ * silhouette polyline from port 1 of vtkSilhouetteSmoothingFilter) is
+ * parameterised by arc length s and each point is moved in the view plane,
+ * q = p + v_x(s) T + v_y(s) N, with T the stroke's tangent and N the normal
+ * in the plane perpendicular to the line of sight, by one of the paper's
+ * four brush functions:
+ *
+ * - CHARCOAL: high-frequency sawtooth across the stroke,
+ * - LAZY: low-frequency parabolic arcs across the stroke,
+ * - HAND: low-magnitude smooth noise, along and across the stroke,
+ * - ROUGH: high-magnitude noise along the stroke (per point).
+ *
+ * Filters/Core/StrokeStylizer.h has the formulas. |v_x| and |v_y| never
+ * exceed the amplitude, and Amplitude 0 with Spacing 0 gives the input
+ * points back. The noise is seeded (Seed) and repeatable. A closed polyline
+ * (last point equal to the first) stays closed without a seam: its
+ * wavelength is adjusted so a whole number of periods fits its length.
+ *
+ * Lengths (Amplitude, Wavelength, Spacing) are fractions of the diagonal of
+ * the input's bounding box, as the paper scales its brushes by the object's
+ * size (dist_z). The camera (SetCamera, required) gives the line of sight;
+ * the points are taken as world coordinates. The filter re-executes when the
+ * camera changes.
+ *
+ * Output: one polyline per input line cell (verts and polygons are dropped),
+ * with point data `BrushOffset` (2 components: v_x and v_y in world units),
+ * `StrokeArcLength`, and cell data `StrokeId` (the input line's index among
+ * the line cells). Point data of the input is not carried (resampling adds
+ * points).
+ */
+#ifndef vtkStylizedStrokeFilter_h
+#define vtkStylizedStrokeFilter_h
+
+#include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class vtkCamera;
+
+class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkStylizedStrokeFilter
+  : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkStylizedStrokeFilter* New();
+  vtkTypeMacro(vtkStylizedStrokeFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Brushes
+  {
+    CHARCOAL = 0,
+    LAZY = 1,
+    HAND = 2,
+    ROUGH = 3
+  };
+
+  ///@{
+  /** The brush function. Default CHARCOAL. */
+  vtkSetClampMacro(Brush, int, CHARCOAL, ROUGH);
+  vtkGetMacro(Brush, int);
+  void SetBrushToCharcoal() { this->SetBrush(CHARCOAL); }
+  void SetBrushToLazy() { this->SetBrush(LAZY); }
+  void SetBrushToHand() { this->SetBrush(HAND); }
+  void SetBrushToRough() { this->SetBrush(ROUGH); }
+  ///@}
+
+  ///@{
+  /** Bound on |v_x| and |v_y|, as a fraction of the input's diagonal. Default 0.006. */
+  vtkSetClampMacro(Amplitude, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Amplitude, double);
+  ///@}
+
+  ///@{
+  /**
+   * Period of the sawtooth (charcoal) and parabola (lazy), knot spacing of
+   * the hand noise; a fraction of the input's diagonal. Default 0.02.
+   */
+  vtkSetClampMacro(Wavelength, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Wavelength, double);
+  ///@}
+
+  ///@{
+  /**
+   * When > 0, strokes are resampled at about this spacing (a fraction of the
+   * input's diagonal) before the brush, keeping their points. Default 0.002.
+   */
+  vtkSetClampMacro(Spacing, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(Spacing, double);
+  ///@}
+
+  ///@{
+  /** Seed of the noise (hand, rough). Default 1. */
+  vtkSetMacro(Seed, vtkTypeUInt64);
+  vtkGetMacro(Seed, vtkTypeUInt64);
+  ///@}
+
+  ///@{
+  /** The camera whose line of sight the offsets are perpendicular to. */
+  virtual void SetCamera(vtkCamera*);
+  vtkGetObjectMacro(Camera, vtkCamera);
+  ///@}
+
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkStylizedStrokeFilter() = default;
+  ~vtkStylizedStrokeFilter() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Brush = CHARCOAL;
+  double Amplitude = 0.006;
+  double Wavelength = 0.02;
+  double Spacing = 0.002;
+  vtkTypeUInt64 Seed = 1;
+  vtkCamera* Camera = nullptr;
+
+private:
+  vtkStylizedStrokeFilter(const vtkStylizedStrokeFilter&) = delete;
+  void operator=(const vtkStylizedStrokeFilter&) = delete;
+};
+
+#endif

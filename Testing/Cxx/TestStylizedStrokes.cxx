@@ -1,0 +1,147 @@
+// vtkStylizedStrokeFilter (Kim and Choe 3.5) on the smoothed silhouette of
+// the coarse bunny: every brush offset within its amplitude, offsets in the
+// view plane, zero amplitude gives the polylines back, the output repeats,
+// and a missing camera is an error.
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDataArray.h"
+#include "vtkExecutive.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSilhouetteSmoothingFilter.h"
+#include "vtkStylizedStrokeFilter.h"
+#include "vtkTestErrorObserver.h"
+
+#include "SilhouetteTestSupport.h"
+
+#include <cmath>
+#include <cstdio>
+
+namespace
+{
+
+double Diagonal(vtkPolyData* data)
+{
+  double b[6];
+  data->GetBounds(b);
+  return std::sqrt(
+    (b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+}
+
+bool Run(int argc, char* argv[])
+{
+  auto bunny = silhouette_test::ReadMesh(silhouette_test::DataFile(argc, argv, "bunny_coarse.ply"));
+  CHECK(bunny, "bunny read");
+  auto camera = silhouette_test::CameraAroundMesh(bunny, { 0.3, 0.2, 1.0 }, 3.0, false);
+  vtkNew<vtkSilhouetteSmoothingFilter> smoother;
+  smoother->SetInputData(bunny);
+  smoother->SetCamera(camera);
+  smoother->SetViewportSize(800, 600);
+  smoother->Update();
+  vtkNew<vtkPolyData> silhouette;
+  silhouette->DeepCopy(smoother->GetOutput(1));
+  CHECK(silhouette->GetNumberOfLines() > 0, "smoothed silhouette polylines");
+  const double diagonal = Diagonal(silhouette);
+
+  double eye[3];
+  camera->GetPosition(eye);
+  for (int brush = vtkStylizedStrokeFilter::CHARCOAL; brush <= vtkStylizedStrokeFilter::ROUGH;
+       ++brush)
+  {
+    for (double amplitude : { 0.001, 0.01, 0.05 })
+    {
+      vtkNew<vtkStylizedStrokeFilter> strokes;
+      strokes->SetInputData(silhouette);
+      strokes->SetCamera(camera);
+      strokes->SetBrush(brush);
+      strokes->SetAmplitude(amplitude);
+      strokes->Update();
+      vtkPolyData* out = strokes->GetOutput();
+      CHECK(out->GetNumberOfLines() == silhouette->GetNumberOfLines(), "one stroke per line");
+      CHECK(out->GetNumberOfPoints() > silhouette->GetNumberOfPoints(), "resampled");
+      vtkDataArray* offsets = out->GetPointData()->GetArray("BrushOffset");
+      CHECK(offsets && offsets->GetNumberOfComponents() == 2, "BrushOffset");
+      const double bound = amplitude * diagonal;
+      double largest = 0.0;
+      for (vtkIdType i = 0; i < offsets->GetNumberOfTuples(); ++i)
+      {
+        const double* v = offsets->GetTuple2(i);
+        CHECK(std::abs(v[0]) <= bound && std::abs(v[1]) <= bound, "offset within amplitude");
+        largest = std::max({ largest, std::abs(v[0]), std::abs(v[1]) });
+      }
+      std::printf("brush %d, amplitude %g: largest offset %.6g of bound %.6g\n", brush, amplitude,
+        largest, bound);
+      CHECK(largest > 0.5 * bound, "the brush uses its range");
+      // Same again: seeded, so the output repeats exactly.
+      vtkNew<vtkStylizedStrokeFilter> again;
+      again->SetInputData(silhouette);
+      again->SetCamera(camera);
+      again->SetBrush(brush);
+      again->SetAmplitude(amplitude);
+      again->Update();
+      for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+      {
+        double a[3];
+        double b[3];
+        out->GetPoint(i, a);
+        again->GetOutput()->GetPoint(i, b);
+        CHECK(a[0] == b[0] && a[1] == b[1] && a[2] == b[2], "repeatable");
+      }
+    }
+  }
+
+  // Zero amplitude, no resampling: the polylines come back point for point.
+  vtkNew<vtkStylizedStrokeFilter> still;
+  still->SetInputData(silhouette);
+  still->SetCamera(camera);
+  still->SetBrushToRough();
+  still->SetAmplitude(0.0);
+  still->SetSpacing(0.0);
+  still->Update();
+  vtkPolyData* out = still->GetOutput();
+  CHECK(out->GetNumberOfLines() == silhouette->GetNumberOfLines(), "same strokes");
+  vtkIdType outIndex = 0;
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  for (vtkIdType c = 0; c < silhouette->GetNumberOfLines(); ++c)
+  {
+    silhouette->GetLines()->GetCellAtId(c, n, ids);
+    for (vtkIdType k = 0; k < n; ++k, ++outIndex)
+    {
+      double a[3];
+      double b[3];
+      silhouette->GetPoint(ids[k], a);
+      out->GetPoint(outIndex, b);
+      CHECK(a[0] == b[0] && a[1] == b[1] && a[2] == b[2], "zero amplitude gives the input back");
+    }
+  }
+  CHECK(outIndex == out->GetNumberOfPoints(), "no extra points");
+
+  // The camera moving re-runs the filter.
+  const vtkMTimeType before = still->GetMTime();
+  camera->Azimuth(10.0);
+  CHECK(still->GetMTime() > before, "camera in MTime");
+
+  // No camera: an error, not a crash.
+  vtkNew<vtkStylizedStrokeFilter> blind;
+  vtkNew<vtkTest::ErrorObserver> errors;
+  vtkNew<vtkTest::ErrorObserver> executiveErrors;
+  blind->AddObserver(vtkCommand::ErrorEvent, errors);
+  blind->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executiveErrors);
+  blind->SetInputData(silhouette);
+  CHECK(blind->GetExecutive()->Update() == 0, "fails without a camera");
+  CHECK(errors->GetError() &&
+      std::string(errors->GetErrorMessage()).find("No camera") != std::string::npos,
+    "says why");
+  return true;
+}
+
+} // namespace
+
+int TestStylizedStrokes(int argc, char* argv[])
+{
+  return Run(argc, argv) ? 0 : 1;
+}

@@ -20,7 +20,7 @@ echo "sanitize: building the tests and the program with -fsanitize=address,undef
 mkdir -p "$build"
 cmake -S "$here" -B "$build" -DSILHOUETTE_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   >"$build/sanitize-configure.log" 2>&1 || { cat "$build/sanitize-configure.log" >&2; exit 1; }
-cmake --build "$build" -j "$jobs" --target silhouette_core_tests SilhouetteModuleTests silhouette \
+cmake --build "$build" -j "$jobs" --target silhouette_core_tests visibility_benchmark SilhouetteModuleTests silhouette \
   >"$build/sanitize-build.log" 2>&1 || { tail -50 "$build/sanitize-build.log" >&2; exit 1; }
 echo "sanitize: built in $((SECONDS - started)) s"
 
@@ -32,9 +32,9 @@ fi
 export UBSAN_OPTIONS=print_stacktrace=1
 started=$SECONDS
 ASAN_OPTIONS=detect_leaks=1 ctest --output-on-failure \
-  -R '^core\.|^module\.Test(TopologyInvariants|BadInput|HostileMeshes)$'
+  -R '^core\.|^module\.Test(TopologyInvariants|BadInput|HostileMeshes|VisibilityMethod|BoundaryCurveSmoothing|FaceSilhouetteLines|PNTriangleFilter|ProgressiveMeshFilter|StylizedStrokes)$'
 ASAN_OPTIONS=detect_leaks=0 "${display[@]}" ctest --output-on-failure \
-  -R '^module\.Test(OpenSubdivRefiner|FilterPipeline|SphereAccuracy|SmoothingImages|OrbitCoherence)$'
+  -R '^module\.Test(OpenSubdivRefiner|FilterPipeline|SphereAccuracy|SmoothingImages|OrbitCoherence|FeatureCurves)$'
 echo "sanitize: core and module tests in $((SECONDS - started)) s"
 started=$SECONDS
 ASAN_OPTIONS=detect_leaks=1 \

@@ -14,27 +14,19 @@
 #include "vtkPolyData.h"
 
 #include "StrokeStylizer.h"
+#include "vtkSilhouetteFilterSupport.h"
 
 #include <cmath>
 #include <vector>
 
 vtkStandardNewMacro(vtkStylizedStrokeFilter);
-vtkCxxSetObjectMacro(vtkStylizedStrokeFilter, Camera, vtkCamera);
 
-vtkStylizedStrokeFilter::~vtkStylizedStrokeFilter()
+vtkStylizedStrokeFilter::vtkStylizedStrokeFilter()
 {
-  this->SetCamera(nullptr);
+  this->ViewportDependent = false; // offsets are in model units, not pixels
 }
 
-vtkMTimeType vtkStylizedStrokeFilter::GetMTime()
-{
-  vtkMTimeType mtime = this->Superclass::GetMTime();
-  if (this->Camera)
-  {
-    mtime = std::max(mtime, this->Camera->GetMTime());
-  }
-  return mtime;
-}
+vtkStylizedStrokeFilter::~vtkStylizedStrokeFilter() = default;
 
 int vtkStylizedStrokeFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
@@ -45,10 +37,15 @@ int vtkStylizedStrokeFilter::RequestData(
   {
     return 0;
   }
-  if (!this->Camera)
+  vtkSilhouetteFilterSupport::View modelView;
+  const ViewStatus viewStatus = this->RequestView(modelView);
+  if (viewStatus == VIEW_NO_CAMERA_YET)
   {
-    vtkErrorMacro("No camera: call SetCamera() before updating.");
-    return 0;
+    return 1; // the renderer has no camera yet: nothing to draw until it has
+  }
+  if (viewStatus != VIEW_READY)
+  {
+    return 0; // reported
   }
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -78,12 +75,11 @@ int vtkStylizedStrokeFilter::RequestData(
     parameters.spacing = this->Spacing * diagonal;
     parameters.seed = this->Seed;
 
+    // The line of sight in the data's model coordinates.
     silsmooth::StrokeView view;
-    view.parallel = this->Camera->GetParallelProjection() != 0;
-    this->Camera->GetPosition(&view.eye[0]);
-    double direction[3];
-    this->Camera->GetDirectionOfProjection(direction);
-    view.direction = glm::dvec3(direction[0], direction[1], direction[2]);
+    view.parallel = modelView.Geometry.Parallel;
+    view.eye = modelView.Geometry.Eye;
+    view.direction = -modelView.Geometry.TowardViewer;
 
     const vtkIdType numberOfPoints = inPoints->GetNumberOfPoints();
     vtkIdType strokeIndex = 0;
@@ -149,5 +145,4 @@ void vtkStylizedStrokeFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Wavelength: " << this->Wavelength << "\n";
   os << indent << "Spacing: " << this->Spacing << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
-  os << indent << "Camera: " << this->Camera << "\n";
 }

@@ -23,9 +23,12 @@
  *
  * Lengths (Amplitude, Wavelength, Spacing) are fractions of the diagonal of
  * the input's bounding box, as the paper scales its brushes by the object's
- * size (dist_z). The camera (SetCamera, required) gives the line of sight;
- * the points are taken as world coordinates. The filter re-executes when the
- * camera changes.
+ * size (dist_z). The view (vtkSilhouetteViewAlgorithm: SetCamera or
+ * SetRenderer, and SetProp3D or SetModelMatrix for data drawn with a model
+ * transform) gives the line of sight in the data's model coordinates; the
+ * viewport size does not matter. The filter re-executes when the view
+ * changes (compared by value). Before a renderer has created its camera the
+ * output is empty.
  *
  * Output: one polyline per input line cell (verts and polygons are dropped),
  * with point data `BrushOffset` (2 components: v_x and v_y in world units),
@@ -37,16 +40,14 @@
 #define vtkStylizedStrokeFilter_h
 
 #include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
-
-class vtkCamera;
+#include "vtkSilhouetteViewAlgorithm.h"
 
 class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkStylizedStrokeFilter
-  : public vtkPolyDataAlgorithm
+  : public vtkSilhouetteViewAlgorithm
 {
 public:
   static vtkStylizedStrokeFilter* New();
-  vtkTypeMacro(vtkStylizedStrokeFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkStylizedStrokeFilter, vtkSilhouetteViewAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum Brushes
@@ -97,16 +98,8 @@ public:
   vtkGetMacro(Seed, vtkTypeUInt64);
   ///@}
 
-  ///@{
-  /** The camera whose line of sight the offsets are perpendicular to. */
-  virtual void SetCamera(vtkCamera*);
-  vtkGetObjectMacro(Camera, vtkCamera);
-  ///@}
-
-  vtkMTimeType GetMTime() override;
-
 protected:
-  vtkStylizedStrokeFilter() = default;
+  vtkStylizedStrokeFilter();
   ~vtkStylizedStrokeFilter() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -116,7 +109,6 @@ protected:
   double Wavelength = 0.02;
   double Spacing = 0.002;
   vtkTypeUInt64 Seed = 1;
-  vtkCamera* Camera = nullptr;
 
 private:
   vtkStylizedStrokeFilter(const vtkStylizedStrokeFilter&) = delete;

@@ -1,7 +1,7 @@
 // vtkStylizedStrokeFilter (Kim and Choe 3.5) on the smoothed silhouette of
 // the coarse bunny: every brush offset within its amplitude, offsets in the
-// view plane, zero amplitude gives the polylines back, the output repeats,
-// and a missing camera is an error.
+// view plane, zero amplitude gives the polylines back, the output repeats, a
+// model matrix means model coordinates, and a missing camera is an error.
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -14,9 +14,12 @@
 #include "vtkSilhouetteSmoothingFilter.h"
 #include "vtkStylizedStrokeFilter.h"
 #include "vtkTestErrorObserver.h"
+#include "vtkTransform.h"
+#include "vtkTransformPolyDataFilter.h"
 
 #include "SilhouetteTestSupport.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -124,6 +127,50 @@ bool Run(int argc, char* argv[])
   const vtkMTimeType before = still->GetMTime();
   camera->Azimuth(10.0);
   CHECK(still->GetMTime() > before, "camera in MTime");
+
+  // A model matrix (a quarter turn about z and a shift, which keeps the
+  // bounding box's diagonal and so the brush's scale) gives the strokes of
+  // the transformed data, transformed back: the view is taken into the data's
+  // model coordinates. (Equal to float precision: the points are floats; a
+  // view left in world coordinates is off by about the amplitude.)
+  {
+    vtkNew<vtkTransform> turn;
+    turn->Translate(0.3, -0.2, 0.5);
+    turn->RotateZ(90.0);
+    vtkNew<vtkTransformPolyDataFilter> moved;
+    moved->SetInputData(silhouette);
+    moved->SetTransform(turn);
+    moved->Update();
+    vtkNew<vtkStylizedStrokeFilter> inWorld;
+    inWorld->SetInputData(moved->GetOutput());
+    inWorld->SetCamera(camera);
+    inWorld->SetBrushToHand();
+    inWorld->Update();
+    vtkNew<vtkStylizedStrokeFilter> inModel;
+    inModel->SetInputData(silhouette);
+    inModel->SetCamera(camera);
+    inModel->SetModelMatrix(turn->GetMatrix());
+    inModel->SetBrushToHand();
+    inModel->Update();
+    vtkPolyData* world = inWorld->GetOutput();
+    vtkPolyData* model = inModel->GetOutput();
+    CHECK(
+      world->GetNumberOfPoints() == model->GetNumberOfPoints() && world->GetNumberOfPoints() > 0,
+      "same strokes with a model matrix");
+    double worst = 0.0;
+    for (vtkIdType i = 0; i < world->GetNumberOfPoints(); ++i)
+    {
+      double a[3];
+      double b[3];
+      world->GetPoint(i, a);
+      model->GetPoint(i, b);
+      turn->TransformPoint(b, b);
+      worst = std::max(worst, std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]));
+    }
+    std::printf("strokes with a model matrix against transformed data: %.2e of the diagonal\n",
+      worst / diagonal);
+    CHECK(worst <= 1e-6 * diagonal, "the model matrix takes the view into model coordinates");
+  }
 
   // No camera: an error, not a crash.
   vtkNew<vtkStylizedStrokeFilter> blind;

@@ -5,6 +5,7 @@
 #include "ObjCheck.h"
 #include "PlyCheck.h"
 #include "StlCheck.h"
+#include "VtpCheck.h"
 #include "VtkErrorLog.h"
 
 #include <vtkCellArray.h>
@@ -98,6 +99,7 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, const std::str
   }
   if (extension == ".vtp")
   {
+    CheckVtpFile(path); // vtkXMLPolyDataReader allocates what a binary array's header declares
     auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
     reader->SetFileName(path.c_str());
     return reader;

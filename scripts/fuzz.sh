@@ -26,6 +26,13 @@ if [ "${1:-}" = "--help" ] || [ "${1:-}" = "-h" ]; then
 fi
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 seconds="${1:-30}"
+# SILHOUETTE_FUZZ_SEED fixes libFuzzer's random seed (CI sets it, so that a
+# run explores the same inputs in the same order every time); unset, each run
+# explores new ones.
+seed_option=()
+if [ -n "${SILHOUETTE_FUZZ_SEED:-}" ]; then
+  seed_option=(-seed="$SILHOUETTE_FUZZ_SEED")
+fi
 work="${SILHOUETTE_FUZZ_DIR:-$here/build-fuzz}"
 jobs="$(nproc 2>/dev/null || echo 2)"
 
@@ -73,7 +80,7 @@ run() { # target corpus max_len [seeds]
   local target="$1" corpus="$2" max_len="$3"
   shift 3
   echo "fuzz: running $target for $seconds s"
-  if ! (cd "$work/artifacts" && "$work/bin/$target" "$corpus" "$@" -max_total_time="$seconds" \
+  if ! (cd "$work/artifacts" && "$work/bin/$target" "$corpus" "$@" "${seed_option[@]}" -max_total_time="$seconds" \
     -max_len="$max_len" -timeout=10 -rss_limit_mb=1024 -print_final_stats=1 \
     >"$work/$target.log" 2>&1); then
     tail -60 "$work/$target.log" >&2

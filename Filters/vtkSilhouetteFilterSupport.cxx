@@ -197,7 +197,10 @@ std::string ReadTriangles(vtkPolyData* input, Triangles& out)
     input->GetPoint(i, p);
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
     {
-      ++out.NonFinitePoints;
+      if (out.NonFinitePoints++ == 0)
+      {
+        out.FirstNonFinitePoint = i;
+      }
     }
     out.Points[static_cast<std::size_t>(i)] = glm::dvec3(p[0], p[1], p[2]);
   }
@@ -208,6 +211,7 @@ std::string ReadTriangles(vtkPolyData* input, Triangles& out)
   for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell(), ++cellId)
   {
     polys->GetCurrentCell(npts, pts);
+    out.TooSmallPolygons += npts < 3 ? 1 : 0;
     for (vtkIdType k = 1; k + 1 < npts; ++k)
     {
       out.Cells.push_back({ pts[0], pts[k], pts[k + 1] });

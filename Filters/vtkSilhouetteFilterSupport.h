@@ -86,6 +86,9 @@ struct Triangles
   std::vector<silsmooth::Triangle> Cells;
   std::vector<vtkIdType> CellIds;
   vtkIdType NonFinitePoints = 0;
+  vtkIdType FirstNonFinitePoint = -1;
+  /// Polygons of fewer than three points (they make no triangle).
+  vtkIdType TooSmallPolygons = 0;
 };
 /// Returns an empty string, or the error to report (cells naming missing
 /// points).

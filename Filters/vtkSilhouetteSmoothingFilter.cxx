@@ -23,6 +23,7 @@
 
 #include "ShadingNormals.h"
 #include "SilhouetteSmoother.h"
+#include "WeldedSurface.h"
 
 #include <algorithm>
 #include <array>
@@ -48,48 +49,105 @@ void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
   fd->AddArray(array);
 }
 
-vtkSmartPointer<vtkPoints> BuildPoints(
-  vtkPolyData* input, const silsmooth::PreparedMesh& mesh, const silsmooth::SmoothingResult& result)
+int OutputPointType(vtkPolyData* input, int precision)
+{
+  if (precision == vtkAlgorithm::SINGLE_PRECISION)
+  {
+    return VTK_FLOAT;
+  }
+  if (precision == vtkAlgorithm::DOUBLE_PRECISION)
+  {
+    return VTK_DOUBLE;
+  }
+  vtkPoints* inPoints = input->GetPoints();
+  return inPoints ? inPoints->GetDataType() : VTK_FLOAT;
+}
+
+// Input points (ids kept), copies of input points for extra smooth groups,
+// then the added points; points lowered by the perturbation move in every
+// copy.
+vtkSmartPointer<vtkPoints> BuildPoints(vtkPolyData* input, int pointType,
+  const silsmooth::WeldedSurface& surface, const silsmooth::SmoothingResult& result,
+  const silsmooth::SurfaceFrame& frame)
 {
   auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataType(pointType);
   vtkPoints* inPoints = input->GetPoints();
-  points->SetDataType(inPoints ? inPoints->GetDataType() : VTK_FLOAT);
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  const vtkIdType prepared = static_cast<vtkIdType>(mesh.points().size());
-  points->SetNumberOfPoints(prepared + static_cast<vtkIdType>(result.NewPoints.size()));
+  const vtkIdType base = static_cast<vtkIdType>(surface.outputPointCount());
+  points->SetNumberOfPoints(base + static_cast<vtkIdType>(frame.Added.size()));
   if (numPoints > 0)
   {
     points->GetData()->InsertTuples(0, numPoints, 0, inPoints->GetData());
   }
-  // Copies of feature points, one per extra smooth group.
-  for (vtkIdType id = numPoints; id < prepared; ++id)
+  for (vtkIdType id = numPoints; id < base; ++id)
   {
-    points->GetData()->SetTuple(id, mesh.sourcePoint(id), inPoints->GetData());
+    points->GetData()->SetTuple(id, surface.outputSource(id), inPoints->GetData());
   }
-  vtkIdType id = prepared;
-  for (const silsmooth::NewPoint& p : result.NewPoints)
+  vtkIdType id = base;
+  for (const silsmooth::SurfaceFrame::AddedPoint& added : frame.Added)
   {
-    points->SetPoint(id++, p.Position.x, p.Position.y, p.Position.z);
+    const glm::dvec3& p = result.NewPoints[added.NewPoint].Position;
+    points->SetPoint(id++, p.x, p.y, p.z);
   }
-  // Vertices lowered below concave silhouette segments: in the output only.
-  for (const auto& moved : result.MovedPoints)
+  for (const auto& moved : frame.Moved)
   {
     points->SetPoint(moved.first, moved.second.x, moved.second.y, moved.second.z);
   }
   return points;
 }
 
-// Input point arrays are copied and extended with values interpolated for the
-// added points; the shading normals replace the input's normals (if any) as
-// the active normals, keeping the input's array name.
-void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
-  const silsmooth::PreparedMesh& mesh, const silsmooth::SmoothingResult& result)
+// The source with the largest weight: the value an added point takes of an
+// array that cannot be interpolated (ids, labels, strings).
+vtkIdType NearestSource(
+  const silsmooth::SurfaceFrame::AddedPoint& added, const silsmooth::SmoothingResult& result)
 {
-  const vtkIdType prepared = static_cast<vtkIdType>(mesh.points().size());
-  const vtkIdType total = prepared + static_cast<vtkIdType>(result.NewPoints.size());
+  const std::array<double, 3>& w = result.NewPoints[added.NewPoint].Weights;
+  const std::size_t k = w[0] >= w[1] && w[0] >= w[2] ? 0 : (w[1] >= w[2] ? 1 : 2);
+  return static_cast<vtkIdType>(added.Sources[k]);
+}
+
+// Copies of every input array that VTK's attribute rules left out (vtkIdType
+// and string arrays, global and pedigree ids): from[i] is the input tuple of
+// output tuple i. They come out as plain arrays under their own names: ids
+// repeated on copies are no longer unique.
+void AddUncopiedArrays(vtkDataSetAttributes* in, vtkDataSetAttributes* out,
+  const std::vector<vtkIdType>& from, const char* skip)
+{
+  for (int a = 0; a < in->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = in->GetAbstractArray(a);
+    if (!array->GetName() || out->GetAbstractArray(array->GetName()) ||
+      (skip && std::strcmp(array->GetName(), skip) == 0))
+    {
+      continue;
+    }
+    vtkSmartPointer<vtkAbstractArray> copy = vtk::TakeSmartPointer(array->NewInstance());
+    copy->SetName(array->GetName());
+    copy->SetNumberOfComponents(array->GetNumberOfComponents());
+    copy->SetNumberOfTuples(static_cast<vtkIdType>(from.size()));
+    for (std::size_t i = 0; i < from.size(); ++i)
+    {
+      copy->SetTuple(static_cast<vtkIdType>(i), from[i], array);
+    }
+    out->AddArray(copy);
+  }
+}
+
+// Input point arrays are copied and extended with values interpolated for the
+// added points (VTK's interpolation rules; the arrays those rules do not
+// interpolate take the nearest source's value). The shading normals replace
+// the input's normals (if any) as the active normals, keeping the input's
+// array name. `OriginalPointId` gives every output point's input point (-1
+// for added points), composed with an input array of that name.
+void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
+  const silsmooth::WeldedSurface& surface, const silsmooth::SmoothingResult& result,
+  const silsmooth::SurfaceFrame& frame)
+{
+  const vtkIdType base = static_cast<vtkIdType>(surface.outputPointCount());
+  const vtkIdType total = base + static_cast<vtkIdType>(frame.Added.size());
   vtkDataArray* inNormals = in->GetNormals();
-  // VTK's attribute rules decide what is copied and interpolated (global and
-  // pedigree ids are not interpolated); the normals are replaced below.
+  vtkDataArray* inOriginal = in->GetArray("OriginalPointId");
   out->CopyAllOn();
   out->CopyNormalsOff();
   out->InterpolateAllocate(in, total);
@@ -97,20 +155,21 @@ void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
   {
     out->CopyData(in, 0, numPoints, 0);
   }
-  for (vtkIdType id = numPoints; id < prepared; ++id)
+  for (vtkIdType id = numPoints; id < base; ++id)
   {
-    out->CopyData(in, mesh.sourcePoint(id), id);
+    out->CopyData(in, surface.outputSource(id), id);
   }
   vtkNew<vtkIdList> sources;
   sources->SetNumberOfIds(3);
-  vtkIdType id = prepared;
-  for (const silsmooth::NewPoint& p : result.NewPoints)
+  vtkIdType id = base;
+  for (const silsmooth::SurfaceFrame::AddedPoint& added : frame.Added)
   {
     for (int k = 0; k < 3; ++k)
     {
-      sources->SetId(k, mesh.sourcePoint(p.Sources[k]));
+      sources->SetId(k, added.Sources[static_cast<std::size_t>(k)]);
     }
-    double weights[3] = { p.Weights[0], p.Weights[1], p.Weights[2] };
+    const std::array<double, 3>& w = result.NewPoints[added.NewPoint].Weights;
+    double weights[3] = { w[0], w[1], w[2] };
     out->InterpolatePoint(in, id++, sources, weights);
   }
   if (inNormals && inNormals->GetName() && out->GetArray(inNormals->GetName()))
@@ -118,105 +177,122 @@ void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
     out->RemoveArray(inNormals->GetName());
   }
 
+  std::vector<vtkIdType> from(static_cast<std::size_t>(total));
+  for (vtkIdType o = 0; o < base; ++o)
+  {
+    from[static_cast<std::size_t>(o)] = surface.outputSource(o);
+  }
+  for (std::size_t a = 0; a < frame.Added.size(); ++a)
+  {
+    from[static_cast<std::size_t>(base) + a] = NearestSource(frame.Added[a], result);
+  }
+  AddUncopiedArrays(in, out, from, inNormals ? inNormals->GetName() : nullptr);
+
+  vtkNew<vtkIdTypeArray> original;
+  original->SetName("OriginalPointId");
+  original->SetNumberOfValues(total);
+  for (vtkIdType o = 0; o < total; ++o)
+  {
+    const vtkIdType source = o < base ? surface.outputSource(o) : -1;
+    original->SetValue(o,
+      source >= 0 && inOriginal ? static_cast<vtkIdType>(inOriginal->GetTuple1(source)) : source);
+  }
+  if (out->GetAbstractArray("OriginalPointId"))
+  {
+    out->RemoveArray("OriginalPointId");
+  }
+  out->AddArray(original);
+
+  const silsmooth::PreparedMesh& mesh = surface.prepared();
   vtkNew<vtkFloatArray> normals;
   normals->SetName(inNormals && inNormals->GetName() ? inNormals->GetName() : "Normals");
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(total);
   float* n = normals->GetPointer(0);
-  for (const glm::dvec3& normal : mesh.normals())
+  for (vtkIdType o = 0; o < base; ++o)
   {
+    const glm::dvec3& normal =
+      mesh.normals()[static_cast<std::size_t>(surface.outputPrepared(o))];
     *n++ = static_cast<float>(normal.x);
     *n++ = static_cast<float>(normal.y);
     *n++ = static_cast<float>(normal.z);
   }
-  for (const silsmooth::NewPoint& p : result.NewPoints)
+  for (const silsmooth::SurfaceFrame::AddedPoint& added : frame.Added)
   {
-    *n++ = static_cast<float>(p.Normal.x);
-    *n++ = static_cast<float>(p.Normal.y);
-    *n++ = static_cast<float>(p.Normal.z);
+    const glm::dvec3& normal = result.NewPoints[added.NewPoint].Normal;
+    *n++ = static_cast<float>(normal.x);
+    *n++ = static_cast<float>(normal.y);
+    *n++ = static_cast<float>(normal.z);
   }
   out->SetNormals(normals);
 }
 
-// Verts and lines pass through; polygons and strips become the triangles of
-// the prepared mesh, with the silhouette triangles replaced in place.
+// Verts and lines pass through; polygons and strips become the frame's
+// triangles. `OriginalCellId` is composed with an input array of that name.
 void BuildCells(vtkPolyData* input, vtkPolyData* output, const std::vector<vtkIdType>& triangleCell,
-  const silsmooth::PreparedMesh& mesh, const silsmooth::SmoothingResult& result)
+  const silsmooth::SurfaceFrame& frame)
 {
   output->SetVerts(input->GetVerts());
   output->SetLines(input->GetLines());
   const vtkIdType passThrough = input->GetNumberOfVerts() + input->GetNumberOfLines();
 
-  const std::vector<silsmooth::Triangle>& triangles = mesh.triangles();
-  const std::size_t outTriangles =
-    triangles.size() - result.RemeshedTriangles.size() + result.Replacements.size();
+  const std::size_t outTriangles = frame.Triangles.size();
   vtkNew<vtkIdTypeArray> offsets;
   vtkNew<vtkIdTypeArray> connectivity;
   offsets->SetNumberOfValues(static_cast<vtkIdType>(outTriangles + 1));
   connectivity->SetNumberOfValues(static_cast<vtkIdType>(outTriangles * 3));
   const vtkIdType outCells = passThrough + static_cast<vtkIdType>(outTriangles);
-  vtkNew<vtkIdTypeArray> originalCellId;
-  originalCellId->SetName("OriginalCellId");
-  originalCellId->SetNumberOfValues(outCells);
   vtkNew<vtkUnsignedCharArray> newGeometry;
   newGeometry->SetName("NewGeometry");
   newGeometry->SetNumberOfValues(outCells);
-  vtkIdType* origin = originalCellId->GetPointer(0);
+  std::vector<vtkIdType> origin(static_cast<std::size_t>(outCells));
   unsigned char* kinds = newGeometry->GetPointer(0);
-  std::iota(origin, origin + passThrough, vtkIdType{ 0 });
+  std::iota(origin.begin(), origin.begin() + passThrough, vtkIdType{ 0 });
   std::fill(kinds, kinds + passThrough, static_cast<unsigned char>(0));
-
   vtkIdType* conn = connectivity->GetPointer(0);
   vtkIdType* offs = offsets->GetPointer(0);
-  vtkIdType cell = passThrough;
-  std::size_t written = 0;
-  auto emit = [&](const silsmooth::Triangle& t, vtkIdType from, unsigned char kind) {
-    offs[written] = static_cast<vtkIdType>(written * 3);
-    std::copy(t.begin(), t.end(), conn + written * 3);
-    ++written;
-    origin[cell] = from;
-    kinds[cell] = kind;
-    ++cell;
-  };
-  std::size_t next = 0;
-  for (std::size_t t = 0; t < triangles.size(); ++t)
+  for (std::size_t t = 0; t < outTriangles; ++t)
   {
-    if (next < result.RemeshedTriangles.size() &&
-      result.RemeshedTriangles[next] == static_cast<silsmooth::Id>(t))
-    {
-      const auto kind = static_cast<unsigned char>(result.RemeshKinds[next]);
-      for (std::size_t r = result.ReplacementOffsets[next]; r < result.ReplacementOffsets[next + 1];
-           ++r)
-      {
-        emit(result.Replacements[r], triangleCell[t], kind);
-      }
-      ++next;
-    }
-    else
-    {
-      emit(triangles[t], triangleCell[t], 0);
-    }
+    offs[t] = static_cast<vtkIdType>(t * 3);
+    std::copy(frame.Triangles[t].begin(), frame.Triangles[t].end(), conn + t * 3);
+    origin[static_cast<std::size_t>(passThrough) + t] =
+      triangleCell[static_cast<std::size_t>(frame.SourceTriangle[t])];
+    kinds[passThrough + static_cast<vtkIdType>(t)] = frame.Kind[t];
   }
-  offs[written] = static_cast<vtkIdType>(written * 3);
+  offs[outTriangles] = static_cast<vtkIdType>(outTriangles * 3);
   vtkNew<vtkCellArray> polys;
   polys->SetData(offsets, connectivity);
   output->SetPolys(polys);
 
   vtkCellData* in = input->GetCellData();
   vtkCellData* out = output->GetCellData();
-  // Each output cell takes its original cell's data, under VTK's attribute
-  // rules (global ids are not duplicated onto the replacement cells).
+  // Each output cell takes its original cell's data.
   if (in->GetNumberOfArrays() > 0)
   {
     vtkNew<vtkIdList> source;
     source->SetNumberOfIds(outCells);
-    std::copy(origin, origin + outCells, source->begin());
+    std::copy(origin.begin(), origin.end(), source->begin());
     vtkNew<vtkIdList> destination;
     destination->SetNumberOfIds(outCells);
     std::iota(destination->begin(), destination->end(), vtkIdType{ 0 });
     out->CopyAllOn();
     out->CopyAllocate(in, outCells);
     out->CopyData(in, source, destination);
+    AddUncopiedArrays(in, out, origin, "OriginalCellId");
+  }
+  vtkDataArray* inOriginal = in->GetArray("OriginalCellId");
+  vtkNew<vtkIdTypeArray> originalCellId;
+  originalCellId->SetName("OriginalCellId");
+  originalCellId->SetNumberOfValues(outCells);
+  for (vtkIdType c = 0; c < outCells; ++c)
+  {
+    const vtkIdType from = origin[static_cast<std::size_t>(c)];
+    originalCellId->SetValue(
+      c, inOriginal ? static_cast<vtkIdType>(inOriginal->GetTuple1(from)) : from);
+  }
+  if (out->GetAbstractArray("OriginalCellId"))
+  {
+    out->RemoveArray("OriginalCellId");
   }
   out->AddArray(newGeometry);
   out->AddArray(originalCellId);
@@ -224,7 +300,7 @@ void BuildCells(vtkPolyData* input, vtkPolyData* output, const std::vector<vtkId
 
 // Output port 1: the silhouette polylines over their own compact point set.
 void BuildSilhouetteLines(
-  vtkPolyData* mesh, const silsmooth::SmoothingResult& result, vtkPolyData* lines)
+  vtkPolyData* mesh, const silsmooth::SurfaceFrame& frame, vtkPolyData* lines)
 {
   vtkPoints* meshPoints = mesh->GetPoints();
   vtkDataArray* meshNormals = mesh->GetPointData()->GetNormals();
@@ -235,7 +311,7 @@ void BuildSilhouetteLines(
   normals->SetNumberOfComponents(3);
   vtkNew<vtkCellArray> cells;
   std::unordered_map<silsmooth::Id, vtkIdType> compact;
-  for (const std::vector<silsmooth::Id>& chain : result.Polylines)
+  for (const std::vector<silsmooth::Id>& chain : frame.Polylines)
   {
     cells->InsertNextCell(static_cast<int>(chain.size())); // VTK takes the size as int here
     for (const silsmooth::Id id : chain)
@@ -258,146 +334,63 @@ void BuildSilhouetteLines(
 
 struct vtkSilhouetteSmoothingFilter::Internals
 {
-  // The view-independent cache, keyed on the input object and its MTime.
-  std::unique_ptr<silsmooth::PreparedMesh> Mesh;
+  // The view-independent cache, keyed on the input object, its MTime and the
+  // settings that shape it.
+  std::unique_ptr<silsmooth::WeldedSurface> Surface;
   std::vector<vtkIdType> TriangleCell; // input cell id of each triangle
   vtkIdType NonFinitePoints = 0;
   vtkIdType FirstNonFinitePoint = -1;
   vtkIdType TooSmallPolygons = 0;
   vtkPolyData* CachedInput = nullptr;
   vtkMTimeType CachedInputTime = 0;
-  // The feature settings the cache was built with.
-  std::array<double, 3> CachedFeatureSettings{ { -1.0, -1.0, -1.0 } };
+  std::array<double, 8> CachedSettings{};
+  bool HaveSettings = false;
 
-  bool Rebuild(vtkPolyData* input, bool useLines, bool detect, double featureAngle);
+  // Returns an empty string, or the error to report.
+  std::string Rebuild(vtkPolyData* input, bool useLines, const silsmooth::SurfaceOptions& options);
 };
 
-bool vtkSilhouetteSmoothingFilter::Internals::Rebuild(
-  vtkPolyData* input, bool useLines, bool detect, double featureAngle)
+std::string vtkSilhouetteSmoothingFilter::Internals::Rebuild(
+  vtkPolyData* input, bool useLines, const silsmooth::SurfaceOptions& options)
 {
-  const vtkIdType numPoints = input->GetNumberOfPoints();
-  std::vector<glm::dvec3> points(static_cast<std::size_t>(numPoints));
-  this->NonFinitePoints = 0;
-  this->FirstNonFinitePoint = -1;
-  for (vtkIdType i = 0; i < numPoints; ++i)
+  vtkSilhouetteFilterSupport::Triangles mesh;
+  const std::string error = vtkSilhouetteFilterSupport::ReadTriangles(input, mesh);
+  this->Surface.reset();
+  this->CachedInput = nullptr;
+  if (!error.empty())
   {
-    double p[3];
-    input->GetPoint(i, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-    {
-      if (this->NonFinitePoints++ == 0)
-      {
-        this->FirstNonFinitePoint = i;
-      }
-    }
-    points[static_cast<std::size_t>(i)] = glm::dvec3(p[0], p[1], p[2]);
+    return error;
   }
-
-  // Triangulate: polygons as fans, strips with alternating orientation, so
-  // every triangle keeps its cell's orientation.
-  std::vector<silsmooth::Triangle> triangles;
-  this->TriangleCell.clear();
-  this->TooSmallPolygons = 0;
-  const vtkIdType cellOffset = input->GetNumberOfVerts() + input->GetNumberOfLines();
-  vtkIdType npts = 0;
-  const vtkIdType* pts = nullptr;
-  vtkIdType cellId = cellOffset;
-  auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell(), ++cellId)
+  this->NonFinitePoints = mesh.NonFinitePoints;
+  this->FirstNonFinitePoint = mesh.FirstNonFinitePoint;
+  this->TooSmallPolygons = mesh.TooSmallPolygons;
+  this->TriangleCell = std::move(mesh.CellIds);
+  if (this->NonFinitePoints > 0)
   {
-    polys->GetCurrentCell(npts, pts);
-    this->TooSmallPolygons += npts < 3 ? 1 : 0;
-    for (vtkIdType k = 1; k + 1 < npts; ++k)
-    {
-      triangles.push_back({ pts[0], pts[k], pts[k + 1] });
-      this->TriangleCell.push_back(cellId);
-    }
+    return std::string(); // reported by the caller, on every request
   }
-  auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
-  for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell(), ++cellId)
-  {
-    strips->GetCurrentCell(npts, pts);
-    for (vtkIdType k = 0; k + 2 < npts; ++k)
-    {
-      if (k % 2 == 0)
-      {
-        triangles.push_back({ pts[k], pts[k + 1], pts[k + 2] });
-      }
-      else
-      {
-        triangles.push_back({ pts[k + 1], pts[k], pts[k + 2] });
-      }
-      this->TriangleCell.push_back(cellId);
-    }
-  }
-  for (const silsmooth::Triangle& t : triangles)
-  {
-    for (const silsmooth::Id id : t)
-    {
-      if (id < 0 || id >= numPoints)
-      {
-        return false;
-      }
-    }
-  }
-  // Verts and lines pass through, so their ids must be valid too.
-  for (vtkCellArray* cells : { input->GetVerts(), input->GetLines() })
-  {
-    auto it = vtk::TakeSmartPointer(cells->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-    {
-      it->GetCurrentCell(npts, pts);
-      for (vtkIdType k = 0; k < npts; ++k)
-      {
-        if (pts[k] < 0 || pts[k] >= numPoints)
-        {
-          return false;
-        }
-      }
-    }
-  }
-
-  std::vector<glm::dvec3> normals;
-  if (vtkDataArray* given = input->GetPointData()->GetNormals())
-  {
-    if (given->GetNumberOfComponents() == 3 && given->GetNumberOfTuples() == numPoints)
-    {
-      normals.resize(static_cast<std::size_t>(numPoints));
-      for (vtkIdType i = 0; i < numPoints; ++i)
-      {
-        double n[3];
-        given->GetTuple(i, n);
-        normals[static_cast<std::size_t>(i)] = glm::dvec3(n[0], n[1], n[2]);
-      }
-    }
-  }
-  // Feature edges: the segments of line cells (marked), and edges sharper
-  // than the feature angle (detected).
-  std::vector<silsmooth::FeatureEdge> features;
+  // Feature edges marked by line cells (the core keeps those along triangle
+  // edges).
+  std::vector<silsmooth::FeatureEdge> marked;
   if (useLines)
   {
+    vtkIdType npts = 0;
+    const vtkIdType* pts = nullptr;
     auto it = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
     for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
     {
       it->GetCurrentCell(npts, pts);
       for (vtkIdType k = 0; k + 1 < npts; ++k)
       {
-        features.emplace_back(pts[k], pts[k + 1]);
+        marked.emplace_back(pts[k], pts[k + 1]);
       }
     }
   }
-  if (detect)
-  {
-    const std::vector<silsmooth::FeatureEdge> sharp =
-      silsmooth::featureEdgesByAngle(points, triangles, featureAngle);
-    features.insert(features.end(), sharp.begin(), sharp.end());
-  }
-  this->Mesh = std::make_unique<silsmooth::PreparedMesh>(
-    std::move(points), std::move(triangles), normals, std::move(features));
+  this->Surface = std::make_unique<silsmooth::WeldedSurface>(
+    std::move(mesh.Points), std::move(mesh.Cells), mesh.Normals, marked, options);
   this->CachedInput = input;
   this->CachedInputTime = input->GetMTime();
-  this->CachedFeatureSettings = { { useLines ? 1.0 : 0.0, detect ? 1.0 : 0.0, featureAngle } };
-  return true;
+  return std::string();
 }
 
 vtkSilhouetteSmoothingFilter::vtkSilhouetteSmoothingFilter()
@@ -441,19 +434,30 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   }
 
   Internals& internal = *this->Internal;
-  const std::array<double, 3> featureSettings{ { this->FeatureLines ? 1.0 : 0.0,
-    this->FeatureEdgeDetection ? 1.0 : 0.0, this->FeatureAngle } };
-  if (!internal.Mesh || internal.CachedInput != input ||
-    internal.CachedInputTime != input->GetMTime() ||
-    internal.CachedFeatureSettings != featureSettings)
+  silsmooth::SurfaceOptions options;
+  options.Weld = this->WeldCoincidentPoints;
+  options.WeldTolerance = this->WeldTolerance;
+  options.Orient = this->ConsistentOrientation;
+  options.NormalSeams = this->NormalSeamFeatures;
+  options.DetectFeatures = this->FeatureEdgeDetection;
+  options.FeatureAngleDegrees = this->FeatureAngle;
+  const std::array<double, 8> settings{ { this->FeatureLines ? 1.0 : 0.0,
+    options.DetectFeatures ? 1.0 : 0.0, options.FeatureAngleDegrees, options.Weld ? 1.0 : 0.0,
+    options.WeldTolerance, options.Orient ? 1.0 : 0.0, options.NormalSeams ? 1.0 : 0.0, 0.0 } };
+  const bool rebuilt = !internal.Surface || internal.CachedInput != input ||
+    internal.CachedInputTime != input->GetMTime() || !internal.HaveSettings ||
+    internal.CachedSettings != settings;
+  if (rebuilt)
   {
-    if (!internal.Rebuild(
-          input, this->FeatureLines, this->FeatureEdgeDetection, this->FeatureAngle))
+    internal.HaveSettings = false;
+    const std::string error = internal.Rebuild(input, this->FeatureLines, options);
+    if (!error.empty())
     {
-      internal.Mesh.reset();
-      vtkErrorMacro("Input cells refer to points that do not exist.");
+      vtkErrorMacro(<< error);
       return 0;
     }
+    internal.CachedSettings = settings;
+    internal.HaveSettings = internal.Surface != nullptr;
   }
   if (internal.NonFinitePoints > 0)
   {
@@ -461,6 +465,14 @@ int vtkSilhouetteSmoothingFilter::RequestData(
                                << " points with NaN or infinite coordinates (the first is point "
                                << internal.FirstNonFinitePoint << ").");
     return 0;
+  }
+  const silsmooth::SurfaceStatistics& statistics = internal.Surface->statistics();
+  if (rebuilt && statistics.InconsistentEdgeCount > 0)
+  {
+    vtkWarningMacro(<< statistics.InconsistentEdgeCount
+                    << " edges join triangles that cannot be oriented consistently (a "
+                       "non-orientable surface, such as a Moebius strip): shading normals "
+                       "and visibility are unreliable next to them.");
   }
   this->UpdateProgress(0.2);
 
@@ -481,8 +493,10 @@ int vtkSilhouetteSmoothingFilter::RequestData(
         body(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
       });
     };
+  const silsmooth::PreparedMesh& mesh = internal.Surface->prepared();
   const silsmooth::SmoothingResult result =
-    silsmooth::smoothSilhouettes(*internal.Mesh, view.Geometry, parameters, smpFor);
+    silsmooth::smoothSilhouettes(mesh, view.Geometry, parameters, smpFor);
+  const silsmooth::SurfaceFrame frame = internal.Surface->assemble(result);
   this->UpdateProgress(0.6);
   if (this->GetAbortExecute())
   {
@@ -490,10 +504,12 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   }
 
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  output->SetPoints(BuildPoints(input, *internal.Mesh, result));
-  BuildPointData(input->GetPointData(), output->GetPointData(), numPoints, *internal.Mesh, result);
+  output->SetPoints(BuildPoints(
+    input, OutputPointType(input, this->OutputPointsPrecision), *internal.Surface, result, frame));
+  BuildPointData(
+    input->GetPointData(), output->GetPointData(), numPoints, *internal.Surface, result, frame);
   this->UpdateProgress(0.8);
-  BuildCells(input, output, internal.TriangleCell, *internal.Mesh, result);
+  BuildCells(input, output, internal.TriangleCell, frame);
   if (internal.TooSmallPolygons > 0)
   {
     vtkWarningMacro(<< internal.TooSmallPolygons
@@ -502,24 +518,27 @@ int vtkSilhouetteSmoothingFilter::RequestData(
 
   vtkFieldData* fd = output->GetFieldData();
   fd->PassData(input->GetFieldData());
-  const vtkIdType inputTriangles = static_cast<vtkIdType>(internal.Mesh->triangles().size());
+  const vtkIdType inputTriangles = static_cast<vtkIdType>(mesh.triangles().size());
   const vtkIdType remeshedTriangles = static_cast<vtkIdType>(result.RemeshedTriangles.size());
   const vtkIdType newTriangles = static_cast<vtkIdType>(result.newTriangleCount());
   AddCount(fd, "SilhouetteTriangleCount", static_cast<vtkIdType>(result.SilhouetteTriangleCount));
   AddCount(
-    fd, "FeatureTriangleCount", static_cast<vtkIdType>(internal.Mesh->featureTriangles().size()));
+    fd, "FeatureTriangleCount", static_cast<vtkIdType>(mesh.featureTriangles().size()));
   AddCount(
-    fd, "FeatureEdgeCount", static_cast<vtkIdType>(internal.Mesh->features().edges().size()));
+    fd, "FeatureEdgeCount", static_cast<vtkIdType>(mesh.features().edges().size()));
   AddCount(fd, "SplitPointCount",
-    static_cast<vtkIdType>(internal.Mesh->points().size() - internal.Mesh->inputPointCount()));
+    static_cast<vtkIdType>(internal.Surface->outputPointCount() - internal.Surface->inputPointCount()));
+  AddCount(fd, "WeldedPointCount", static_cast<vtkIdType>(statistics.WeldedPointCount));
+  AddCount(fd, "ReversedTriangleCount", static_cast<vtkIdType>(statistics.ReversedTriangleCount));
+  AddCount(fd, "NormalSeamEdgeCount", static_cast<vtkIdType>(statistics.NormalSeamEdgeCount));
   AddCount(fd, "NewTriangleCount", newTriangles);
-  AddCount(fd, "NewPointCount", static_cast<vtkIdType>(result.NewPoints.size()));
+  AddCount(fd, "NewPointCount", static_cast<vtkIdType>(frame.Added.size()));
   AddCount(fd, "ConcaveSegmentCount", static_cast<vtkIdType>(result.ConcaveSegmentCount));
   AddCount(fd, "PerturbedPointCount", static_cast<vtkIdType>(result.MovedPoints.size()));
   AddCount(fd, "InputTriangleCount", inputTriangles);
   AddCount(fd, "OutputTriangleCount", inputTriangles - remeshedTriangles + newTriangles);
 
-  BuildSilhouetteLines(output, result, lines);
+  BuildSilhouetteLines(output, frame, lines);
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -536,6 +555,12 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "SamplingRule: "
      << (this->SamplingRule == SECOND_DIFFERENCE ? "SecondDifference" : "WangEquation8") << "\n";
+  os << indent << "WeldCoincidentPoints: " << (this->WeldCoincidentPoints ? "On" : "Off") << "\n";
+  os << indent << "WeldTolerance: " << this->WeldTolerance << "\n";
+  os << indent << "ConsistentOrientation: " << (this->ConsistentOrientation ? "On" : "Off")
+     << "\n";
+  os << indent << "NormalSeamFeatures: " << (this->NormalSeamFeatures ? "On" : "Off") << "\n";
+  os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "VisibilityMethod: "
      << (this->VisibilityMethod == HIERARCHICAL ? "Hierarchical" : "PerVertex") << "\n";
 }

@@ -168,6 +168,63 @@ public:
   vtkGetMacro(FeatureAngle, double);
   ///@}
 
+  ///@{
+  /**
+   * Take points at one position as one vertex of the surface, whatever their
+   * ids (asset files give a surface point one mesh point per texture chart,
+   * per hard edge or per triangle corner). Each triangle keeps its own
+   * points: added points are interpolated from the points of the triangle
+   * they are in, so texture seams stay seams (an added point on a seam is
+   * made once per side, at one position). Default on. WeldTolerance 0 (the
+   * default) joins equal coordinates only; d > 0 joins points within d of
+   * each other, transitively.
+   */
+  vtkSetMacro(WeldCoincidentPoints, bool);
+  vtkGetMacro(WeldCoincidentPoints, bool);
+  vtkBooleanMacro(WeldCoincidentPoints, bool);
+  vtkSetClampMacro(WeldTolerance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(WeldTolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Orient the triangles consistently per connected component before
+   * computing normals and visibility: a closed component outward (positive
+   * signed volume), an open one the way its given normals point, else the way
+   * most of its area faces. Given normals pointing into the oriented surface
+   * are reversed. The output's triangles keep the input's own winding.
+   * Triangles that cannot be oriented consistently (a non-orientable
+   * component) keep the orientation spread from the component's first
+   * triangle, with a warning. Default on.
+   */
+  vtkSetMacro(ConsistentOrientation, bool);
+  vtkGetMacro(ConsistentOrientation, bool);
+  vtkBooleanMacro(ConsistentOrientation, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Take as feature edges (creases) the edges where points at one position
+   * carry normals more than 1 degree apart: how OBJ, PLY and glTF files mark
+   * hard edges. Each side then keeps its own given normal. Needs point
+   * normals on the input and WeldCoincidentPoints. Default on.
+   */
+  vtkSetMacro(NormalSeamFeatures, bool);
+  vtkGetMacro(NormalSeamFeatures, bool);
+  vtkBooleanMacro(NormalSeamFeatures, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The type of the output points: vtkAlgorithm::DEFAULT_PRECISION (the
+   * input's, the default), SINGLE_PRECISION or DOUBLE_PRECISION. Added points
+   * are computed in double; storing them in float far from the origin rounds
+   * them visibly.
+   */
+  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
+  vtkGetMacro(OutputPointsPrecision, int);
+  ///@}
+
   enum VisibilityMethods
   {
     PER_VERTEX = 0,  ///< g = N . (E - V) at every vertex (default)
@@ -210,6 +267,11 @@ protected:
   bool FeatureEdgeDetection = false;
   double FeatureAngle = 30.0;
   int VisibilityMethod = PER_VERTEX;
+  bool WeldCoincidentPoints = true;
+  double WeldTolerance = 0.0;
+  bool ConsistentOrientation = true;
+  bool NormalSeamFeatures = true;
+  int OutputPointsPrecision = DEFAULT_PRECISION;
 
 private:
   vtkSilhouetteSmoothingFilter(const vtkSilhouetteSmoothingFilter&) = delete;

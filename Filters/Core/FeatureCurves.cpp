@@ -1,5 +1,6 @@
 #include "FeatureCurves.h"
 
+#include "DisjointSets.h"
 #include "ShadingNormals.h"
 
 #include <glm/geometric.hpp>
@@ -205,41 +206,6 @@ Id FeatureCurves::find(Id a, Id b) const
   return (it != this->Edges.end() && *it == key) ? static_cast<Id>(it - this->Edges.begin()) : -1;
 }
 
-namespace
-{
-
-class DisjointSets
-{
-public:
-  explicit DisjointSets(std::size_t n)
-    : Parent(n)
-  {
-    std::iota(this->Parent.begin(), this->Parent.end(), std::size_t{ 0 });
-  }
-  std::size_t find(std::size_t x)
-  {
-    while (this->Parent[x] != x)
-    {
-      this->Parent[x] = this->Parent[this->Parent[x]];
-      x = this->Parent[x];
-    }
-    return x;
-  }
-  void unite(std::size_t a, std::size_t b)
-  {
-    a = this->find(a);
-    b = this->find(b);
-    if (a != b)
-    {
-      this->Parent[std::max(a, b)] = std::min(a, b); // the lowest corner is the root
-    }
-  }
-
-private:
-  std::vector<std::size_t> Parent;
-};
-
-} // namespace
 
 FeatureSplit splitAtFeatureEdges(
   std::size_t pointCount, const std::vector<Triangle>& triangles, const FeatureCurves& features)

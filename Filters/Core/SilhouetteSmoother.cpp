@@ -26,7 +26,8 @@ void serialFor(std::size_t count, const std::function<void(std::size_t, std::siz
 }
 
 PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
-  const std::vector<glm::dvec3>& normals, std::vector<FeatureEdge> featureEdges)
+  const std::vector<glm::dvec3>& normals, std::vector<FeatureEdge> featureEdges,
+  const std::vector<glm::dvec3>& cornerNormals)
   : Points(std::move(points))
   , Triangles(std::move(triangles))
   , InputPointCount(this->Points.size())
@@ -144,7 +145,12 @@ PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle>
   // and points with no usable given normal get the angle-weighted one.
   std::vector<glm::dvec3> computed;
   bool needComputed = normals.size() != this->InputPointCount || !this->Features.empty();
-  if (normals.size() == this->InputPointCount)
+  if (cornerNormals.size() == this->Triangles.size() * 3 && !this->Triangles.empty())
+  {
+    this->Normals = this->normalsFromCorners(cornerNormals);
+    needComputed = true;
+  }
+  else if (normals.size() == this->InputPointCount)
   {
     this->Normals.resize(this->Points.size(), glm::dvec3(0.0));
     for (std::size_t i = 0; i < normals.size(); ++i)
@@ -172,6 +178,69 @@ PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle>
       }
     }
   }
+}
+
+std::vector<glm::dvec3> PreparedMesh::normalsFromCorners(
+  const std::vector<glm::dvec3>& cornerNormals) const
+{
+  const std::size_t count = this->Points.size();
+  std::vector<glm::dvec3> first(count, glm::dvec3(0.0));
+  std::vector<glm::dvec3> sum(count, glm::dvec3(0.0));
+  std::vector<unsigned char> mixed(count, 0);
+  for (std::size_t t = 0; t < this->Triangles.size(); ++t)
+  {
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      const std::size_t p = static_cast<std::size_t>(this->Triangles[t][k]);
+      const glm::dvec3 n = safeNormalize(cornerNormals[t * 3 + k]);
+      if (n == glm::dvec3(0.0))
+      {
+        continue;
+      }
+      if (first[p] == glm::dvec3(0.0))
+      {
+        first[p] = n;
+        sum[p] = n;
+      }
+      else if (n != first[p])
+      {
+        mixed[p] = 1;
+        sum[p] += n;
+      }
+    }
+  }
+  std::vector<glm::dvec3> result(count);
+  for (std::size_t p = 0; p < count; ++p)
+  {
+    result[p] = mixed[p] ? safeNormalize(sum[p]) : first[p];
+  }
+  if (this->Features.empty())
+  {
+    return result;
+  }
+  // A feature point's groups keep their corners' normals only where those
+  // tell the sides of the crease apart.
+  const double cosLimit = std::cos(NormalSeamAngleDegrees * 3.14159265358979323846 / 180.0);
+  std::vector<unsigned char> distinct(this->InputPointCount, 0);
+  for (std::size_t p = this->InputPointCount; p < count; ++p)
+  {
+    const std::size_t s = static_cast<std::size_t>(this->sourcePoint(static_cast<Id>(p)));
+    const glm::dvec3& a = result[s];
+    const glm::dvec3& b = result[p];
+    if (a == glm::dvec3(0.0) || b == glm::dvec3(0.0) || glm::dot(a, b) < cosLimit)
+    {
+      distinct[s] = 1;
+    }
+  }
+  for (std::size_t p = 0; p < count; ++p)
+  {
+    const std::size_t s = static_cast<std::size_t>(this->sourcePoint(static_cast<Id>(p)));
+    if (this->onFeature(static_cast<Id>(p)) && !distinct[s])
+    {
+      result[p] = glm::dvec3(0.0);
+    }
+  }
+  return result;
 }
 
 std::vector<double> vertexVisibility(

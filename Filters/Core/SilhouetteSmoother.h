@@ -12,6 +12,7 @@
 #include "AdaptiveSampling.h"
 #include "FeatureCurves.h"
 #include "MeshTopology.h"
+#include "SurfaceWelding.h"
 #include "ViewGeometry.h"
 #include "VisibilityHierarchy.h"
 
@@ -43,8 +44,18 @@ public:
   /// by the angle-weighted one. Points on feature edges always get the
   /// angle-weighted normal of their smooth group (one given normal cannot
   /// serve two sides of a crease). `featureEdges` are pairs of point ids.
+  ///
+  /// `cornerNormals`, when not empty, holds a normal per triangle corner
+  /// (3t + k) instead of per point, for meshes whose triangles meet at one
+  /// point but came with a normal each (welded asset files); `normals` is then
+  /// ignored. A point's normal is its corners' normal (the normalised sum of
+  /// their distinct usable normals). On a feature point the smooth groups keep
+  /// their own corners' normals when those differ between the groups by more
+  /// than NormalSeamAngleDegrees (the input told the sides apart, as at a
+  /// normal seam); otherwise they get the angle-weighted normal as above.
   PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
-    const std::vector<glm::dvec3>& normals = {}, std::vector<FeatureEdge> featureEdges = {});
+    const std::vector<glm::dvec3>& normals = {}, std::vector<FeatureEdge> featureEdges = {},
+    const std::vector<glm::dvec3>& cornerNormals = {});
 
   /// Input points, then the copies made by splitting feature points.
   const std::vector<glm::dvec3>& points() const { return this->Points; }
@@ -88,6 +99,8 @@ public:
   const VisibilityHierarchy& visibilityHierarchy() const;
 
 private:
+  std::vector<glm::dvec3> normalsFromCorners(const std::vector<glm::dvec3>& cornerNormals) const;
+
   std::vector<glm::dvec3> Points;
   std::vector<Triangle> Triangles;
   std::vector<glm::dvec3> Normals;

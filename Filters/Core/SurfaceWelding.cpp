@@ -1,0 +1,210 @@
+#include "SurfaceWelding.h"
+
+#include "DisjointSets.h"
+#include "ShadingNormals.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numeric>
+#include <tuple>
+#include <unordered_map>
+
+namespace silsmooth
+{
+
+namespace
+{
+
+bool isFinite(const glm::dvec3& p)
+{
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+std::vector<Id> weldExactly(const std::vector<glm::dvec3>& points)
+{
+  std::vector<Id> order(points.size());
+  std::iota(order.begin(), order.end(), Id{ 0 });
+  auto key = [&](Id i) {
+    const glm::dvec3& p = points[static_cast<std::size_t>(i)];
+    return std::make_tuple(p.x, p.y, p.z, i);
+  };
+  std::sort(order.begin(), order.end(), [&](Id a, Id b) { return key(a) < key(b); });
+  std::vector<Id> vertex(points.size());
+  std::iota(vertex.begin(), vertex.end(), Id{ 0 });
+  // In sorted order equal positions are adjacent, lowest id first.
+  for (std::size_t k = 1; k < order.size(); ++k)
+  {
+    const glm::dvec3& a = points[static_cast<std::size_t>(order[k - 1])];
+    const glm::dvec3& b = points[static_cast<std::size_t>(order[k])];
+    if (isFinite(b) && a == b)
+    {
+      vertex[static_cast<std::size_t>(order[k])] = vertex[static_cast<std::size_t>(order[k - 1])];
+    }
+  }
+  return vertex;
+}
+
+// Points within `tolerance`: a hash grid of cells `tolerance` wide, each point
+// compared with the points of its own and the 26 neighbouring cells.
+std::vector<Id> weldWithin(const std::vector<glm::dvec3>& points, double tolerance)
+{
+  struct CellKey
+  {
+    long long x, y, z;
+    bool operator==(const CellKey& o) const { return x == o.x && y == o.y && z == o.z; }
+  };
+  struct CellHash
+  {
+    std::size_t operator()(const CellKey& k) const
+    {
+      return static_cast<std::size_t>(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
+    }
+  };
+  auto cellOf = [&](const glm::dvec3& p, CellKey& key) {
+    const glm::dvec3 c = glm::floor(p / tolerance);
+    // Coordinates too large for the grid at this tolerance are not welded.
+    const double limit = 4.0e18;
+    if (!(std::abs(c.x) < limit && std::abs(c.y) < limit && std::abs(c.z) < limit))
+    {
+      return false;
+    }
+    key = { static_cast<long long>(c.x), static_cast<long long>(c.y), static_cast<long long>(c.z) };
+    return true;
+  };
+  std::unordered_map<CellKey, std::vector<Id>, CellHash> grid;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    CellKey key{};
+    if (isFinite(points[i]) && cellOf(points[i], key))
+    {
+      grid[key].push_back(static_cast<Id>(i));
+    }
+  }
+  DisjointSets sets(points.size());
+  const double limit2 = tolerance * tolerance;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    CellKey key{};
+    if (!isFinite(points[i]) || !cellOf(points[i], key))
+    {
+      continue;
+    }
+    for (long long dx = -1; dx <= 1; ++dx)
+    {
+      for (long long dy = -1; dy <= 1; ++dy)
+      {
+        for (long long dz = -1; dz <= 1; ++dz)
+        {
+          const auto it = grid.find({ key.x + dx, key.y + dy, key.z + dz });
+          if (it == grid.end())
+          {
+            continue;
+          }
+          for (const Id j : it->second)
+          {
+            const glm::dvec3 d = points[static_cast<std::size_t>(j)] - points[i];
+            if (static_cast<std::size_t>(j) > i && glm::dot(d, d) <= limit2)
+            {
+              sets.unite(i, static_cast<std::size_t>(j));
+            }
+          }
+        }
+      }
+    }
+  }
+  std::vector<Id> vertex(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    vertex[i] = static_cast<Id>(sets.find(i)); // the lowest member
+  }
+  return vertex;
+}
+
+} // namespace
+
+std::vector<Id> weldCoincidentPoints(const std::vector<glm::dvec3>& points, double tolerance)
+{
+  return tolerance > 0.0 && std::isfinite(tolerance) ? weldWithin(points, tolerance)
+                                                     : weldExactly(points);
+}
+
+std::vector<Triangle> weldTriangles(const std::vector<Triangle>& triangles, const std::vector<Id>& vertex)
+{
+  std::vector<Triangle> welded(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      welded[t][k] = vertex[static_cast<std::size_t>(triangles[t][k])];
+    }
+  }
+  return welded;
+}
+
+std::vector<FeatureEdge> normalSeamEdges(const std::vector<Triangle>& triangles,
+  const std::vector<Id>& vertex, const std::vector<glm::dvec3>& normals, double angleDegrees)
+{
+  std::vector<FeatureEdge> seams;
+  if (normals.size() != vertex.size())
+  {
+    return seams;
+  }
+  const std::vector<Triangle> welded = weldTriangles(triangles, vertex);
+  const EdgeTable table(welded);
+  // The two sides of every edge (triangle, side); more than two: not a seam.
+  std::vector<std::array<Id, 2>> sides(table.edgeCount(), { { -1, -1 } });
+  std::vector<unsigned char> count(table.edgeCount(), 0);
+  for (std::size_t t = 0; t < welded.size(); ++t)
+  {
+    if (hasRepeatedCorner(welded[t]))
+    {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::size_t e = static_cast<std::size_t>(table.sideEdge(static_cast<Id>(t), k));
+      if (count[e] < 2)
+      {
+        sides[e][count[e]] = static_cast<Id>(t) * 3 + k;
+      }
+      count[e] = static_cast<unsigned char>(std::min(3, count[e] + 1));
+    }
+  }
+  const double cosLimit = std::cos(angleDegrees * 3.14159265358979323846 / 180.0);
+  // The input point of triangle t at surface vertex v.
+  auto pointAt = [&](Id t, Id v) {
+    const Triangle& w = welded[static_cast<std::size_t>(t)];
+    const int k = w[0] == v ? 0 : (w[1] == v ? 1 : 2);
+    return triangles[static_cast<std::size_t>(t)][static_cast<std::size_t>(k)];
+  };
+  auto differ = [&](Id p, Id q) {
+    if (p == q)
+    {
+      return false;
+    }
+    const glm::dvec3 a = safeNormalize(normals[static_cast<std::size_t>(p)]);
+    const glm::dvec3 b = safeNormalize(normals[static_cast<std::size_t>(q)]);
+    return a != glm::dvec3(0.0) && b != glm::dvec3(0.0) && glm::dot(a, b) < cosLimit;
+  };
+  for (std::size_t e = 0; e < table.edgeCount(); ++e)
+  {
+    if (count[e] != 2)
+    {
+      continue;
+    }
+    const Edge& edge = table.edge(static_cast<Id>(e));
+    const Id t0 = sides[e][0] / 3;
+    const Id t1 = sides[e][1] / 3;
+    if (differ(pointAt(t0, edge.low), pointAt(t1, edge.low)) ||
+      differ(pointAt(t0, edge.high), pointAt(t1, edge.high)))
+    {
+      seams.emplace_back(edge.low, edge.high);
+    }
+  }
+  return seams; // ascending: the edge table is sorted
+}
+
+} // namespace silsmooth

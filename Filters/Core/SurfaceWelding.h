@@ -1,0 +1,44 @@
+// The surface behind a mesh as asset files store it. Exporters give a point
+// of the surface one mesh point per texture chart, per hard edge, or per
+// triangle corner (a triangle soup), so point ids say little about which
+// triangles meet. Here points at one position are one surface vertex, and
+// points at one position whose normals differ mark a crease (the asset's
+// hard edge). View-independent: built once per input.
+#pragma once
+
+#include "FeatureCurves.h"
+#include "MeshTopology.h"
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace silsmooth
+{
+
+/// Normals at one position that differ by more than this many degrees make a
+/// normal seam. Files round normals to 4-6 digits (well under 0.01 degrees);
+/// exporters that split normals at hard edges differ there by tens of degrees.
+constexpr double NormalSeamAngleDegrees = 1.0;
+
+/// The surface vertex of every point: the lowest id among the points it is
+/// welded with. Invariant: vertex[vertex[i]] == vertex[i], and vertex[i] <= i.
+/// With tolerance 0, points are welded when their coordinates are equal;
+/// with tolerance d > 0, when they are within distance d of each other,
+/// transitively (a chain of close points is one vertex). Points with
+/// non-finite coordinates are never welded.
+std::vector<Id> weldCoincidentPoints(const std::vector<glm::dvec3>& points, double tolerance = 0.0);
+
+/// The triangles with every corner replaced by its surface vertex.
+std::vector<Triangle> weldTriangles(const std::vector<Triangle>& triangles, const std::vector<Id>& vertex);
+
+/// Normal seams: the edges of the welded triangles (pairs of surface
+/// vertices, lower first, sorted) shared by exactly two triangles of non-zero
+/// extent whose own points at one end of the edge have normals more than
+/// `angleDegrees` apart. `triangles` are the input's (their own point ids),
+/// `normals` one per point. Zero or non-finite normals never make a seam.
+std::vector<FeatureEdge> normalSeamEdges(const std::vector<Triangle>& triangles,
+  const std::vector<Id>& vertex, const std::vector<glm::dvec3>& normals,
+  double angleDegrees = NormalSeamAngleDegrees);
+
+} // namespace silsmooth

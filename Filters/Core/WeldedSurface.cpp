@@ -1,0 +1,425 @@
+#include "WeldedSurface.h"
+
+#include "SurfaceOrientation.h"
+#include "SurfaceWelding.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+namespace silsmooth
+{
+
+WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
+  const std::vector<glm::dvec3>& normals, const std::vector<FeatureEdge>& markedFeatures,
+  const SurfaceOptions& options)
+  : InputPointCount(points.size())
+  , InputTriangles(std::move(triangles))
+{
+  const std::size_t n = this->InputPointCount;
+  std::vector<Id> vertex(n);
+  if (options.Weld)
+  {
+    vertex = weldCoincidentPoints(points, options.WeldTolerance);
+  }
+  else
+  {
+    for (std::size_t i = 0; i < n; ++i)
+    {
+      vertex[i] = static_cast<Id>(i);
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    this->Statistics.WeldedPointCount += vertex[i] != static_cast<Id>(i) ? 1 : 0;
+  }
+  std::vector<Triangle> welded = weldTriangles(this->InputTriangles, vertex);
+
+  // Every corner's own normal, if the input has normals.
+  std::vector<glm::dvec3> cornerNormals;
+  if (normals.size() == n)
+  {
+    cornerNormals.resize(welded.size() * 3);
+    for (std::size_t t = 0; t < welded.size(); ++t)
+    {
+      for (std::size_t k = 0; k < 3; ++k)
+      {
+        cornerNormals[t * 3 + k] = normals[static_cast<std::size_t>(this->InputTriangles[t][k])];
+      }
+    }
+  }
+
+  this->Reversed.assign(welded.size(), 0);
+  std::vector<Id> components;
+  if (options.Orient)
+  {
+    Orientation orientation = orientConsistently(points, welded, cornerNormals);
+    this->Reversed = std::move(orientation.Reversed);
+    components = std::move(orientation.Component);
+    this->Statistics.ReversedTriangleCount = orientation.ReversedCount;
+    this->Statistics.ComponentCount = orientation.ComponentCount;
+    this->Statistics.InconsistentEdgeCount = orientation.InconsistentEdgeCount;
+  }
+  // Prepared corner k of triangle t is input corner cornerOrder(t, k).
+  auto inputCorner = [this](std::size_t t, std::size_t k) -> std::size_t {
+    return this->Reversed[t] && k != 0 ? 3 - k : k;
+  };
+  std::vector<glm::dvec3> preparedCornerNormals(cornerNormals.size());
+  for (std::size_t t = 0; t < welded.size(); ++t)
+  {
+    welded[t] = oriented(welded[t], this->Reversed[t] != 0);
+    if (!cornerNormals.empty())
+    {
+      for (std::size_t k = 0; k < 3; ++k)
+      {
+        preparedCornerNormals[t * 3 + k] = cornerNormals[t * 3 + inputCorner(t, k)];
+      }
+    }
+  }
+  bool normalsReversed = false;
+  if (options.Orient && !cornerNormals.empty() && !components.empty())
+  {
+    // A given normal is a direction to shade with, its sign the exporter's
+    // choice: where a component's given normals point into its oriented
+    // surface on the whole (summed against the area normals), reverse them
+    // all. Decided per component, not per point: a normal nearly in the
+    // plane of its triangles says little about the side.
+    std::vector<double> agreement(this->Statistics.ComponentCount, 0.0);
+    for (std::size_t t = 0; t < welded.size(); ++t)
+    {
+      if (components[t] < 0)
+      {
+        continue;
+      }
+      const glm::dvec3& a = points[static_cast<std::size_t>(welded[t][0])];
+      const glm::dvec3 areaNormal = glm::cross(points[static_cast<std::size_t>(welded[t][1])] - a,
+        points[static_cast<std::size_t>(welded[t][2])] - a);
+      for (std::size_t k = 0; k < 3; ++k)
+      {
+        const glm::dvec3& given = preparedCornerNormals[t * 3 + k];
+        if (std::isfinite(given.x) && std::isfinite(given.y) && std::isfinite(given.z))
+        {
+          agreement[static_cast<std::size_t>(components[t])] += glm::dot(areaNormal, given);
+        }
+      }
+    }
+    for (std::size_t t = 0; t < welded.size(); ++t)
+    {
+      if (components[t] >= 0 && agreement[static_cast<std::size_t>(components[t])] < 0.0)
+      {
+        for (std::size_t k = 0; k < 3; ++k)
+        {
+          preparedCornerNormals[t * 3 + k] = -preparedCornerNormals[t * 3 + k];
+        }
+        normalsReversed = true;
+      }
+    }
+  }
+
+  std::vector<FeatureEdge> features;
+  for (const FeatureEdge& f : markedFeatures)
+  {
+    features.emplace_back(
+      vertex[static_cast<std::size_t>(f.first)], vertex[static_cast<std::size_t>(f.second)]);
+  }
+  if (options.NormalSeams && normals.size() == n)
+  {
+    const std::vector<FeatureEdge> seams = normalSeamEdges(this->InputTriangles, vertex, normals);
+    this->Statistics.NormalSeamEdgeCount = seams.size();
+    features.insert(features.end(), seams.begin(), seams.end());
+  }
+  if (options.DetectFeatures)
+  {
+    const std::vector<FeatureEdge> sharp =
+      featureEdgesByAngle(points, welded, options.FeatureAngleDegrees);
+    features.insert(features.end(), sharp.begin(), sharp.end());
+  }
+  const bool cornersMatter = !cornerNormals.empty() &&
+    (this->Statistics.WeldedPointCount > 0 || this->Statistics.ReversedTriangleCount > 0 ||
+      normalsReversed);
+  if (cornersMatter)
+  {
+    this->Prepared = std::make_unique<PreparedMesh>(
+      std::move(points), welded, std::vector<glm::dvec3>{}, std::move(features), preparedCornerNormals);
+  }
+  else
+  {
+    // Nothing welded or reversed: the per-point normals are the corners'.
+    this->Prepared = std::make_unique<PreparedMesh>(std::move(points), welded, normals, std::move(features));
+  }
+
+  // Output points: each input point stands for the prepared point of its
+  // first corner; a corner that falls in another prepared point (another
+  // smooth group) gets a copy of its input point, one per such pair.
+  const std::vector<Triangle>& prepared = this->Prepared->triangles();
+  this->OutputPrepared.resize(n);
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    this->OutputPrepared[i] = vertex[i];
+  }
+  std::vector<unsigned char> claimed(n, 0);
+  this->CornerOutput.assign(prepared.size() * 3, -1);
+  std::map<std::pair<Id, Id>, Id> copies; // (prepared point, input point) -> output id
+  std::vector<std::pair<std::size_t, std::pair<Id, Id>>> pending;
+  for (std::size_t t = 0; t < prepared.size(); ++t)
+  {
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      const std::size_t c = inputCorner(t, k);
+      const Id own = this->InputTriangles[t][c];
+      const Id p = prepared[t][k];
+      if (!claimed[static_cast<std::size_t>(own)])
+      {
+        claimed[static_cast<std::size_t>(own)] = 1;
+        this->OutputPrepared[static_cast<std::size_t>(own)] = p;
+      }
+      if (this->OutputPrepared[static_cast<std::size_t>(own)] == p)
+      {
+        this->CornerOutput[t * 3 + c] = own;
+      }
+      else
+      {
+        copies.emplace(std::make_pair(p, own), -1);
+        pending.push_back({ t * 3 + c, { p, own } });
+      }
+    }
+  }
+  // Copies in prepared order (then input order): without welding that is the
+  // prepared mesh's own order of feature copies.
+  for (auto& copy : copies)
+  {
+    copy.second = static_cast<Id>(n + this->CopySources.size());
+    this->CopySources.push_back(copy.first.second);
+    this->OutputPrepared.push_back(copy.first.first);
+  }
+  for (const auto& corner : pending)
+  {
+    this->CornerOutput[corner.first] = copies.at(corner.second);
+  }
+
+  const std::size_t preparedCount = this->Prepared->points().size();
+  this->PreparedHome.assign(preparedCount, -1);
+  std::vector<Id> degree(preparedCount + 1, 0);
+  for (std::size_t o = 0; o < this->OutputPrepared.size(); ++o)
+  {
+    ++degree[static_cast<std::size_t>(this->OutputPrepared[o]) + 1];
+  }
+  for (std::size_t p = 1; p < degree.size(); ++p)
+  {
+    degree[p] += degree[p - 1];
+  }
+  this->OutputsOffsets = degree;
+  this->OutputsOf.resize(this->OutputPrepared.size());
+  for (std::size_t o = 0; o < this->OutputPrepared.size(); ++o)
+  {
+    const std::size_t p = static_cast<std::size_t>(this->OutputPrepared[o]);
+    this->OutputsOf[static_cast<std::size_t>(degree[p]++)] = static_cast<Id>(o);
+  }
+  for (std::size_t p = 0; p < preparedCount; ++p)
+  {
+    // Prefer the point itself (no welding: the identity).
+    const Id begin = this->OutputsOffsets[p];
+    const Id end = this->OutputsOffsets[p + 1];
+    for (Id k = begin; k < end; ++k)
+    {
+      if (this->OutputsOf[static_cast<std::size_t>(k)] == static_cast<Id>(p) ||
+        this->PreparedHome[p] < 0)
+      {
+        this->PreparedHome[p] = this->OutputsOf[static_cast<std::size_t>(k)];
+      }
+    }
+    if (this->PreparedHome[p] < 0)
+    {
+      this->PreparedHome[p] = p < n ? static_cast<Id>(p)
+                                    : this->Prepared->sourcePoint(static_cast<Id>(p));
+    }
+  }
+}
+
+Id WeldedSurface::outputOfPreparedCorner(std::size_t t, Id preparedPoint) const
+{
+  const Triangle& tri = this->Prepared->triangles()[t];
+  for (std::size_t k = 0; k < 3; ++k)
+  {
+    if (tri[k] == preparedPoint)
+    {
+      const std::size_t c = this->Reversed[t] && k != 0 ? 3 - k : k;
+      return this->CornerOutput[t * 3 + c];
+    }
+  }
+  return this->PreparedHome[static_cast<std::size_t>(preparedPoint)];
+}
+
+SurfaceFrame WeldedSurface::assemble(const SmoothingResult& result) const
+{
+  SurfaceFrame frame;
+  const std::vector<Triangle>& prepared = this->Prepared->triangles();
+  const Id preparedCount = static_cast<Id>(this->Prepared->points().size());
+  const Id outputBase = static_cast<Id>(this->outputPointCount());
+  // Added points, keyed by (new point, the input points it comes from here).
+  struct Key
+  {
+    std::size_t NewPoint;
+    std::array<Id, 3> Sources;
+    bool operator==(const Key& o) const { return NewPoint == o.NewPoint && Sources == o.Sources; }
+  };
+  struct KeyHash
+  {
+    std::size_t operator()(const Key& k) const
+    {
+      std::size_t h = k.NewPoint * 0x9E3779B97F4A7C15ULL;
+      for (const Id s : k.Sources)
+      {
+        h = (h ^ static_cast<std::size_t>(s)) * 0x100000001B3ULL;
+      }
+      return h;
+    }
+  };
+  std::unordered_map<Key, Id, KeyHash> added;
+  std::vector<Id> firstCopy(result.NewPoints.size(), -1);
+  auto outputOf = [&](std::size_t t, Id v) -> Id {
+    if (v < preparedCount)
+    {
+      return this->outputOfPreparedCorner(t, v);
+    }
+    const std::size_t np = static_cast<std::size_t>(v - preparedCount);
+    Key key{ np, {} };
+    const NewPoint& point = result.NewPoints[np];
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      key.Sources[k] = this->outputSource(this->outputOfPreparedCorner(t, point.Sources[k]));
+    }
+    const auto inserted =
+      added.emplace(key, outputBase + static_cast<Id>(frame.Added.size()));
+    if (inserted.second)
+    {
+      frame.Added.push_back({ np, key.Sources });
+      if (firstCopy[np] < 0)
+      {
+        firstCopy[np] = inserted.first->second;
+      }
+    }
+    return inserted.first->second;
+  };
+
+  std::size_t next = 0;
+  const std::size_t outTriangles =
+    prepared.size() - result.RemeshedTriangles.size() + result.Replacements.size();
+  frame.Triangles.reserve(outTriangles);
+  frame.SourceTriangle.reserve(outTriangles);
+  frame.Kind.reserve(outTriangles);
+  for (std::size_t t = 0; t < prepared.size(); ++t)
+  {
+    if (next < result.RemeshedTriangles.size() &&
+      result.RemeshedTriangles[next] == static_cast<Id>(t))
+    {
+      const auto kind = static_cast<unsigned char>(result.RemeshKinds[next]);
+      for (std::size_t r = result.ReplacementOffsets[next]; r < result.ReplacementOffsets[next + 1];
+           ++r)
+      {
+        Triangle out;
+        for (std::size_t k = 0; k < 3; ++k)
+        {
+          out[k] = outputOf(t, result.Replacements[r][k]);
+        }
+        frame.Triangles.push_back(oriented(out, this->Reversed[t] != 0));
+        frame.SourceTriangle.push_back(static_cast<Id>(t));
+        frame.Kind.push_back(kind);
+      }
+      ++next;
+      continue;
+    }
+    frame.Triangles.push_back({ { this->CornerOutput[t * 3], this->CornerOutput[t * 3 + 1],
+      this->CornerOutput[t * 3 + 2] } });
+    frame.SourceTriangle.push_back(static_cast<Id>(t));
+    frame.Kind.push_back(0);
+  }
+
+  // Silhouette polylines: any copy of a point will do (same position).
+  frame.Polylines.reserve(result.Polylines.size());
+  for (const std::vector<Id>& chain : result.Polylines)
+  {
+    std::vector<Id> out;
+    out.reserve(chain.size());
+    for (const Id v : chain)
+    {
+      if (v < preparedCount)
+      {
+        out.push_back(this->PreparedHome[static_cast<std::size_t>(v)]);
+        continue;
+      }
+      const std::size_t np = static_cast<std::size_t>(v - preparedCount);
+      if (firstCopy[np] < 0)
+      {
+        // Not used by a triangle (cannot happen for a sampled segment); keep
+        // the point anyway, from its prepared sources.
+        Key key{ np, {} };
+        for (std::size_t k = 0; k < 3; ++k)
+        {
+          key.Sources[k] = this->outputSource(
+            this->PreparedHome[static_cast<std::size_t>(result.NewPoints[np].Sources[k])]);
+        }
+        firstCopy[np] = outputBase + static_cast<Id>(frame.Added.size());
+        added.emplace(key, firstCopy[np]);
+        frame.Added.push_back({ np, key.Sources });
+      }
+      out.push_back(firstCopy[np]);
+    }
+    frame.Polylines.push_back(std::move(out));
+  }
+
+  // Added points in the order of the new points they copy (then of first
+  // use): without seams that is the SmoothingResult's own order.
+  std::vector<std::size_t> order(frame.Added.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    order[i] = i;
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return frame.Added[a].NewPoint < frame.Added[b].NewPoint;
+  });
+  std::vector<Id> renumber(order.size());
+  std::vector<SurfaceFrame::AddedPoint> sorted(order.size());
+  for (std::size_t i = 0; i < order.size(); ++i)
+  {
+    renumber[order[i]] = outputBase + static_cast<Id>(i);
+    sorted[i] = frame.Added[order[i]];
+  }
+  frame.Added = std::move(sorted);
+  auto renumbered = [&](Id v) {
+    return v < outputBase ? v : renumber[static_cast<std::size_t>(v - outputBase)];
+  };
+  for (Triangle& tri : frame.Triangles)
+  {
+    for (Id& v : tri)
+    {
+      v = renumbered(v);
+    }
+  }
+  for (std::vector<Id>& chain : frame.Polylines)
+  {
+    for (Id& v : chain)
+    {
+      v = renumbered(v);
+    }
+  }
+
+  for (const auto& moved : result.MovedPoints)
+  {
+    const std::size_t p = static_cast<std::size_t>(moved.first);
+    for (Id k = this->OutputsOffsets[p]; k < this->OutputsOffsets[p + 1]; ++k)
+    {
+      frame.Moved.emplace_back(this->OutputsOf[static_cast<std::size_t>(k)], moved.second);
+    }
+  }
+  std::sort(frame.Moved.begin(), frame.Moved.end(),
+    [](const std::pair<Id, glm::dvec3>& a, const std::pair<Id, glm::dvec3>& b) {
+      return a.first < b.first;
+    });
+  return frame;
+}
+
+} // namespace silsmooth

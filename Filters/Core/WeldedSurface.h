@@ -1,0 +1,138 @@
+// A mesh as asset files store it, prepared for smoothing on the surface it
+// stands for, and each frame's result put back onto the mesh's own points.
+//
+// Preparation (once per input):
+//   1. points at one position are one surface vertex (SurfaceWelding.h);
+//   2. the triangles over surface vertices are oriented consistently per
+//      component (SurfaceOrientation.h), and given normals that point
+//      against the oriented surface at their point are reversed;
+//   3. normal seams (points at one position with different normals) are
+//      feature edges, besides the marked and detected ones;
+//   4. the PreparedMesh is built on those triangles, with every corner's own
+//      normal.
+//
+// Output (each frame), the invariants the VTK filters rely on:
+//   - output points are the input's points with their ids, then copies of
+//     input points (a point whose corners fall in more than one smooth group
+//     of the prepared mesh: one copy per extra group), then the added points;
+//   - every kept triangle is the input triangle as it was (its own point
+//     ids, its own winding); a re-meshed triangle's replacements use its own
+//     points at its corners and wind as the input triangle did;
+//   - an added point is made once per distinct set of input points it is
+//     interpolated from in the triangles that use it: across an edge whose
+//     two triangles share point ids it is one point (no crack), across a
+//     texture seam it is one point per side, at the same position (the seam
+//     stays a seam, each side with its own texture coordinates);
+//   - with nothing to weld, orient or split, the output is point for point
+//     and triangle for triangle the PreparedMesh's own (assembleTriangles).
+#pragma once
+
+#include "SilhouetteSmoother.h"
+
+#include <array>
+#include <cstddef>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace silsmooth
+{
+
+struct SurfaceOptions
+{
+  /// Join points at one position (step 1). Off: point ids alone say which
+  /// triangles meet, as before.
+  bool Weld = true;
+  /// 0: equal coordinates only; d > 0: points within d (transitively).
+  double WeldTolerance = 0.0;
+  /// Orient consistently (step 2).
+  bool Orient = true;
+  /// Normal seams are feature edges (step 3).
+  bool NormalSeams = true;
+  /// Dihedral-angle feature detection on the welded, oriented triangles.
+  bool DetectFeatures = false;
+  double FeatureAngleDegrees = 30.0;
+};
+
+/// What preparation found, for the filters' field data and warnings.
+struct SurfaceStatistics
+{
+  std::size_t WeldedPointCount = 0;  ///< points joined to a lower point
+  std::size_t ReversedTriangleCount = 0;
+  std::size_t ComponentCount = 0;
+  std::size_t InconsistentEdgeCount = 0; ///< non-orientable edges left
+  std::size_t NormalSeamEdgeCount = 0;
+};
+
+/// One frame's output, in output point ids (see the header comment).
+struct SurfaceFrame
+{
+  /// Added point i (output id outputPointCount() + i) is result.NewPoints[
+  /// Added[i].NewPoint], interpolated from the input points Added[i].Sources
+  /// with that point's weights.
+  struct AddedPoint
+  {
+    std::size_t NewPoint = 0;
+    std::array<Id, 3> Sources{ { 0, 0, 0 } };
+  };
+  std::vector<AddedPoint> Added;
+  /// All output triangles in input order, re-meshed ones replaced in place;
+  /// per triangle the input triangle it came from and 0 (kept) or its
+  /// RemeshKind.
+  std::vector<Triangle> Triangles;
+  std::vector<Id> SourceTriangle;
+  std::vector<unsigned char> Kind;
+  /// The silhouette polylines, in output ids.
+  std::vector<std::vector<Id>> Polylines;
+  /// Output points (input points and copies) moved by the perturbation.
+  std::vector<std::pair<Id, glm::dvec3>> Moved;
+};
+
+class WeldedSurface
+{
+public:
+  /// `normals` one per point or empty; `markedFeatures` pairs of point ids
+  /// (line cells along triangle edges). Points must be finite.
+  WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
+    const std::vector<glm::dvec3>& normals, const std::vector<FeatureEdge>& markedFeatures,
+    const SurfaceOptions& options);
+
+  const PreparedMesh& prepared() const { return *this->Prepared; }
+  const SurfaceStatistics& statistics() const { return this->Statistics; }
+  std::size_t inputPointCount() const { return this->InputPointCount; }
+  /// Input points plus copies: the output ids before the added points.
+  std::size_t outputPointCount() const { return this->OutputPrepared.size(); }
+  /// The input point that output point o (< outputPointCount()) is or copies.
+  Id outputSource(Id o) const
+  {
+    return static_cast<std::size_t>(o) < this->InputPointCount
+      ? o
+      : this->CopySources[static_cast<std::size_t>(o) - this->InputPointCount];
+  }
+  /// The prepared point whose shading normal output point o takes.
+  Id outputPrepared(Id o) const { return this->OutputPrepared[static_cast<std::size_t>(o)]; }
+  /// The input triangles as given (own ids, own winding).
+  const std::vector<Triangle>& inputTriangles() const { return this->InputTriangles; }
+
+  SurfaceFrame assemble(const SmoothingResult& result) const;
+
+private:
+  Id outputOfPreparedCorner(std::size_t t, Id prepared) const;
+
+  std::size_t InputPointCount = 0;
+  std::vector<Triangle> InputTriangles;
+  std::vector<unsigned char> Reversed;
+  std::unique_ptr<PreparedMesh> Prepared;
+  SurfaceStatistics Statistics;
+  std::vector<Id> CopySources;
+  std::vector<Id> OutputPrepared;
+  /// Output id of input corner 3t + k.
+  std::vector<Id> CornerOutput;
+  /// One output id per prepared point (for polylines), and all of them (for
+  /// the perturbation): OutputsOf[OutputsOffsets[p] .. OutputsOffsets[p + 1]).
+  std::vector<Id> PreparedHome;
+  std::vector<Id> OutputsOffsets;
+  std::vector<Id> OutputsOf;
+};
+
+} // namespace silsmooth

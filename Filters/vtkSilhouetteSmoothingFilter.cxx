@@ -343,7 +343,7 @@ struct vtkSilhouetteSmoothingFilter::Internals
   vtkIdType TooSmallPolygons = 0;
   vtkPolyData* CachedInput = nullptr;
   vtkMTimeType CachedInputTime = 0;
-  std::array<double, 8> CachedSettings{};
+  std::array<double, 9> CachedSettings{};
   bool HaveSettings = false;
 
   // Returns an empty string, or the error to report.
@@ -441,9 +441,12 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   options.NormalSeams = this->NormalSeamFeatures;
   options.DetectFeatures = this->FeatureEdgeDetection;
   options.FeatureAngleDegrees = this->FeatureAngle;
-  const std::array<double, 8> settings{ { this->FeatureLines ? 1.0 : 0.0,
+  options.DetectFlatCreases = this->FlatCreaseDetection;
+  options.FlatCreaseAngleDegrees = this->FlatCreaseAngle;
+  const std::array<double, 9> settings{ { this->FeatureLines ? 1.0 : 0.0,
     options.DetectFeatures ? 1.0 : 0.0, options.FeatureAngleDegrees, options.Weld ? 1.0 : 0.0,
-    options.WeldTolerance, options.Orient ? 1.0 : 0.0, options.NormalSeams ? 1.0 : 0.0, 0.0 } };
+    options.WeldTolerance, options.Orient ? 1.0 : 0.0, options.NormalSeams ? 1.0 : 0.0,
+    options.DetectFlatCreases ? 1.0 : 0.0, options.FlatCreaseAngleDegrees } };
   const bool rebuilt = !internal.Surface || internal.CachedInput != input ||
     internal.CachedInputTime != input->GetMTime() || !internal.HaveSettings ||
     internal.CachedSettings != settings;
@@ -467,6 +470,13 @@ int vtkSilhouetteSmoothingFilter::RequestData(
     return 0;
   }
   const silsmooth::SurfaceStatistics& statistics = internal.Surface->statistics();
+  if (rebuilt && statistics.FlatShadedNormals)
+  {
+    vtkWarningMacro("The input's point normals are its triangles' own normals (flat shading): "
+                    "they say nothing about the smooth surface, so they are not used; shading "
+                    "normals are computed, and creases come from FlatCreaseDetection and "
+                    "FeatureEdgeDetection.");
+  }
   if (rebuilt && statistics.InconsistentEdgeCount > 0)
   {
     vtkWarningMacro(<< statistics.InconsistentEdgeCount
@@ -531,6 +541,7 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   AddCount(fd, "WeldedPointCount", static_cast<vtkIdType>(statistics.WeldedPointCount));
   AddCount(fd, "ReversedTriangleCount", static_cast<vtkIdType>(statistics.ReversedTriangleCount));
   AddCount(fd, "NormalSeamEdgeCount", static_cast<vtkIdType>(statistics.NormalSeamEdgeCount));
+  AddCount(fd, "FlatCreaseEdgeCount", static_cast<vtkIdType>(statistics.FlatCreaseEdgeCount));
   AddCount(fd, "NewTriangleCount", newTriangles);
   AddCount(fd, "NewPointCount", static_cast<vtkIdType>(frame.Added.size()));
   AddCount(fd, "ConcaveSegmentCount", static_cast<vtkIdType>(result.ConcaveSegmentCount));
@@ -560,6 +571,8 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ConsistentOrientation: " << (this->ConsistentOrientation ? "On" : "Off")
      << "\n";
   os << indent << "NormalSeamFeatures: " << (this->NormalSeamFeatures ? "On" : "Off") << "\n";
+  os << indent << "FlatCreaseDetection: " << (this->FlatCreaseDetection ? "On" : "Off") << "\n";
+  os << indent << "FlatCreaseAngle: " << this->FlatCreaseAngle << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "VisibilityMethod: "
      << (this->VisibilityMethod == HIERARCHICAL ? "Hierarchical" : "PerVertex") << "\n";

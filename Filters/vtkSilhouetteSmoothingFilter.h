@@ -207,7 +207,11 @@ public:
    * Take as feature edges (creases) the edges where points at one position
    * carry normals more than 1 degree apart: how OBJ, PLY and glTF files mark
    * hard edges. Each side then keeps its own given normal. Needs point
-   * normals on the input and WeldCoincidentPoints. Default on.
+   * normals on the input and WeldCoincidentPoints. Normals that are only the
+   * triangles' own (flat shading: every corner of all but 1% of the triangles
+   * carries its triangle's normal) tell nothing about the smooth surface:
+   * they are not used at all, with a warning, and the shading normals are
+   * computed. Default on.
    */
   vtkSetMacro(NormalSeamFeatures, bool);
   vtkGetMacro(NormalSeamFeatures, bool);
@@ -223,6 +227,24 @@ public:
    */
   vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
   vtkGetMacro(OutputPointsPrecision, int);
+  ///@}
+
+  ///@{
+  /**
+   * Take as feature edges the creases between flat faces: edges sharper than
+   * FlatCreaseAngle degrees (default 60) whose two triangles each lie flat
+   * (within half a degree) against another of their neighbours, as the faces
+   * of boxes and CAD parts do. Tessellated smooth surfaces almost never have
+   * flat neighbours, even where they are coarse enough to have edges sharper
+   * than any fixed angle (the coarse bunny has 15 edges above 80 degrees, a
+   * CAD part's edges are 90), so this can be on by default where
+   * FeatureEdgeDetection cannot. Default on.
+   */
+  vtkSetMacro(FlatCreaseDetection, bool);
+  vtkGetMacro(FlatCreaseDetection, bool);
+  vtkBooleanMacro(FlatCreaseDetection, bool);
+  vtkSetClampMacro(FlatCreaseAngle, double, 0.0, 180.0);
+  vtkGetMacro(FlatCreaseAngle, double);
   ///@}
 
   enum VisibilityMethods
@@ -271,6 +293,8 @@ protected:
   double WeldTolerance = 0.0;
   bool ConsistentOrientation = true;
   bool NormalSeamFeatures = true;
+  bool FlatCreaseDetection = true;
+  double FlatCreaseAngle = 60.0;
   int OutputPointsPrecision = DEFAULT_PRECISION;
 
 private:

@@ -30,10 +30,15 @@ std::vector<FeatureEdge> normalizedFeatureEdges(std::vector<FeatureEdge> edges)
   return edges;
 }
 
-std::vector<FeatureEdge> featureEdgesByAngle(const std::vector<glm::dvec3>& points,
-  const std::vector<Triangle>& triangles, double angleDegrees)
+namespace
 {
-  const EdgeTable table(triangles);
+
+// The cosine of every edge's dihedral angle (between its two triangles'
+// normals, both the right way up), or NaN for an edge that is not between
+// exactly two triangles of non-zero area; and the edge table it refers to.
+std::vector<double> dihedralCosines(const std::vector<glm::dvec3>& points,
+  const std::vector<Triangle>& triangles, const EdgeTable& table)
+{
   // The triangles of each edge: first two, and how many.
   std::vector<std::array<Id, 2>> sides(table.edgeCount(), { { -1, -1 } });
   std::vector<int> count(table.edgeCount(), 0);
@@ -55,8 +60,7 @@ std::vector<FeatureEdge> featureEdgesByAngle(const std::vector<glm::dvec3>& poin
     return safeNormalize(glm::cross(
       points[static_cast<std::size_t>(tri[1])] - a, points[static_cast<std::size_t>(tri[2])] - a));
   };
-  const double cosLimit = std::cos(angleDegrees * 3.14159265358979323846 / 180.0);
-  std::vector<FeatureEdge> result;
+  std::vector<double> cosines(table.edgeCount(), std::nan(""));
   for (std::size_t e = 0; e < table.edgeCount(); ++e)
   {
     const Edge& edge = table.edge(static_cast<Id>(e));
@@ -87,12 +91,74 @@ std::vector<FeatureEdge> featureEdgesByAngle(const std::vector<glm::dvec3>& poin
     {
       n1 = -n1;
     }
-    if (glm::dot(n0, n1) < cosLimit)
+    cosines[e] = glm::dot(n0, n1);
+  }
+  return cosines;
+}
+
+double cosineOfDegrees(double degrees)
+{
+  return std::cos(degrees * 3.14159265358979323846 / 180.0);
+}
+
+} // namespace
+
+std::vector<FeatureEdge> featureEdgesByAngle(const std::vector<glm::dvec3>& points,
+  const std::vector<Triangle>& triangles, double angleDegrees)
+{
+  const EdgeTable table(triangles);
+  const std::vector<double> cosines = dihedralCosines(points, triangles, table);
+  const double cosLimit = cosineOfDegrees(angleDegrees);
+  std::vector<FeatureEdge> result;
+  for (std::size_t e = 0; e < table.edgeCount(); ++e)
+  {
+    if (cosines[e] < cosLimit) // false for NaN
     {
-      result.emplace_back(edge.low, edge.high);
+      result.emplace_back(table.edge(static_cast<Id>(e)).low, table.edge(static_cast<Id>(e)).high);
     }
   }
   return result; // the edge table is sorted by (low, high)
+}
+
+std::vector<FeatureEdge> flatSidedCreases(const std::vector<glm::dvec3>& points,
+  const std::vector<Triangle>& triangles, double angleDegrees)
+{
+  const EdgeTable table(triangles);
+  const std::vector<double> cosines = dihedralCosines(points, triangles, table);
+  const double cosLimit = cosineOfDegrees(angleDegrees);
+  const double cosFlat = cosineOfDegrees(FlatNeighbourDegrees);
+  // Triangles lying flat against a neighbour across some edge.
+  std::vector<unsigned char> flat(triangles.size(), 0);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      if (cosines[static_cast<std::size_t>(table.sideEdge(static_cast<Id>(t), k))] >= cosFlat)
+      {
+        flat[t] = 1;
+      }
+    }
+  }
+  std::vector<unsigned char> sharp(table.edgeCount(), 0);
+  std::vector<int> flatSides(table.edgeCount(), 0);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::size_t e = static_cast<std::size_t>(table.sideEdge(static_cast<Id>(t), k));
+      sharp[e] = cosines[e] < cosLimit ? 1 : 0;
+      flatSides[e] += flat[t];
+    }
+  }
+  std::vector<FeatureEdge> result;
+  for (std::size_t e = 0; e < table.edgeCount(); ++e)
+  {
+    if (sharp[e] && flatSides[e] == 2)
+    {
+      result.emplace_back(table.edge(static_cast<Id>(e)).low, table.edge(static_cast<Id>(e)).high);
+    }
+  }
+  return result;
 }
 
 glm::dvec3 circleTangentAlong(const glm::dvec3& direction, const glm::dvec3& chord)

@@ -48,6 +48,18 @@ std::vector<FeatureEdge> normalizedFeatureEdges(std::vector<FeatureEdge> edges);
 std::vector<FeatureEdge> featureEdgesByAngle(const std::vector<glm::dvec3>& points,
   const std::vector<Triangle>& triangles, double angleDegrees);
 
+/// Triangles whose normals are this close are flat against each other.
+constexpr double FlatNeighbourDegrees = 0.5;
+
+/// Creases between flat faces, the edges of boxes and CAD parts: edges
+/// sharper than `angleDegrees` (as featureEdgesByAngle) whose two triangles
+/// each lie flat (within FlatNeighbourDegrees) against another neighbour.
+/// A planar face split into triangles has such neighbours; a tessellated
+/// smooth surface almost never does, even where it is coarse enough to have
+/// edges sharper than any fixed angle (measured in docs/real-assets.md).
+std::vector<FeatureEdge> flatSidedCreases(const std::vector<glm::dvec3>& points,
+  const std::vector<Triangle>& triangles, double angleDegrees);
+
 /// The end tangent along `chord` whose unit direction is `direction`, with the
 /// length that makes the Hermite segment approximate a circular arc. A zero
 /// direction gives the chord itself (a straight end).

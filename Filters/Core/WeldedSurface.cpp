@@ -1,6 +1,7 @@
 #include "WeldedSurface.h"
 
 #include "SurfaceOrientation.h"
+#include "ShadingNormals.h"
 #include "SurfaceWelding.h"
 
 #include <glm/geometric.hpp>
@@ -12,6 +13,40 @@
 
 namespace silsmooth
 {
+
+namespace
+{
+
+// Whether every corner of all but 1% of the triangles (of non-zero area)
+// carries its triangle's own normal, either way up.
+bool hasFaceNormals(const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles,
+  const std::vector<glm::dvec3>& normals)
+{
+  const double cosLimit = std::cos(NormalSeamAngleDegrees * 3.14159265358979323846 / 180.0);
+  std::size_t faces = 0;
+  std::size_t flat = 0;
+  for (const Triangle& t : triangles)
+  {
+    const glm::dvec3& a = points[static_cast<std::size_t>(t[0])];
+    const glm::dvec3 face = safeNormalize(glm::cross(
+      points[static_cast<std::size_t>(t[1])] - a, points[static_cast<std::size_t>(t[2])] - a));
+    if (face == glm::dvec3(0.0))
+    {
+      continue;
+    }
+    ++faces;
+    bool all = true;
+    for (const Id p : t)
+    {
+      const glm::dvec3 n = safeNormalize(normals[static_cast<std::size_t>(p)]);
+      all = all && std::abs(glm::dot(n, face)) >= cosLimit;
+    }
+    flat += all ? 1 : 0;
+  }
+  return faces > 0 && flat * 100 >= faces * 99;
+}
+
+} // namespace
 
 WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
   const std::vector<glm::dvec3>& normals, const std::vector<FeatureEdge>& markedFeatures,
@@ -38,9 +73,13 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
   }
   std::vector<Triangle> welded = weldTriangles(this->InputTriangles, vertex);
 
-  // Every corner's own normal, if the input has normals.
+  // Every corner's own normal, if the input has normals that are more than
+  // its triangles' own.
+  this->Statistics.FlatShadedNormals =
+    normals.size() == n && hasFaceNormals(points, this->InputTriangles, normals);
+  const bool useNormals = normals.size() == n && !this->Statistics.FlatShadedNormals;
   std::vector<glm::dvec3> cornerNormals;
-  if (normals.size() == n)
+  if (useNormals)
   {
     cornerNormals.resize(welded.size() * 3);
     for (std::size_t t = 0; t < welded.size(); ++t)
@@ -125,11 +164,18 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
     features.emplace_back(
       vertex[static_cast<std::size_t>(f.first)], vertex[static_cast<std::size_t>(f.second)]);
   }
-  if (options.NormalSeams && normals.size() == n)
+  if (options.NormalSeams && useNormals)
   {
     const std::vector<FeatureEdge> seams = normalSeamEdges(this->InputTriangles, vertex, normals);
     this->Statistics.NormalSeamEdgeCount = seams.size();
     features.insert(features.end(), seams.begin(), seams.end());
+  }
+  if (options.DetectFlatCreases)
+  {
+    const std::vector<FeatureEdge> creases =
+      flatSidedCreases(points, welded, options.FlatCreaseAngleDegrees);
+    this->Statistics.FlatCreaseEdgeCount = creases.size();
+    features.insert(features.end(), creases.begin(), creases.end());
   }
   if (options.DetectFeatures)
   {
@@ -148,7 +194,8 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
   else
   {
     // Nothing welded or reversed: the per-point normals are the corners'.
-    this->Prepared = std::make_unique<PreparedMesh>(std::move(points), welded, normals, std::move(features));
+    this->Prepared = std::make_unique<PreparedMesh>(std::move(points), welded,
+      useNormals ? normals : std::vector<glm::dvec3>{}, std::move(features));
   }
 
   // Output points: each input point stands for the prepared point of its

@@ -7,7 +7,8 @@
 //      component (SurfaceOrientation.h), and given normals that point
 //      against the oriented surface at their point are reversed;
 //   3. normal seams (points at one position with different normals) are
-//      feature edges, besides the marked and detected ones;
+//      feature edges, besides the marked and detected ones (normals that are
+//      only the triangles' own normals, flat shading, are not used at all);
 //   4. the PreparedMesh is built on those triangles, with every corner's own
 //      normal.
 //
@@ -52,6 +53,9 @@ struct SurfaceOptions
   /// Dihedral-angle feature detection on the welded, oriented triangles.
   bool DetectFeatures = false;
   double FeatureAngleDegrees = 30.0;
+  /// Creases between flat faces (flatSidedCreases), on the same triangles.
+  bool DetectFlatCreases = true;
+  double FlatCreaseAngleDegrees = 60.0;
 };
 
 /// What preparation found, for the filters' field data and warnings.
@@ -62,6 +66,11 @@ struct SurfaceStatistics
   std::size_t ComponentCount = 0;
   std::size_t InconsistentEdgeCount = 0; ///< non-orientable edges left
   std::size_t NormalSeamEdgeCount = 0;
+  std::size_t FlatCreaseEdgeCount = 0;
+  /// The given normals were face normals (every corner of all but 1% of the
+  /// triangles carries its triangle's normal): flat shading says nothing
+  /// about the smooth surface or its creases, so they were not used.
+  bool FlatShadedNormals = false;
 };
 
 /// One frame's output, in output point ids (see the header comment).

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <tuple>
 #include <unordered_map>
 
@@ -100,16 +101,25 @@ PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle>
       {
         continue;
       }
+      bool curvedSide = false;
       for (int k = 0; k < 3; ++k)
       {
         const Id f = this->edgeFeature(this->Edges.sideEdge(static_cast<Id>(t), k));
-        if (f >= 0 && this->Features.isCurved(f))
+        if (f >= 0)
         {
-          this->FeatureTriangles.push_back(static_cast<Id>(t));
-          break;
+          this->FeatureSideTriangles.emplace_back(f, static_cast<Id>(t));
+          curvedSide = curvedSide || this->Features.isCurved(f);
         }
       }
+      if (curvedSide)
+      {
+        this->FeatureTriangles.push_back(static_cast<Id>(t));
+      }
     }
+    std::sort(this->FeatureSideTriangles.begin(), this->FeatureSideTriangles.end());
+    this->FeatureSideTriangles.erase(
+      std::unique(this->FeatureSideTriangles.begin(), this->FeatureSideTriangles.end()),
+      this->FeatureSideTriangles.end());
   }
 
   // Edge neighbours of every vertex (compressed rows), for the perturbation.
@@ -325,7 +335,7 @@ public:
     std::vector<std::vector<Id>> segments;
     segments.reserve(this->Silhouette.size());
     // Silhouette triangles and feature triangles, merged in ascending order.
-    const std::vector<Id>& features = this->Mesh.featureTriangles();
+    const std::vector<Id>& features = this->featureTrianglesOfFrame();
     std::size_t i = 0;
     std::size_t j = 0;
     while (i < this->Silhouette.size() || j < features.size())
@@ -486,17 +496,62 @@ private:
       });
   }
 
+  // The triangles re-meshed for their feature sides in this frame: those
+  // with a smoothed (curved) feature side, every frame, and those with a side
+  // on a straight feature edge that the silhouette crosses, from any side of
+  // the crease: each side has its own normals, so the silhouette may cross
+  // the crease on one side only, and the others must still split the edge at
+  // that point (or the output has a T-junction there).
+  const std::vector<Id>& featureTrianglesOfFrame()
+  {
+    std::vector<Id> straight;
+    for (const FeatureSilhouettePoint& point : this->FeatureSilhouettePoints)
+    {
+      if (this->Mesh.features().isCurved(point.Feature))
+      {
+        continue;
+      }
+      const auto& sides = this->Mesh.featureSideTriangles();
+      auto it = std::lower_bound(sides.begin(), sides.end(), std::make_pair(point.Feature, Id{ 0 }));
+      for (; it != sides.end() && it->first == point.Feature; ++it)
+      {
+        straight.push_back(it->second);
+      }
+    }
+    if (straight.empty())
+    {
+      return this->Mesh.featureTriangles();
+    }
+    std::sort(straight.begin(), straight.end());
+    this->FrameFeatureTriangles.clear();
+    std::set_union(this->Mesh.featureTriangles().begin(), this->Mesh.featureTriangles().end(),
+      straight.begin(), straight.end(), std::back_inserter(this->FrameFeatureTriangles));
+    this->FrameFeatureTriangles.erase(
+      std::unique(this->FrameFeatureTriangles.begin(), this->FrameFeatureTriangles.end()),
+      this->FrameFeatureTriangles.end());
+    return this->FrameFeatureTriangles;
+  }
+
+  bool crossedBySilhouette(Id feature) const
+  {
+    return std::binary_search(this->FeatureSilhouettePoints.begin(),
+      this->FeatureSilhouettePoints.end(), FeatureSilhouettePoint{ feature, -1, 0.0 },
+      [](const FeatureSilhouettePoint& x, const FeatureSilhouettePoint& y) {
+        return x.Feature < y.Feature;
+      });
+  }
+
   // Points per smoothed feature segment in this view (both ends counted), by
   // the same rule as silhouette segments. Both sides of a crease use the
-  // segment's one count, so their samples coincide.
+  // segment's one count, so their samples coincide. Straight ones keep 2.
   void countFeatureSamples()
   {
+    const FeatureCurves& features = this->Mesh.features();
+    this->FeatureSampleCounts.assign(features.edges().size(), 2);
     if (this->Mesh.featureTriangles().empty())
     {
       return;
     }
-    const FeatureCurves& features = this->Mesh.features();
-    this->FeatureSampleCounts.assign(features.edges().size(), 2);
     this->For(features.edges().size(), [&](std::size_t begin, std::size_t end) {
       for (std::size_t f = begin; f < end; ++f)
       {
@@ -737,7 +792,7 @@ private:
       std::vector<std::pair<double, PolygonPoint>> inside;
       const Id e = edges.sideEdge(t, (first + j) % 3);
       const Id f = this->Mesh.edgeFeature(e);
-      if (f >= 0 && features.isCurved(f))
+      if (f >= 0 && (features.isCurved(f) || this->crossedBySilhouette(f)))
       {
         const bool forward =
           this->Mesh.sourcePoint(corners[static_cast<std::size_t>(j)]) == features.edges()[f].first;
@@ -894,6 +949,7 @@ private:
     double Along; // parameter along the feature segment
   };
   std::vector<FeatureSilhouettePoint> FeatureSilhouettePoints;
+  std::vector<Id> FrameFeatureTriangles;
   std::vector<ConcaveSegment> Concave;
   SmoothingResult Result;
 };

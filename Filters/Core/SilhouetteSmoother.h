@@ -90,6 +90,12 @@ public:
   /// Triangles with a side on a smoothed feature edge, ascending: they are
   /// re-meshed in every frame so that the feature curve is drawn smooth.
   const std::vector<Id>& featureTriangles() const { return this->FeatureTriangles; }
+  /// Every (feature edge, triangle with a side on it), sorted: the triangles
+  /// of the crease's sides (two or more, one per smooth group).
+  const std::vector<std::pair<Id, Id>>& featureSideTriangles() const
+  {
+    return this->FeatureSideTriangles;
+  }
   /// The vertices joined to v by an edge are
   /// neighbours()[neighbourOffsets()[v] .. neighbourOffsets()[v + 1]).
   const std::vector<Id>& neighbourOffsets() const { return this->NeighbourOffsets; }
@@ -112,6 +118,7 @@ private:
   FeatureCurves Features;
   std::vector<Id> EdgeFeatures;
   std::vector<Id> FeatureTriangles;
+  std::vector<std::pair<Id, Id>> FeatureSideTriangles;
   std::vector<Id> NeighbourOffsets;
   std::vector<Id> Neighbours;
   struct LazyHierarchy

@@ -211,8 +211,7 @@ void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
   float* n = normals->GetPointer(0);
   for (vtkIdType o = 0; o < base; ++o)
   {
-    const glm::dvec3& normal =
-      mesh.normals()[static_cast<std::size_t>(surface.outputPrepared(o))];
+    const glm::dvec3& normal = mesh.normals()[static_cast<std::size_t>(surface.outputPrepared(o))];
     *n++ = static_cast<float>(normal.x);
     *n++ = static_cast<float>(normal.y);
     *n++ = static_cast<float>(normal.z);
@@ -532,12 +531,11 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   const vtkIdType remeshedTriangles = static_cast<vtkIdType>(result.RemeshedTriangles.size());
   const vtkIdType newTriangles = static_cast<vtkIdType>(result.newTriangleCount());
   AddCount(fd, "SilhouetteTriangleCount", static_cast<vtkIdType>(result.SilhouetteTriangleCount));
-  AddCount(
-    fd, "FeatureTriangleCount", static_cast<vtkIdType>(mesh.featureTriangles().size()));
-  AddCount(
-    fd, "FeatureEdgeCount", static_cast<vtkIdType>(mesh.features().edges().size()));
+  AddCount(fd, "FeatureTriangleCount", static_cast<vtkIdType>(mesh.featureTriangles().size()));
+  AddCount(fd, "FeatureEdgeCount", static_cast<vtkIdType>(mesh.features().edges().size()));
   AddCount(fd, "SplitPointCount",
-    static_cast<vtkIdType>(internal.Surface->outputPointCount() - internal.Surface->inputPointCount()));
+    static_cast<vtkIdType>(
+      internal.Surface->outputPointCount() - internal.Surface->inputPointCount()));
   AddCount(fd, "WeldedPointCount", static_cast<vtkIdType>(statistics.WeldedPointCount));
   AddCount(fd, "ReversedTriangleCount", static_cast<vtkIdType>(statistics.ReversedTriangleCount));
   AddCount(fd, "NormalSeamEdgeCount", static_cast<vtkIdType>(statistics.NormalSeamEdgeCount));
@@ -568,8 +566,7 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
      << (this->SamplingRule == SECOND_DIFFERENCE ? "SecondDifference" : "WangEquation8") << "\n";
   os << indent << "WeldCoincidentPoints: " << (this->WeldCoincidentPoints ? "On" : "Off") << "\n";
   os << indent << "WeldTolerance: " << this->WeldTolerance << "\n";
-  os << indent << "ConsistentOrientation: " << (this->ConsistentOrientation ? "On" : "Off")
-     << "\n";
+  os << indent << "ConsistentOrientation: " << (this->ConsistentOrientation ? "On" : "Off") << "\n";
   os << indent << "NormalSeamFeatures: " << (this->NormalSeamFeatures ? "On" : "Off") << "\n";
   os << indent << "FlatCreaseDetection: " << (this->FlatCreaseDetection ? "On" : "Off") << "\n";
   os << indent << "FlatCreaseAngle: " << this->FlatCreaseAngle << "\n";

@@ -232,13 +232,17 @@ public:
   ///@{
   /**
    * Take as feature edges the creases between flat faces: edges sharper than
-   * FlatCreaseAngle degrees (default 60) whose two triangles each lie flat
+   * FlatCreaseAngle degrees (default 65) whose two triangles each lie flat
    * (within half a degree) against another of their neighbours, as the faces
    * of boxes and CAD parts do. Tessellated smooth surfaces almost never have
    * flat neighbours, even where they are coarse enough to have edges sharper
    * than any fixed angle (the coarse bunny has 15 edges above 80 degrees, a
    * CAD part's edges are 90), so this can be on by default where
-   * FeatureEdgeDetection cannot. Default on.
+   * FeatureEdgeDetection cannot. Parametric grids are the exception: their
+   * quads are planar, so a grid torus or UV sphere with fewer than 6 segments
+   * around (rings more than 65 degrees apart) is taken as creased, and a
+   * hexagonal prism's 60-degree edges are not creases unless FlatCreaseAngle
+   * is lowered. Default on.
    */
   vtkSetMacro(FlatCreaseDetection, bool);
   vtkGetMacro(FlatCreaseDetection, bool);
@@ -294,7 +298,7 @@ protected:
   bool ConsistentOrientation = true;
   bool NormalSeamFeatures = true;
   bool FlatCreaseDetection = true;
-  double FlatCreaseAngle = 60.0;
+  double FlatCreaseAngle = 65.0;
   int OutputPointsPrecision = DEFAULT_PRECISION;
 
 private:

@@ -272,7 +272,6 @@ Id FeatureCurves::find(Id a, Id b) const
   return (it != this->Edges.end() && *it == key) ? static_cast<Id>(it - this->Edges.begin()) : -1;
 }
 
-
 FeatureSplit splitAtFeatureEdges(
   std::size_t pointCount, const std::vector<Triangle>& triangles, const FeatureCurves& features)
 {

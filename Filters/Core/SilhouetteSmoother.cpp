@@ -512,7 +512,8 @@ private:
         continue;
       }
       const auto& sides = this->Mesh.featureSideTriangles();
-      auto it = std::lower_bound(sides.begin(), sides.end(), std::make_pair(point.Feature, Id{ 0 }));
+      auto it =
+        std::lower_bound(sides.begin(), sides.end(), std::make_pair(point.Feature, Id{ 0 }));
       for (; it != sides.end() && it->first == point.Feature; ++it)
       {
         straight.push_back(it->second);

@@ -89,8 +89,7 @@ Orientation orientConsistently(const std::vector<glm::dvec3>& points,
           result.Reversed[static_cast<std::size_t>(u)] = dt == du ? 1 : 0;
           queue.push_back(u);
         }
-        else if (t < u &&
-          dt == du * (result.Reversed[static_cast<std::size_t>(u)] ? -1 : 1))
+        else if (t < u && dt == du * (result.Reversed[static_cast<std::size_t>(u)] ? -1 : 1))
         {
           ++result.InconsistentEdgeCount;
           closed = false;
@@ -106,8 +105,8 @@ Orientation orientConsistently(const std::vector<glm::dvec3>& points,
     glm::dvec3 origin = points[static_cast<std::size_t>(triangles[seed][0])];
     for (const Id t : members)
     {
-      const Triangle tri = oriented(triangles[static_cast<std::size_t>(t)],
-        result.Reversed[static_cast<std::size_t>(t)] != 0);
+      const Triangle tri = oriented(
+        triangles[static_cast<std::size_t>(t)], result.Reversed[static_cast<std::size_t>(t)] != 0);
       const glm::dvec3 a = points[static_cast<std::size_t>(tri[0])] - origin;
       const glm::dvec3 b = points[static_cast<std::size_t>(tri[1])] - origin;
       const glm::dvec3 d = points[static_cast<std::size_t>(tri[2])] - origin;

@@ -131,7 +131,8 @@ std::vector<Id> weldCoincidentPoints(const std::vector<glm::dvec3>& points, doub
                                                      : weldExactly(points);
 }
 
-std::vector<Triangle> weldTriangles(const std::vector<Triangle>& triangles, const std::vector<Id>& vertex)
+std::vector<Triangle> weldTriangles(
+  const std::vector<Triangle>& triangles, const std::vector<Id>& vertex)
 {
   std::vector<Triangle> welded(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t)

@@ -30,7 +30,8 @@ constexpr double NormalSeamAngleDegrees = 1.0;
 std::vector<Id> weldCoincidentPoints(const std::vector<glm::dvec3>& points, double tolerance = 0.0);
 
 /// The triangles with every corner replaced by its surface vertex.
-std::vector<Triangle> weldTriangles(const std::vector<Triangle>& triangles, const std::vector<Id>& vertex);
+std::vector<Triangle> weldTriangles(
+  const std::vector<Triangle>& triangles, const std::vector<Id>& vertex);
 
 /// Normal seams: the edges of the welded triangles (pairs of surface
 /// vertices, lower first, sorted) shared by exactly two triangles of non-zero

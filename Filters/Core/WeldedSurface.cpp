@@ -1,7 +1,7 @@
 #include "WeldedSurface.h"
 
-#include "SurfaceOrientation.h"
 #include "ShadingNormals.h"
+#include "SurfaceOrientation.h"
 #include "SurfaceWelding.h"
 
 #include <glm/geometric.hpp>
@@ -188,8 +188,8 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
       normalsReversed);
   if (cornersMatter)
   {
-    this->Prepared = std::make_unique<PreparedMesh>(
-      std::move(points), welded, std::vector<glm::dvec3>{}, std::move(features), preparedCornerNormals);
+    this->Prepared = std::make_unique<PreparedMesh>(std::move(points), welded,
+      std::vector<glm::dvec3>{}, std::move(features), preparedCornerNormals);
   }
   else
   {
@@ -280,8 +280,8 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
     }
     if (this->PreparedHome[p] < 0)
     {
-      this->PreparedHome[p] = p < n ? static_cast<Id>(p)
-                                    : this->Prepared->sourcePoint(static_cast<Id>(p));
+      this->PreparedHome[p] =
+        p < n ? static_cast<Id>(p) : this->Prepared->sourcePoint(static_cast<Id>(p));
     }
   }
 }
@@ -339,8 +339,7 @@ SurfaceFrame WeldedSurface::assemble(const SmoothingResult& result) const
     {
       key.Sources[k] = this->outputSource(this->outputOfPreparedCorner(t, point.Sources[k]));
     }
-    const auto inserted =
-      added.emplace(key, outputBase + static_cast<Id>(frame.Added.size()));
+    const auto inserted = added.emplace(key, outputBase + static_cast<Id>(frame.Added.size()));
     if (inserted.second)
     {
       frame.Added.push_back({ np, key.Sources });

@@ -55,13 +55,13 @@ struct SurfaceOptions
   double FeatureAngleDegrees = 30.0;
   /// Creases between flat faces (flatSidedCreases), on the same triangles.
   bool DetectFlatCreases = true;
-  double FlatCreaseAngleDegrees = 60.0;
+  double FlatCreaseAngleDegrees = 65.0;
 };
 
 /// What preparation found, for the filters' field data and warnings.
 struct SurfaceStatistics
 {
-  std::size_t WeldedPointCount = 0;  ///< points joined to a lower point
+  std::size_t WeldedPointCount = 0; ///< points joined to a lower point
   std::size_t ReversedTriangleCount = 0;
   std::size_t ComponentCount = 0;
   std::size_t InconsistentEdgeCount = 0; ///< non-orientable edges left

@@ -1,0 +1,469 @@
+// Asset-file meshes: welding coincident points, normal seams, consistent
+// orientation, and WeldedSurface's output on the input's own points.
+#include "CoreTestMeshes.h"
+#include "SurfaceOrientation.h"
+#include "SurfaceWelding.h"
+#include "WeldedSurface.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <random>
+#include <set>
+#include <tuple>
+
+using namespace silsmooth;
+
+namespace
+{
+
+ViewGeometry perspectiveFrom(const glm::dvec3& eye)
+{
+  ViewGeometry view;
+  view.Eye = eye;
+  view.ModelToClip = glm::dmat4(0.5);
+  view.ModelToClip[3][3] = 1.0;
+  view.ViewportWidth = 1000;
+  view.ViewportHeight = 1000;
+  return view;
+}
+
+// Every corner its own point (what VTK's OBJ reader makes of a textured
+// asset): corner 3t + k is point 3t + k.
+void makeSoup(const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles,
+  std::vector<glm::dvec3>& soupPoints, std::vector<Triangle>& soupTriangles)
+{
+  soupPoints.clear();
+  soupTriangles.clear();
+  for (const Triangle& t : triangles)
+  {
+    const Id base = static_cast<Id>(soupPoints.size());
+    for (const Id p : t)
+    {
+      soupPoints.push_back(points[static_cast<std::size_t>(p)]);
+    }
+    soupTriangles.push_back({ { base, base + 1, base + 2 } });
+  }
+}
+
+// The output triangles as triples of positions, each rotated to start at its
+// smallest corner (winding kept), sorted: comparable across point numberings.
+using PositionTriangle = std::array<std::tuple<double, double, double>, 3>;
+std::vector<PositionTriangle> positionTriangles(const WeldedSurface& surface,
+  const std::vector<glm::dvec3>& inputPoints, const SmoothingResult& result,
+  const SurfaceFrame& frame)
+{
+  const Id base = static_cast<Id>(surface.outputPointCount());
+  auto position = [&](Id o) {
+    const glm::dvec3 p = o < base
+      ? inputPoints[static_cast<std::size_t>(surface.outputSource(o))]
+      : result.NewPoints[frame.Added[static_cast<std::size_t>(o - base)].NewPoint].Position;
+    return std::make_tuple(p.x, p.y, p.z);
+  };
+  std::vector<PositionTriangle> out;
+  for (const Triangle& t : frame.Triangles)
+  {
+    PositionTriangle pt{ { position(t[0]), position(t[1]), position(t[2]) } };
+    const auto smallest = std::min_element(pt.begin(), pt.end());
+    std::rotate(pt.begin(), smallest, pt.end());
+    out.push_back(pt);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+SurfaceOptions plainOptions()
+{
+  SurfaceOptions options;
+  options.DetectFlatCreases = false;
+  return options;
+}
+
+} // namespace
+
+TEST(SurfaceWelding, ExactWeldJoinsEqualCoordinatesOnly)
+{
+  const std::vector<glm::dvec3> points{ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 0, 0 }, { 1, 0, 1e-12 },
+    { 1, 0, 0 }, { std::nan(""), 0, 0 }, { std::nan(""), 0, 0 } };
+  const std::vector<Id> vertex = weldCoincidentPoints(points);
+  EXPECT_EQ(vertex, (std::vector<Id>{ 0, 1, 0, 3, 1, 5, 6 }));
+}
+
+TEST(SurfaceWelding, ToleranceJoinsNearPointsTransitively)
+{
+  const std::vector<glm::dvec3> points{ { 0, 0, 0 }, { 0.6e-3, 0, 0 }, { 1.2e-3, 0, 0 },
+    { 5, 5, 5 }, { 5, 5, 5.01 } };
+  EXPECT_EQ(weldCoincidentPoints(points, 1e-3), (std::vector<Id>{ 0, 0, 0, 3, 4 }));
+  // The deliberately wrong tolerance (too small) joins nothing.
+  EXPECT_EQ(weldCoincidentPoints(points, 1e-4), (std::vector<Id>{ 0, 1, 2, 3, 4 }));
+}
+
+TEST(SurfaceWelding, NormalSeamsOfASplitCubeAreItsTwelveEdges)
+{
+  // A cube as exporters write one: 4 points per face with the face normal.
+  std::vector<glm::dvec3> points;
+  std::vector<glm::dvec3> normals;
+  std::vector<Triangle> triangles;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    for (int side : { -1, 1 })
+    {
+      glm::dvec3 n(0.0);
+      n[axis] = side;
+      const glm::dvec3 u = axis == 0 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+      const glm::dvec3 v = glm::cross(n, u);
+      const Id base = static_cast<Id>(points.size());
+      for (const auto& [a, b] : { std::pair{ -1, -1 }, { 1, -1 }, { 1, 1 }, { -1, 1 } })
+      {
+        points.push_back(n + double(a) * u + double(b) * v);
+        normals.push_back(n);
+      }
+      triangles.push_back({ { base, base + 1, base + 2 } });
+      triangles.push_back({ { base, base + 2, base + 3 } });
+    }
+  }
+  const std::vector<Id> vertex = weldCoincidentPoints(points);
+  EXPECT_EQ(std::set<Id>(vertex.begin(), vertex.end()).size(), 8u);
+  EXPECT_EQ(normalSeamEdges(triangles, vertex, normals).size(), 12u);
+  // With one smooth normal per position there is no seam.
+  std::vector<glm::dvec3> smooth(points.size());
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    smooth[i] = glm::normalize(points[i]);
+  }
+  EXPECT_TRUE(normalSeamEdges(triangles, vertex, smooth).empty());
+}
+
+TEST(SurfaceOrientation, InvertedAndPartlyReversedSpheresComeBackOutward)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::unitSphere(8, 12, points, triangles);
+  std::mt19937 random(7);
+  std::vector<unsigned char> turned(triangles.size(), 0);
+  std::vector<Triangle> mixed = triangles;
+  for (std::size_t t = 0; t < mixed.size(); ++t)
+  {
+    if (random() % 10 < 3)
+    {
+      turned[t] = 1;
+      mixed[t] = oriented(mixed[t], true);
+    }
+  }
+  const Orientation partly = orientConsistently(points, mixed);
+  EXPECT_EQ(partly.Reversed, turned);
+  EXPECT_EQ(partly.ComponentCount, 1u);
+  EXPECT_EQ(partly.InconsistentEdgeCount, 0u);
+
+  std::vector<Triangle> inverted = triangles;
+  for (Triangle& t : inverted)
+  {
+    t = oriented(t, true);
+  }
+  const Orientation all = orientConsistently(points, inverted);
+  EXPECT_EQ(all.ReversedCount, triangles.size());
+}
+
+TEST(SurfaceOrientation, OpenPatchFollowsItsNormalsAndMoebiusStripIsReported)
+{
+  // A flat 2x1 strip of four triangles, two of them reversed, normals +z.
+  const std::vector<glm::dvec3> points{ { 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 }, { 0, 1, 0 },
+    { 1, 1, 0 }, { 2, 1, 0 } };
+  const std::vector<Triangle> strip{ { { 0, 1, 4 } }, { { 0, 3, 4 } }, { { 1, 2, 5 } },
+    { { 1, 4, 5 } } };
+  std::vector<glm::dvec3> up(12, glm::dvec3(0, 0, 1));
+  const Orientation o = orientConsistently(points, strip, up);
+  EXPECT_EQ(o.Reversed, (std::vector<unsigned char>{ 0, 1, 0, 1 }));
+  std::vector<glm::dvec3> down(12, glm::dvec3(0, 0, -1));
+  EXPECT_EQ(
+    orientConsistently(points, strip, down).Reversed, (std::vector<unsigned char>{ 1, 0, 1, 0 }));
+
+  // A Moebius strip: a band of 6 quads whose ends join with a half twist.
+  std::vector<glm::dvec3> band;
+  const int n = 6;
+  const double pi = 3.14159265358979323846;
+  for (int i = 0; i < n; ++i)
+  {
+    const double a = 2 * pi * i / n;
+    for (int s : { -1, 1 })
+    {
+      const double w = 0.3 * s;
+      band.emplace_back((1 + w * std::cos(a / 2)) * std::cos(a),
+        (1 + w * std::cos(a / 2)) * std::sin(a), w * std::sin(a / 2));
+    }
+  }
+  std::vector<Triangle> moebius;
+  for (int i = 0; i < n; ++i)
+  {
+    const Id a0 = 2 * i, a1 = 2 * i + 1;
+    // The last quad joins the first with its sides exchanged.
+    const Id b0 = i + 1 < n ? 2 * (i + 1) : 1;
+    const Id b1 = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+    moebius.push_back({ { a0, b0, b1 } });
+    moebius.push_back({ { a0, b1, a1 } });
+  }
+  const Orientation m = orientConsistently(band, moebius);
+  EXPECT_EQ(m.ComponentCount, 1u);
+  EXPECT_GE(m.InconsistentEdgeCount, 1u);
+}
+
+TEST(WeldedSurface, TriangleSoupSmoothsExactlyAsTheWeldedMesh)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::unitSphere(6, 10, points, triangles);
+  std::vector<glm::dvec3> soupPoints;
+  std::vector<Triangle> soupTriangles;
+  makeSoup(points, triangles, soupPoints, soupTriangles);
+  const std::vector<glm::dvec3> soupNormals = soupPoints; // exact sphere normals
+  for (const bool withNormals : { true, false })
+  {
+    const WeldedSurface welded(
+      points, triangles, withNormals ? points : std::vector<glm::dvec3>{}, {}, plainOptions());
+    const WeldedSurface soup(soupPoints, soupTriangles,
+      withNormals ? soupNormals : std::vector<glm::dvec3>{}, {}, plainOptions());
+    EXPECT_EQ(soup.statistics().WeldedPointCount, soupPoints.size() - points.size());
+
+    for (const glm::dvec3& eye : { glm::dvec3(4, 1, 0.5), glm::dvec3(-1, 3, 2) })
+    {
+      const ViewGeometry view = perspectiveFrom(eye);
+      const SmoothingParameters parameters;
+      const SmoothingResult a = smoothSilhouettes(welded.prepared(), view, parameters);
+      const SmoothingResult b = smoothSilhouettes(soup.prepared(), view, parameters);
+      ASSERT_GT(a.SilhouetteTriangleCount, 0u);
+      EXPECT_EQ(a.SilhouetteTriangleCount, b.SilhouetteTriangleCount);
+      const SurfaceFrame fa = welded.assemble(a);
+      const SurfaceFrame fb = soup.assemble(b);
+      EXPECT_EQ(
+        positionTriangles(welded, points, a, fa), positionTriangles(soup, soupPoints, b, fb));
+      // Each soup triangle keeps its own corners: every output triangle's
+      // input points are its input triangle's.
+      for (std::size_t t = 0; t < fb.Triangles.size(); ++t)
+      {
+        const Triangle& own = soupTriangles[static_cast<std::size_t>(fb.SourceTriangle[t])];
+        for (const Id o : fb.Triangles[t])
+        {
+          const std::array<Id, 3> sources = o < static_cast<Id>(soup.outputPointCount())
+            ? std::array<Id, 3>{ { soup.outputSource(o), soup.outputSource(o),
+                soup.outputSource(o) } }
+            : fb.Added[static_cast<std::size_t>(o - static_cast<Id>(soup.outputPointCount()))]
+                .Sources;
+          for (const Id s : sources)
+          {
+            EXPECT_TRUE(std::find(own.begin(), own.end(), s) != own.end());
+          }
+        }
+      }
+    }
+  }
+  // The deliberately wrong variant: without welding and without normals,
+  // every soup triangle is its own flat patch and none is a silhouette
+  // triangle (what users saw). (With exact normals a soup already smoothed
+  // right: silhouette points depend on positions and normals only.)
+  SurfaceOptions noWeld = plainOptions();
+  noWeld.Weld = false;
+  const WeldedSurface bare(soupPoints, soupTriangles, {}, {}, noWeld);
+  EXPECT_EQ(
+    smoothSilhouettes(bare.prepared(), perspectiveFrom({ 4, 1, 0.5 }), SmoothingParameters())
+      .SilhouetteTriangleCount,
+    0u);
+}
+
+TEST(WeldedSurface, TextureSeamKeepsOnePointPerSide)
+{
+  // The sphere cut into two charts: the triangles of the last sector (a
+  // strip from pole to pole) get their own copies of all their points, as
+  // an exporter does for a separate texture chart.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  const int sectors = 10;
+  coretest::unitSphere(6, sectors, points, triangles);
+  const std::size_t original = points.size();
+  const double pi = 3.14159265358979323846;
+  std::map<Id, Id> copyOf;
+  std::vector<unsigned char> chart(original, 0);
+  for (Triangle& t : triangles)
+  {
+    const glm::dvec3 centre =
+      (points[static_cast<std::size_t>(t[0])] + points[static_cast<std::size_t>(t[1])] +
+        points[static_cast<std::size_t>(t[2])]) /
+      3.0;
+    const double phi = std::atan2(centre.y, centre.x);
+    if (!(phi < 0.0 && phi > -2.0 * pi / sectors))
+    {
+      continue;
+    }
+    for (Id& p : t)
+    {
+      auto inserted = copyOf.emplace(p, static_cast<Id>(points.size()));
+      if (inserted.second)
+      {
+        points.push_back(points[static_cast<std::size_t>(p)]);
+        chart.push_back(1);
+      }
+      p = inserted.first->second;
+    }
+  }
+  ASSERT_FALSE(copyOf.empty());
+  const WeldedSurface surface(points, triangles, points, {}, plainOptions());
+  EXPECT_EQ(surface.statistics().WeldedPointCount, copyOf.size());
+  // A view from above: its silhouette runs round the sphere below the
+  // equator's height and crosses the seam (the +x meridian).
+  const SmoothingResult result =
+    smoothSilhouettes(surface.prepared(), perspectiveFrom({ 0, 0.3, 4 }), SmoothingParameters());
+  const SurfaceFrame frame = surface.assemble(result);
+  std::map<std::size_t, std::set<unsigned char>> chartsOfNewPoint;
+  std::size_t onSeam = 0;
+  for (const SurfaceFrame::AddedPoint& added : frame.Added)
+  {
+    std::set<unsigned char> charts;
+    for (const Id s : added.Sources)
+    {
+      charts.insert(chart[static_cast<std::size_t>(s)]);
+    }
+    // An added point comes from one side of the seam only.
+    EXPECT_EQ(charts.size(), 1u);
+    chartsOfNewPoint[added.NewPoint].insert(*charts.begin());
+  }
+  for (const auto& entry : chartsOfNewPoint)
+  {
+    onSeam += entry.second.size() == 2 ? 1 : 0;
+  }
+  // The silhouette crosses the seam: its points there exist once per side.
+  EXPECT_GE(onSeam, 1u);
+  EXPECT_EQ(frame.Added.size(), result.NewPoints.size() + onSeam);
+}
+
+TEST(WeldedSurface, ReversedInputKeepsItsWindingAndSmoothsAsTheOrientedMesh)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::unitSphere(6, 10, points, triangles);
+  std::vector<Triangle> mixed = triangles;
+  std::mt19937 random(3);
+  for (Triangle& t : mixed)
+  {
+    if (random() % 10 < 3)
+    {
+      t = oriented(t, true);
+    }
+  }
+  const WeldedSurface clean(points, triangles, {}, {}, plainOptions());
+  const WeldedSurface reversed(points, mixed, {}, {}, plainOptions());
+  EXPECT_GT(reversed.statistics().ReversedTriangleCount, 0u);
+  const ViewGeometry view = perspectiveFrom({ 3, -2, 1 });
+  const SmoothingResult a = smoothSilhouettes(clean.prepared(), view, SmoothingParameters());
+  const SmoothingResult b = smoothSilhouettes(reversed.prepared(), view, SmoothingParameters());
+  EXPECT_EQ(a.SilhouetteTriangleCount, b.SilhouetteTriangleCount);
+  const SurfaceFrame fa = clean.assemble(a);
+  const SurfaceFrame fb = reversed.assemble(b);
+  ASSERT_EQ(fa.Triangles.size(), fb.Triangles.size());
+  // Same triangles; each wound as its own input triangle was.
+  std::size_t turned = 0;
+  for (std::size_t t = 0; t < fb.Triangles.size(); ++t)
+  {
+    const Id source = fb.SourceTriangle[t];
+    const bool inputTurned =
+      mixed[static_cast<std::size_t>(source)] != triangles[static_cast<std::size_t>(source)];
+    const Triangle& x = fa.Triangles[t];
+    const Triangle& y = fb.Triangles[t];
+    const bool same = std::is_permutation(x.begin(), x.end(), y.begin());
+    EXPECT_TRUE(same);
+    const bool reversedWinding = y == oriented(x, true) || y == Triangle{ { x[1], x[0], x[2] } } ||
+      y == Triangle{ { x[2], x[1], x[0] } };
+    EXPECT_EQ(reversedWinding, inputTurned);
+    turned += reversedWinding ? 1 : 0;
+  }
+  EXPECT_GT(turned, 0u);
+  // The deliberately wrong variant: without orientation the silhouette
+  // triangles are not those of the sphere.
+  SurfaceOptions noOrient = plainOptions();
+  noOrient.Orient = false;
+  const WeldedSurface raw(points, mixed, {}, {}, noOrient);
+  EXPECT_NE(smoothSilhouettes(raw.prepared(), view, SmoothingParameters()).SilhouetteTriangleCount,
+    a.SilhouetteTriangleCount);
+}
+
+TEST(WeldedSurface, CleanMeshIsThePreparedMeshItself)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::torus(16, 8, 0.4, points, triangles);
+  const WeldedSurface surface(points, triangles, {}, { { 0, 1 }, { 1, 2 } }, plainOptions());
+  const SmoothingResult result =
+    smoothSilhouettes(surface.prepared(), perspectiveFrom({ 0.5, 3, 1 }), SmoothingParameters());
+  const SurfaceFrame frame = surface.assemble(result);
+  std::vector<Triangle> expected;
+  std::vector<Id> source;
+  std::vector<unsigned char> kind;
+  assembleTriangles(surface.prepared(), result, expected, source, kind);
+  EXPECT_EQ(frame.Triangles, expected);
+  EXPECT_EQ(frame.SourceTriangle, source);
+  EXPECT_EQ(frame.Kind, kind);
+  EXPECT_EQ(frame.Added.size(), result.NewPoints.size());
+  EXPECT_EQ(surface.outputPointCount(), surface.prepared().points().size());
+}
+
+TEST(WeldedSurface, FlatShadedNormalsAreNotSeams)
+{
+  // The sphere as a soup whose normals are the faces' own (flat shading):
+  // every edge would be a normal seam.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::unitSphere(6, 10, points, triangles);
+  std::vector<glm::dvec3> soupPoints;
+  std::vector<Triangle> soupTriangles;
+  makeSoup(points, triangles, soupPoints, soupTriangles);
+  std::vector<glm::dvec3> faceNormals;
+  for (const Triangle& t : soupTriangles)
+  {
+    const glm::dvec3 n = glm::normalize(
+      glm::cross(soupPoints[t[1]] - soupPoints[t[0]], soupPoints[t[2]] - soupPoints[t[0]]));
+    faceNormals.insert(faceNormals.end(), 3, n);
+  }
+  const WeldedSurface surface(soupPoints, soupTriangles, faceNormals, {}, plainOptions());
+  EXPECT_TRUE(surface.statistics().FlatShadedNormals);
+  EXPECT_EQ(surface.statistics().NormalSeamEdgeCount, 0u);
+  EXPECT_TRUE(surface.prepared().features().empty());
+}
+
+TEST(FlatSidedCreases, BoxEdgesYesCoarseSphereNo)
+{
+  // An 8-point box: 12 creases at 90 degrees between flat pairs.
+  const std::vector<glm::dvec3> box{ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 },
+    { 0, 0, 1 }, { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } };
+  const std::vector<Triangle> faces{ { { 0, 2, 1 } }, { { 0, 3, 2 } }, { { 4, 5, 6 } },
+    { { 4, 6, 7 } }, { { 0, 1, 5 } }, { { 0, 5, 4 } }, { { 1, 2, 6 } }, { { 1, 6, 5 } },
+    { { 2, 3, 7 } }, { { 2, 7, 6 } }, { { 3, 0, 4 } }, { { 3, 4, 7 } } };
+  EXPECT_EQ(flatSidedCreases(box, faces, 60.0).size(), 12u);
+  EXPECT_EQ(flatSidedCreases(box, faces, 95.0).size(), 0u);
+  // The octahedron (109-degree edges, no flat neighbours): none, where a
+  // plain dihedral threshold marks all 12.
+  const std::vector<glm::dvec3> octahedron{ { 1, 0, 0 }, { -1, 0, 0 }, { 0, 1, 0 }, { 0, -1, 0 },
+    { 0, 0, 1 }, { 0, 0, -1 } };
+  std::vector<Triangle> eight;
+  for (const Id x : { 0, 1 })
+  {
+    for (const Id y : { 2, 3 })
+    {
+      for (const Id z : { 4, 5 })
+      {
+        const bool positive = (x == 0) == (y == 2) ? z == 4 : z == 5;
+        eight.push_back(positive ? Triangle{ { x, y, z } } : Triangle{ { x, z, y } });
+      }
+    }
+  }
+  EXPECT_TRUE(flatSidedCreases(octahedron, eight, 60.0).empty());
+  EXPECT_EQ(featureEdgesByAngle(octahedron, eight, 60.0).size(), 12u);
+  // Parametric grids have planar quads: a 12 x 6 torus (60-degree rings) is
+  // clear of the default 65 degrees; an 8 x 4 torus (90) is taken as creased,
+  // a limitation the header states.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::torus(12, 6, 0.4, points, triangles);
+  EXPECT_TRUE(flatSidedCreases(points, triangles, 65.0).empty());
+  coretest::torus(8, 4, 0.4, points, triangles);
+  EXPECT_FALSE(flatSidedCreases(points, triangles, 65.0).empty());
+}

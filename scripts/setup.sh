@@ -7,7 +7,7 @@ set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${SILHOUETTE_BUILD_DIR:-$here/build}"
 
-packages=(cmake make g++ pkg-config libvtk9-dev python3-dev libglm-dev libosd-dev libosmesa6-dev libx11-dev libgtest-dev
+packages=(cmake make g++ pkg-config libvtk9-dev python3-dev libglm-dev libosd-dev libosmesa6-dev libx11-dev libgtest-dev assimp-testmodels
   xvfb xauth)
 
 missing=()

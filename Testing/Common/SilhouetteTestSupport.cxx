@@ -6,10 +6,12 @@
 #include "vtkDataArray.h"
 #include "vtkIcosphereSource.h"
 #include "vtkMath.h"
+#include "vtkOBJReader.h"
 #include "vtkPLYReader.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSTLReader.h"
 #include "vtkXMLPolyDataReader.h"
 #include <vtksys/SystemTools.hxx>
 
@@ -176,6 +178,12 @@ vtkSmartPointer<vtkCamera> CameraAroundMesh(
   return camera;
 }
 
+std::string AssetModelsFolder()
+{
+  const std::string folder = "/usr/share/assimp/models";
+  return vtksys::SystemTools::FileExists(folder + "/OBJ/spider.obj", true) ? folder : std::string();
+}
+
 std::string DataFile(int argc, char* argv[], const std::string& name)
 {
   for (int i = 0; i + 1 < argc; ++i)
@@ -204,6 +212,18 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
     auto vtp = vtkSmartPointer<vtkXMLPolyDataReader>::New();
     vtp->SetFileName(path.c_str());
     reader = vtp;
+  }
+  else if (extension == ".obj")
+  {
+    auto obj = vtkSmartPointer<vtkOBJReader>::New();
+    obj->SetFileName(path.c_str());
+    reader = obj;
+  }
+  else if (extension == ".stl")
+  {
+    auto stl = vtkSmartPointer<vtkSTLReader>::New();
+    stl->SetFileName(path.c_str());
+    reader = stl;
   }
   else
   {

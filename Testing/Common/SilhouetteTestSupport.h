@@ -72,6 +72,10 @@ vtkSmartPointer<vtkCamera> CameraAroundMesh(
 /// the test's command line.
 std::string DataFile(int argc, char* argv[], const std::string& name);
 
+/// The folder of Debian's assimp-testmodels meshes (/usr/share/assimp/models),
+/// or an empty string when the package is not installed.
+std::string AssetModelsFolder();
+
 /// Reads a mesh by extension (.ply .vtp .obj .stl .vtk); nullptr on failure.
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path);
 

@@ -161,6 +161,50 @@ bool ParseCameraOption(const Option& option, ArgumentList& arguments, CameraOpti
     RejectInlineValue(option);
     camera.PerturbVertices = false;
   }
+  else if (name == "--no-weld")
+  {
+    RejectInlineValue(option);
+    camera.Weld = false;
+  }
+  else if (name == "--weld-tolerance")
+  {
+    const std::string text = arguments.TakeValue(option);
+    camera.WeldTolerance = ParseNumber(name, text);
+    if (!(camera.WeldTolerance >= 0.0) || !std::isfinite(camera.WeldTolerance))
+    {
+      throw UsageError("option '" + name + "' needs a distance of 0 or more, got '" + text + "'");
+    }
+  }
+  else if (name == "--no-orientation")
+  {
+    RejectInlineValue(option);
+    camera.Orient = false;
+  }
+  else if (name == "--no-normal-seams")
+  {
+    RejectInlineValue(option);
+    camera.NormalSeams = false;
+  }
+  else if (name == "--no-flat-creases")
+  {
+    RejectInlineValue(option);
+    camera.FlatCreases = false;
+  }
+  else if (name == "--flat-crease-angle")
+  {
+    const std::string text = arguments.TakeValue(option);
+    const double angle = ParseNumber(name, text);
+    if (!(angle >= 0.0 && angle <= 180.0))
+    {
+      throw UsageError("option '" + name + "' needs degrees from 0 to 180, got '" + text + "'");
+    }
+    camera.FlatCreaseAngle = angle;
+  }
+  else if (name == "--double-precision")
+  {
+    RejectInlineValue(option);
+    camera.DoublePrecision = true;
+  }
   else
   {
     return false;
@@ -232,6 +276,26 @@ Smoothing options (with the camera options wherever those are taken):
                            feature edge
   --no-perturbation        do not lower vertices around concave silhouette
                            segments (the paper's III-E; default: lowered)
+  --flat-crease-angle DEG  creases between flat faces (boxes, CAD parts) are
+                           edges sharper than DEG (0 to 180) whose two
+                           triangles each lie flat against another neighbour
+                           (default 65)
+  --no-flat-creases        do not detect creases between flat faces
+                           (default: detected)
+  --no-normal-seams        do not take points at one position with different
+                           normals as a crease (default: taken, as asset
+                           files mark hard edges)
+  --weld-tolerance D       points within distance D are one vertex of the
+                           surface (default 0: equal coordinates)
+  --no-weld                only shared point ids join triangles (default:
+                           points at one position are one vertex, so texture
+                           seams and triangle soups smooth as one surface)
+  --no-orientation         keep the triangles' orientation as given (default:
+                           made consistent per connected part, closed parts
+                           outward; the output keeps the input's winding)
+  --double-precision       store the output points as doubles (default: the
+                           input's type; float far from the origin rounds the
+                           added points)
 
 The framing camera is vtkRenderer::ResetCamera() on the mesh's bounds: it
 looks along -Z at the centre of the bounding box, view-up +Y, from the

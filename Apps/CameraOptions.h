@@ -31,6 +31,13 @@ struct CameraOptions
   std::optional<double> FeatureAngle; ///< detect feature edges sharper than this
   bool FeatureLines = true;           ///< line cells mark feature edges
   bool PerturbVertices = true;
+  bool Weld = true;                      ///< points at one position are one vertex
+  double WeldTolerance = 0.0;            ///< 0: equal coordinates only
+  bool Orient = true;                    ///< consistent orientation per component
+  bool NormalSeams = true;               ///< normals split at a point mark a crease
+  bool FlatCreases = true;               ///< creases between flat faces
+  std::optional<double> FlatCreaseAngle; ///< the filter's default when unset
+  bool DoublePrecision = false;          ///< output points in double
 };
 
 /// Largest accepted viewport side, to keep images and buffers sane.

@@ -20,7 +20,7 @@ al., "Silhouette Smoothing for Real-Time Rendering of Mesh Surfaces", IEEE
 TVCG 14(3), 2008), with vtkSilhouetteSmoothingFilter.
 
 Commands:
-  smooth INPUT [-o OUTPUT] [--json] [camera options]
+  smooth INPUT [-o OUTPUT] [--lines-output LINES.vtp] [--json] [camera options]
       smooth the silhouette of INPUT for one view, optionally write the
       result, and print figures about it
   render INPUT -o IMAGE.png [--style STYLE] [--no-smoothing] [--json]
@@ -69,7 +69,8 @@ std::string FiguresHelp()
 
 std::string SmoothHelp()
 {
-  return R"(Usage: silhouette smooth INPUT [-o OUTPUT] [--json] [camera options]
+  return R"(Usage: silhouette smooth INPUT [-o OUTPUT] [--lines-output LINES.vtp] [--json]
+                        [camera options]
 
 Reads INPUT, smooths its silhouette for the view of the camera options with
 vtkSilhouetteSmoothingFilter, writes the result if -o is given, and prints
@@ -79,8 +80,13 @@ reader: .ply (vtkPLYReader), .obj (vtkOBJReader), .stl (vtkSTLReader), .vtp
 
 Options:
   -o, --output FILE   write the smoothed mesh to FILE: .vtp (VTK XML, binary,
-                      zlib-compressed) or .ply (binary) (default: nothing is
-                      written)
+                      zlib-compressed: every array) or .ply (binary: points,
+                      polygons, normals, texture coordinates and colours; the
+                      arrays it cannot hold are named on stderr) (default:
+                      nothing is written)
+  --lines-output FILE write the smoothed silhouette polylines (the filter's
+                      second output, with normals) to FILE, a .vtp (default:
+                      nothing is written)
   --json              print the figures as one JSON object instead of text
                       (default: text)
   -h, --help          show this help and exit
@@ -137,6 +143,8 @@ Options:
                           interpolated N.(E-V) on its two mixed edges, with
                           the filter's normals) (default: smoothed). The
                           figures still describe the smoothing.
+  --lines-output FILE     also write the smoothed silhouette polylines to
+                          FILE, a .vtp (default: nothing is written)
   --json                  print the figures as one JSON object instead of text
                           (default: text); its "output" is the image
 )" + RenderBackendHelp(26) +
@@ -794,6 +802,11 @@ CommandLine ParseCommandLine(int argc, char* argv[])
     result.What = CommandLine::Action::Smooth;
     SmoothOptions& smooth = result.Smooth;
     ParseCommand(command, arguments, smooth, [&smooth](const Option& option, ArgumentList& args) {
+      if (option.Name == "--lines-output")
+      {
+        smooth.LinesOutput = args.TakeValue(option);
+        return true;
+      }
       if (!IsOutputOption(option))
       {
         return false;
@@ -811,6 +824,10 @@ CommandLine ParseCommandLine(int argc, char* argv[])
       if (IsOutputOption(option))
       {
         render.Output = args.TakeValue(option);
+      }
+      else if (option.Name == "--lines-output")
+      {
+        render.LinesOutput = args.TakeValue(option);
       }
       else if (option.Name == "--backend")
       {

@@ -33,6 +33,7 @@ struct SmoothOptions
 {
   std::string Input;
   std::optional<std::string> Output;
+  std::optional<std::string> LinesOutput; ///< the silhouette polylines (.vtp)
   bool Json = false;
   CameraOptions Camera;
 };
@@ -41,6 +42,7 @@ struct RenderOptions
 {
   std::string Input;
   std::string Output;
+  std::optional<std::string> LinesOutput; ///< the silhouette polylines (.vtp)
   RenderStyle Style = RenderStyle::Shaded;
   bool NoSmoothing = false;
   bool Json = false;

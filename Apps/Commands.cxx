@@ -41,6 +41,32 @@ void PrintFigures(const Figures& figures, bool json)
   std::cout.flush();
 }
 
+// The filter's warnings, one line each on stderr: the work goes on.
+void PrintWarnings(const SmoothingRun& run)
+{
+  for (const std::string& warning : run.Warnings)
+  {
+    std::cerr << "silhouette: warning: " << warning << "\n";
+  }
+}
+
+// What a .ply could not keep, said once on stderr.
+void ReportDropped(const std::vector<std::string>& dropped, const std::string& path)
+{
+  if (dropped.empty())
+  {
+    return;
+  }
+  std::string names;
+  for (const std::string& name : dropped)
+  {
+    names += (names.empty() ? "" : ", ") + name;
+  }
+  std::cerr << "silhouette: note: PLY holds points, polygons, normals, texture coordinates and "
+               "colours only: "
+            << names << " are not in '" << path << "' (write .vtp to keep them)\n";
+}
+
 } // namespace
 
 void RunSmooth(const SmoothOptions& options)
@@ -49,15 +75,24 @@ void RunSmooth(const SmoothOptions& options)
   {
     CheckMeshOutputPath(*options.Output);
   }
+  if (options.LinesOutput)
+  {
+    CheckLinesOutputPath(*options.LinesOutput);
+  }
   vtkSmartPointer<vtkPolyData> mesh = ReadMeshWithTriangles(options.Input);
   const OffscreenView view = MakeOffscreenView(options.Camera.ViewportSize);
   SetUpCamera(view.Renderer, mesh->GetBounds(), options.Camera);
   vtkCamera* camera = view.Renderer->GetActiveCamera();
 
   const SmoothingRun run = SmoothSilhouette(mesh, camera, options.Camera);
+  PrintWarnings(run);
   if (options.Output)
   {
-    WriteMesh(run.Filter->GetOutput(), *options.Output);
+    ReportDropped(WriteMesh(run.Filter->GetOutput(), *options.Output), *options.Output);
+  }
+  if (options.LinesOutput)
+  {
+    WriteLines(run.Filter->GetSilhouetteOutput(), *options.LinesOutput);
   }
   PrintFigures(CollectFigures(options.Input, options.Output, run.Filter->GetOutput(),
                  run.PrepareMilliseconds, run.MedianMilliseconds, options.Camera, camera),
@@ -67,6 +102,10 @@ void RunSmooth(const SmoothOptions& options)
 void RunRender(const RenderOptions& options)
 {
   CheckImageOutputPath(options.Output);
+  if (options.LinesOutput)
+  {
+    CheckLinesOutputPath(*options.LinesOutput);
+  }
   RequireDisplay();
   vtkSmartPointer<vtkPolyData> mesh = ReadMeshWithTriangles(options.Input);
   const OffscreenView view = MakeOffscreenView(options.Camera.ViewportSize);
@@ -74,7 +113,12 @@ void RunRender(const RenderOptions& options)
   vtkCamera* camera = view.Renderer->GetActiveCamera();
 
   const SmoothingRun run = SmoothSilhouette(mesh, camera, options.Camera);
+  PrintWarnings(run);
   RenderToPng(view, run.Filter, mesh, options);
+  if (options.LinesOutput)
+  {
+    WriteLines(run.Filter->GetSilhouetteOutput(), *options.LinesOutput);
+  }
   PrintFigures(CollectFigures(options.Input, options.Output, run.Filter->GetOutput(),
                  run.PrepareMilliseconds, run.MedianMilliseconds, options.Camera, camera),
     options.Json);

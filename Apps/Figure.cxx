@@ -1,10 +1,10 @@
 #include "Figure.h"
 
 #include "CliErrors.h"
-#include "Smoothing.h"
 #include "MeshIO.h"
 #include "Rendering.h"
 #include "RenderingBackend.h"
+#include "Smoothing.h"
 #include "VtkErrorLog.h"
 
 #include "EvaluationModels.h"

@@ -5,27 +5,33 @@
 #include "ObjCheck.h"
 #include "PlyCheck.h"
 #include "StlCheck.h"
-#include "VtpCheck.h"
 #include "VtkErrorLog.h"
+#include "VtpCheck.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkPLYReader.h>
-#include <vtkPLYWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataReader.h>
 #include <vtkSTLReader.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 
 namespace cli
@@ -200,51 +206,190 @@ void CheckMeshOutputPath(const std::string& path)
   RequireOutputDirectory(path);
 }
 
-void WriteMesh(vtkPolyData* mesh, const std::string& path)
+namespace
 {
-  CheckMeshOutputPath(path);
-  VtkErrorLog& errors = VtkErrorLog::Instance();
-  errors.Clear();
-  int written = 0;
-  if (LowercaseExtension(path) == ".vtp")
+
+template<typename T>
+void Put(std::ostream& out, T value)
+{
+  // PLY binary_little_endian, written as the machine stores it.
+  static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__, "a little-endian machine");
+  out.write(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+
+// Our own PLY writer: vtkPLYWriter (VTK 9.1) cannot write normals, and the
+// shading normals are what makes the smoothed mesh look smooth.
+std::vector<std::string> WritePly(vtkPolyData* mesh, const std::string& path)
+{
+  static_assert(sizeof(float) == 4 && sizeof(double) == 8, "IEEE floats");
+  vtkPointData* pd = mesh->GetPointData();
+  vtkDataArray* normals = pd->GetNormals();
+  vtkDataArray* tcoords = pd->GetTCoords();
+  if (tcoords && tcoords->GetNumberOfComponents() != 2)
   {
-    vtkNew<vtkXMLPolyDataWriter> writer;
-    errors.Watch(writer);
-    writer->SetInputData(mesh);
-    writer->SetFileName(path.c_str());
-    writer->SetDataModeToBinary();
-    writer->SetCompressorTypeToZLib();
-    written = writer->Write();
+    tcoords = nullptr;
   }
-  else
+  vtkUnsignedCharArray* colors = vtkUnsignedCharArray::SafeDownCast(pd->GetScalars());
+  if (colors && colors->GetNumberOfComponents() != 3 && colors->GetNumberOfComponents() != 4)
   {
-    // vtkPLYWriter appends ".ply" to a name that does not end in lower-case
-    // ".ply" (and its WriteToOutputString gives nothing in 9.1): write under
-    // such a name next to the target, then rename.
-    const bool nameKept = std::filesystem::path(path).extension() == ".ply";
-    const std::string writtenPath = nameKept ? path : path + ".partial.ply";
-    vtkNew<vtkPLYWriter> writer;
-    errors.Watch(writer);
-    writer->SetInputData(mesh);
-    writer->SetFileName(writtenPath.c_str());
-    writer->SetFileTypeToBinary();
-    written = writer->Write();
-    if (!nameKept && written && !errors.HasErrors())
+    colors = nullptr;
+  }
+  const bool doubles = mesh->GetPoints() && mesh->GetPoints()->GetDataType() == VTK_DOUBLE;
+  std::vector<std::string> dropped;
+  for (vtkFieldData* fd :
+    { static_cast<vtkFieldData*>(pd), static_cast<vtkFieldData*>(mesh->GetCellData()) })
+  {
+    for (int a = 0; a < fd->GetNumberOfArrays(); ++a)
     {
-      std::error_code renameError;
-      std::filesystem::rename(writtenPath, path, renameError);
-      if (renameError)
+      vtkAbstractArray* array = fd->GetAbstractArray(a);
+      if (array != normals && array != tcoords && array != colors)
       {
-        std::filesystem::remove(writtenPath, renameError);
-        throw RuntimeError("cannot write " + Quoted(path) + ": " + renameError.message());
+        dropped.push_back(array->GetName() ? array->GetName() : "(an unnamed array)");
       }
     }
   }
+  if (mesh->GetNumberOfLines() > 0)
+  {
+    dropped.emplace_back("line cells");
+  }
+  if (mesh->GetNumberOfVerts() > 0)
+  {
+    dropped.emplace_back("vertex cells");
+  }
+
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out)
+  {
+    throw RuntimeError("cannot write " + Quoted(path) + ": " + std::strerror(errno));
+  }
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  out << "ply\nformat binary_little_endian 1.0\ncomment written by silhouette\n";
+  out << "element vertex " << n << "\n";
+  for (const char* axis : { "x", "y", "z" })
+  {
+    out << "property " << (doubles ? "double " : "float ") << axis << "\n";
+  }
+  if (normals)
+  {
+    out << "property float nx\nproperty float ny\nproperty float nz\n";
+  }
+  if (tcoords)
+  {
+    out << "property float u\nproperty float v\n";
+  }
+  if (colors)
+  {
+    out << "property uchar red\nproperty uchar green\nproperty uchar blue\n";
+    if (colors->GetNumberOfComponents() == 4)
+    {
+      out << "property uchar alpha\n";
+    }
+  }
+  vtkCellArray* polys = mesh->GetPolys();
+  out << "element face " << polys->GetNumberOfCells() << "\n";
+  out << "property list uchar int vertex_indices\nend_header\n";
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    for (const double x : p)
+    {
+      if (doubles)
+      {
+        Put(out, x);
+      }
+      else
+      {
+        Put(out, static_cast<float>(x));
+      }
+    }
+    if (normals)
+    {
+      double v[3];
+      normals->GetTuple(i, v);
+      for (const double x : v)
+      {
+        Put(out, static_cast<float>(x));
+      }
+    }
+    if (tcoords)
+    {
+      Put(out, static_cast<float>(tcoords->GetComponent(i, 0)));
+      Put(out, static_cast<float>(tcoords->GetComponent(i, 1)));
+    }
+    if (colors)
+    {
+      for (int k = 0; k < colors->GetNumberOfComponents(); ++k)
+      {
+        Put(out, colors->GetTypedComponent(i, k));
+      }
+    }
+  }
+  auto it = vtk::TakeSmartPointer(polys->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType count = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(count, ids);
+    if (count > 255 || n > 2147483647)
+    {
+      throw RuntimeError("cannot write " + Quoted(path) +
+        ": a polygon has more than 255 points or the mesh more than 2^31 points (write .vtp)");
+    }
+    Put(out, static_cast<unsigned char>(count));
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      Put(out, static_cast<std::int32_t>(ids[k]));
+    }
+  }
+  out.close();
+  if (!out)
+  {
+    throw RuntimeError("cannot write " + Quoted(path) + ": " + std::strerror(errno));
+  }
+  return dropped;
+}
+
+} // namespace
+
+std::vector<std::string> WriteMesh(vtkPolyData* mesh, const std::string& path)
+{
+  CheckMeshOutputPath(path);
+  if (LowercaseExtension(path) == ".ply")
+  {
+    return WritePly(mesh, path);
+  }
+  VtkErrorLog& errors = VtkErrorLog::Instance();
+  errors.Clear();
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  errors.Watch(writer);
+  writer->SetInputData(mesh);
+  writer->SetFileName(path.c_str());
+  writer->SetDataModeToBinary();
+  writer->SetCompressorTypeToZLib();
+  const int written = writer->Write();
   errors.ThrowIfErrors("cannot write " + Quoted(path));
   if (!written)
   {
     throw RuntimeError("cannot write " + Quoted(path));
   }
+  return {};
+}
+
+void CheckLinesOutputPath(const std::string& path)
+{
+  if (LowercaseExtension(path) != ".vtp")
+  {
+    throw RuntimeError("cannot write " + Quoted(path) + ": unknown format for polylines '" +
+      LowercaseExtension(path) + "'; expected .vtp");
+  }
+  RequireOutputDirectory(path);
+}
+
+void WriteLines(vtkPolyData* lines, const std::string& path)
+{
+  CheckLinesOutputPath(path);
+  WriteMesh(lines, path);
 }
 
 } // namespace cli

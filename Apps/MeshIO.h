@@ -5,6 +5,7 @@
 #include <vtkType.h>
 
 #include <string>
+#include <vector>
 
 class vtkPolyData;
 
@@ -33,8 +34,19 @@ void RequireOutputDirectory(const std::string& path);
 /// called before the work so a typo costs nothing.
 void CheckMeshOutputPath(const std::string& path);
 
-/// Writes .vtp (XML, binary, zlib) or .ply (binary); throws RuntimeError on failure.
-void WriteMesh(vtkPolyData* mesh, const std::string& path);
+/// Writes .vtp (XML, binary, zlib: everything) or .ply (binary little-endian:
+/// the points in their own precision, the polygons, and the active normals,
+/// texture coordinates and unsigned-char colours as nx ny nz, u v and red
+/// green blue [alpha], which vtkPLYReader reads back). Returns what the file
+/// could not keep (the names of the other arrays, and "line cells" or
+/// "vertex cells"), empty for .vtp. Throws RuntimeError on failure.
+std::vector<std::string> WriteMesh(vtkPolyData* mesh, const std::string& path);
+
+/// Throws RuntimeError unless WriteLines can write `path` (.vtp).
+void CheckLinesOutputPath(const std::string& path);
+
+/// Writes polylines (the filter's silhouette output) to .vtp.
+void WriteLines(vtkPolyData* lines, const std::string& path);
 
 } // namespace cli
 

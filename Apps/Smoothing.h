@@ -3,6 +3,9 @@
 
 #include <vtkSmartPointer.h>
 
+#include <string>
+#include <vector>
+
 class vtkCamera;
 class vtkPolyData;
 class vtkSilhouetteSmoothingFilter;
@@ -25,6 +28,8 @@ struct SmoothingRun
   /// Median wall time of one frame once prepared: what every camera move
   /// costs, in milliseconds.
   double MedianMilliseconds = 0.0;
+  /// The filter's warnings (one line each), e.g. about the input's normals.
+  std::vector<std::string> Warnings;
 };
 
 /**

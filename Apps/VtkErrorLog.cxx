@@ -121,6 +121,20 @@ void VtkErrorLog::Record(Kind kind, bool fromWatchedObject, const char* text)
   }
 }
 
+std::vector<std::string> VtkErrorLog::Warnings() const
+{
+  std::vector<std::string> warnings;
+  for (const Message& m : this->Messages)
+  {
+    if (m.Severity == Kind::Warning && !m.Text.empty() &&
+      std::find(warnings.begin(), warnings.end(), m.Text) == warnings.end())
+    {
+      warnings.push_back(m.Text);
+    }
+  }
+  return warnings;
+}
+
 std::string VtkErrorLog::Summary() const
 {
   // Most telling first: an error of the object we asked for, any specific

@@ -35,6 +35,9 @@ public:
 
   bool HasErrors() const;
 
+  /// The warnings recorded, one line each, without repeats, in order.
+  std::vector<std::string> Warnings() const;
+
   /// The most telling message recorded, reduced to one line, or "" if none.
   std::string Summary() const;
 

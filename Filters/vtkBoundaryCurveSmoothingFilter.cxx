@@ -14,6 +14,7 @@
 #include "vtkSilhouetteFilterSupport.h"
 
 #include "BoundaryCurveSmoother.h"
+#include "SurfaceWelding.h"
 
 #include <algorithm>
 
@@ -81,6 +82,22 @@ int vtkBoundaryCurveSmoothingFilter::RequestData(
     }
     internal.NonFinitePoints = triangles.NonFinitePoints;
     internal.TriangleCell = std::move(triangles.CellIds);
+    // The 2003 method joins triangles by point ids: points that only share a
+    // position (texture seams, triangle soups) leave borders it cannot smooth.
+    std::size_t shared = 0;
+    const std::vector<silsmooth::Id> vertex = silsmooth::weldCoincidentPoints(triangles.Points);
+    for (std::size_t i = 0; i < vertex.size(); ++i)
+    {
+      shared += vertex[i] != static_cast<silsmooth::Id>(i) ? 1 : 0;
+    }
+    if (shared > 0 && internal.NonFinitePoints == 0)
+    {
+      vtkWarningMacro(<< shared
+                      << " points share their position with another point (texture seams or a "
+                         "triangle soup): this method joins triangles by point ids, so the edges "
+                         "there are borders to it. Merge the points first (vtkCleanPolyData), "
+                         "or use vtkSilhouetteSmoothingFilter, which welds them itself.");
+    }
     internal.Mesh = std::make_unique<silsmooth::BoundaryCurveMesh>(
       std::move(triangles.Points), std::move(triangles.Cells), triangles.Normals);
     internal.CachedInput = input;

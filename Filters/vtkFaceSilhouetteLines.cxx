@@ -14,6 +14,7 @@
 #include "vtkSMPTools.h"
 
 #include "FaceSilhouetteLines.h"
+#include "WeldedSurface.h"
 #include "vtkSilhouetteFilterSupport.h"
 
 #include <algorithm>
@@ -23,7 +24,7 @@ vtkStandardNewMacro(vtkFaceSilhouetteLines);
 
 struct vtkFaceSilhouetteLines::Internals
 {
-  std::unique_ptr<silsmooth::PreparedMesh> Mesh;
+  std::unique_ptr<silsmooth::WeldedSurface> Mesh;
   vtkPolyData* CachedInput = nullptr;
   vtkMTimeType CachedInputTime = 0;
   bool NonFinite = false;
@@ -73,8 +74,16 @@ int vtkFaceSilhouetteLines::RequestData(
       return 0;
     }
     internal.NonFinite = mesh.NonFinitePoints > 0;
-    internal.Mesh = std::make_unique<silsmooth::PreparedMesh>(
-      std::move(mesh.Points), std::move(mesh.Cells), mesh.Normals);
+    if (!internal.NonFinite)
+    {
+      // The surface as the smoothing filter prepares it (with its defaults):
+      // points at one position are one vertex, triangles oriented, normal
+      // seams and flat creases split the normals. Line cells are not creases
+      // here: this filter has no FeatureLines option.
+      internal.Mesh =
+        std::make_unique<silsmooth::WeldedSurface>(std::move(mesh.Points), std::move(mesh.Cells),
+          mesh.Normals, std::vector<silsmooth::FeatureEdge>{}, silsmooth::SurfaceOptions{});
+    }
     internal.CachedInput = input;
     internal.CachedInputTime = input->GetMTime();
   }
@@ -91,7 +100,8 @@ int vtkFaceSilhouetteLines::RequestData(
       });
     };
   const silsmooth::FaceSilhouette lines =
-    silsmooth::faceSilhouette(*internal.Mesh, view.Geometry, smpFor);
+    silsmooth::faceSilhouette(internal.Mesh->prepared(), view.Geometry, smpFor);
+  const silsmooth::PreparedMesh& prepared = internal.Mesh->prepared();
 
   const vtkIdType count = static_cast<vtkIdType>(lines.Crossings.size());
   vtkNew<vtkPoints> points;
@@ -117,10 +127,19 @@ int vtkFaceSilhouetteLines::RequestData(
     const silsmooth::EdgeCrossing& c = lines.Crossings[static_cast<std::size_t>(i)];
     points->SetPoint(i, c.Position.x, c.Position.y, c.Position.z);
     normals->SetTuple3(i, c.Normal.x, c.Normal.y, c.Normal.z);
-    ends->SetTypedComponent(i, 0, c.Low);
-    ends->SetTypedComponent(i, 1, c.High);
-    parameter->SetValue(i, c.T);
-    outPD->InterpolateEdge(inPD, i, c.Low, c.High, c.T);
+    // Prepared points are input points or copies of them (feature splits).
+    vtkIdType low = prepared.sourcePoint(c.Low);
+    vtkIdType high = prepared.sourcePoint(c.High);
+    double t = c.T;
+    if (low > high)
+    {
+      std::swap(low, high);
+      t = 1.0 - t;
+    }
+    ends->SetTypedComponent(i, 0, low);
+    ends->SetTypedComponent(i, 1, high);
+    parameter->SetValue(i, t);
+    outPD->InterpolateEdge(inPD, i, low, high, t);
   }
   output->SetPoints(points);
   outPD->AddArray(ends);

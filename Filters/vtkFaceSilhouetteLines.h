@@ -38,7 +38,11 @@
  * - `Normals` (float): the normalised linear interpolation of the shading
  *   normals along the edge (the active normals);
  * - `EdgeEnds` (vtkIdType, 2 components): the input point ids of the edge the
- *   point lies on, lower id first;
+ *   point lies on, lower id first (where several input points share a
+ *   position, the lowest of them: the mesh is prepared as
+ *   vtkSilhouetteSmoothingFilter prepares it by default, welded at equal
+ *   positions and consistently oriented, so triangle soups and texture seams
+ *   give the lines of the surface they stand for);
  * - `EdgeParameter` (double): t such that the point is (1 - t) * first end +
  *   t * second end;
  * - every other input point array, interpolated linearly along the edge.

@@ -34,7 +34,7 @@ started=$SECONDS
 ASAN_OPTIONS=detect_leaks=1 ctest --output-on-failure \
   -R '^core\.|^module\.Test(TopologyInvariants|BadInput|HostileMeshes|VisibilityMethod|BoundaryCurveSmoothing|FaceSilhouetteLines|PNTriangleFilter|ProgressiveMeshFilter|StylizedStrokes)$'
 ASAN_OPTIONS=detect_leaks=0 "${display[@]}" ctest --output-on-failure \
-  -R '^module\.Test(OpenSubdivRefiner|FilterPipeline|SphereAccuracy|SmoothingImages|OrbitCoherence|FeatureCurves)$'
+  -R '^module\.Test(OpenSubdivRefiner|FilterPipeline|SphereAccuracy|SmoothingImages|OrbitCoherence|FeatureCurves|AssetMeshes|AssetImages)$'
 echo "sanitize: core and module tests in $((SECONDS - started)) s"
 started=$SECONDS
 ASAN_OPTIONS=detect_leaks=1 \

@@ -227,15 +227,17 @@ void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
 }
 
 // Verts and lines pass through; polygons and strips become the frame's
-// triangles. `OriginalCellId` is composed with an input array of that name.
-void BuildCells(vtkPolyData* input, vtkPolyData* output, const std::vector<vtkIdType>& triangleCell,
-  const silsmooth::SurfaceFrame& frame)
+// triangles, written by the surface straight into the cell arrays.
+// `OriginalCellId` is composed with an input array of that name.
+silsmooth::SurfaceFrame BuildCells(vtkPolyData* input, vtkPolyData* output,
+  const std::vector<vtkIdType>& triangleCell, const silsmooth::WeldedSurface& surface,
+  const silsmooth::SmoothingResult& result)
 {
   output->SetVerts(input->GetVerts());
   output->SetLines(input->GetLines());
   const vtkIdType passThrough = input->GetNumberOfVerts() + input->GetNumberOfLines();
 
-  const std::size_t outTriangles = frame.Triangles.size();
+  const std::size_t outTriangles = surface.outputTriangleCount(result);
   vtkNew<vtkIdTypeArray> offsets;
   vtkNew<vtkIdTypeArray> connectivity;
   offsets->SetNumberOfValues(static_cast<vtkIdType>(outTriangles + 1));
@@ -248,17 +250,18 @@ void BuildCells(vtkPolyData* input, vtkPolyData* output, const std::vector<vtkId
   unsigned char* kinds = newGeometry->GetPointer(0);
   std::iota(origin.begin(), origin.begin() + passThrough, vtkIdType{ 0 });
   std::fill(kinds, kinds + passThrough, static_cast<unsigned char>(0));
-  vtkIdType* conn = connectivity->GetPointer(0);
+  silsmooth::SurfaceFrame frame = surface.assemble(
+    result, connectivity->GetPointer(0), origin.data() + passThrough, kinds + passThrough);
+  for (vtkIdType c = passThrough; c < outCells; ++c)
+  {
+    origin[static_cast<std::size_t>(c)] =
+      triangleCell[static_cast<std::size_t>(origin[static_cast<std::size_t>(c)])];
+  }
   vtkIdType* offs = offsets->GetPointer(0);
-  for (std::size_t t = 0; t < outTriangles; ++t)
+  for (std::size_t t = 0; t <= outTriangles; ++t)
   {
     offs[t] = static_cast<vtkIdType>(t * 3);
-    std::copy(frame.Triangles[t].begin(), frame.Triangles[t].end(), conn + t * 3);
-    origin[static_cast<std::size_t>(passThrough) + t] =
-      triangleCell[static_cast<std::size_t>(frame.SourceTriangle[t])];
-    kinds[passThrough + static_cast<vtkIdType>(t)] = frame.Kind[t];
   }
-  offs[outTriangles] = static_cast<vtkIdType>(outTriangles * 3);
   vtkNew<vtkCellArray> polys;
   polys->SetData(offsets, connectivity);
   output->SetPolys(polys);
@@ -283,11 +286,11 @@ void BuildCells(vtkPolyData* input, vtkPolyData* output, const std::vector<vtkId
   vtkNew<vtkIdTypeArray> originalCellId;
   originalCellId->SetName("OriginalCellId");
   originalCellId->SetNumberOfValues(outCells);
+  vtkIdType* originalIds = originalCellId->GetPointer(0);
   for (vtkIdType c = 0; c < outCells; ++c)
   {
     const vtkIdType from = origin[static_cast<std::size_t>(c)];
-    originalCellId->SetValue(
-      c, inOriginal ? static_cast<vtkIdType>(inOriginal->GetTuple1(from)) : from);
+    originalIds[c] = inOriginal ? static_cast<vtkIdType>(inOriginal->GetTuple1(from)) : from;
   }
   if (out->GetAbstractArray("OriginalCellId"))
   {
@@ -295,6 +298,7 @@ void BuildCells(vtkPolyData* input, vtkPolyData* output, const std::vector<vtkId
   }
   out->AddArray(newGeometry);
   out->AddArray(originalCellId);
+  return frame;
 }
 
 // Output port 1: the silhouette polylines over their own compact point set.
@@ -505,7 +509,7 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   const silsmooth::PreparedMesh& mesh = internal.Surface->prepared();
   const silsmooth::SmoothingResult result =
     silsmooth::smoothSilhouettes(mesh, view.Geometry, parameters, smpFor);
-  const silsmooth::SurfaceFrame frame = internal.Surface->assemble(result);
+
   this->UpdateProgress(0.6);
   if (this->GetAbortExecute())
   {
@@ -513,12 +517,13 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   }
 
   const vtkIdType numPoints = input->GetNumberOfPoints();
+  const silsmooth::SurfaceFrame frame =
+    BuildCells(input, output, internal.TriangleCell, *internal.Surface, result);
+  this->UpdateProgress(0.7);
   output->SetPoints(BuildPoints(
     input, OutputPointType(input, this->OutputPointsPrecision), *internal.Surface, result, frame));
   BuildPointData(
     input->GetPointData(), output->GetPointData(), numPoints, *internal.Surface, result, frame);
-  this->UpdateProgress(0.8);
-  BuildCells(input, output, internal.TriangleCell, frame);
   if (internal.TooSmallPolygons > 0)
   {
     vtkWarningMacro(<< internal.TooSmallPolygons

@@ -208,8 +208,9 @@ public:
    * carry normals more than 1 degree apart: how OBJ, PLY and glTF files mark
    * hard edges. Each side then keeps its own given normal. Needs point
    * normals on the input and WeldCoincidentPoints. Normals that are only the
-   * triangles' own (flat shading: every corner of all but 1% of the triangles
-   * carries its triangle's normal) tell nothing about the smooth surface:
+   * triangles' own (flat shading: split along at least half of the edges,
+   * every corner of all but 1% of the triangles carrying its triangle's
+   * normal) tell nothing about the smooth surface:
    * they are not used at all, with a warning, and the shading normals are
    * computed. Default on.
    */

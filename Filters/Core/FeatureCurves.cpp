@@ -104,9 +104,10 @@ double cosineOfDegrees(double degrees)
 } // namespace
 
 std::vector<FeatureEdge> featureEdgesByAngle(const std::vector<glm::dvec3>& points,
-  const std::vector<Triangle>& triangles, double angleDegrees)
+  const std::vector<Triangle>& triangles, double angleDegrees, const EdgeTable* given)
 {
-  const EdgeTable table(triangles);
+  const EdgeTable built = given ? EdgeTable() : EdgeTable(triangles);
+  const EdgeTable& table = given ? *given : built;
   const std::vector<double> cosines = dihedralCosines(points, triangles, table);
   const double cosLimit = cosineOfDegrees(angleDegrees);
   std::vector<FeatureEdge> result;
@@ -121,9 +122,10 @@ std::vector<FeatureEdge> featureEdgesByAngle(const std::vector<glm::dvec3>& poin
 }
 
 std::vector<FeatureEdge> flatSidedCreases(const std::vector<glm::dvec3>& points,
-  const std::vector<Triangle>& triangles, double angleDegrees)
+  const std::vector<Triangle>& triangles, double angleDegrees, const EdgeTable* given)
 {
-  const EdgeTable table(triangles);
+  const EdgeTable built = given ? EdgeTable() : EdgeTable(triangles);
+  const EdgeTable& table = given ? *given : built;
   const std::vector<double> cosines = dihedralCosines(points, triangles, table);
   const double cosLimit = cosineOfDegrees(angleDegrees);
   const double cosFlat = cosineOfDegrees(FlatNeighbourDegrees);

@@ -46,7 +46,7 @@ std::vector<FeatureEdge> normalizedFeatureEdges(std::vector<FeatureEdge> edges);
 /// non-zero area are considered: boundary and non-manifold edges are not
 /// features unless marked. Sorted, low id first.
 std::vector<FeatureEdge> featureEdgesByAngle(const std::vector<glm::dvec3>& points,
-  const std::vector<Triangle>& triangles, double angleDegrees);
+  const std::vector<Triangle>& triangles, double angleDegrees, const EdgeTable* table = nullptr);
 
 /// Triangles whose normals are this close are flat against each other.
 constexpr double FlatNeighbourDegrees = 0.5;
@@ -57,8 +57,9 @@ constexpr double FlatNeighbourDegrees = 0.5;
 /// A planar face split into triangles has such neighbours; a tessellated
 /// smooth surface almost never does, even where it is coarse enough to have
 /// edges sharper than any fixed angle (measured in docs/real-assets.md).
+/// `table`, when given, is the edge table of `triangles`.
 std::vector<FeatureEdge> flatSidedCreases(const std::vector<glm::dvec3>& points,
-  const std::vector<Triangle>& triangles, double angleDegrees);
+  const std::vector<Triangle>& triangles, double angleDegrees, const EdgeTable* table = nullptr);
 
 /// The end tangent along `chord` whose unit direction is `direction`, with the
 /// length that makes the Hermite segment approximate a circular arc. A zero

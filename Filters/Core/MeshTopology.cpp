@@ -1,5 +1,7 @@
 #include "MeshTopology.h"
 
+#include <utility>
+
 #include <algorithm>
 
 namespace silsmooth
@@ -43,6 +45,19 @@ EdgeTable::EdgeTable(const std::vector<Triangle>& triangles)
     }
     this->SideEdges[side.Index] = static_cast<Id>(this->Edges.size() - 1);
   }
+}
+
+EdgeTable EdgeTable::withSidesReversed(const std::vector<unsigned char>& reversed) const
+{
+  EdgeTable table = *this;
+  for (std::size_t t = 0; t < reversed.size(); ++t)
+  {
+    if (reversed[t])
+    {
+      std::swap(table.SideEdges[t * 3], table.SideEdges[t * 3 + 2]);
+    }
+  }
+  return table;
 }
 
 } // namespace silsmooth

@@ -34,6 +34,11 @@ public:
   /// Edge id of side k of triangle t; side k joins corner k to corner (k+1)%3.
   Id sideEdge(Id t, int k) const { return this->SideEdges[static_cast<std::size_t>(t) * 3 + k]; }
 
+  /// The table of the same triangles with those marked in `reversed` turned
+  /// over as oriented() turns them (corners 1 and 2 exchanged): the same
+  /// edges and edge ids, sides 0 and 2 exchanged. O(triangles), no sorting.
+  EdgeTable withSidesReversed(const std::vector<unsigned char>& reversed) const;
+
 private:
   std::vector<Edge> Edges;
   std::vector<Id> SideEdges;

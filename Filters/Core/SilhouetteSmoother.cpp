@@ -28,7 +28,7 @@ void serialFor(std::size_t count, const std::function<void(std::size_t, std::siz
 
 PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
   const std::vector<glm::dvec3>& normals, std::vector<FeatureEdge> featureEdges,
-  const std::vector<glm::dvec3>& cornerNormals)
+  const std::vector<glm::dvec3>& cornerNormals, const EdgeTable* edges)
   : Points(std::move(points))
   , Triangles(std::move(triangles))
   , InputPointCount(this->Points.size())
@@ -37,7 +37,8 @@ PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle>
   {
     // Only edges of the triangles can be feature edges.
     featureEdges = normalizedFeatureEdges(std::move(featureEdges));
-    const EdgeTable input(this->Triangles);
+    const EdgeTable built = edges ? EdgeTable() : EdgeTable(this->Triangles);
+    const EdgeTable& input = edges ? *edges : built;
     std::size_t e = 0;
     featureEdges.erase(std::remove_if(featureEdges.begin(), featureEdges.end(),
                          [&](const FeatureEdge& f) {
@@ -65,7 +66,7 @@ PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle>
       this->Points.push_back(this->Points[static_cast<std::size_t>(source)]);
     }
   }
-  this->Edges = EdgeTable(this->Triangles);
+  this->Edges = this->Features.empty() && edges ? *edges : EdgeTable(this->Triangles);
   {
     std::vector<int> uses(this->Edges.edgeCount(), 0);
     for (std::size_t t = 0; t < this->Triangles.size(); ++t)

@@ -53,9 +53,12 @@ public:
   /// their own corners' normals when those differ between the groups by more
   /// than NormalSeamAngleDegrees (the input told the sides apart, as at a
   /// normal seam); otherwise they get the angle-weighted normal as above.
+  ///
+  /// `edges`, when given, is the edge table of `triangles`; it saves building
+  /// it again when no point is split.
   PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
     const std::vector<glm::dvec3>& normals = {}, std::vector<FeatureEdge> featureEdges = {},
-    const std::vector<glm::dvec3>& cornerNormals = {});
+    const std::vector<glm::dvec3>& cornerNormals = {}, const EdgeTable* edges = nullptr);
 
   /// Input points, then the copies made by splitting feature points.
   const std::vector<glm::dvec3>& points() const { return this->Points; }

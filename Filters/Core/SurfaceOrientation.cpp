@@ -21,12 +21,14 @@ int sideDirection(const Triangle& t, int k)
 } // namespace
 
 Orientation orientConsistently(const std::vector<glm::dvec3>& points,
-  const std::vector<Triangle>& triangles, const std::vector<glm::dvec3>& cornerNormals)
+  const std::vector<Triangle>& triangles, const std::vector<glm::dvec3>& cornerNormals,
+  const EdgeTable* given)
 {
   Orientation result;
   const std::size_t n = triangles.size();
   result.Reversed.assign(n, 0);
-  const EdgeTable table(triangles);
+  const EdgeTable built = given ? EdgeTable() : EdgeTable(triangles);
+  const EdgeTable& table = given ? *given : built;
   // The sides of each edge: the first two, and how many in all.
   std::vector<std::array<Id, 2>> sides(table.edgeCount(), { { -1, -1 } });
   std::vector<int> uses(table.edgeCount(), 0);

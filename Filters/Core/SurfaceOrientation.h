@@ -46,8 +46,10 @@ struct Orientation
 
 /// `cornerNormals` may be empty, or hold a normal per triangle corner (3t + k)
 /// for the open components' choice of side.
+/// `table`, when given, is the edge table of `triangles` (saves building it).
 Orientation orientConsistently(const std::vector<glm::dvec3>& points,
-  const std::vector<Triangle>& triangles, const std::vector<glm::dvec3>& cornerNormals = {});
+  const std::vector<Triangle>& triangles, const std::vector<glm::dvec3>& cornerNormals = {},
+  const EdgeTable* table = nullptr);
 
 /// The triangle with two corners exchanged when `reversed` (its winding
 /// turned, its first corner kept).

@@ -146,8 +146,13 @@ std::vector<Triangle> weldTriangles(
 }
 
 std::vector<FeatureEdge> normalSeamEdges(const std::vector<Triangle>& triangles,
-  const std::vector<Id>& vertex, const std::vector<glm::dvec3>& normals, double angleDegrees)
+  const std::vector<Id>& vertex, const std::vector<glm::dvec3>& normals, double angleDegrees,
+  std::size_t* interiorEdges)
 {
+  if (interiorEdges)
+  {
+    *interiorEdges = 0;
+  }
   std::vector<FeatureEdge> seams;
   if (normals.size() != vertex.size())
   {
@@ -195,6 +200,10 @@ std::vector<FeatureEdge> normalSeamEdges(const std::vector<Triangle>& triangles,
     if (count[e] != 2)
     {
       continue;
+    }
+    if (interiorEdges)
+    {
+      ++*interiorEdges;
     }
     const Edge& edge = table.edge(static_cast<Id>(e));
     const Id t0 = sides[e][0] / 3;

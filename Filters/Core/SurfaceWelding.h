@@ -38,8 +38,10 @@ std::vector<Triangle> weldTriangles(
 /// extent whose own points at one end of the edge have normals more than
 /// `angleDegrees` apart. `triangles` are the input's (their own point ids),
 /// `normals` one per point. Zero or non-finite normals never make a seam.
+/// `interiorEdges`, when given, receives the number of edges shared by
+/// exactly two such triangles (the candidates).
 std::vector<FeatureEdge> normalSeamEdges(const std::vector<Triangle>& triangles,
   const std::vector<Id>& vertex, const std::vector<glm::dvec3>& normals,
-  double angleDegrees = NormalSeamAngleDegrees);
+  double angleDegrees = NormalSeamAngleDegrees, std::size_t* interiorEdges = nullptr);
 
 } // namespace silsmooth

@@ -18,7 +18,7 @@ namespace
 {
 
 // Whether every corner of all but 1% of the triangles (of non-zero area)
-// carries its triangle's own normal, either way up.
+// carries its triangle's own normal, either way up (within the seam angle).
 bool hasFaceNormals(const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles,
   const std::vector<glm::dvec3>& normals)
 {
@@ -73,10 +73,18 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
   }
   std::vector<Triangle> welded = weldTriangles(this->InputTriangles, vertex);
 
-  // Every corner's own normal, if the input has normals that are more than
-  // its triangles' own.
-  this->Statistics.FlatShadedNormals =
-    normals.size() == n && hasFaceNormals(points, this->InputTriangles, normals);
+  // Normal seams exist only where points coincide. Flat shading: the normals
+  // split along most edges, each corner carrying its triangle's own normal
+  // (a fine smooth mesh has normals close to its faces' too, but no seams).
+  std::vector<FeatureEdge> seams;
+  if (normals.size() == n && this->Statistics.WeldedPointCount > 0)
+  {
+    std::size_t interior = 0;
+    seams =
+      normalSeamEdges(this->InputTriangles, vertex, normals, NormalSeamAngleDegrees, &interior);
+    this->Statistics.FlatShadedNormals = seams.size() * 2 >= interior && !seams.empty() &&
+      hasFaceNormals(points, this->InputTriangles, normals);
+  }
   const bool useNormals = normals.size() == n && !this->Statistics.FlatShadedNormals;
   std::vector<glm::dvec3> cornerNormals;
   if (useNormals)
@@ -91,11 +99,14 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
     }
   }
 
+  // One edge table for the whole preparation: built for the welded
+  // triangles, its sides turned with the triangles once they are oriented.
+  EdgeTable table(welded);
   this->Reversed.assign(welded.size(), 0);
   std::vector<Id> components;
   if (options.Orient)
   {
-    Orientation orientation = orientConsistently(points, welded, cornerNormals);
+    Orientation orientation = orientConsistently(points, welded, cornerNormals, &table);
     this->Reversed = std::move(orientation.Reversed);
     components = std::move(orientation.Component);
     this->Statistics.ReversedTriangleCount = orientation.ReversedCount;
@@ -117,6 +128,10 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
         preparedCornerNormals[t * 3 + k] = cornerNormals[t * 3 + inputCorner(t, k)];
       }
     }
+  }
+  if (this->Statistics.ReversedTriangleCount > 0)
+  {
+    table = table.withSidesReversed(this->Reversed);
   }
   bool normalsReversed = false;
   if (options.Orient && !cornerNormals.empty() && !components.empty())
@@ -166,21 +181,20 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
   }
   if (options.NormalSeams && useNormals)
   {
-    const std::vector<FeatureEdge> seams = normalSeamEdges(this->InputTriangles, vertex, normals);
     this->Statistics.NormalSeamEdgeCount = seams.size();
     features.insert(features.end(), seams.begin(), seams.end());
   }
   if (options.DetectFlatCreases)
   {
     const std::vector<FeatureEdge> creases =
-      flatSidedCreases(points, welded, options.FlatCreaseAngleDegrees);
+      flatSidedCreases(points, welded, options.FlatCreaseAngleDegrees, &table);
     this->Statistics.FlatCreaseEdgeCount = creases.size();
     features.insert(features.end(), creases.begin(), creases.end());
   }
   if (options.DetectFeatures)
   {
     const std::vector<FeatureEdge> sharp =
-      featureEdgesByAngle(points, welded, options.FeatureAngleDegrees);
+      featureEdgesByAngle(points, welded, options.FeatureAngleDegrees, &table);
     features.insert(features.end(), sharp.begin(), sharp.end());
   }
   const bool cornersMatter = !cornerNormals.empty() &&
@@ -189,13 +203,14 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
   if (cornersMatter)
   {
     this->Prepared = std::make_unique<PreparedMesh>(std::move(points), welded,
-      std::vector<glm::dvec3>{}, std::move(features), preparedCornerNormals);
+      std::vector<glm::dvec3>{}, std::move(features), preparedCornerNormals, &table);
   }
   else
   {
     // Nothing welded or reversed: the per-point normals are the corners'.
     this->Prepared = std::make_unique<PreparedMesh>(std::move(points), welded,
-      useNormals ? normals : std::vector<glm::dvec3>{}, std::move(features));
+      useNormals ? normals : std::vector<glm::dvec3>{}, std::move(features),
+      std::vector<glm::dvec3>{}, &table);
   }
 
   // Output points: each input point stands for the prepared point of its
@@ -300,88 +315,147 @@ Id WeldedSurface::outputOfPreparedCorner(std::size_t t, Id preparedPoint) const
   return this->PreparedHome[static_cast<std::size_t>(preparedPoint)];
 }
 
-SurfaceFrame WeldedSurface::assemble(const SmoothingResult& result) const
+std::size_t WeldedSurface::outputTriangleCount(const SmoothingResult& result) const
+{
+  return this->Prepared->triangles().size() - result.RemeshedTriangles.size() +
+    result.Replacements.size();
+}
+
+namespace
+{
+
+// An added point as one triangle sees it: the new point and the input points
+// it is interpolated from there.
+struct AddedKey
+{
+  std::size_t NewPoint;
+  std::array<Id, 3> Sources;
+  bool operator==(const AddedKey& o) const
+  {
+    return NewPoint == o.NewPoint && Sources == o.Sources;
+  }
+};
+
+struct AddedKeyHash
+{
+  std::size_t operator()(const AddedKey& k) const
+  {
+    std::size_t h = k.NewPoint * 0x9E3779B97F4A7C15ULL;
+    for (const Id s : k.Sources)
+    {
+      h = (h ^ static_cast<std::size_t>(s)) * 0x100000001B3ULL;
+    }
+    return h;
+  }
+};
+
+} // namespace
+
+template<typename IdType>
+SurfaceFrame WeldedSurface::assemble(const SmoothingResult& result, IdType* triangles,
+  IdType* sourceTriangle, unsigned char* kind) const
 {
   SurfaceFrame frame;
   const std::vector<Triangle>& prepared = this->Prepared->triangles();
   const Id preparedCount = static_cast<Id>(this->Prepared->points().size());
   const Id outputBase = static_cast<Id>(this->outputPointCount());
-  // Added points, keyed by (new point, the input points it comes from here).
-  struct Key
-  {
-    std::size_t NewPoint;
-    std::array<Id, 3> Sources;
-    bool operator==(const Key& o) const { return NewPoint == o.NewPoint && Sources == o.Sources; }
-  };
-  struct KeyHash
-  {
-    std::size_t operator()(const Key& k) const
-    {
-      std::size_t h = k.NewPoint * 0x9E3779B97F4A7C15ULL;
-      for (const Id s : k.Sources)
-      {
-        h = (h ^ static_cast<std::size_t>(s)) * 0x100000001B3ULL;
-      }
-      return h;
-    }
-  };
-  std::unordered_map<Key, Id, KeyHash> added;
-  std::vector<Id> firstCopy(result.NewPoints.size(), -1);
-  auto outputOf = [&](std::size_t t, Id v) -> Id {
-    if (v < preparedCount)
-    {
-      return this->outputOfPreparedCorner(t, v);
-    }
+  auto keyOf = [&](std::size_t t, Id v) {
     const std::size_t np = static_cast<std::size_t>(v - preparedCount);
-    Key key{ np, {} };
+    AddedKey key{ np, {} };
     const NewPoint& point = result.NewPoints[np];
     for (std::size_t k = 0; k < 3; ++k)
     {
       key.Sources[k] = this->outputSource(this->outputOfPreparedCorner(t, point.Sources[k]));
     }
-    const auto inserted = added.emplace(key, outputBase + static_cast<Id>(frame.Added.size()));
-    if (inserted.second)
-    {
-      frame.Added.push_back({ np, key.Sources });
-      if (firstCopy[np] < 0)
-      {
-        firstCopy[np] = inserted.first->second;
-      }
-    }
-    return inserted.first->second;
+    return key;
   };
 
+  // Pass 1, over the re-meshed triangles only: every distinct added point,
+  // numbered in the order of the new points it copies (then of first use),
+  // so that without seams the output is the SmoothingResult's own order.
+  std::unordered_map<AddedKey, Id, AddedKeyHash> added;
+  for (std::size_t i = 0; i < result.RemeshedTriangles.size(); ++i)
+  {
+    const std::size_t t = static_cast<std::size_t>(result.RemeshedTriangles[i]);
+    for (std::size_t r = result.ReplacementOffsets[i]; r < result.ReplacementOffsets[i + 1]; ++r)
+    {
+      for (const Id v : result.Replacements[r])
+      {
+        if (v >= preparedCount)
+        {
+          const AddedKey key = keyOf(t, v);
+          if (added.emplace(key, static_cast<Id>(frame.Added.size())).second)
+          {
+            frame.Added.push_back({ key.NewPoint, key.Sources });
+          }
+        }
+      }
+    }
+  }
+  std::vector<Id> firstCopy(result.NewPoints.size(), -1);
+  {
+    std::vector<std::size_t> order(frame.Added.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+    {
+      order[i] = i;
+    }
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return frame.Added[a].NewPoint < frame.Added[b].NewPoint;
+    });
+    std::vector<Id> number(order.size());
+    std::vector<SurfaceFrame::AddedPoint> sorted(order.size());
+    for (std::size_t i = 0; i < order.size(); ++i)
+    {
+      number[order[i]] = outputBase + static_cast<Id>(i);
+      sorted[i] = frame.Added[order[i]];
+      if (firstCopy[sorted[i].NewPoint] < 0)
+      {
+        firstCopy[sorted[i].NewPoint] = outputBase + static_cast<Id>(i);
+      }
+    }
+    for (auto& entry : added)
+    {
+      entry.second = number[static_cast<std::size_t>(entry.second)];
+    }
+    frame.Added = std::move(sorted);
+  }
+
+  // Pass 2: every output triangle, in input order, re-meshed ones replaced in
+  // place and wound as their input triangle.
   std::size_t next = 0;
-  const std::size_t outTriangles =
-    prepared.size() - result.RemeshedTriangles.size() + result.Replacements.size();
-  frame.Triangles.reserve(outTriangles);
-  frame.SourceTriangle.reserve(outTriangles);
-  frame.Kind.reserve(outTriangles);
+  std::size_t written = 0;
+  auto emit = [&](const Triangle& tri, std::size_t t, unsigned char k) {
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      triangles[written * 3 + k] = static_cast<IdType>(tri[k]);
+    }
+    sourceTriangle[written] = static_cast<IdType>(t);
+    kind[written] = k;
+    ++written;
+  };
   for (std::size_t t = 0; t < prepared.size(); ++t)
   {
     if (next < result.RemeshedTriangles.size() &&
       result.RemeshedTriangles[next] == static_cast<Id>(t))
     {
-      const auto kind = static_cast<unsigned char>(result.RemeshKinds[next]);
+      const auto remeshKind = static_cast<unsigned char>(result.RemeshKinds[next]);
       for (std::size_t r = result.ReplacementOffsets[next]; r < result.ReplacementOffsets[next + 1];
            ++r)
       {
         Triangle out;
         for (std::size_t k = 0; k < 3; ++k)
         {
-          out[k] = outputOf(t, result.Replacements[r][k]);
+          const Id v = result.Replacements[r][k];
+          out[k] = v < preparedCount ? this->outputOfPreparedCorner(t, v) : added.at(keyOf(t, v));
         }
-        frame.Triangles.push_back(oriented(out, this->Reversed[t] != 0));
-        frame.SourceTriangle.push_back(static_cast<Id>(t));
-        frame.Kind.push_back(kind);
+        emit(oriented(out, this->Reversed[t] != 0), t, remeshKind);
       }
       ++next;
       continue;
     }
-    frame.Triangles.push_back({ { this->CornerOutput[t * 3], this->CornerOutput[t * 3 + 1],
-      this->CornerOutput[t * 3 + 2] } });
-    frame.SourceTriangle.push_back(static_cast<Id>(t));
-    frame.Kind.push_back(0);
+    emit({ { this->CornerOutput[t * 3], this->CornerOutput[t * 3 + 1],
+           this->CornerOutput[t * 3 + 2] } },
+      t, 0);
   }
 
   // Silhouette polylines: any copy of a point will do (same position).
@@ -400,57 +474,20 @@ SurfaceFrame WeldedSurface::assemble(const SmoothingResult& result) const
       const std::size_t np = static_cast<std::size_t>(v - preparedCount);
       if (firstCopy[np] < 0)
       {
-        // Not used by a triangle (cannot happen for a sampled segment); keep
+        // On no output triangle (cannot happen for a sampled segment): keep
         // the point anyway, from its prepared sources.
-        Key key{ np, {} };
+        SurfaceFrame::AddedPoint point{ np, {} };
         for (std::size_t k = 0; k < 3; ++k)
         {
-          key.Sources[k] = this->outputSource(
+          point.Sources[k] = this->outputSource(
             this->PreparedHome[static_cast<std::size_t>(result.NewPoints[np].Sources[k])]);
         }
         firstCopy[np] = outputBase + static_cast<Id>(frame.Added.size());
-        added.emplace(key, firstCopy[np]);
-        frame.Added.push_back({ np, key.Sources });
+        frame.Added.push_back(point);
       }
       out.push_back(firstCopy[np]);
     }
     frame.Polylines.push_back(std::move(out));
-  }
-
-  // Added points in the order of the new points they copy (then of first
-  // use): without seams that is the SmoothingResult's own order.
-  std::vector<std::size_t> order(frame.Added.size());
-  for (std::size_t i = 0; i < order.size(); ++i)
-  {
-    order[i] = i;
-  }
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return frame.Added[a].NewPoint < frame.Added[b].NewPoint;
-  });
-  std::vector<Id> renumber(order.size());
-  std::vector<SurfaceFrame::AddedPoint> sorted(order.size());
-  for (std::size_t i = 0; i < order.size(); ++i)
-  {
-    renumber[order[i]] = outputBase + static_cast<Id>(i);
-    sorted[i] = frame.Added[order[i]];
-  }
-  frame.Added = std::move(sorted);
-  auto renumbered = [&](Id v) {
-    return v < outputBase ? v : renumber[static_cast<std::size_t>(v - outputBase)];
-  };
-  for (Triangle& tri : frame.Triangles)
-  {
-    for (Id& v : tri)
-    {
-      v = renumbered(v);
-    }
-  }
-  for (std::vector<Id>& chain : frame.Polylines)
-  {
-    for (Id& v : chain)
-    {
-      v = renumbered(v);
-    }
   }
 
   for (const auto& moved : result.MovedPoints)
@@ -465,6 +502,29 @@ SurfaceFrame WeldedSurface::assemble(const SmoothingResult& result) const
     [](const std::pair<Id, glm::dvec3>& a, const std::pair<Id, glm::dvec3>& b) {
       return a.first < b.first;
     });
+  return frame;
+}
+
+template SurfaceFrame WeldedSurface::assemble<Id>(
+  const SmoothingResult&, Id*, Id*, unsigned char*) const;
+template SurfaceFrame WeldedSurface::assemble<long long>(
+  const SmoothingResult&, long long*, long long*, unsigned char*) const;
+
+SurfaceFrame WeldedSurface::assemble(const SmoothingResult& result) const
+{
+  const std::size_t count = this->outputTriangleCount(result);
+  std::vector<Id> connectivity(count * 3);
+  std::vector<Id> source(count);
+  std::vector<unsigned char> kind(count);
+  SurfaceFrame frame = this->assemble(result, connectivity.data(), source.data(), kind.data());
+  frame.Triangles.resize(count);
+  for (std::size_t t = 0; t < count; ++t)
+  {
+    frame.Triangles[t] = { { connectivity[t * 3], connectivity[t * 3 + 1],
+      connectivity[t * 3 + 2] } };
+  }
+  frame.SourceTriangle = std::move(source);
+  frame.Kind = std::move(kind);
   return frame;
 }
 

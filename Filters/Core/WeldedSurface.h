@@ -67,9 +67,10 @@ struct SurfaceStatistics
   std::size_t InconsistentEdgeCount = 0; ///< non-orientable edges left
   std::size_t NormalSeamEdgeCount = 0;
   std::size_t FlatCreaseEdgeCount = 0;
-  /// The given normals were face normals (every corner of all but 1% of the
-  /// triangles carries its triangle's normal): flat shading says nothing
-  /// about the smooth surface or its creases, so they were not used.
+  /// The given normals were face normals (flat shading: they split along at
+  /// least half of the edges, and every corner of all but 1% of the
+  /// triangles carries its triangle's normal): they say nothing about the
+  /// smooth surface or its creases, so they were not used.
   bool FlatShadedNormals = false;
 };
 
@@ -87,7 +88,8 @@ struct SurfaceFrame
   std::vector<AddedPoint> Added;
   /// All output triangles in input order, re-meshed ones replaced in place;
   /// per triangle the input triangle it came from and 0 (kept) or its
-  /// RemeshKind.
+  /// RemeshKind. Filled by the one-argument assemble() only; the other
+  /// writes them into the caller's buffers.
   std::vector<Triangle> Triangles;
   std::vector<Id> SourceTriangle;
   std::vector<unsigned char> Kind;
@@ -123,6 +125,17 @@ public:
   /// The input triangles as given (own ids, own winding).
   const std::vector<Triangle>& inputTriangles() const { return this->InputTriangles; }
 
+  /// How many triangles assemble() writes for `result`.
+  std::size_t outputTriangleCount(const SmoothingResult& result) const;
+  /// The frame, with its triangles written straight into the caller's
+  /// buffers (room for outputTriangleCount(result) triangles: 3 ids each in
+  /// `triangles`, one entry each in `sourceTriangle` and `kind`), as the VTK
+  /// adapter's cell arrays want them; no copy of the whole mesh is made.
+  /// IdType is Id or long long (vtkIdType), instantiated for both.
+  template<typename IdType>
+  SurfaceFrame assemble(const SmoothingResult& result, IdType* triangles, IdType* sourceTriangle,
+    unsigned char* kind) const;
+  /// The same, into the frame's own vectors (for tests and tools).
   SurfaceFrame assemble(const SmoothingResult& result) const;
 
 private:

@@ -5,6 +5,7 @@
 // must not crash, hang, or produce non-finite points, out-of-range ids or
 // triangles that repeat an id.
 #include "SilhouetteSmoother.h"
+#include "WeldedSurface.h"
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -171,6 +172,97 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     for (const Id id : line)
     {
       require(id >= 0 && id < total);
+    }
+  }
+
+  // The asset-file preparation (WeldedSurface) on the same mesh, or on its
+  // triangle soup, with points snapped to a coarse grid so that many
+  // coincide; the frame it assembles names valid points only.
+  const int surfaceMode = bytes.byte() % 4;
+  if (surfaceMode != 0)
+  {
+    std::vector<glm::dvec3> surfacePoints = points;
+    std::vector<Triangle> surfaceTriangles = triangles;
+    std::vector<glm::dvec3> surfaceNormals = normals;
+    if (surfaceMode >= 2)
+    {
+      for (glm::dvec3& q : surfacePoints)
+      {
+        q = scale * glm::round(4.0 * q / scale) / 4.0;
+      }
+    }
+    if (surfaceMode == 3)
+    {
+      std::vector<glm::dvec3> soup;
+      std::vector<glm::dvec3> soupNormals;
+      for (Triangle& t : surfaceTriangles)
+      {
+        for (Id& id : t)
+        {
+          soup.push_back(surfacePoints[static_cast<std::size_t>(id)]);
+          if (withNormals)
+          {
+            soupNormals.push_back(normals[static_cast<std::size_t>(id)]);
+          }
+          id = static_cast<Id>(soup.size() - 1);
+        }
+      }
+      surfacePoints = std::move(soup);
+      surfaceNormals = std::move(soupNormals);
+    }
+    SurfaceOptions options;
+    const int flags = bytes.byte();
+    options.Weld = (flags & 1) == 0;
+    options.Orient = (flags & 2) == 0;
+    options.NormalSeams = (flags & 4) == 0;
+    options.DetectFlatCreases = (flags & 8) == 0;
+    options.WeldTolerance = (flags & 16) ? scale * 0.1 * (bytes.byte() / 255.0) : 0.0;
+    std::vector<FeatureEdge> marked;
+    if (surfaceMode == 1)
+    {
+      marked = features;
+    }
+    const WeldedSurface surface(surfacePoints, surfaceTriangles, surfaceNormals, marked, options);
+    const SmoothingResult frameResult = smoothSilhouettes(surface.prepared(), view, parameters);
+    const SurfaceFrame frame = surface.assemble(frameResult);
+    const Id base = static_cast<Id>(surface.outputPointCount());
+    const Id outputTotal = base + static_cast<Id>(frame.Added.size());
+    for (Id o = 0; o < base; ++o)
+    {
+      require(surface.outputSource(o) >= 0 &&
+        surface.outputSource(o) < static_cast<Id>(surfacePoints.size()));
+      require(surface.outputPrepared(o) >= 0 &&
+        surface.outputPrepared(o) < static_cast<Id>(surface.prepared().points().size()));
+    }
+    for (const SurfaceFrame::AddedPoint& added : frame.Added)
+    {
+      require(added.NewPoint < frameResult.NewPoints.size());
+      for (const Id source : added.Sources)
+      {
+        require(source >= 0 && source < static_cast<Id>(surfacePoints.size()));
+      }
+    }
+    require(frame.Triangles.size() == frame.SourceTriangle.size() &&
+      frame.Triangles.size() == frame.Kind.size());
+    for (std::size_t t = 0; t < frame.Triangles.size(); ++t)
+    {
+      require(frame.SourceTriangle[t] >= 0 &&
+        frame.SourceTriangle[t] < static_cast<Id>(surfaceTriangles.size()));
+      for (const Id id : frame.Triangles[t])
+      {
+        require(id >= 0 && id < outputTotal);
+      }
+    }
+    for (const std::vector<Id>& line : frame.Polylines)
+    {
+      for (const Id id : line)
+      {
+        require(id >= 0 && id < outputTotal);
+      }
+    }
+    for (const auto& moved : frame.Moved)
+    {
+      require(moved.first >= 0 && moved.first < base && finite(moved.second));
     }
   }
   return 0;

@@ -28,6 +28,7 @@
 #include "vtkIcosphereSource.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -559,12 +560,62 @@ bool OtherFiltersOnSoups(int argc, char* argv[])
   return true;
 }
 
+// A Moebius strip cannot be oriented: a warning that says so, and finite
+// output with every triangle kept or re-meshed.
+bool NonOrientable()
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> polys;
+  const int n = 24;
+  for (int i = 0; i < n; ++i)
+  {
+    const double a = 2.0 * vtkMath::Pi() * i / n;
+    for (const double w : { -0.3, 0.3 })
+    {
+      points->InsertNextPoint((1 + w * std::cos(a / 2)) * std::cos(a),
+        (1 + w * std::cos(a / 2)) * std::sin(a), w * std::sin(a / 2));
+    }
+  }
+  for (int i = 0; i < n; ++i)
+  {
+    const vtkIdType a0 = 2 * i, a1 = 2 * i + 1;
+    const vtkIdType b0 = i + 1 < n ? 2 * (i + 1) : 1;
+    const vtkIdType b1 = i + 1 < n ? 2 * (i + 1) + 1 : 0;
+    const vtkIdType t0[3] = { a0, b0, b1 };
+    const vtkIdType t1[3] = { a0, b1, a1 };
+    polys->InsertNextCell(3, t0);
+    polys->InsertNextCell(3, t1);
+  }
+  vtkNew<vtkPolyData> strip;
+  strip->SetPoints(points);
+  strip->SetPolys(polys);
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(0.5, -3, 2);
+  vtkNew<vtkTest::ErrorObserver> warnings;
+  vtkNew<vtkSilhouetteSmoothingFilter> smoother;
+  smoother->AddObserver(vtkCommand::WarningEvent, warnings);
+  smoother->SetInputData(strip);
+  smoother->SetCamera(camera);
+  smoother->Update();
+  CHECK(warnings->GetWarning() &&
+      warnings->GetWarningMessage().find("cannot be oriented consistently") != std::string::npos,
+    "a non-orientable surface gets a warning");
+  vtkPolyData* out = smoother->GetOutput();
+  const auto report = silhouette_test::AnalyzeTopology(out);
+  CHECK(report.NonFinitePoints == 0, "and finite output");
+  CHECK(FieldCount(out, "OutputTriangleCount") == out->GetNumberOfPolys(), "whole output");
+  std::printf("Moebius strip: warned, %lld output triangles (%s)\n",
+    static_cast<long long>(out->GetNumberOfPolys()), report.summary().c_str());
+  return true;
+}
+
 } // namespace
 
 int TestAssetMeshes(int argc, char* argv[])
 {
   silhouette_eval::MaskRenderer masks(1024, 768);
-  const bool ok = NothingLost() && FarFromTheOrigin() && OtherFiltersOnSoups(argc, argv) &&
-    ClosedWithFeatures(argc, argv) && Variants(argc, argv, masks);
+  const bool ok = NothingLost() && FarFromTheOrigin() && NonOrientable() &&
+    OtherFiltersOnSoups(argc, argv) && ClosedWithFeatures(argc, argv) &&
+    Variants(argc, argv, masks);
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -309,10 +309,8 @@ private:
       {
         break;
       }
-      else if (keyword != "comment" && keyword != "obj_info" && !keyword.empty())
-      {
-        this->Fail(where + ": unknown keyword '" + keyword + "'");
-      }
+      // Any other line is ignored, as vtkPLYReader ignores it: exporters
+      // write such lines (Blender 2.4's "Created by ..." without "comment").
     }
     if (!sawFormat)
     {

@@ -50,6 +50,42 @@ class SilhouetteSmoothingTest(unittest.TestCase):
             self.assertIs(view_filter.GetCamera(), camera)
             self.assertEqual(view_filter.GetViewportSize(), (640, 480))
 
+    def test_triangle_soup_is_welded(self):
+        # Every corner its own point, as VTK's OBJ reader makes of textured
+        # assets: smoothed as the welded sphere, unless welding is off (issue 12).
+        from vtkmodules.vtkCommonCore import vtkPoints
+        from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
+        sphere = vtkIcosphereSource()
+        sphere.SetSubdivisionLevel(1)
+        sphere.Update()
+        mesh = sphere.GetOutput()
+        points, cells = vtkPoints(), vtkCellArray()
+        for c in range(mesh.GetNumberOfCells()):
+            ids = mesh.GetCell(c).GetPointIds()
+            cells.InsertNextCell(3)
+            for k in range(3):
+                cells.InsertCellPoint(points.InsertNextPoint(mesh.GetPoint(ids.GetId(k))))
+        soup = vtkPolyData()
+        soup.SetPoints(points)
+        soup.SetPolys(cells)
+        bare = vtkPolyData()  # the sphere without its normals, as the soup
+        bare.SetPoints(mesh.GetPoints())
+        bare.SetPolys(mesh.GetPolys())
+        mesh = bare
+        camera = vtkCamera()
+        camera.SetPosition(0.3, 0.4, 5.0)
+        counts = {}
+        for source, weld in ((mesh, True), (soup, True), (soup, False)):
+            smoother = vtkSilhouetteSmoothingFilter()
+            smoother.SetInputData(source)
+            smoother.SetCamera(camera)
+            smoother.SetWeldCoincidentPoints(weld)
+            smoother.Update()
+            counts[(source is soup, weld)] = field(smoother.GetOutput(), "SilhouetteTriangleCount")
+        self.assertGreater(counts[(False, True)], 0)
+        self.assertEqual(counts[(True, True)], counts[(False, True)])
+        self.assertEqual(counts[(True, False)], 0)
+
     def test_sphere_silhouette_is_the_exact_circle(self):
         # 80 triangles on the unit sphere with exact normals, eye at distance
         # about 5: the exact contour is seen at the angle asin(1 / d) from the

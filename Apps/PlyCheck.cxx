@@ -341,8 +341,10 @@ private:
       {
         vertices = &element;
       }
-      // The reader frees an uninitialised pointer for each face without indices.
-      if (element.Name == "face" && element.Count > 0 &&
+      // The reader frees an uninitialised pointer for each face without
+      // indices, and crashes closing the file when the face element has none
+      // even with no faces (found by fuzz_mesh_io).
+      if (element.Name == "face" &&
         std::none_of(element.Properties.begin(), element.Properties.end(),
           [&element](const Property& property) { return IsVertexIndexList(element, property); }))
       {

@@ -13,7 +13,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
-#include "vtkQuadricDecimation.h"
+#include "vtkSilhouetteQuadricDecimation.h"
 #include "vtkStaticCellLocator.h"
 #include "vtkTorusSurfaceSource.h"
 #include "vtkTransform.h"
@@ -348,10 +348,12 @@ vtkSmartPointer<vtkPolyData> Decimate(vtkPolyData* original, int triangles)
     coarse->SetPolys(input->GetPolys());
     return coarse;
   }
-  vtkNew<vtkQuadricDecimation> decimate;
+  // Our quadric simplifier, not vtkQuadricDecimation: it collapses an edge
+  // only when the link condition holds, so a closed surface stays closed (VTK's
+  // broke a 5,800-triangle cow at 500 and 1,000 triangles).
+  vtkNew<vtkSilhouetteQuadricDecimation> decimate;
   decimate->SetInputData(input);
-  decimate->SetTargetReduction(1.0 - static_cast<double>(triangles) / static_cast<double>(have));
-  decimate->VolumePreservationOn();
+  decimate->SetTargetTriangles(triangles);
   decimate->Update();
   // Only geometry: normals of the original do not belong to the moved points.
   coarse->SetPoints(decimate->GetOutput()->GetPoints());

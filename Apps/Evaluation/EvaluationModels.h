@@ -46,8 +46,9 @@ vtkSmartPointer<vtkPolyData> MakeOriginal(const std::string& name, const std::st
 int DefaultCoarseTriangles(const std::string& name);
 ExactShape ExactShapeOf(const std::string& name);
 
-/// Quadric decimation (volume preserving) of `original` to about
-/// `triangles` triangles, then every point moved to the closest point of the
+/// Quadric decimation (vtkSilhouetteQuadricDecimation without its contour
+/// rule: link condition kept, so closed stays closed) of `original` to at
+/// most `triangles` triangles, then every point moved to the closest point of the
 /// original surface and given the original's interpolated normal there:
 /// silhouette smoothing assumes the coarse mesh samples the smooth surface,
 /// and decimation's optimal placement does not (measured on the sphere: 3.1 px

@@ -319,8 +319,12 @@ private:
     {
       this->Fail(what + ": the file ends inside the data");
     }
-    const bool digits = !word.empty() &&
-      std::all_of(word.begin() + (word[0] == '-' || word[0] == '+'), word.end(),
+    // At least one digit after an optional sign: a lone "+" is no number to
+    // vtkPolyDataReader, which then leaves the array out and crashes (found
+    // by fuzz_mesh_io in a FIELD array's tuple count).
+    const std::size_t start = (word[0] == '-' || word[0] == '+') ? 1 : 0;
+    const bool digits = word.size() > start &&
+      std::all_of(word.begin() + static_cast<std::ptrdiff_t>(start), word.end(),
         [](unsigned char c) { return std::isdigit(c) != 0; });
     errno = 0;
     const long long value = digits ? std::strtoll(word.c_str(), nullptr, 10) : 0;

@@ -7,7 +7,9 @@
 // (k + 1)^2 triangles. The corners stay where they were (and keep their ids);
 // points on an edge depend only on that edge's two ends and normals and are
 // computed once per undirected edge (from the lower id), so the triangles of
-// an edge share them: a closed input gives a closed (watertight) output.
+// an edge share them: a closed input gives a closed (watertight) output. The
+// tessellation itself is UniformTessellation's, shared with Phong
+// tessellation (PhongTessellation.h).
 // Control points: b210 = (2 P0 + P1 - w01 N0) / 3 with w01 = (P1 - P0) . N0,
 // b111 = E + (E - V) / 2 (E the mean of the six edge control points, V of the
 // corners). Normals: n110 = normalize(N0 + N1 - v01 (P1 - P0)) with
@@ -17,6 +19,7 @@
 #pragma once
 
 #include "MeshTopology.h"
+#include "UniformTessellation.h"
 
 #include <glm/vec3.hpp>
 
@@ -26,20 +29,8 @@
 namespace silsmooth
 {
 
-struct PNTriangleResult
-{
-  /// Input points first (same ids, same positions), then the edge points,
-  /// then the interior points.
-  std::vector<glm::dvec3> Points;
-  std::vector<glm::dvec3> Normals;
-  /// For point data: each output point as a barycentric combination of the
-  /// corners of a triangle it lies on (input points: themselves, weight 1).
-  std::vector<std::array<Id, 3>> SourcePoints;
-  std::vector<glm::dvec3> SourceWeights;
-  std::vector<Triangle> Triangles;
-  /// The input triangle of each output triangle.
-  std::vector<Id> TriangleSource;
-};
+/// The layout and guarantees of UniformTessellation.h.
+using PNTriangleResult = TessellationResult;
 
 /// The cubic PN patch of one triangle at barycentric (a, b, c), a + b + c = 1.
 glm::dvec3 pnPosition(const std::array<glm::dvec3, 3>& p, const std::array<glm::dvec3, 3>& n,

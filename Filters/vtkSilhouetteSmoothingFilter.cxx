@@ -346,7 +346,7 @@ struct vtkSilhouetteSmoothingFilter::Internals
   vtkIdType TooSmallPolygons = 0;
   vtkPolyData* CachedInput = nullptr;
   vtkMTimeType CachedInputTime = 0;
-  std::array<double, 9> CachedSettings{};
+  std::array<double, 10> CachedSettings{};
   bool HaveSettings = false;
 
   // Returns an empty string, or the error to report.
@@ -446,10 +446,12 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   options.FeatureAngleDegrees = this->FeatureAngle;
   options.DetectFlatCreases = this->FlatCreaseDetection;
   options.FlatCreaseAngleDegrees = this->FlatCreaseAngle;
-  const std::array<double, 9> settings{ { this->FeatureLines ? 1.0 : 0.0,
+  options.Normals = static_cast<silsmooth::NormalWeighting>(this->NormalEstimation);
+  const std::array<double, 10> settings{ { this->FeatureLines ? 1.0 : 0.0,
     options.DetectFeatures ? 1.0 : 0.0, options.FeatureAngleDegrees, options.Weld ? 1.0 : 0.0,
     options.WeldTolerance, options.Orient ? 1.0 : 0.0, options.NormalSeams ? 1.0 : 0.0,
-    options.DetectFlatCreases ? 1.0 : 0.0, options.FlatCreaseAngleDegrees } };
+    options.DetectFlatCreases ? 1.0 : 0.0, options.FlatCreaseAngleDegrees,
+    static_cast<double>(this->NormalEstimation) } };
   const bool rebuilt = !internal.Surface || internal.CachedInput != input ||
     internal.CachedInputTime != input->GetMTime() || !internal.HaveSettings ||
     internal.CachedSettings != settings;
@@ -575,6 +577,7 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalSeamFeatures: " << (this->NormalSeamFeatures ? "On" : "Off") << "\n";
   os << indent << "FlatCreaseDetection: " << (this->FlatCreaseDetection ? "On" : "Off") << "\n";
   os << indent << "FlatCreaseAngle: " << this->FlatCreaseAngle << "\n";
+  os << indent << "NormalEstimation: " << this->NormalEstimation << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "VisibilityMethod: "
      << (this->VisibilityMethod == HIERARCHICAL ? "Hierarchical" : "PerVertex") << "\n";

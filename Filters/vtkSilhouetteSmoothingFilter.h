@@ -252,6 +252,24 @@ public:
   vtkGetMacro(FlatCreaseAngle, double);
   ///@}
 
+  enum NormalEstimations
+  {
+    ANGLE_WEIGHTED = 0, ///< face normals weighted by corner angle (default)
+    AREA_WEIGHTED = 1,  ///< face normals weighted by area
+    MAX_WEIGHTED = 2,   ///< Max (1999): exact for points on a sphere
+    QUADRIC_FIT = 3     ///< a quadric height field fitted to the 1-ring
+  };
+
+  ///@{
+  /**
+   * How the shading normals the input does not give are estimated (given
+   * normals are used as they are). Measured against the truth on real meshes
+   * in docs/fidelity.md.
+   */
+  vtkSetClampMacro(NormalEstimation, int, ANGLE_WEIGHTED, QUADRIC_FIT);
+  vtkGetMacro(NormalEstimation, int);
+  ///@}
+
   enum VisibilityMethods
   {
     PER_VERTEX = 0,  ///< g = N . (E - V) at every vertex (default)
@@ -301,6 +319,7 @@ protected:
   bool FlatCreaseDetection = true;
   double FlatCreaseAngle = 65.0;
   int OutputPointsPrecision = DEFAULT_PRECISION;
+  int NormalEstimation = ANGLE_WEIGHTED;
 
 private:
   vtkSilhouetteSmoothingFilter(const vtkSilhouetteSmoothingFilter&) = delete;

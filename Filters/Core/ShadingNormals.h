@@ -17,6 +17,29 @@ namespace silsmooth
 std::vector<glm::dvec3> angleWeightedNormals(
   const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles);
 
+/// How vertex normals are estimated from the triangles around a vertex
+/// (measured against the truth in docs/fidelity.md).
+enum class NormalWeighting
+{
+  /// Face normals weighted by the corner angle (Thuermer and Wuethrich).
+  Angle,
+  /// Face normals weighted by the face area.
+  Area,
+  /// N. Max, "Weights for computing vertex normals from facet normals",
+  /// JGT 4(2), 1999: cross products of the corner's edges over the product
+  /// of their squared lengths; exact for vertices on a sphere.
+  Max,
+  /// A height field z = a x^2 + b x y + c y^2 + d x + e y through the vertex,
+  /// fitted by least squares to the vertex's neighbours in the frame of its
+  /// angle-weighted normal; the normal is the field's at the vertex.
+  /// Fewer than five neighbours, or a near-singular fit: the angle normal.
+  QuadricFit
+};
+
+/// Unit vertex normals by `weighting` (zero where undefined, as above).
+std::vector<glm::dvec3> vertexNormals(const std::vector<glm::dvec3>& points,
+  const std::vector<Triangle>& triangles, NormalWeighting weighting);
+
 /// Normalises `normal`, or returns the zero vector when it is too short to
 /// have a direction (zero, denormal, or not finite).
 glm::dvec3 safeNormalize(const glm::dvec3& normal);

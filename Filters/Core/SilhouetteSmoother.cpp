@@ -28,7 +28,7 @@ void serialFor(std::size_t count, const std::function<void(std::size_t, std::siz
 
 PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
   const std::vector<glm::dvec3>& normals, std::vector<FeatureEdge> featureEdges,
-  const std::vector<glm::dvec3>& cornerNormals, const EdgeTable* edges)
+  const std::vector<glm::dvec3>& cornerNormals, const EdgeTable* edges, NormalWeighting weighting)
   : Points(std::move(points))
   , Triangles(std::move(triangles))
   , InputPointCount(this->Points.size())
@@ -173,7 +173,7 @@ PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle>
   }
   if (needComputed)
   {
-    computed = angleWeightedNormals(this->Points, this->Triangles);
+    computed = vertexNormals(this->Points, this->Triangles, weighting);
     if (this->Normals.empty())
     {
       this->Normals = std::move(computed);

@@ -12,6 +12,7 @@
 #include "AdaptiveSampling.h"
 #include "FeatureCurves.h"
 #include "MeshTopology.h"
+#include "ShadingNormals.h"
 #include "SurfaceWelding.h"
 #include "ViewGeometry.h"
 #include "VisibilityHierarchy.h"
@@ -55,10 +56,13 @@ public:
   /// normal seam); otherwise they get the angle-weighted normal as above.
   ///
   /// `edges`, when given, is the edge table of `triangles`; it saves building
-  /// it again when no point is split.
+  /// it again when no point is split. `weighting` is how the normals that are
+  /// computed are estimated (ShadingNormals.h); "angle-weighted" above means
+  /// that estimate.
   PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
     const std::vector<glm::dvec3>& normals = {}, std::vector<FeatureEdge> featureEdges = {},
-    const std::vector<glm::dvec3>& cornerNormals = {}, const EdgeTable* edges = nullptr);
+    const std::vector<glm::dvec3>& cornerNormals = {}, const EdgeTable* edges = nullptr,
+    NormalWeighting weighting = NormalWeighting::Angle);
 
   /// Input points, then the copies made by splitting feature points.
   const std::vector<glm::dvec3>& points() const { return this->Points; }

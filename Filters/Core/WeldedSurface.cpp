@@ -203,14 +203,15 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
   if (cornersMatter)
   {
     this->Prepared = std::make_unique<PreparedMesh>(std::move(points), welded,
-      std::vector<glm::dvec3>{}, std::move(features), preparedCornerNormals, &table);
+      std::vector<glm::dvec3>{}, std::move(features), preparedCornerNormals, &table,
+      options.Normals);
   }
   else
   {
     // Nothing welded or reversed: the per-point normals are the corners'.
     this->Prepared = std::make_unique<PreparedMesh>(std::move(points), welded,
       useNormals ? normals : std::vector<glm::dvec3>{}, std::move(features),
-      std::vector<glm::dvec3>{}, &table);
+      std::vector<glm::dvec3>{}, &table, options.Normals);
   }
 
   // Output points: each input point stands for the prepared point of its

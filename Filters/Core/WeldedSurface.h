@@ -56,6 +56,8 @@ struct SurfaceOptions
   /// Creases between flat faces (flatSidedCreases), on the same triangles.
   bool DetectFlatCreases = true;
   double FlatCreaseAngleDegrees = 65.0;
+  /// How the normals the input does not give are estimated.
+  NormalWeighting Normals = NormalWeighting::Angle;
 };
 
 /// What preparation found, for the filters' field data and warnings.

@@ -1,5 +1,7 @@
 #include "CommandLine.h"
 
+#include "EvaluationModels.h"
+
 #include "CliErrors.h"
 #include "Smoothing.h"
 #include "Viewer.h"
@@ -405,6 +407,11 @@ CompareOptions ParseCompare(ArgumentList& arguments, RenderBackend& backend)
       RejectInlineValue(option);
       options.Format = option.Name == "--json" ? CompareFormat::Json : CompareFormat::Markdown;
     }
+    else if (option.Name == "--truth")
+    {
+      RejectInlineValue(option);
+      options.Truth = true;
+    }
     else if (option.Name == "--backend")
     {
       backend = ParseRenderBackend(option.Name, arguments.TakeValue(option));
@@ -418,6 +425,16 @@ CompareOptions ParseCompare(ArgumentList& arguments, RenderBackend& backend)
   if (options.Inputs.empty())
   {
     throw UsageError("'compare' needs a model name, 'all' or a mesh file");
+  }
+  if (options.Truth)
+  {
+    for (const std::string& input : options.Inputs)
+    {
+      if (input == "all" || silhouette_eval::IsModelName(input))
+      {
+        throw UsageError("'compare --truth' takes mesh files, not the model '" + input + "'");
+      }
+    }
   }
   return options;
 }

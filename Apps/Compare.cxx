@@ -234,6 +234,11 @@ void PrintMarkdown(const std::vector<ModelComparison>& results, const CompareOpt
 
 void RunCompare(const CompareOptions& options)
 {
+  if (options.Truth)
+  {
+    RunCompareTruth(options);
+    return;
+  }
   std::vector<std::string> inputs;
   for (const std::string& input : options.Inputs)
   {
@@ -379,6 +384,17 @@ Options:
                         (default 0.5)
   --data DIR            the folder that holds bunny.ply (default: the
                         project's Data/ folder)
+  --truth               measure against the truth instead, for mesh files
+                        (closed triangle meshes): a coarse version (our
+                        link-condition quadric decimation to --coarse-triangles,
+                        default 500, points moved onto the original) as it is,
+                        smoothed with its own normals and with the original's
+                        normals carried over, and as PN triangles and Phong
+                        tessellation at the level nearest ours and at level 3,
+                        against the original refined by two levels of
+                        Butterfly subdivision (interpolating: unlike Loop's
+                        limit it does not shrink the shape) and against the
+                        original itself (docs/fidelity.md)
   --json                one JSON array, an object per model
   --markdown            the README's tables (the earlier methods and the
                         coherence in tables of their own)

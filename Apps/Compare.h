@@ -27,11 +27,18 @@ struct CompareOptions
   double Tolerance = 0.5;
   CompareFormat Format = CompareFormat::Text;
   std::string DataDirectory; ///< where bunny.ply is; empty: the built-in default
+  /// Measure against the truth instead (docs/fidelity.md): mesh files only.
+  bool Truth = false;
 };
 
 /// `silhouette compare`: coarse, coarse + smoothing and the fine reference of
 /// each input, measured from the same cameras (see CompareHelp).
 void RunCompare(const CompareOptions& options);
+
+/// `silhouette compare --truth`: each mesh file's coarse version, smoothed
+/// (own and carried normals) and by the peers, against the original refined
+/// by Butterfly subdivision and against the original (FidelityEvaluation.h).
+void RunCompareTruth(const CompareOptions& options);
 
 std::string CompareHelp();
 

@@ -3,7 +3,9 @@
 # every model of the set with `silhouette compare all` (1024x768, 12 views, 30
 # timed orbit frames per variant), draws the figures and the time plot into
 # docs/figures/, writes docs/evaluation.md and puts it into README.md between
-# the evaluation markers. Takes a few minutes on two cores.
+# the evaluation markers; then measures the real meshes against the truth
+# (`silhouette compare --truth`, meshes fetched by scripts/real-meshes.sh) into
+# docs/fidelity.md between its markers. Takes a few minutes on two cores.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # shellcheck source=setup.sh
@@ -30,6 +32,26 @@ done
 "${display[@]}" "$silhouette" figure bunny --size 1024x768 -o "$build/figure_bunny_full.png" \
   --plot "$here/docs/figures/time_bunny.png"
 
+# Fidelity against the truth (issue 13): real meshes, their coarse versions
+# against the original refined by Butterfly subdivision and the original.
+echo "evaluate: measuring the real meshes against the truth (progress below)"
+bash "$here/scripts/real-meshes.sh" "$build/real-meshes"
+fidelity_table="$build/fidelity_table.md"
+{
+  echo "Measured by \`bash scripts/evaluate.sh\` on $(nproc) cores, $(uname -m), Mesa llvmpipe under Xvfb,"
+  echo "$(date -u +%Y-%m-%d), at 1024x768 from 12 views."
+  echo
+  "${display[@]}" "$silhouette" compare --truth --markdown "$here/Data/bunny.ply" \
+    "$build/real-meshes/"{cow,elephant,elk,hand,homer,knot1}.ply
+} >"$fidelity_table"
+fidelity="$here/docs/fidelity.md"
+awk -v table="$fidelity_table" '
+  /<!-- fidelity:begin -->/ { print; while ((getline line < table) > 0) print line; skipping = 1; next }
+  /<!-- fidelity:end -->/ { skipping = 0 }
+  !skipping { print }
+' "$fidelity" >"$fidelity.new"
+mv "$fidelity.new" "$fidelity"
+
 readme="$here/README.md"
 awk -v table="$here/docs/evaluation.md" '
   /<!-- evaluation:begin -->/ { print; while ((getline line < table) > 0) print line; skipping = 1; next }
@@ -37,4 +59,4 @@ awk -v table="$here/docs/evaluation.md" '
   !skipping { print }
 ' "$readme" >"$readme.new"
 mv "$readme.new" "$readme"
-echo "evaluate: wrote docs/evaluation.md, docs/figures/*.png and the README's evaluation section"
+echo "evaluate: wrote docs/evaluation.md, docs/fidelity.md, docs/figures/*.png and the README's evaluation section"

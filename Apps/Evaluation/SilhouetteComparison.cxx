@@ -47,22 +47,6 @@ double Median(std::vector<double> values)
   return values[values.size() / 2];
 }
 
-// The view-th camera of an orbit around the model: the framing camera turned
-// by azimuth, with the elevation swinging between -25 and +25 degrees.
-void PlaceCamera(vtkRenderer* renderer, vtkPolyData* mesh, int view, int views)
-{
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0, 0, 1);
-  camera->SetFocalPoint(0, 0, 0);
-  camera->SetViewUp(0, 1, 0);
-  camera->SetViewAngle(30);
-  renderer->ResetCamera(mesh->GetBounds());
-  camera->Azimuth(360.0 * view / views);
-  camera->Elevation(25.0 * std::sin(2.0 * vtkMath::Pi() * view / views));
-  camera->OrthogonalizeViewUp();
-  renderer->ResetCameraClippingRange();
-}
-
 void Accumulate(VariantFigures& figures, const BoundaryDistance& d, bool exact, int views)
 {
   double& mean = exact ? figures.MeanExact : figures.MeanDeviation;
@@ -83,6 +67,20 @@ double Count(vtkPolyData* mesh, const char* name)
 }
 
 } // namespace
+
+void PlaceCamera(vtkRenderer* renderer, vtkPolyData* mesh, int view, int views)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(0, 0, 1);
+  camera->SetFocalPoint(0, 0, 0);
+  camera->SetViewUp(0, 1, 0);
+  camera->SetViewAngle(30);
+  renderer->ResetCamera(mesh->GetBounds());
+  camera->Azimuth(360.0 * view / views);
+  camera->Elevation(25.0 * std::sin(2.0 * vtkMath::Pi() * view / views));
+  camera->OrthogonalizeViewUp();
+  renderer->ResetCameraClippingRange();
+}
 
 OrbitTimer::OrbitTimer(const ComparisonOptions& options)
   : Options(options)

@@ -16,6 +16,7 @@
 
 #include "vtkSmartPointer.h"
 
+class vtkPolyData;
 class vtkRenderWindow;
 class vtkRenderer;
 
@@ -76,6 +77,12 @@ struct ModelComparison
 };
 
 ModelComparison CompareModel(const ModelVersions& model, const ComparisonOptions& options);
+
+/// The view-th of `views` cameras of the evaluation's orbit around `mesh`:
+/// the framing camera (vtkRenderer::ResetCamera on the bounds, 30-degree view
+/// angle) turned by azimuth, the elevation swinging between -25 and +25
+/// degrees. The renderer must be in a window of the measuring size.
+void PlaceCamera(vtkRenderer* renderer, vtkPolyData* mesh, int view, int views);
 
 struct FrameTiming
 {

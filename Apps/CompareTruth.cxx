@@ -1,0 +1,149 @@
+#include "Compare.h"
+
+#include "CliErrors.h"
+#include "MeshIO.h"
+#include "VtkErrorLog.h"
+
+#include "EvaluationModels.h"
+#include "FidelityEvaluation.h"
+
+#include <vtkPolyData.h>
+
+#include <cstdio>
+#include <iostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace cli
+{
+namespace
+{
+
+std::string Number(double value, int decimals)
+{
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*f", decimals, value);
+  return text;
+}
+
+std::string Quoted(const std::string& text)
+{
+  std::string out = "\"";
+  for (const char c : text)
+  {
+    if (c == '"' || c == '\\')
+    {
+      out += '\\';
+    }
+    out += c;
+  }
+  return out + "\"";
+}
+
+void PrintText(const silhouette_eval::FidelityResult& r)
+{
+  std::cout << "mesh " << r.Name << ": " << r.OriginalTriangles << " triangles, coarse "
+            << r.CoarseTriangles << ", reference (Butterfly) " << r.ReferenceTriangles << "\n";
+  std::printf("  %-28s %9s %9s %9s %11s %11s %8s\n", "method", "triangles", "mean", "max",
+    "mean(orig)", "max(orig)", "/coarse");
+  const double coarse = r.Rows.empty() ? 0.0 : r.Rows.front().Mean;
+  for (const silhouette_eval::FidelityRow& row : r.Rows)
+  {
+    std::printf("  %-28s %9.0f %9.3f %9.3f %11.3f %11.3f %8.2f\n", row.Method.c_str(),
+      row.Triangles, row.Mean, row.Max, row.MeanToOriginal, row.MaxToOriginal,
+      coarse > 0 ? row.Mean / coarse : 0.0);
+  }
+  std::cout.flush();
+}
+
+void PrintMarkdown(const std::vector<silhouette_eval::FidelityResult>& results)
+{
+  for (const silhouette_eval::FidelityResult& r : results)
+  {
+    std::cout << "**" << r.Name << "** (" << r.OriginalTriangles << " triangles; coarse "
+              << r.CoarseTriangles << "; reference " << r.ReferenceTriangles << ")\n\n";
+    std::cout << "| method | triangles | mean px | max px | mean / coarse | mean px, original | "
+                 "max px, original |\n|---|---:|---:|---:|---:|---:|---:|\n";
+    const double coarse = r.Rows.empty() ? 0.0 : r.Rows.front().Mean;
+    for (const silhouette_eval::FidelityRow& row : r.Rows)
+    {
+      std::cout << "| " << row.Method << " | " << Number(row.Triangles, 0) << " | "
+                << Number(row.Mean, 3) << " | " << Number(row.Max, 2) << " | "
+                << Number(coarse > 0 ? row.Mean / coarse : 0.0, 2) << " | "
+                << Number(row.MeanToOriginal, 3) << " | " << Number(row.MaxToOriginal, 2) << " |\n";
+    }
+    std::cout << "\n";
+  }
+}
+
+void PrintJson(const std::vector<silhouette_eval::FidelityResult>& results)
+{
+  std::cout << "[";
+  for (std::size_t i = 0; i < results.size(); ++i)
+  {
+    const silhouette_eval::FidelityResult& r = results[i];
+    std::cout << (i ? ", " : "") << "{\"mesh\": " << Quoted(r.Name)
+              << ", \"original_triangles\": " << r.OriginalTriangles
+              << ", \"coarse_triangles\": " << r.CoarseTriangles
+              << ", \"reference_triangles\": " << r.ReferenceTriangles << ", \"methods\": [";
+    const double coarse = r.Rows.empty() ? 0.0 : r.Rows.front().Mean;
+    for (std::size_t k = 0; k < r.Rows.size(); ++k)
+    {
+      const silhouette_eval::FidelityRow& row = r.Rows[k];
+      std::cout << (k ? ", " : "") << "{\"method\": " << Quoted(row.Method)
+                << ", \"triangles\": " << Number(row.Triangles, 1)
+                << ", \"mean\": " << Number(row.Mean, 4) << ", \"max\": " << Number(row.Max, 4)
+                << ", \"mean_over_coarse\": " << Number(coarse > 0 ? row.Mean / coarse : 0.0, 4)
+                << ", \"mean_to_original\": " << Number(row.MeanToOriginal, 4)
+                << ", \"max_to_original\": " << Number(row.MaxToOriginal, 4) << "}";
+    }
+    std::cout << "]}";
+  }
+  std::cout << "]\n";
+}
+
+} // namespace
+
+void RunCompareTruth(const CompareOptions& options)
+{
+  silhouette_eval::FidelityOptions fidelity;
+  fidelity.Width = options.ViewportSize[0];
+  fidelity.Height = options.ViewportSize[1];
+  fidelity.Views = options.Views;
+  fidelity.Tolerance = options.Tolerance;
+  fidelity.CoarseTriangles = options.CoarseTriangles > 0 ? options.CoarseTriangles : 500;
+  fidelity.Progress = [](const std::string& line) {
+    std::cerr << "compare: " << line << std::endl;
+  };
+  VtkErrorLog& errors = VtkErrorLog::Instance();
+  std::vector<silhouette_eval::FidelityResult> results;
+  for (const std::string& input : options.Inputs)
+  {
+    errors.Clear();
+    try
+    {
+      vtkSmartPointer<vtkPolyData> original = ReadMesh(input);
+      results.push_back(silhouette_eval::EvaluateFidelity(input, original, fidelity));
+      errors.ThrowIfErrors("evaluating " + input + " failed");
+    }
+    catch (const std::runtime_error& error)
+    {
+      throw RuntimeError(input + ": " + error.what());
+    }
+    if (options.Format == CompareFormat::Text)
+    {
+      PrintText(results.back());
+    }
+  }
+  if (options.Format == CompareFormat::Markdown)
+  {
+    PrintMarkdown(results);
+  }
+  else if (options.Format == CompareFormat::Json)
+  {
+    PrintJson(results);
+  }
+}
+
+} // namespace cli

@@ -1,0 +1,54 @@
+# `silhouette compare --truth` on the bunny (issue 13): the protocol's shape
+# (a Butterfly reference of 16x the original's triangles, the coarse row, four
+# normal estimates, carried normals, PN triangles and Phong tessellation at
+# two levels) and one threshold: smoothing with the default normals takes at
+# least 40% off the coarse outline's distance to the truth; the coarse mesh
+# itself (the deliberately wrong variant) does not. Variables (-D): PROGRAM,
+# WRAPPER, DATA (the Data/ folder).
+cmake_minimum_required(VERSION 3.19) # string(JSON)
+
+execute_process(
+  COMMAND "${WRAPPER}" "${PROGRAM}" compare --truth "${DATA}/bunny.ply" --views 4 --size 640x480
+    --json
+  RESULT_VARIABLE exit_status
+  OUTPUT_VARIABLE json
+  ERROR_VARIABLE progress
+  TIMEOUT 600)
+if (NOT exit_status EQUAL 0)
+  message(FATAL_ERROR "compare --truth failed (${exit_status}):\n${json}\n${progress}")
+endif ()
+message(STATUS "${json}")
+
+string(JSON original GET "${json}" 0 original_triangles)
+string(JSON reference GET "${json}" 0 reference_triangles)
+math(EXPR expected "16 * ${original}")
+if (NOT reference EQUAL expected)
+  message(FATAL_ERROR "the Butterfly reference has ${reference} triangles, not 16 x ${original}")
+endif ()
+string(JSON rows LENGTH "${json}" 0 methods)
+if (NOT rows EQUAL 10)
+  message(FATAL_ERROR "${rows} methods, not 10 (coarse, 4 normal estimates, carried, 4 peers)")
+endif ()
+set(names "")
+foreach (row RANGE 9)
+  string(JSON name GET "${json}" 0 methods ${row} method)
+  list(APPEND names "${name}")
+endforeach ()
+foreach (wanted "coarse" "ours, angle-weighted normals" "ours, carried normals"
+    "PN triangles, level 3" "Phong tessellation, level 3")
+  if (NOT wanted IN_LIST names)
+    message(FATAL_ERROR "no '${wanted}' row: ${names}")
+  endif ()
+endforeach ()
+
+foreach (row 0 1)
+  string(JSON name GET "${json}" 0 methods ${row} method)
+  string(JSON ratio GET "${json}" 0 methods ${row} mean_over_coarse)
+  if (row EQUAL 0 AND NOT ratio GREATER 0.6)
+    message(FATAL_ERROR "the check cannot fail: '${name}' is ${ratio} of the coarse mean")
+  endif ()
+  if (row EQUAL 1 AND ratio GREATER 0.6)
+    message(FATAL_ERROR "'${name}': ${ratio} of the coarse outline's distance, above 0.6")
+  endif ()
+  message(STATUS "${name}: ${ratio} of the coarse outline's distance to the truth")
+endforeach ()

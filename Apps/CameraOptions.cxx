@@ -200,6 +200,21 @@ bool ParseCameraOption(const Option& option, ArgumentList& arguments, CameraOpti
     }
     camera.FlatCreaseAngle = angle;
   }
+  else if (name == "--normals")
+  {
+    const std::string text = arguments.TakeValue(option);
+    const char* names[] = { "angle", "area", "max", "fit" };
+    int found = -1;
+    for (int k = 0; k < 4; ++k)
+    {
+      found = text == names[k] ? k : found;
+    }
+    if (found < 0)
+    {
+      throw UsageError("option '" + name + "' needs angle, area, max or fit, got '" + text + "'");
+    }
+    camera.NormalEstimation = found;
+  }
   else if (name == "--double-precision")
   {
     RejectInlineValue(option);
@@ -293,6 +308,12 @@ Smoothing options (with the camera options wherever those are taken):
   --no-orientation         keep the triangles' orientation as given (default:
                            made consistent per connected part, closed parts
                            outward; the output keeps the input's winding)
+  --normals angle|area|max|fit
+                           how the normals the input does not give are
+                           estimated: face normals weighted by corner angle,
+                           by area, Max's weights, or a quadric fitted to the
+                           neighbours (default: angle; docs/fidelity.md
+                           measures them)
   --double-precision       store the output points as doubles (default: the
                            input's type; float far from the origin rounds the
                            added points)

@@ -69,6 +69,7 @@ void ApplySmoothingOptions(vtkSilhouetteSmoothingFilter* filter, const CameraOpt
   {
     filter->SetFlatCreaseAngle(*options.FlatCreaseAngle);
   }
+  filter->SetNormalEstimation(options.NormalEstimation);
   if (options.DoublePrecision)
   {
     filter->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);

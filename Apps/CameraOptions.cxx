@@ -312,7 +312,7 @@ Smoothing options (with the camera options wherever those are taken):
                            how the normals the input does not give are
                            estimated: face normals weighted by corner angle,
                            by area, Max's weights, or a quadric fitted to the
-                           neighbours (default: angle; docs/fidelity.md
+                           neighbours (default: area; docs/fidelity.md
                            measures them)
   --double-precision       store the output points as doubles (default: the
                            input's type; float far from the origin rounds the

@@ -38,7 +38,7 @@ struct CameraOptions
   bool FlatCreases = true;               ///< creases between flat faces
   std::optional<double> FlatCreaseAngle; ///< the filter's default when unset
   bool DoublePrecision = false;          ///< output points in double
-  int NormalEstimation = 0;              ///< vtkSilhouetteSmoothingFilter's enum
+  int NormalEstimation = 1;              ///< vtkSilhouetteSmoothingFilter's enum (area)
 };
 
 /// Largest accepted viewport side, to keep images and buffers sane.

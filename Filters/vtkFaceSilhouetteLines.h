@@ -23,8 +23,8 @@
  *
  * Input: a vtkPolyData; polygons (as fans) and triangle strips are used,
  * vertices and lines ignored. Point normals (the active normals) are the
- * shading normals when present, otherwise angle-weighted vertex normals are
- * computed.
+ * shading normals when present, otherwise area-weighted vertex normals are
+ * computed (vtkSilhouetteSmoothingFilter's default NormalEstimation).
  *
  * The view: a camera (SetCamera, or the active camera of SetRenderer) and
  * optionally the prop (SetProp3D) or its matrix (SetModelMatrix), as for

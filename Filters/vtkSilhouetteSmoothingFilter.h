@@ -15,8 +15,8 @@
  *
  * Input: a vtkPolyData. Polygons and triangle strips are triangulated; vertices
  * and lines are passed through unchanged. Point normals (the active normals of the
- * point data) are used as shading normals when present; otherwise angle-weighted
- * vertex normals are computed. A given normal that is zero is replaced by the
+ * point data) are used as shading normals when present; otherwise vertex normals
+ * are computed (NormalEstimation, area-weighted by default). A given normal that is zero is replaced by the
  * computed one; a point with no defined normal at all counts as visible.
  *
  * The view (from vtkSilhouetteViewAlgorithm): a camera (SetCamera, or the
@@ -254,8 +254,8 @@ public:
 
   enum NormalEstimations
   {
-    ANGLE_WEIGHTED = 0, ///< face normals weighted by corner angle (default)
-    AREA_WEIGHTED = 1,  ///< face normals weighted by area
+    ANGLE_WEIGHTED = 0, ///< face normals weighted by corner angle
+    AREA_WEIGHTED = 1,  ///< face normals weighted by area (default)
     MAX_WEIGHTED = 2,   ///< Max (1999): exact for points on a sphere
     QUADRIC_FIT = 3     ///< a quadric height field fitted to the 1-ring
   };
@@ -263,8 +263,11 @@ public:
   ///@{
   /**
    * How the shading normals the input does not give are estimated (given
-   * normals are used as they are). Measured against the truth on real meshes
-   * in docs/fidelity.md.
+   * normals are used as they are). Default AREA_WEIGHTED: against the truth
+   * on seven real meshes at 500 triangles (docs/fidelity.md) it left the
+   * lowest mean outline distance of the four on five of them (0.49 to 0.71 of
+   * the raw mean, against 0.50 to 0.92 with angle weights) and kept the
+   * worst place below the raw mesh's on six (angle weights: three).
    */
   vtkSetClampMacro(NormalEstimation, int, ANGLE_WEIGHTED, QUADRIC_FIT);
   vtkGetMacro(NormalEstimation, int);
@@ -319,7 +322,7 @@ protected:
   bool FlatCreaseDetection = true;
   double FlatCreaseAngle = 65.0;
   int OutputPointsPrecision = DEFAULT_PRECISION;
-  int NormalEstimation = ANGLE_WEIGHTED;
+  int NormalEstimation = AREA_WEIGHTED;
 
 private:
   vtkSilhouetteSmoothingFilter(const vtkSilhouetteSmoothingFilter&) = delete;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 
 namespace silsmooth
 {
@@ -82,10 +83,26 @@ namespace
 {
 
 // Face normals weighted by area (the plain cross product) or by Max's weights
-// (the cross product of the corner's edges over their squared lengths).
+// (the cross product of the corner's edges over their squared lengths). Edges
+// are measured in units of the mesh's extent, one unit for the whole mesh so
+// the weights keep their ratios: at 1e-150 scale the cross products of raw
+// edges would underflow, at 1e150 overflow.
 std::vector<glm::dvec3> crossWeightedNormals(
   const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles, bool max)
 {
+  glm::dvec3 low(std::numeric_limits<double>::infinity());
+  glm::dvec3 high(-std::numeric_limits<double>::infinity());
+  for (const Triangle& t : triangles)
+  {
+    for (const Id v : t)
+    {
+      low = glm::min(low, points[static_cast<std::size_t>(v)]);
+      high = glm::max(high, points[static_cast<std::size_t>(v)]);
+    }
+  }
+  const glm::dvec3 extent = high - low;
+  double unit = std::max({ extent.x, extent.y, extent.z });
+  unit = unit > 0.0 && std::isfinite(unit) ? unit : 1.0;
   std::vector<glm::dvec3> sums(points.size(), glm::dvec3(0.0));
   for (const Triangle& t : triangles)
   {
@@ -96,8 +113,8 @@ std::vector<glm::dvec3> crossWeightedNormals(
     for (std::size_t k = 0; k < 3; ++k)
     {
       const glm::dvec3& p = points[static_cast<std::size_t>(t[k])];
-      const glm::dvec3 a = points[static_cast<std::size_t>(t[(k + 1) % 3])] - p;
-      const glm::dvec3 b = points[static_cast<std::size_t>(t[(k + 2) % 3])] - p;
+      const glm::dvec3 a = (points[static_cast<std::size_t>(t[(k + 1) % 3])] - p) / unit;
+      const glm::dvec3 b = (points[static_cast<std::size_t>(t[(k + 2) % 3])] - p) / unit;
       glm::dvec3 c = glm::cross(a, b);
       if (max)
       {

@@ -56,8 +56,9 @@ struct SurfaceOptions
   /// Creases between flat faces (flatSidedCreases), on the same triangles.
   bool DetectFlatCreases = true;
   double FlatCreaseAngleDegrees = 65.0;
-  /// How the normals the input does not give are estimated.
-  NormalWeighting Normals = NormalWeighting::Angle;
+  /// How the normals the input does not give are estimated (the VTK
+  /// filter's default, vtkSilhouetteSmoothingFilter::NormalEstimation).
+  NormalWeighting Normals = NormalWeighting::Area;
 };
 
 /// What preparation found, for the filters' field data and warnings.

@@ -61,7 +61,9 @@ void PrintMarkdown(const std::vector<silhouette_eval::FidelityResult>& results)
 {
   for (const silhouette_eval::FidelityResult& r : results)
   {
-    std::cout << "**" << r.Name << "** (" << r.OriginalTriangles << " triangles; coarse "
+    // The file's name alone: the tables go into documents.
+    const std::string name = r.Name.substr(r.Name.find_last_of('/') + 1);
+    std::cout << "**" << name << "** (" << r.OriginalTriangles << " triangles; coarse "
               << r.CoarseTriangles << "; reference " << r.ReferenceTriangles << ")\n\n";
     std::cout << "| method | triangles | mean px | max px | mean / coarse | mean px, original | "
                  "max px, original |\n|---|---:|---:|---:|---:|---:|---:|\n";

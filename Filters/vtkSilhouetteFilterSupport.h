@@ -12,6 +12,7 @@
 #include "vtkType.h"
 
 #include "MeshTopology.h"
+#include "UniformTessellation.h"
 #include "ViewGeometry.h"
 
 #include <glm/mat3x3.hpp>
@@ -111,6 +112,13 @@ void WriteMesh(vtkPolyData* input, vtkPolyData* output, const std::vector<glm::d
   const std::vector<glm::dvec3>& addedPoints, const std::vector<glm::dvec3>& addedNormals,
   const std::vector<PointSource>& addedSources, const std::vector<silsmooth::Triangle>& triangles,
   const std::vector<vtkIdType>& originalCell, const std::vector<unsigned char>& newGeometry);
+
+/// Writes a uniform tessellation (PN triangles, Phong tessellation) of the
+/// triangles `mesh` was read as, with WriteMesh: the result's points after
+/// the input's are the added ones, each cell's OriginalCellId its triangle's
+/// input cell, NewGeometry 1 for every patch triangle (0 when `level` is 0).
+void WriteTessellation(vtkPolyData* input, vtkPolyData* output, const Triangles& mesh,
+  const silsmooth::TessellationResult& result, int level);
 
 } // namespace vtkSilhouetteFilterSupport
 

@@ -121,30 +121,6 @@ void Torus(double u, double v, double p[3])
   p[2] = 0.4 * std::sin(v);
 }
 
-long CountBoundaryOrNonManifoldEdges(vtkPolyData* mesh)
-{
-  std::map<std::pair<vtkIdType, vtkIdType>, int> uses;
-  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    it->GetCurrentCell(n, ids);
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      const vtkIdType a = ids[k];
-      const vtkIdType b = ids[(k + 1) % n];
-      ++uses[{ std::min(a, b), std::max(a, b) }];
-    }
-  }
-  long bad = 0;
-  for (const auto& entry : uses)
-  {
-    bad += entry.second != 2 ? 1 : 0;
-  }
-  return bad;
-}
-
 // Moves every point of `coarse` to the closest point of `surface` and gives it
 // the surface's normal there (interpolated over the closest triangle):
 // silhouette smoothing assumes the coarse mesh samples the smooth surface,
@@ -330,6 +306,30 @@ vtkSmartPointer<vtkPolyData> MakeOriginal(const std::string& name, const std::st
     InfoOf(name); // throws
   }
   return mesh;
+}
+
+long CountBoundaryOrNonManifoldEdges(vtkPolyData* mesh)
+{
+  std::map<std::pair<vtkIdType, vtkIdType>, int> uses;
+  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const vtkIdType a = ids[k];
+      const vtkIdType b = ids[(k + 1) % n];
+      ++uses[{ std::min(a, b), std::max(a, b) }];
+    }
+  }
+  long bad = 0;
+  for (const auto& entry : uses)
+  {
+    bad += entry.second != 2 ? 1 : 0;
+  }
+  return bad;
 }
 
 vtkSmartPointer<vtkPolyData> Decimate(vtkPolyData* original, int triangles)

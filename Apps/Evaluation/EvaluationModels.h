@@ -56,6 +56,10 @@ ExactShape ExactShapeOf(const std::string& name);
 /// 0.58 px with the projection). Throws std::runtime_error when the result is
 /// not a closed manifold though the original was.
 vtkSmartPointer<vtkPolyData> Decimate(vtkPolyData* original, int triangles);
+/// The edges of `mesh`'s polygons not shared by exactly two of them (0: a
+/// closed manifold).
+long CountBoundaryOrNonManifoldEdges(vtkPolyData* mesh);
+
 /// OpenSubdiv Loop refinement of `original` to `level`, projected to the
 /// limit surface, with limit normals.
 vtkSmartPointer<vtkPolyData> Refine(vtkPolyData* original, int level);

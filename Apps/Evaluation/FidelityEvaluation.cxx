@@ -23,7 +23,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <stdexcept>
 #include <utility>
 
@@ -31,27 +30,6 @@ namespace silhouette_eval
 {
 namespace
 {
-
-// Boundary and non-manifold edges of the triangles.
-long OpenEdges(vtkPolyData* mesh)
-{
-  std::map<std::pair<vtkIdType, vtkIdType>, int> uses;
-  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    it->GetCurrentCell(n, ids);
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      const vtkIdType a = ids[k];
-      const vtkIdType b = ids[(k + 1) % n];
-      ++uses[{ std::min(a, b), std::max(a, b) }];
-    }
-  }
-  return static_cast<long>(
-    std::count_if(uses.begin(), uses.end(), [](const auto& e) { return e.second != 2; }));
-}
 
 vtkSmartPointer<vtkPolyData> Triangulated(vtkPolyData* input)
 {
@@ -82,21 +60,6 @@ double FieldCount(vtkPolyData* mesh, const char* name)
 {
   vtkDataArray* array = mesh->GetFieldData()->GetArray(name);
   return array ? array->GetTuple1(0) : static_cast<double>(mesh->GetNumberOfPolys());
-}
-
-// The level k >= 1 of a (k + 1)^2 scheme whose count is nearest `target`.
-int NearestLevel(double triangles, double target)
-{
-  int best = 1;
-  for (int k = 2; k <= 16; ++k)
-  {
-    if (std::abs(triangles * (k + 1) * (k + 1) - target) <
-      std::abs(triangles * (best + 1) * (best + 1) - target))
-    {
-      best = k;
-    }
-  }
-  return best;
 }
 
 void Add(FidelityRow& row, const BoundaryDistance& toReference, const BoundaryDistance& toOriginal,
@@ -139,7 +102,7 @@ FidelityResult EvaluateFidelity(
     }
   };
   vtkSmartPointer<vtkPolyData> original = Triangulated(input);
-  if (original->GetNumberOfPolys() == 0 || OpenEdges(original) != 0)
+  if (original->GetNumberOfPolys() == 0 || CountBoundaryOrNonManifoldEdges(original) != 0)
   {
     throw std::runtime_error(
       name + " is not a closed manifold triangle mesh (the evaluation needs one)");
@@ -217,7 +180,7 @@ FidelityResult EvaluateFidelity(
 
   // The view-independent peers, from the coarse mesh with its own normals
   // (the information ours has): nearest our count, and at the fixed level.
-  const int nearest = NearestLevel(static_cast<double>(result.CoarseTriangles), ownRow.Triangles);
+  const int nearest = NearestPNLevel(static_cast<double>(result.CoarseTriangles), ownRow.Triangles);
   std::vector<std::pair<std::string, vtkSmartPointer<vtkPolyData>>> peers;
   for (const int level : { nearest, options.HighLevel })
   {

@@ -45,14 +45,15 @@ void PrintText(const silhouette_eval::FidelityResult& r)
 {
   std::cout << "mesh " << r.Name << ": " << r.OriginalTriangles << " triangles, coarse "
             << r.CoarseTriangles << ", reference (Butterfly) " << r.ReferenceTriangles << "\n";
-  std::printf("  %-28s %9s %9s %9s %11s %11s %8s\n", "method", "triangles", "mean", "max",
-    "mean(orig)", "max(orig)", "/coarse");
+  std::printf("  %-28s %9s %9s %9s %11s %11s %8s %8s\n", "method", "triangles", "mean", "max",
+    "mean(orig)", "max(orig)", "/coarse", "flipped");
   const double coarse = r.Rows.empty() ? 0.0 : r.Rows.front().Mean;
   for (const silhouette_eval::FidelityRow& row : r.Rows)
   {
-    std::printf("  %-28s %9.0f %9.3f %9.3f %11.3f %11.3f %8.2f\n", row.Method.c_str(),
+    std::printf("  %-28s %9.0f %9.3f %9.3f %11.3f %11.3f %8.2f %8s\n", row.Method.c_str(),
       row.Triangles, row.Mean, row.Max, row.MeanToOriginal, row.MaxToOriginal,
-      coarse > 0 ? row.Mean / coarse : 0.0);
+      coarse > 0 ? row.Mean / coarse : 0.0,
+      row.FlippedNewTriangles < 0 ? "-" : std::to_string(row.FlippedNewTriangles).c_str());
   }
   std::cout.flush();
 }
@@ -65,8 +66,9 @@ void PrintMarkdown(const std::vector<silhouette_eval::FidelityResult>& results)
     const std::string name = r.Name.substr(r.Name.find_last_of('/') + 1);
     std::cout << "**" << name << "** (" << r.OriginalTriangles << " triangles; coarse "
               << r.CoarseTriangles << "; reference " << r.ReferenceTriangles << ")\n\n";
-    std::cout << "| method | triangles | mean px | max px | mean / coarse | mean px, original | "
-                 "max px, original |\n|---|---:|---:|---:|---:|---:|---:|\n";
+    std::cout
+      << "| method | triangles | mean px | max px | mean / coarse | mean px, original | "
+         "max px, original | flipped new triangles |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
     const double coarse = r.Rows.empty() ? 0.0 : r.Rows.front().Mean;
     for (const silhouette_eval::FidelityRow& row : r.Rows)
     {
@@ -98,7 +100,8 @@ void PrintJson(const std::vector<silhouette_eval::FidelityResult>& results)
                 << ", \"mean\": " << Number(row.Mean, 4) << ", \"max\": " << Number(row.Max, 4)
                 << ", \"mean_over_coarse\": " << Number(coarse > 0 ? row.Mean / coarse : 0.0, 4)
                 << ", \"mean_to_original\": " << Number(row.MeanToOriginal, 4)
-                << ", \"max_to_original\": " << Number(row.MaxToOriginal, 4) << "}";
+                << ", \"max_to_original\": " << Number(row.MaxToOriginal, 4)
+                << ", \"flipped_new_triangles\": " << row.FlippedNewTriangles << "}";
     }
     std::cout << "]}";
   }

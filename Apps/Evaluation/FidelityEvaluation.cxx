@@ -8,9 +8,11 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
 #include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPNTriangleFilter.h"
 #include "vtkPhongTessellationFilter.h"
@@ -60,6 +62,47 @@ double FieldCount(vtkPolyData* mesh, const char* name)
 {
   vtkDataArray* array = mesh->GetFieldData()->GetArray(name);
   return array ? array->GetTuple1(0) : static_cast<double>(mesh->GetNumberOfPolys());
+}
+
+// New triangles whose geometric normal points against their corners' summed
+// shading normals.
+long FlippedNewTriangles(vtkPolyData* mesh)
+{
+  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
+  vtkDataArray* kinds = mesh->GetCellData()->GetArray("NewGeometry");
+  if (!normals || !kinds)
+  {
+    return 0;
+  }
+  long flipped = 0;
+  const vtkIdType first = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
+  vtkIdType cell = first;
+  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    if (n != 3 || kinds->GetTuple1(cell) == 0)
+    {
+      continue;
+    }
+    double p[3][3];
+    double sum[3] = { 0, 0, 0 };
+    for (int k = 0; k < 3; ++k)
+    {
+      mesh->GetPoint(ids[k], p[k]);
+      double nk[3];
+      normals->GetTuple(ids[k], nk);
+      vtkMath::Add(sum, nk, sum);
+    }
+    double u[3], v[3], face[3];
+    vtkMath::Subtract(p[1], p[0], u);
+    vtkMath::Subtract(p[2], p[0], v);
+    vtkMath::Cross(u, v, face);
+    flipped += vtkMath::Dot(face, sum) < 0.0 ? 1 : 0;
+  }
+  return flipped;
 }
 
 void Add(FidelityRow& row, const BoundaryDistance& toReference, const BoundaryDistance& toOriginal,
@@ -173,6 +216,11 @@ FidelityResult EvaluateFidelity(
       Add(rows[r], OutlineDeviation(mask, truth), OutlineDeviation(mask, originalMask),
         options.Views);
       rows[r].Triangles += FieldCount(mesh, "OutputTriangleCount") / options.Views;
+      if (r > 0)
+      {
+        rows[r].FlippedNewTriangles =
+          std::max(rows[r].FlippedNewTriangles, 0L) + FlippedNewTriangles(mesh);
+      }
     }
   }
   result.Rows = rows;

@@ -49,6 +49,10 @@ struct FidelityRow
   /// The same against the original mesh itself.
   double MeanToOriginal = 0;
   double MaxToOriginal = 0;
+  /// Ours only (-1 for the others): new triangles (NewGeometry > 0) whose
+  /// geometric normal points against the sum of their corners' normals,
+  /// summed over the views (the folds of issue 13; the goal is none).
+  long FlippedNewTriangles = -1;
 };
 
 struct FidelityResult

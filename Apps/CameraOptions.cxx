@@ -285,7 +285,9 @@ Smoothing options (with the camera options wherever those are taken):
   --feature-angle DEG      edges whose faces meet at more than DEG degrees
                            (0 to 180) are feature edges (creases): drawn as
                            smooth curves, with a shading normal per side
-                           (default: no detection; try 30 to 60 for parts)
+                           (default: no such detection; creases between
+                           flat faces are found anyway, see
+                           --flat-crease-angle)
   --no-feature-lines       ignore the input's line cells; by default a line
                            segment along a triangle edge marks that edge as a
                            feature edge

@@ -75,7 +75,10 @@ void PrintMarkdown(const std::vector<silhouette_eval::FidelityResult>& results)
       std::cout << "| " << row.Method << " | " << Number(row.Triangles, 0) << " | "
                 << Number(row.Mean, 3) << " | " << Number(row.Max, 2) << " | "
                 << Number(coarse > 0 ? row.Mean / coarse : 0.0, 2) << " | "
-                << Number(row.MeanToOriginal, 3) << " | " << Number(row.MaxToOriginal, 2) << " |\n";
+                << Number(row.MeanToOriginal, 3) << " | " << Number(row.MaxToOriginal, 2) << " | "
+                << (row.FlippedNewTriangles < 0 ? std::string("-")
+                                                : std::to_string(row.FlippedNewTriangles))
+                << " |\n";
     }
     std::cout << "\n";
   }

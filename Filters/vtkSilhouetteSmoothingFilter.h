@@ -267,7 +267,9 @@ public:
    * on seven real meshes at 500 triangles (docs/fidelity.md) it left the
    * lowest mean outline distance of the four on five of them (0.49 to 0.71 of
    * the raw mean, against 0.50 to 0.92 with angle weights) and kept the
-   * worst place below the raw mesh's on six (angle weights: three).
+   * worst place below the raw mesh's on six (angle weights: three). It makes
+   * more flipped new triangles than angle weights on six of the seven, though
+   * (docs/fidelity.md): choose ANGLE_WEIGHTED where folds matter more.
    */
   vtkSetClampMacro(NormalEstimation, int, ANGLE_WEIGHTED, QUADRIC_FIT);
   vtkGetMacro(NormalEstimation, int);

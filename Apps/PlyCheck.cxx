@@ -350,6 +350,14 @@ private:
       {
         this->Fail("the face element has no 'vertex_indices' list");
       }
+      // vtkPLYReader 9.1 leaves an element's property list unset until its
+      // first property and frees it closing the file: an element without
+      // properties crashes it, whatever its name or count (found by
+      // fuzz_mesh_io).
+      if (element.Properties.empty())
+      {
+        this->Fail("element '" + element.Name + "' has no properties");
+      }
     }
     if (!vertices)
     {

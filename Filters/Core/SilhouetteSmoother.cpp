@@ -413,7 +413,7 @@ private:
   }
 
   // One silhouette point per mixed edge, in ascending edge order, so both
-  // triangles of an edge use the same point (DESIGN 3.2). On a feature edge
+  // triangles of an edge use the same point (the crack-free rule). On a feature edge
   // the silhouette bridge is the edge's feature segment (III-D, case (a)).
   void computeSilhouettePoints()
   {

@@ -1,6 +1,6 @@
 // The sample count must keep the sampled silhouette within the pixel
-// tolerance (DESIGN 3.5). Measured here on circular arcs seen head-on in an
-// orthographic view where one model unit is one pixel.
+// tolerance (README, "How the open choices were closed": sampling). Measured here on circular arcs
+// seen head-on in an orthographic view where one model unit is one pixel.
 #include "AdaptiveSampling.h"
 
 #include <glm/geometric.hpp>
@@ -124,7 +124,7 @@ TEST(AdaptiveSampling, KeepsTheToleranceOnAnyCubic)
 
 TEST(AdaptiveSampling, Equation8UnderSamples)
 {
-  // The measurement behind the choice of default (DESIGN 3.5): the paper's
+  // The measurement behind the choice of default sampling rule: the paper's
   // eq. 8 leaves errors well beyond the tolerance on arcs like those of a
   // coarse sphere's silhouette.
   SamplingParameters paper;

@@ -1,4 +1,5 @@
-// The whole per-frame pass on small exact meshes: invariants of DESIGN 3.2.
+// The whole per-frame pass on small exact meshes: the crack-free and
+// closed-manifold invariants (README, "How the open choices were closed").
 #include "SilhouetteSmoother.h"
 
 #include <glm/geometric.hpp>

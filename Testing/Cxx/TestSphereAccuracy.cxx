@@ -1,4 +1,4 @@
-// Exact accuracy (issue 2, DESIGN 5): an 80-triangle icosphere with its points
+// Exact accuracy (issue 2; README, "What the tests show"): an 80-triangle icosphere with its points
 // on the unit sphere and exact normals, seen in perspective from 24 directions
 // at 1024 x 1024. The true outline is the projection of the sphere's contour
 // circle: a circle about the image centre of radius
@@ -75,7 +75,7 @@ int TestSphereAccuracy(int, char*[])
     return EXIT_FAILURE;
   }
 
-  // DESIGN 3.5: the paper's eq. 8, measured the same way, is why the default
+  // The sampling choice: the paper's eq. 8, measured the same way, is why the default
   // rule is the arc bound.
   smoother->SetSamplingRuleToWangEquation8();
   double eq8WorstMean = 0.0;

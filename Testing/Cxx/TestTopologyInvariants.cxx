@@ -1,4 +1,4 @@
-// Topology invariants (DESIGN 3.2, issue 2): over 120 camera positions each on
+// Topology invariants (the crack-free rule, issue 2): over 120 camera positions each on
 // the sphere, a torus and the coarse bunny, perspective and parallel, at near
 // and far distances: closed manifold in, closed manifold out, consistent
 // orientation, no degenerate triangle, finite points, closed silhouette loops;

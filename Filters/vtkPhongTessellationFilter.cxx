@@ -24,16 +24,10 @@ int vtkPhongTessellationFilter::RequestData(
     return 0;
   }
   support::Triangles triangles;
-  const std::string error = support::ReadTriangles(input, triangles);
+  const std::string error = support::ReadFiniteTriangles(input, triangles);
   if (!error.empty())
   {
     vtkErrorMacro(<< error);
-    return 0;
-  }
-  if (triangles.NonFinitePoints > 0)
-  {
-    vtkErrorMacro(
-      "Input has " << triangles.NonFinitePoints << " points with NaN or infinite coordinates.");
     return 0;
   }
   const silsmooth::PhongTessellationResult result = silsmooth::tessellatePhong(

@@ -274,6 +274,17 @@ std::string ReadTriangles(vtkPolyData* input, Triangles& out)
   return std::string();
 }
 
+std::string ReadFiniteTriangles(vtkPolyData* input, Triangles& out)
+{
+  const std::string error = ReadTriangles(input, out);
+  if (!error.empty() || out.NonFinitePoints == 0)
+  {
+    return error;
+  }
+  return "Input has " + std::to_string(out.NonFinitePoints) +
+    " points with NaN or infinite coordinates.";
+}
+
 void WriteMesh(vtkPolyData* input, vtkPolyData* output, const std::vector<glm::dvec3>& inputNormals,
   const std::vector<glm::dvec3>& addedPoints, const std::vector<glm::dvec3>& addedNormals,
   const std::vector<PointSource>& addedSources, const std::vector<silsmooth::Triangle>& triangles,

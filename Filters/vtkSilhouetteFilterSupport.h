@@ -95,6 +95,10 @@ struct Triangles
 /// points).
 std::string ReadTriangles(vtkPolyData* input, Triangles& out);
 
+/// ReadTriangles, and also the error for points with NaN or infinite
+/// coordinates, for the filters that cannot use such input at all.
+std::string ReadFiniteTriangles(vtkPolyData* input, Triangles& out);
+
 /// An added point as a weighted sum of input points (weights sum to one).
 struct PointSource
 {

@@ -39,16 +39,10 @@ int vtkSilhouetteProximity::RequestData(
     return 0; // reported
   }
   vtkSilhouetteFilterSupport::Triangles mesh;
-  const std::string readError = vtkSilhouetteFilterSupport::ReadTriangles(input, mesh);
+  const std::string readError = vtkSilhouetteFilterSupport::ReadFiniteTriangles(input, mesh);
   if (!readError.empty())
   {
     vtkErrorMacro(<< readError);
-    return 0;
-  }
-  if (mesh.NonFinitePoints > 0)
-  {
-    vtkErrorMacro(
-      "Input has " << mesh.NonFinitePoints << " points with NaN or infinite coordinates.");
     return 0;
   }
   const vtkIdType numPoints = input->GetNumberOfPoints();

@@ -178,6 +178,24 @@ vtkSmartPointer<vtkCamera> CameraAroundMesh(
   return camera;
 }
 
+bool IsUniformTessellationOf(vtkPolyData* input, vtkPolyData* out, int level)
+{
+  CHECK(out->GetNumberOfPolys() == input->GetNumberOfPolys() * (level + 1) * (level + 1),
+    "triangle count = input x (k+1)^2");
+  const TopologyReport report = AnalyzeTopology(out);
+  CHECK(report.closedManifold(), report.summary().c_str());
+  CHECK(report.FlippedTriangles == 0 && report.DegenerateTriangles == 0, report.summary().c_str());
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    double a[3];
+    double b[3];
+    input->GetPoint(i, a);
+    out->GetPoint(i, b);
+    CHECK(a[0] == b[0] && a[1] == b[1] && a[2] == b[2], "input points kept");
+  }
+  return true;
+}
+
 std::string AssetModelsFolder()
 {
   const std::string folder = "/usr/share/assimp/models";

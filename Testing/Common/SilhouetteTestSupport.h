@@ -51,6 +51,12 @@ struct TopologyReport
 /// Analyses the polygons of `mesh`; flipped triangles need point normals.
 TopologyReport AnalyzeTopology(vtkPolyData* mesh);
 
+/// The layout every uniform tessellation (PN triangles, Phong tessellation)
+/// of a closed `input` at `level` must have: (level + 1)^2 triangles per
+/// input triangle, a closed manifold without flipped or degenerate
+/// triangles, the input's points first and unmoved. Prints what failed.
+bool IsUniformTessellationOf(vtkPolyData* input, vtkPolyData* output, int level);
+
 /// A copy of vtkIcosphereSource's sphere at `level` (exact normals), free to modify.
 vtkSmartPointer<vtkPolyData> Icosphere(int level);
 

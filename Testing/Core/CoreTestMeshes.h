@@ -1,7 +1,8 @@
-// Small exact meshes shared by the core tests of the seeds' other systems.
+// Small exact meshes and a simple view shared by the core tests.
 #pragma once
 
 #include "MeshTopology.h"
+#include "ViewGeometry.h"
 
 #include <glm/vec3.hpp>
 
@@ -12,6 +13,19 @@
 
 namespace coretest
 {
+
+/// A view from `eye` with a crude projection that is enough for sampling
+/// (x/z-like scaling) on a 1000 x 1000 viewport.
+inline silsmooth::ViewGeometry perspectiveFrom(const glm::dvec3& eye)
+{
+  silsmooth::ViewGeometry view;
+  view.Eye = eye;
+  view.ModelToClip = glm::dmat4(0.5);
+  view.ModelToClip[3][3] = 1.0;
+  view.ViewportWidth = 1000;
+  view.ViewportHeight = 1000;
+  return view;
+}
 
 /// A unit UV sphere, outward, poles on z; every point is on the sphere, so
 /// the points are also the exact normals.

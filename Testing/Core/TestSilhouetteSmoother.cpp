@@ -1,5 +1,6 @@
 // The whole per-frame pass on small exact meshes: the crack-free and
 // closed-manifold invariants (README, "How the open choices were closed").
+#include "CoreTestMeshes.h"
 #include "SilhouetteSmoother.h"
 
 #include <glm/geometric.hpp>
@@ -38,18 +39,6 @@ PreparedMesh octahedron()
   }
   std::vector<glm::dvec3> normals = points;
   return PreparedMesh(points, triangles, normals);
-}
-
-ViewGeometry perspectiveFrom(const glm::dvec3& eye)
-{
-  ViewGeometry view;
-  view.Eye = eye;
-  // A crude projection that is enough for sampling: x/z-like scaling.
-  view.ModelToClip = glm::dmat4(0.5);
-  view.ModelToClip[3][3] = 1.0;
-  view.ViewportWidth = 1000;
-  view.ViewportHeight = 1000;
-  return view;
 }
 
 struct Check
@@ -107,7 +96,7 @@ TEST(SilhouetteSmoother, OctahedronStaysClosedFromManyViews)
   for (int i = 0; i < 500; ++i)
   {
     const glm::dvec3 direction = glm::normalize(glm::dvec3(gauss(rng), gauss(rng), gauss(rng)));
-    const ViewGeometry view = perspectiveFrom(direction * (2.0 + 3.0 * (i % 5)));
+    const ViewGeometry view = coretest::perspectiveFrom(direction * (2.0 + 3.0 * (i % 5)));
     const SmoothingResult result = smoothSilhouettes(mesh, view, SmoothingParameters{});
     ASSERT_FALSE(result.RemeshedTriangles.empty());
     const Check c = check(mesh, result);
@@ -126,7 +115,7 @@ TEST(SilhouetteSmoother, SilhouettePointsLieWhereTheNormalTurnsAway)
   // Seen in parallel projection, the interpolated normal at the silhouette point is perpendicular
   // to the view.
   const PreparedMesh mesh = octahedron();
-  ViewGeometry view = perspectiveFrom({ 0, 0, 1 });
+  ViewGeometry view = coretest::perspectiveFrom({ 0, 0, 1 });
   view.Parallel = true;
   view.TowardViewer = glm::normalize(glm::dvec3(0.2, 0.1, 1.0));
   const SmoothingResult result = smoothSilhouettes(mesh, view, SmoothingParameters{});
@@ -146,7 +135,7 @@ TEST(SilhouetteSmoother, SilhouettePointsLieWhereTheNormalTurnsAway)
 TEST(SilhouetteSmoother, ParallelSplitDoesNotChangeTheResult)
 {
   const PreparedMesh mesh = octahedron();
-  const ViewGeometry view = perspectiveFrom({ 2.5, 1.0, 0.3 });
+  const ViewGeometry view = coretest::perspectiveFrom({ 2.5, 1.0, 0.3 });
   const SmoothingResult serial = smoothSilhouettes(mesh, view, SmoothingParameters{});
   const ParallelFor oneByOne = [](std::size_t count,
                                  const std::function<void(std::size_t, std::size_t)>& body) {
@@ -169,7 +158,7 @@ TEST(SilhouetteSmoother, NoSilhouetteLeavesTheMeshAlone)
   // One triangle facing the viewer: nothing to do.
   const PreparedMesh mesh({ { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 } }, { { 0, 1, 2 } });
   const SmoothingResult result =
-    smoothSilhouettes(mesh, perspectiveFrom({ 0.2, 0.2, 5 }), SmoothingParameters{});
+    smoothSilhouettes(mesh, coretest::perspectiveFrom({ 0.2, 0.2, 5 }), SmoothingParameters{});
   EXPECT_TRUE(result.RemeshedTriangles.empty());
   EXPECT_TRUE(result.NewPoints.empty());
   EXPECT_TRUE(result.Polylines.empty());
@@ -183,7 +172,7 @@ TEST(SilhouetteSmoother, ZeroNormalsAndEyeOnTheSurface)
   EXPECT_EQ(withZero.normals()[3], glm::dvec3(0.0)); // isolated: nothing to compute it from
   const PreparedMesh mesh = octahedron();
   const SmoothingResult onSurface =
-    smoothSilhouettes(mesh, perspectiveFrom({ 1, 0, 0 }), SmoothingParameters{});
+    smoothSilhouettes(mesh, coretest::perspectiveFrom({ 1, 0, 0 }), SmoothingParameters{});
   for (const NewPoint& p : onSurface.NewPoints)
   {
     EXPECT_TRUE(
@@ -326,7 +315,7 @@ void checkPiecesMeet(const std::vector<glm::dvec3>& points, const std::vector<gl
   for (int i = 0; i < 200; ++i)
   {
     const glm::dvec3 direction = glm::normalize(glm::dvec3(gauss(rng), gauss(rng), gauss(rng)));
-    const ViewGeometry view = perspectiveFrom(direction * (1.5 + i % 4));
+    const ViewGeometry view = coretest::perspectiveFrom(direction * (1.5 + i % 4));
     std::size_t wholeCount = 0;
     std::map<std::pair<std::array<double, 3>, std::array<double, 3>>, int> directed;
     auto add = [&](const PreparedMesh& mesh, bool count) {

@@ -19,17 +19,6 @@ using namespace silsmooth;
 namespace
 {
 
-ViewGeometry perspectiveFrom(const glm::dvec3& eye)
-{
-  ViewGeometry view;
-  view.Eye = eye;
-  view.ModelToClip = glm::dmat4(0.5);
-  view.ModelToClip[3][3] = 1.0;
-  view.ViewportWidth = 1000;
-  view.ViewportHeight = 1000;
-  return view;
-}
-
 // Every corner its own point (what VTK's OBJ reader makes of a textured
 // asset): corner 3t + k is point 3t + k.
 void makeSoup(const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles,
@@ -228,7 +217,7 @@ TEST(WeldedSurface, TriangleSoupSmoothsExactlyAsTheWeldedMesh)
 
     for (const glm::dvec3& eye : { glm::dvec3(4, 1, 0.5), glm::dvec3(-1, 3, 2) })
     {
-      const ViewGeometry view = perspectiveFrom(eye);
+      const ViewGeometry view = coretest::perspectiveFrom(eye);
       const SmoothingParameters parameters;
       const SmoothingResult a = smoothSilhouettes(welded.prepared(), view, parameters);
       const SmoothingResult b = smoothSilhouettes(soup.prepared(), view, parameters);
@@ -265,9 +254,9 @@ TEST(WeldedSurface, TriangleSoupSmoothsExactlyAsTheWeldedMesh)
   SurfaceOptions noWeld = plainOptions();
   noWeld.Weld = false;
   const WeldedSurface bare(soupPoints, soupTriangles, {}, {}, noWeld);
-  EXPECT_EQ(
-    smoothSilhouettes(bare.prepared(), perspectiveFrom({ 4, 1, 0.5 }), SmoothingParameters())
-      .SilhouetteTriangleCount,
+  EXPECT_EQ(smoothSilhouettes(
+              bare.prepared(), coretest::perspectiveFrom({ 4, 1, 0.5 }), SmoothingParameters())
+              .SilhouetteTriangleCount,
     0u);
 }
 
@@ -311,8 +300,8 @@ TEST(WeldedSurface, TextureSeamKeepsOnePointPerSide)
   EXPECT_EQ(surface.statistics().WeldedPointCount, copyOf.size());
   // A view from above: its silhouette runs round the sphere below the
   // equator's height and crosses the seam (the +x meridian).
-  const SmoothingResult result =
-    smoothSilhouettes(surface.prepared(), perspectiveFrom({ 0, 0.3, 4 }), SmoothingParameters());
+  const SmoothingResult result = smoothSilhouettes(
+    surface.prepared(), coretest::perspectiveFrom({ 0, 0.3, 4 }), SmoothingParameters());
   const SurfaceFrame frame = surface.assemble(result);
   std::map<std::size_t, std::set<unsigned char>> chartsOfNewPoint;
   std::size_t onSeam = 0;
@@ -353,7 +342,7 @@ TEST(WeldedSurface, ReversedInputKeepsItsWindingAndSmoothsAsTheOrientedMesh)
   const WeldedSurface clean(points, triangles, {}, {}, plainOptions());
   const WeldedSurface reversed(points, mixed, {}, {}, plainOptions());
   EXPECT_GT(reversed.statistics().ReversedTriangleCount, 0u);
-  const ViewGeometry view = perspectiveFrom({ 3, -2, 1 });
+  const ViewGeometry view = coretest::perspectiveFrom({ 3, -2, 1 });
   const SmoothingResult a = smoothSilhouettes(clean.prepared(), view, SmoothingParameters());
   const SmoothingResult b = smoothSilhouettes(reversed.prepared(), view, SmoothingParameters());
   EXPECT_EQ(a.SilhouetteTriangleCount, b.SilhouetteTriangleCount);
@@ -392,8 +381,8 @@ TEST(WeldedSurface, CleanMeshIsThePreparedMeshItself)
   std::vector<Triangle> triangles;
   coretest::torus(16, 8, 0.4, points, triangles);
   const WeldedSurface surface(points, triangles, {}, { { 0, 1 }, { 1, 2 } }, plainOptions());
-  const SmoothingResult result =
-    smoothSilhouettes(surface.prepared(), perspectiveFrom({ 0.5, 3, 1 }), SmoothingParameters());
+  const SmoothingResult result = smoothSilhouettes(
+    surface.prepared(), coretest::perspectiveFrom({ 0.5, 3, 1 }), SmoothingParameters());
   const SurfaceFrame frame = surface.assemble(result);
   std::vector<Triangle> expected;
   std::vector<Id> source;

@@ -147,7 +147,7 @@ std::vector<Triangle> weldTriangles(
 
 std::vector<FeatureEdge> normalSeamEdges(const std::vector<Triangle>& triangles,
   const std::vector<Id>& vertex, const std::vector<glm::dvec3>& normals, double angleDegrees,
-  std::size_t* interiorEdges)
+  std::size_t* interiorEdges, const std::vector<Triangle>* givenWelded, const EdgeTable* givenTable)
 {
   if (interiorEdges)
   {
@@ -158,8 +158,11 @@ std::vector<FeatureEdge> normalSeamEdges(const std::vector<Triangle>& triangles,
   {
     return seams;
   }
-  const std::vector<Triangle> welded = weldTriangles(triangles, vertex);
-  const EdgeTable table(welded);
+  const std::vector<Triangle> weldedHere =
+    givenWelded ? std::vector<Triangle>() : weldTriangles(triangles, vertex);
+  const std::vector<Triangle>& welded = givenWelded ? *givenWelded : weldedHere;
+  const EdgeTable tableHere = givenTable ? EdgeTable() : EdgeTable(welded);
+  const EdgeTable& table = givenTable ? *givenTable : tableHere;
   // The two sides of every edge (triangle, side); more than two: not a seam.
   std::vector<std::array<Id, 2>> sides(table.edgeCount(), { { -1, -1 } });
   std::vector<unsigned char> count(table.edgeCount(), 0);

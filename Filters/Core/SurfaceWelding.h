@@ -39,9 +39,12 @@ std::vector<Triangle> weldTriangles(
 /// `angleDegrees` apart. `triangles` are the input's (their own point ids),
 /// `normals` one per point. Zero or non-finite normals never make a seam.
 /// `interiorEdges`, when given, receives the number of edges shared by
-/// exactly two such triangles (the candidates).
+/// exactly two such triangles (the candidates). `welded` and `table`, when
+/// given, are weldTriangles(triangles, vertex) and its edge table (saves
+/// building them again).
 std::vector<FeatureEdge> normalSeamEdges(const std::vector<Triangle>& triangles,
   const std::vector<Id>& vertex, const std::vector<glm::dvec3>& normals,
-  double angleDegrees = NormalSeamAngleDegrees, std::size_t* interiorEdges = nullptr);
+  double angleDegrees = NormalSeamAngleDegrees, std::size_t* interiorEdges = nullptr,
+  const std::vector<Triangle>* welded = nullptr, const EdgeTable* table = nullptr);
 
 } // namespace silsmooth

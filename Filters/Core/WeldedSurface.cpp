@@ -72,6 +72,9 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
     this->Statistics.WeldedPointCount += vertex[i] != static_cast<Id>(i) ? 1 : 0;
   }
   std::vector<Triangle> welded = weldTriangles(this->InputTriangles, vertex);
+  // One edge table for the whole preparation: built for the welded
+  // triangles, its sides turned with the triangles once they are oriented.
+  EdgeTable table(welded);
 
   // Normal seams exist only where points coincide. Flat shading: the normals
   // split along most edges, each corner carrying its triangle's own normal
@@ -80,8 +83,8 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
   if (normals.size() == n && this->Statistics.WeldedPointCount > 0)
   {
     std::size_t interior = 0;
-    seams =
-      normalSeamEdges(this->InputTriangles, vertex, normals, NormalSeamAngleDegrees, &interior);
+    seams = normalSeamEdges(
+      this->InputTriangles, vertex, normals, NormalSeamAngleDegrees, &interior, &welded, &table);
     this->Statistics.FlatShadedNormals = seams.size() * 2 >= interior && !seams.empty() &&
       hasFaceNormals(points, this->InputTriangles, normals);
   }
@@ -99,9 +102,6 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
     }
   }
 
-  // One edge table for the whole preparation: built for the welded
-  // triangles, its sides turned with the triangles once they are oriented.
-  EdgeTable table(welded);
   this->Reversed.assign(welded.size(), 0);
   std::vector<Id> components;
   if (options.Orient)
@@ -202,9 +202,9 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
       normalsReversed);
   if (cornersMatter)
   {
-    this->Prepared = std::make_unique<PreparedMesh>(std::move(points), welded,
-      std::vector<glm::dvec3>{}, std::move(features), preparedCornerNormals, &table,
-      options.Normals);
+    this->Prepared =
+      std::make_unique<PreparedMesh>(std::move(points), welded, std::vector<glm::dvec3>{},
+        std::move(features), preparedCornerNormals, &table, options.Normals);
   }
   else
   {

@@ -161,6 +161,11 @@ bool ParseCameraOption(const Option& option, ArgumentList& arguments, CameraOpti
     RejectInlineValue(option);
     camera.PerturbVertices = false;
   }
+  else if (name == "--no-fold-guard")
+  {
+    RejectInlineValue(option);
+    camera.FoldPrevention = false;
+  }
   else if (name == "--no-weld")
   {
     RejectInlineValue(option);
@@ -293,6 +298,10 @@ Smoothing options (with the camera options wherever those are taken):
                            feature edge
   --no-perturbation        do not lower vertices around concave silhouette
                            segments (the paper's III-E; default: lowered)
+  --no-fold-guard          keep re-meshed triangles that turn over or cut
+                           through others (default: such triangles are
+                           re-meshed along the chord, then on their straight
+                           edges, and their lowered vertices left in place)
   --flat-crease-angle DEG  creases between flat faces (boxes, CAD parts) are
                            edges sharper than DEG (0 to 180) whose two
                            triangles each lie flat against another neighbour

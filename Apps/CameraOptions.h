@@ -31,6 +31,7 @@ struct CameraOptions
   std::optional<double> FeatureAngle; ///< detect feature edges sharper than this
   bool FeatureLines = true;           ///< line cells mark feature edges
   bool PerturbVertices = true;
+  bool FoldPrevention = true;
   bool Weld = true;                      ///< points at one position are one vertex
   double WeldTolerance = 0.0;            ///< 0: equal coordinates only
   bool Orient = true;                    ///< consistent orientation per component

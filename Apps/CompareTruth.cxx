@@ -41,19 +41,29 @@ std::string Quoted(const std::string& text)
   return out + "\"";
 }
 
+std::string Count(long count)
+{
+  return count < 0 ? std::string("-") : std::to_string(count);
+}
+
+// Turned-over triangles / cutting pairs, or "-" where not counted.
+std::string Folds(const silhouette_eval::FidelityRow& row)
+{
+  return row.TurnedOver < 0 ? std::string("-") : Count(row.TurnedOver) + " / " + Count(row.Cutting);
+}
+
 void PrintText(const silhouette_eval::FidelityResult& r)
 {
   std::cout << "mesh " << r.Name << ": " << r.OriginalTriangles << " triangles, coarse "
             << r.CoarseTriangles << ", reference (Butterfly) " << r.ReferenceTriangles << "\n";
-  std::printf("  %-28s %9s %9s %9s %11s %11s %8s %8s\n", "method", "triangles", "mean", "max",
-    "mean(orig)", "max(orig)", "/coarse", "flipped");
+  std::printf("  %-31s %9s %9s %9s %11s %11s %8s %13s %7s\n", "method", "triangles", "mean", "max",
+    "mean(orig)", "max(orig)", "/coarse", "turned/cutting", "chord");
   const double coarse = r.Rows.empty() ? 0.0 : r.Rows.front().Mean;
   for (const silhouette_eval::FidelityRow& row : r.Rows)
   {
-    std::printf("  %-28s %9.0f %9.3f %9.3f %11.3f %11.3f %8.2f %8s\n", row.Method.c_str(),
+    std::printf("  %-31s %9.0f %9.3f %9.3f %11.3f %11.3f %8.2f %14s %7s\n", row.Method.c_str(),
       row.Triangles, row.Mean, row.Max, row.MeanToOriginal, row.MaxToOriginal,
-      coarse > 0 ? row.Mean / coarse : 0.0,
-      row.FlippedNewTriangles < 0 ? "-" : std::to_string(row.FlippedNewTriangles).c_str());
+      coarse > 0 ? row.Mean / coarse : 0.0, Folds(row).c_str(), Count(row.ChordFallbacks).c_str());
   }
   std::cout.flush();
 }
@@ -66,9 +76,9 @@ void PrintMarkdown(const std::vector<silhouette_eval::FidelityResult>& results)
     const std::string name = r.Name.substr(r.Name.find_last_of('/') + 1);
     std::cout << "**" << name << "** (" << r.OriginalTriangles << " triangles; coarse "
               << r.CoarseTriangles << "; reference " << r.ReferenceTriangles << ")\n\n";
-    std::cout
-      << "| method | triangles | mean px | max px | mean / coarse | mean px, original | "
-         "max px, original | flipped new triangles |\n|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    std::cout << "| method | triangles | mean px | max px | mean / coarse | mean px, original | "
+                 "max px, original | folds: turned over / cutting | chord fallbacks |\n"
+                 "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     const double coarse = r.Rows.empty() ? 0.0 : r.Rows.front().Mean;
     for (const silhouette_eval::FidelityRow& row : r.Rows)
     {
@@ -76,9 +86,7 @@ void PrintMarkdown(const std::vector<silhouette_eval::FidelityResult>& results)
                 << Number(row.Mean, 3) << " | " << Number(row.Max, 2) << " | "
                 << Number(coarse > 0 ? row.Mean / coarse : 0.0, 2) << " | "
                 << Number(row.MeanToOriginal, 3) << " | " << Number(row.MaxToOriginal, 2) << " | "
-                << (row.FlippedNewTriangles < 0 ? std::string("-")
-                                                : std::to_string(row.FlippedNewTriangles))
-                << " |\n";
+                << Folds(row) << " | " << Count(row.ChordFallbacks) << " |\n";
     }
     std::cout << "\n";
   }
@@ -104,7 +112,8 @@ void PrintJson(const std::vector<silhouette_eval::FidelityResult>& results)
                 << ", \"mean_over_coarse\": " << Number(coarse > 0 ? row.Mean / coarse : 0.0, 4)
                 << ", \"mean_to_original\": " << Number(row.MeanToOriginal, 4)
                 << ", \"max_to_original\": " << Number(row.MaxToOriginal, 4)
-                << ", \"flipped_new_triangles\": " << row.FlippedNewTriangles << "}";
+                << ", \"turned_over\": " << row.TurnedOver << ", \"cutting\": " << row.Cutting
+                << ", \"chord_fallbacks\": " << row.ChordFallbacks << "}";
     }
     std::cout << "]}";
   }

@@ -60,6 +60,7 @@ void ApplySmoothingOptions(vtkSilhouetteSmoothingFilter* filter, const CameraOpt
   }
   filter->SetFeatureLines(options.FeatureLines);
   filter->SetPerturbVertices(options.PerturbVertices);
+  filter->SetFoldPrevention(options.FoldPrevention);
   filter->SetWeldCoincidentPoints(options.Weld);
   filter->SetWeldTolerance(options.WeldTolerance);
   filter->SetConsistentOrientation(options.Orient);

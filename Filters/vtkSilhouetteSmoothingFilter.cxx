@@ -17,6 +17,7 @@
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkSmartPointer.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "vtkSilhouetteFilterSupport.h"
@@ -493,6 +494,13 @@ int vtkSilhouetteSmoothingFilter::RequestData(
 
   silsmooth::SmoothingParameters parameters;
   parameters.PerturbConcaveSilhouettes = this->PerturbVertices;
+  parameters.PreventFolds = this->FoldPrevention;
+  // A piece of a distributed mesh: its boundary may be a seam with another
+  // piece, whose silhouette points there must stay the same as ours.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  parameters.BoundaryMayBeSeam =
+    outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) &&
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1;
   parameters.Visibility = this->VisibilityMethod == HIERARCHICAL
     ? silsmooth::VisibilityMethod::Hierarchical
     : silsmooth::VisibilityMethod::PerVertex;
@@ -551,6 +559,13 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   AddCount(fd, "NewPointCount", static_cast<vtkIdType>(frame.Added.size()));
   AddCount(fd, "ConcaveSegmentCount", static_cast<vtkIdType>(result.ConcaveSegmentCount));
   AddCount(fd, "PerturbedPointCount", static_cast<vtkIdType>(result.MovedPoints.size()));
+  AddCount(fd, "ChordFallbackCount", static_cast<vtkIdType>(result.ChordFallbackTriangles));
+  AddCount(
+    fd, "StraightSilhouettePointCount", static_cast<vtkIdType>(result.StraightSilhouettePoints));
+  AddCount(
+    fd, "StraightFeatureSegmentCount", static_cast<vtkIdType>(result.StraightFeatureSegments));
+  AddCount(fd, "PinnedPointCount", static_cast<vtkIdType>(result.PinnedPoints));
+  AddCount(fd, "UnresolvedFoldCount", static_cast<vtkIdType>(result.UnresolvedFolds));
   AddCount(fd, "InputTriangleCount", inputTriangles);
   AddCount(fd, "OutputTriangleCount", inputTriangles - remeshedTriangles + newTriangles);
 
@@ -566,6 +581,7 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MinimumSamples: " << this->MinimumSamples << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
   os << indent << "PerturbVertices: " << (this->PerturbVertices ? "On" : "Off") << "\n";
+  os << indent << "FoldPrevention: " << (this->FoldPrevention ? "On" : "Off") << "\n";
   os << indent << "FeatureLines: " << (this->FeatureLines ? "On" : "Off") << "\n";
   os << indent << "FeatureEdgeDetection: " << (this->FeatureEdgeDetection ? "On" : "Off") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";

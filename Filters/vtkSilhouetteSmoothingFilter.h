@@ -16,8 +16,8 @@
  * Input: a vtkPolyData. Polygons and triangle strips are triangulated; vertices
  * and lines are passed through unchanged. Point normals (the active normals of the
  * point data) are used as shading normals when present; otherwise vertex normals
- * are computed (NormalEstimation, area-weighted by default). A given normal that is zero is replaced by the
- * computed one; a point with no defined normal at all counts as visible.
+ * are computed (NormalEstimation, area-weighted by default). A given normal that is zero is
+ * replaced by the computed one; a point with no defined normal at all counts as visible.
  *
  * The view (from vtkSilhouetteViewAlgorithm): a camera (SetCamera, or the
  * active camera of SetRenderer), the viewport size in pixels (SetViewportSize,
@@ -140,6 +140,23 @@ public:
   vtkSetMacro(PerturbVertices, bool);
   vtkGetMacro(PerturbVertices, bool);
   vtkBooleanMacro(PerturbVertices, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Never fold (default on): a silhouette triangle whose new triangles turn
+   * over against the surface or cut through another output triangle is
+   * re-meshed along the chord between its silhouette points, then with its
+   * silhouette points on its straight edges, then with its curved feature
+   * segments straight; a perturbed vertex that folds its triangles is left
+   * in place (Filters/Core/FoldGuard.h). The field data counts each
+   * fallback: ChordFallbackCount, StraightSilhouettePointCount,
+   * StraightFeatureSegmentCount, PinnedPointCount, and UnresolvedFoldCount
+   * (folds no fallback could undo; none expected).
+   */
+  vtkSetMacro(FoldPrevention, bool);
+  vtkGetMacro(FoldPrevention, bool);
+  vtkBooleanMacro(FoldPrevention, bool);
   ///@}
 
   ///@{
@@ -313,6 +330,7 @@ protected:
   int MaximumSamples = 256;
   int SamplingRule = SECOND_DIFFERENCE;
   bool PerturbVertices = true;
+  bool FoldPrevention = true;
   bool FeatureLines = true;
   bool FeatureEdgeDetection = false;
   double FeatureAngle = 30.0;

@@ -6,6 +6,9 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # shellcheck source=setup.sh
 source "$here/scripts/setup.sh"
 
+# The real meshes of module.TestNoFolds and the evaluation (downloaded once).
+bash "$here/scripts/real-meshes.sh" "$build/real-meshes"
+
 cd "$build"
 # A failed test runs once more: a busy Xvfb has been seen to refuse an X
 # connection for a moment, and VTK aborts when that happens inside a test

@@ -1,6 +1,8 @@
 #include "FidelityEvaluation.h"
 
 #include "EvaluationModels.h"
+#include "FoldCounting.h"
+#include "ShadingNormals.h"
 #include "SilhouetteComparison.h"
 #include "SilhouetteMasks.h"
 
@@ -12,6 +14,7 @@
 #include "vtkCleanPolyData.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPNTriangleFilter.h"
@@ -23,8 +26,11 @@
 #include "vtkSilhouetteSmoothingFilter.h"
 #include "vtkTriangleFilter.h"
 
+#include <glm/vec3.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <utility>
 
@@ -64,45 +70,42 @@ double FieldCount(vtkPolyData* mesh, const char* name)
   return array ? array->GetTuple1(0) : static_cast<double>(mesh->GetNumberOfPolys());
 }
 
-// New triangles whose geometric normal points against their corners' summed
-// shading normals.
-long FlippedNewTriangles(vtkPolyData* mesh)
+// The coarse mesh with the normals ours computes by default, for the peers.
+vtkSmartPointer<vtkPolyData> WithAreaNormals(vtkPolyData* mesh)
 {
-  vtkDataArray* normals = mesh->GetPointData()->GetNormals();
-  vtkDataArray* kinds = mesh->GetCellData()->GetArray("NewGeometry");
-  if (!normals || !kinds)
+  std::vector<glm::dvec3> points(static_cast<std::size_t>(mesh->GetNumberOfPoints()));
+  for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
   {
-    return 0;
+    double x[3];
+    mesh->GetPoint(p, x);
+    points[static_cast<std::size_t>(p)] = glm::dvec3(x[0], x[1], x[2]);
   }
-  long flipped = 0;
-  const vtkIdType first = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
-  vtkIdType cell = first;
+  std::vector<silsmooth::Triangle> triangles;
   auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
   {
     vtkIdType n = 0;
     const vtkIdType* ids = nullptr;
     it->GetCurrentCell(n, ids);
-    if (n != 3 || kinds->GetTuple1(cell) == 0)
+    if (n == 3)
     {
-      continue;
+      triangles.push_back({ { ids[0], ids[1], ids[2] } });
     }
-    double p[3][3];
-    double sum[3] = { 0, 0, 0 };
-    for (int k = 0; k < 3; ++k)
-    {
-      mesh->GetPoint(ids[k], p[k]);
-      double nk[3];
-      normals->GetTuple(ids[k], nk);
-      vtkMath::Add(sum, nk, sum);
-    }
-    double u[3], v[3], face[3];
-    vtkMath::Subtract(p[1], p[0], u);
-    vtkMath::Subtract(p[2], p[0], v);
-    vtkMath::Cross(u, v, face);
-    flipped += vtkMath::Dot(face, sum) < 0.0 ? 1 : 0;
   }
-  return flipped;
+  const std::vector<glm::dvec3> normals =
+    silsmooth::vertexNormals(points, triangles, silsmooth::NormalWeighting::Area);
+  vtkNew<vtkFloatArray> array;
+  array->SetName("Normals");
+  array->SetNumberOfComponents(3);
+  array->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  for (std::size_t p = 0; p < normals.size(); ++p)
+  {
+    array->SetTuple3(static_cast<vtkIdType>(p), normals[p].x, normals[p].y, normals[p].z);
+  }
+  auto withNormals = vtkSmartPointer<vtkPolyData>::New();
+  withNormals->ShallowCopy(mesh);
+  withNormals->GetPointData()->SetNormals(array);
+  return withNormals;
 }
 
 void Add(FidelityRow& row, const BoundaryDistance& toReference, const BoundaryDistance& toOriginal,
@@ -197,6 +200,10 @@ FidelityResult EvaluateFidelity(
   }
   rows.push_back(FidelityRow{ "ours, carried normals" });
   smoothers.push_back(smootherFor(carried, vtkSilhouetteSmoothingFilter::ANGLE_WEIGHTED));
+  rows.push_back(FidelityRow{ "ours, area, no fold guard" });
+  smoothers.push_back(smootherFor(own, vtkSilhouetteSmoothingFilter::AREA_WEIGHTED));
+  smoothers.back()->FoldPreventionOff();
+  const std::size_t carriedRow = 1 + std::size(estimations);
   progress("measuring outlines from " + std::to_string(options.Views) + " views");
   for (int view = 0; view < options.Views; ++view)
   {
@@ -218,27 +225,32 @@ FidelityResult EvaluateFidelity(
       rows[r].Triangles += FieldCount(mesh, "OutputTriangleCount") / options.Views;
       if (r > 0)
       {
-        rows[r].FlippedNewTriangles =
-          std::max(rows[r].FlippedNewTriangles, 0L) + FlippedNewTriangles(mesh);
+        const FoldCount folds = CountFolds(r == carriedRow ? carried.Get() : own.Get(), mesh);
+        rows[r].TurnedOver = std::max(rows[r].TurnedOver, 0L) + folds.Flipped;
+        rows[r].Cutting = std::max(rows[r].Cutting, 0L) + folds.Intersecting;
+        rows[r].ChordFallbacks = std::max(rows[r].ChordFallbacks, 0L) +
+          static_cast<long>(FieldCount(mesh, "ChordFallbackCount"));
       }
     }
   }
   result.Rows = rows;
   const FidelityRow& ownRow = rows[1];
 
-  // The view-independent peers, from the coarse mesh with its own normals
-  // (the information ours has): nearest our count, and at the fixed level.
+  // The view-independent peers, from the coarse mesh with the normals ours
+  // uses by default (the same information): nearest our count, and at the
+  // fixed level.
+  vtkSmartPointer<vtkPolyData> peerInput = WithAreaNormals(own);
   const int nearest = NearestPNLevel(static_cast<double>(result.CoarseTriangles), ownRow.Triangles);
   std::vector<std::pair<std::string, vtkSmartPointer<vtkPolyData>>> peers;
   for (const int level : { nearest, options.HighLevel })
   {
     vtkNew<vtkPNTriangleFilter> pn;
-    pn->SetInputData(own);
+    pn->SetInputData(peerInput);
     pn->SetLevel(level);
     pn->Update();
     peers.emplace_back("PN triangles, level " + std::to_string(level), pn->GetOutput());
     vtkNew<vtkPhongTessellationFilter> phong;
-    phong->SetInputData(own);
+    phong->SetInputData(peerInput);
     phong->SetLevel(level);
     phong->Update();
     peers.emplace_back("Phong tessellation, level " + std::to_string(level), phong->GetOutput());

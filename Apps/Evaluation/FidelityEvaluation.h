@@ -9,9 +9,10 @@
 // quadric decimation, every point moved onto the original surface. Methods,
 // all from that coarse version: the raw coarse mesh; coarse + silhouette
 // smoothing with its own normals, and with the original's normals carried to
-// the coarse points (a user may or may not have a fine mesh); PN triangles
-// and Phong tessellation (when built) at the level whose triangle count is
-// nearest ours, and at level 3.
+// the coarse points (a user may or may not have a fine mesh), and with the
+// fold guard off; PN triangles and Phong tessellation from the coarse mesh
+// with the normals ours uses by default (area-weighted), at the level whose
+// triangle count is nearest ours, and at level 3.
 #ifndef FidelityEvaluation_h
 #define FidelityEvaluation_h
 
@@ -49,10 +50,13 @@ struct FidelityRow
   /// The same against the original mesh itself.
   double MeanToOriginal = 0;
   double MaxToOriginal = 0;
-  /// Ours only (-1 for the others): new triangles (NewGeometry > 0) whose
-  /// geometric normal points against the sum of their corners' normals,
-  /// summed over the views (the folds of issue 13; the goal is none).
-  long FlippedNewTriangles = -1;
+  /// Ours only (-1 for the others), summed over the views: output
+  /// triangles turned over and pairs cutting through each other where the
+  /// input did not (FoldCounting.h; the folds of issue 13), and the
+  /// silhouette triangles the fold guard re-meshed along the chord.
+  long TurnedOver = -1;
+  long Cutting = -1;
+  long ChordFallbacks = -1;
 };
 
 struct FidelityResult
@@ -62,8 +66,8 @@ struct FidelityResult
   long CoarseTriangles = 0;
   long ReferenceTriangles = 0;
   /// coarse; ours with the coarse mesh's own normals estimated by angle,
-  /// area, Max's weights and a quadric fit; ours with carried normals; then
-  /// the peers.
+  /// area, Max's weights and a quadric fit; ours with carried normals; ours
+  /// (area) without the fold guard; then the peers.
   std::vector<FidelityRow> Rows;
 };
 

@@ -1,5 +1,6 @@
 #include "SilhouetteSmoother.h"
 
+#include "FoldGuard.h"
 #include "HermiteCurve.h"
 #include "LocalRemesher.h"
 #include "ShadingNormals.h"
@@ -77,10 +78,12 @@ PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle>
       }
     }
     this->OnBoundary.assign(this->Points.size(), 0);
+    this->BoundaryEdges.assign(uses.size(), 0);
     for (std::size_t e = 0; e < uses.size(); ++e)
     {
       if (uses[e] == 1)
       {
+        this->BoundaryEdges[e] = 1;
         const Edge& edge = this->Edges.edge(static_cast<Id>(e));
         this->OnBoundary[static_cast<std::size_t>(edge.low)] = 1;
         this->OnBoundary[static_cast<std::size_t>(edge.high)] = 1;
@@ -269,6 +272,13 @@ std::vector<double> vertexVisibility(
   return g;
 }
 
+const TriangleGrid& PreparedMesh::triangleGrid() const
+{
+  std::call_once(
+    this->Grid->Once, [this] { this->Grid->Grid = TriangleGrid(this->Points, this->Triangles); });
+  return this->Grid->Grid;
+}
+
 const VisibilityHierarchy& PreparedMesh::visibilityHierarchy() const
 {
   std::call_once(this->Hierarchy->Once,
@@ -331,6 +341,48 @@ public:
   {
     this->G = vertexVisibility(this->Mesh, this->View, this->Parameters.Visibility, this->For);
     this->findSilhouetteTriangles();
+    // Each round re-meshes the whole frame with the fallbacks decided so far;
+    // a round that finds no fold, or no fallback left to take, is the last.
+    // Rounds are bounded: every round but the last takes a fallback, and
+    // there are at most two per silhouette triangle and one per moved point.
+    for (std::size_t round = 0;; ++round)
+    {
+      this->remeshFrame();
+      if (!this->Parameters.PreventFolds)
+      {
+        break;
+      }
+      const FoldFindings findings = this->findFrameFolds();
+      if (!findings.any() || !this->takeFallbacks(findings))
+      {
+        this->Result.UnresolvedFolds = findings.Turned + findings.Cutting;
+        this->Result.FoldGuardRounds = round;
+        break;
+      }
+    }
+    this->Result.PinnedPoints = this->Pinned.size();
+    this->Result.StraightSilhouettePoints = this->StraightEdges.size();
+    this->Result.StraightFeatureSegments = this->StraightFeatures.size();
+    for (const auto& level : this->Levels)
+    {
+      this->Result.ChordFallbackTriangles += level.second >= ChordLevel ? 1 : 0;
+    }
+    return std::move(this->Result);
+  }
+
+private:
+  // Fallback levels of a silhouette triangle (FoldGuard.h).
+  static constexpr unsigned char ChordLevel = 1;    // no interior samples
+  static constexpr unsigned char StraightLevel = 2; // and points on its edges
+
+  void remeshFrame()
+  {
+    this->EdgePoints.clear();
+    this->FeatureSilhouettePoints.clear();
+    this->FeatureSamplePoints.clear();
+    this->FrameFeatureTriangles.clear();
+    this->Concave.clear();
+    this->Result = SmoothingResult();
     this->computeSilhouettePoints();
     this->countFeatureSamples();
     std::vector<std::vector<Id>> segments;
@@ -372,19 +424,144 @@ public:
       // A feature point has a copy on the other side of its crease that
       // does not move with it: moving one would open the crease. A point on
       // a boundary may be on a seam whose other side is another piece of
-      // the mesh, which cannot know about the move.
+      // the mesh, which cannot know about the move. A pinned point folded
+      // its triangles in an earlier round.
       auto& moved = this->Result.MovedPoints;
       moved.erase(std::remove_if(moved.begin(), moved.end(),
                     [this](const std::pair<Id, glm::dvec3>& m) {
-                      return this->Mesh.onFeature(m.first) || this->Mesh.onBoundary(m.first);
+                      return this->Mesh.onFeature(m.first) || this->Mesh.onBoundary(m.first) ||
+                        std::binary_search(this->Pinned.begin(), this->Pinned.end(), m.first);
                     }),
         moved.end());
       this->keepOutputFacingOut();
     }
-    return std::move(this->Result);
   }
 
-private:
+  FoldFindings findFrameFolds() const
+  {
+    std::vector<glm::dvec3> positions;
+    std::vector<glm::dvec3> normals;
+    positions.reserve(this->Result.NewPoints.size());
+    normals.reserve(this->Result.NewPoints.size());
+    for (const NewPoint& p : this->Result.NewPoints)
+    {
+      positions.push_back(p.Position);
+      normals.push_back(p.Normal);
+    }
+    const FoldGuardMesh mesh{ this->Mesh.points(), this->Mesh.normals(), this->Mesh.triangles(),
+      this->Mesh.triangleGrid() };
+    const FoldGuardFrame frame{ this->Result.RemeshedTriangles, this->Result.ReplacementOffsets,
+      this->Result.Replacements, positions, normals, this->Result.MovedPoints };
+    return findFolds(mesh, frame, this->For);
+  }
+
+  // Raises the fallback level of every folding silhouette triangle and pins
+  // every folding moved point; false when none could be taken.
+  bool takeFallbacks(const FoldFindings& findings)
+  {
+    bool taken = false;
+    const EdgeTable& edges = this->Mesh.edges();
+    for (std::size_t i = 0; i < findings.FoldingRemeshed.size(); ++i)
+    {
+      const Id t = this->Result.RemeshedTriangles[i];
+      if (!findings.FoldingRemeshed[i])
+      {
+        continue;
+      }
+      const bool silhouette =
+        std::binary_search(this->Silhouette.begin(), this->Silhouette.end(), t);
+      if (!silhouette || this->levelOf(t) >= StraightLevel)
+      {
+        // Last: its curved feature segments become their chords, on every
+        // side of their creases.
+        for (int k = 0; k < 3; ++k)
+        {
+          const Id e = edges.sideEdge(t, k);
+          const Id f = this->Mesh.edgeFeature(e);
+          if (f >= 0 && this->Mesh.features().isCurved(f) && !this->isStraightened(f) &&
+            !this->mayBeSeam(e))
+          {
+            this->StraightFeatures.insert(
+              std::upper_bound(this->StraightFeatures.begin(), this->StraightFeatures.end(), f), f);
+            taken = true;
+          }
+        }
+        continue;
+      }
+      unsigned char& level = this->Levels[t];
+      ++level;
+      taken = true;
+      if (level == StraightLevel)
+      {
+        // Its silhouette points, shared with the triangles across its mixed
+        // edges; those on feature edges stay on the feature curve, which
+        // the other sides of the crease sample too, and those on a seam
+        // between pieces stay on the curve, which the piece across computes
+        // too (it cannot know of this fallback).
+        for (int k = 0; k < 3; ++k)
+        {
+          const Id e = edges.sideEdge(t, k);
+          const Edge& edge = edges.edge(e);
+          if (isVisible(this->G[static_cast<std::size_t>(edge.low)]) !=
+              isVisible(this->G[static_cast<std::size_t>(edge.high)]) &&
+            this->Mesh.edgeFeature(e) < 0 && !this->mayBeSeam(e))
+          {
+            this->StraightEdges.push_back(e);
+          }
+        }
+      }
+    }
+    std::sort(this->StraightEdges.begin(), this->StraightEdges.end());
+    this->StraightEdges.erase(std::unique(this->StraightEdges.begin(), this->StraightEdges.end()),
+      this->StraightEdges.end());
+    for (const Id p : findings.FoldingMovedPoints)
+    {
+      if (!std::binary_search(this->Pinned.begin(), this->Pinned.end(), p))
+      {
+        this->Pinned.insert(std::upper_bound(this->Pinned.begin(), this->Pinned.end(), p), p);
+        taken = true;
+      }
+    }
+    return taken;
+  }
+
+  bool mayBeSeam(Id e) const
+  {
+    return this->Parameters.BoundaryMayBeSeam && this->Mesh.isBoundaryEdge(e);
+  }
+
+  bool isStraightened(Id feature) const
+  {
+    return std::binary_search(
+      this->StraightFeatures.begin(), this->StraightFeatures.end(), feature);
+  }
+
+  // The point at parameter `along` of a feature segment: on its curve, or on
+  // its chord once the fold guard straightened it (every side of the crease
+  // computes the same point either way).
+  glm::dvec3 featurePoint(Id feature, double along) const
+  {
+    const FeatureCurves& features = this->Mesh.features();
+    if (!this->isStraightened(feature))
+    {
+      return features.curve(feature).evaluate(along);
+    }
+    const auto& ends = features.edges()[static_cast<std::size_t>(feature)];
+    const auto& points = this->Mesh.points();
+    return (1.0 - along) * points[static_cast<std::size_t>(ends.first)] +
+      along * points[static_cast<std::size_t>(ends.second)];
+  }
+
+  unsigned char levelOf(Id t) const
+  {
+    if (this->Levels.empty())
+    {
+      return 0;
+    }
+    const auto it = this->Levels.find(t);
+    return it == this->Levels.end() ? 0 : it->second;
+  }
+
   void findSilhouetteTriangles()
   {
     const std::vector<Triangle>& triangles = this->Mesh.triangles();
@@ -466,8 +643,12 @@ private:
         const bool forward = this->Mesh.sourcePoint(static_cast<Id>(a)) ==
           this->Mesh.features().edges()[feature].first;
         const double along = forward ? t : 1.0 - t;
-        p.Position = this->Mesh.features().curve(feature).evaluate(along);
+        p.Position = this->featurePoint(feature, along);
         this->FeatureSilhouettePoints.push_back({ feature, e, along });
+      }
+      else if (std::binary_search(this->StraightEdges.begin(), this->StraightEdges.end(), e))
+      {
+        p.Position = (1.0 - t) * points[a] + t * points[b];
       }
       else
       {
@@ -557,7 +738,7 @@ private:
     this->For(features.edges().size(), [&](std::size_t begin, std::size_t end) {
       for (std::size_t f = begin; f < end; ++f)
       {
-        if (features.isCurved(static_cast<Id>(f)))
+        if (features.isCurved(static_cast<Id>(f)) && !this->isStraightened(static_cast<Id>(f)))
         {
           const HermiteCurve& curve = features.curve(static_cast<Id>(f));
           // Eq. 8 wants the arc's turning: the end tangents give it here.
@@ -620,7 +801,9 @@ private:
     const glm::dvec3 nQ = this->normalOf(q.Point);
     const HermiteCurve segment =
       makeCircleApproximatingCurve(this->positionOf(p.Point), nP, this->positionOf(q.Point), nQ);
-    const int samples = silhouetteSampleCount(segment, nP, nQ, this->View, this->Sampling);
+    const int samples = this->levelOf(t) >= ChordLevel
+      ? 2
+      : silhouetteSampleCount(segment, nP, nQ, this->View, this->Sampling);
     if (isConcaveSegment(segment.P0, nP, segment.P1, nQ))
     {
       const glm::dvec3 midNormal = safeNormalize(nP + nQ);
@@ -747,7 +930,7 @@ private:
     {
       points.emplace_back(s, this->nextPointId());
       NewPoint sample;
-      sample.Position = curve.evaluate(s);
+      sample.Position = this->featurePoint(f, s);
       sample.Normal = safeNormalize((1.0 - s) * n0 + s * n1);
       if (sample.Normal == glm::dvec3(0.0))
       {
@@ -954,6 +1137,13 @@ private:
   std::vector<Id> FrameFeatureTriangles;
   std::vector<ConcaveSegment> Concave;
   SmoothingResult Result;
+  // The fold guard's fallbacks, kept across rounds: levels of silhouette
+  // triangles, edges whose silhouette point is on the straight edge, and
+  // points the perturbation leaves in place (both ascending).
+  std::unordered_map<Id, unsigned char> Levels;
+  std::vector<Id> StraightEdges;
+  std::vector<Id> StraightFeatures;
+  std::vector<Id> Pinned;
 };
 
 } // namespace

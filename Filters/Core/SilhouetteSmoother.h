@@ -14,6 +14,7 @@
 #include "MeshTopology.h"
 #include "ShadingNormals.h"
 #include "SurfaceWelding.h"
+#include "TriangleGrid.h"
 #include "ViewGeometry.h"
 #include "VisibilityHierarchy.h"
 
@@ -88,6 +89,8 @@ public:
   /// was cut. Such points are never moved by the perturbation, so pieces
   /// still meet.
   bool onBoundary(Id p) const { return this->OnBoundary[static_cast<std::size_t>(p)] != 0; }
+  /// Whether edge e is a side of one triangle only (a boundary edge).
+  bool isBoundaryEdge(Id e) const { return this->BoundaryEdges[static_cast<std::size_t>(e)] != 0; }
   const FeatureCurves& features() const { return this->Features; }
   /// The feature edge (index into features()) that edge e lies on, or -1.
   Id edgeFeature(Id e) const
@@ -110,6 +113,9 @@ public:
   /// The clustering for VisibilityMethod::Hierarchical, built on first use
   /// (thread-safe); copies of the mesh share it.
   const VisibilityHierarchy& visibilityHierarchy() const;
+  /// The grid of the triangles' boxes for the fold guard, built on first use
+  /// (thread-safe); copies of the mesh share it.
+  const TriangleGrid& triangleGrid() const;
 
 private:
   std::vector<glm::dvec3> normalsFromCorners(const std::vector<glm::dvec3>& cornerNormals) const;
@@ -122,6 +128,7 @@ private:
   std::vector<Id> CopySources;
   std::vector<unsigned char> OnFeature;
   std::vector<unsigned char> OnBoundary;
+  std::vector<unsigned char> BoundaryEdges;
   FeatureCurves Features;
   std::vector<Id> EdgeFeatures;
   std::vector<Id> FeatureTriangles;
@@ -134,6 +141,12 @@ private:
     VisibilityHierarchy Hierarchy;
   };
   std::shared_ptr<LazyHierarchy> Hierarchy = std::make_shared<LazyHierarchy>();
+  struct LazyGrid
+  {
+    std::once_flag Once;
+    TriangleGrid Grid;
+  };
+  std::shared_ptr<LazyGrid> Grid = std::make_shared<LazyGrid>();
 };
 
 /// How the pass finds the vertices facing the viewer (paper III-B). Both make
@@ -153,6 +166,21 @@ struct SmoothingParameters
   /// smoothed curve is not blocked (see VertexPerturbation.h).
   bool PerturbConcaveSilhouettes = true;
   VisibilityMethod Visibility = VisibilityMethod::PerVertex;
+  /// Re-mesh folding triangles again, more conservatively, until none folds
+  /// (FoldGuard.h): a silhouette triangle whose new triangles turn over or
+  /// cut through another output triangle is re-meshed along the chord
+  /// between its silhouette points (no interior samples), then with its
+  /// silhouette points on its straight edges (shared with the neighbours
+  /// across them, which are re-meshed again too), then with its curved
+  /// feature segments straight; a moved point whose triangles fold stays in
+  /// place. Each step is counted in the result.
+  bool PreventFolds = true;
+  /// The mesh is one piece of a partitioned mesh: its boundary edges may be
+  /// seams with other pieces, which compute the same silhouette points and
+  /// feature segments there and cannot know of a fallback, so the fold
+  /// guard leaves those curved (a fold only that would undo is counted as
+  /// unresolved). Otherwise boundary edges are the surface's open border.
+  bool BoundaryMayBeSeam = false;
 };
 
 /// A point the pass adds. Its other attributes (texture coordinates, scalars)
@@ -193,6 +221,20 @@ struct SmoothingResult
   /// were lowered below their planes: (id, new position), ascending ids.
   std::size_t ConcaveSegmentCount = 0;
   std::vector<std::pair<Id, glm::dvec3>> MovedPoints;
+
+  /// The fold guard's fallbacks (SmoothingParameters::PreventFolds):
+  /// silhouette triangles re-meshed along the chord only, silhouette
+  /// points put back on their straight edges, curved feature segments
+  /// replaced by their chords (on every side of the crease), moved points
+  /// left in place, and folding triangles left because no fallback was left
+  /// to take (none by FoldGuard.h's invariant, but for rounding).
+  std::size_t ChordFallbackTriangles = 0;
+  std::size_t StraightSilhouettePoints = 0;
+  std::size_t StraightFeatureSegments = 0;
+  std::size_t PinnedPoints = 0;
+  std::size_t UnresolvedFolds = 0;
+  /// How many times the frame was re-meshed because of folds.
+  std::size_t FoldGuardRounds = 0;
 
   std::size_t newTriangleCount() const { return this->Replacements.size(); }
 };

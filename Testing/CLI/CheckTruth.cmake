@@ -1,9 +1,10 @@
 # `silhouette compare --truth` on the bunny (issue 13): the protocol's shape
 # (a Butterfly reference of 16x the original's triangles, the coarse row, four
-# normal estimates, carried normals, PN triangles and Phong tessellation at
-# two levels) and one threshold: smoothing with the default normals takes at
-# least 40% off the coarse outline's distance to the truth; the coarse mesh
-# itself (the deliberately wrong variant) does not. Variables (-D): PROGRAM,
+# normal estimates, carried normals, the fold guard off, PN triangles and
+# Phong tessellation at two levels), one threshold: smoothing with the
+# default (area-weighted) normals takes at least 40% off the coarse outline's
+# distance to the truth, and the coarse mesh itself (the deliberately wrong
+# variant) does not; and no fold in any row of ours with the fold guard on. Variables (-D): PROGRAM,
 # WRAPPER, DATA (the Data/ folder).
 cmake_minimum_required(VERSION 3.19) # string(JSON)
 
@@ -26,29 +27,40 @@ if (NOT reference EQUAL expected)
   message(FATAL_ERROR "the Butterfly reference has ${reference} triangles, not 16 x ${original}")
 endif ()
 string(JSON rows LENGTH "${json}" 0 methods)
-if (NOT rows EQUAL 10)
-  message(FATAL_ERROR "${rows} methods, not 10 (coarse, 4 normal estimates, carried, 4 peers)")
+if (NOT rows EQUAL 11)
+  message(FATAL_ERROR
+    "${rows} methods, not 11 (coarse, 4 normal estimates, carried, no fold guard, 4 peers)")
 endif ()
 set(names "")
-foreach (row RANGE 9)
+foreach (row RANGE 10)
   string(JSON name GET "${json}" 0 methods ${row} method)
   list(APPEND names "${name}")
 endforeach ()
-foreach (wanted "coarse" "ours, angle-weighted normals" "ours, carried normals"
+foreach (wanted "coarse" "ours, area-weighted normals" "ours, carried normals"
+    "ours, area, no fold guard"
     "PN triangles, level 3" "Phong tessellation, level 3")
   if (NOT wanted IN_LIST names)
     message(FATAL_ERROR "no '${wanted}' row: ${names}")
   endif ()
 endforeach ()
 
-foreach (row 0 1)
+foreach (row 0 2)
   string(JSON name GET "${json}" 0 methods ${row} method)
   string(JSON ratio GET "${json}" 0 methods ${row} mean_over_coarse)
   if (row EQUAL 0 AND NOT ratio GREATER 0.6)
     message(FATAL_ERROR "the check cannot fail: '${name}' is ${ratio} of the coarse mean")
   endif ()
-  if (row EQUAL 1 AND ratio GREATER 0.6)
+  if (row EQUAL 2 AND ratio GREATER 0.6)
     message(FATAL_ERROR "'${name}': ${ratio} of the coarse outline's distance, above 0.6")
   endif ()
   message(STATUS "${name}: ${ratio} of the coarse outline's distance to the truth")
+endforeach ()
+
+foreach (row RANGE 1 5)
+  string(JSON name GET "${json}" 0 methods ${row} method)
+  string(JSON turned GET "${json}" 0 methods ${row} turned_over)
+  string(JSON cutting GET "${json}" 0 methods ${row} cutting)
+  if (NOT turned EQUAL 0 OR NOT cutting EQUAL 0)
+    message(FATAL_ERROR "'${name}' folds: ${turned} turned over, ${cutting} cutting")
+  endif ()
 endforeach ()

@@ -1,0 +1,238 @@
+#include "FoldGuard.h"
+
+#include "TriangleIntersection.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+
+namespace silsmooth
+{
+namespace
+{
+
+class FrameGeometry
+{
+public:
+  FrameGeometry(const FoldGuardMesh& mesh, const FoldGuardFrame& frame)
+    : Mesh(mesh)
+    , Frame(frame)
+    , PointCount(static_cast<Id>(mesh.Points.size()))
+  {
+  }
+
+  glm::dvec3 position(Id p) const
+  {
+    if (p >= this->PointCount)
+    {
+      return this->Frame.NewPositions[static_cast<std::size_t>(p - this->PointCount)];
+    }
+    if (!this->Frame.Moved.empty())
+    {
+      const auto it = std::lower_bound(this->Frame.Moved.begin(), this->Frame.Moved.end(), p,
+        [](const std::pair<Id, glm::dvec3>& m, Id id) { return m.first < id; });
+      if (it != this->Frame.Moved.end() && it->first == p)
+      {
+        return it->second;
+      }
+    }
+    return this->Mesh.Points[static_cast<std::size_t>(p)];
+  }
+
+  glm::dvec3 normal(Id p) const
+  {
+    return p >= this->PointCount
+      ? this->Frame.NewNormals[static_cast<std::size_t>(p - this->PointCount)]
+      : this->Mesh.Normals[static_cast<std::size_t>(p)];
+  }
+
+  bool isMoved(Id p) const
+  {
+    return p < this->PointCount &&
+      std::binary_search(this->Frame.Moved.begin(), this->Frame.Moved.end(),
+        std::make_pair(p, glm::dvec3(0.0)),
+        [](const std::pair<Id, glm::dvec3>& a, const std::pair<Id, glm::dvec3>& b) {
+          return a.first < b.first;
+        });
+  }
+
+  TriangleCorners current(const Triangle& t) const
+  {
+    return TriangleCorners{ { this->position(t[0]), this->position(t[1]), this->position(t[2]) } };
+  }
+
+  TriangleCorners prepared(Id t) const
+  {
+    const Triangle& tri = this->Mesh.Triangles[static_cast<std::size_t>(t)];
+    return TriangleCorners{ { this->Mesh.Points[static_cast<std::size_t>(tri[0])],
+      this->Mesh.Points[static_cast<std::size_t>(tri[1])],
+      this->Mesh.Points[static_cast<std::size_t>(tri[2])] } };
+  }
+
+  // Turned over against its input triangle: on the other side of the sum of
+  // its corners' shading normals.
+  bool turnedOver(const TriangleCorners& c, const Triangle& ids, const TriangleCorners& input) const
+  {
+    const glm::dvec3 sum = this->normal(ids[0]) + this->normal(ids[1]) + this->normal(ids[2]);
+    return (glm::dot(glm::cross(c.P[1] - c.P[0], c.P[2] - c.P[0]), sum) < 0.0) !=
+      (glm::dot(glm::cross(input.P[1] - input.P[0], input.P[2] - input.P[0]), sum) < 0.0);
+  }
+
+  /// The entry of Remeshed for input triangle t, or -1 when t is kept.
+  long remeshedIndex(Id t) const
+  {
+    const auto it = std::lower_bound(this->Frame.Remeshed.begin(), this->Frame.Remeshed.end(), t);
+    return it != this->Frame.Remeshed.end() && *it == t
+      ? static_cast<long>(it - this->Frame.Remeshed.begin())
+      : -1;
+  }
+
+  const FoldGuardMesh& Mesh;
+  const FoldGuardFrame& Frame;
+  const Id PointCount;
+};
+
+// A triangle to check: a replacement (Index into Replacements) or a kept
+// input triangle with a moved corner (Index = -1).
+struct Item
+{
+  Id Source = -1;
+  long Remeshed = -1; // entry of Remeshed, or -1
+  long Index = -1;
+};
+
+} // namespace
+
+FoldFindings findFolds(
+  const FoldGuardMesh& mesh, const FoldGuardFrame& frame, const FoldGuardParallelFor& parallelFor)
+{
+  const FrameGeometry geometry(mesh, frame);
+  std::vector<Item> items;
+  for (std::size_t i = 0; i < frame.Remeshed.size(); ++i)
+  {
+    for (std::size_t r = frame.ReplacementOffsets[i]; r < frame.ReplacementOffsets[i + 1]; ++r)
+    {
+      items.push_back({ frame.Remeshed[i], static_cast<long>(i), static_cast<long>(r) });
+    }
+  }
+  double largestMove = 0.0;
+  if (!frame.Moved.empty())
+  {
+    for (const auto& [p, to] : frame.Moved)
+    {
+      largestMove =
+        std::max(largestMove, glm::length(to - mesh.Points[static_cast<std::size_t>(p)]));
+    }
+    std::vector<Id> around;
+    std::vector<Id> candidates;
+    for (const auto& [p, to] : frame.Moved)
+    {
+      const glm::dvec3& at = mesh.Points[static_cast<std::size_t>(p)];
+      mesh.Grid.query(at, at, candidates);
+      for (const Id t : candidates)
+      {
+        const Triangle& tri = mesh.Triangles[static_cast<std::size_t>(t)];
+        if ((tri[0] == p || tri[1] == p || tri[2] == p) && geometry.remeshedIndex(t) < 0)
+        {
+          around.push_back(t);
+        }
+      }
+    }
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+    for (const Id t : around)
+    {
+      items.push_back({ t, -1, -1 });
+    }
+  }
+
+  auto idsOf = [&](const Item& item) -> const Triangle& {
+    return item.Index >= 0 ? frame.Replacements[static_cast<std::size_t>(item.Index)]
+                           : mesh.Triangles[static_cast<std::size_t>(item.Source)];
+  };
+
+  // 0: fine, 1: turned over, 2: cuts through another.
+  std::vector<unsigned char> verdict(items.size(), 0);
+  parallelFor(items.size(), [&](std::size_t begin, std::size_t end) {
+    std::vector<Id> candidates;
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      const Item& item = items[k];
+      const Triangle& ids = idsOf(item);
+      if (hasRepeatedCorner(ids))
+      {
+        continue;
+      }
+      const TriangleCorners x = geometry.current(ids);
+      const TriangleCorners source = geometry.prepared(item.Source);
+      if (geometry.turnedOver(x, ids, source))
+      {
+        verdict[k] = 1;
+        continue;
+      }
+      glm::dvec3 low = glm::min(x.P[0], glm::min(x.P[1], x.P[2])) - glm::dvec3(largestMove);
+      glm::dvec3 high = glm::max(x.P[0], glm::max(x.P[1], x.P[2])) + glm::dvec3(largestMove);
+      mesh.Grid.query(low, high, candidates);
+      bool cuts = false;
+      for (std::size_t c = 0; c < candidates.size() && !cuts; ++c)
+      {
+        const Id other = candidates[c];
+        if (other != item.Source &&
+          (hasRepeatedCorner(mesh.Triangles[static_cast<std::size_t>(other)]) ||
+            trianglesTouch(source, geometry.prepared(other))))
+        {
+          continue; // the input already cuts there
+        }
+        const long remeshed = other == item.Source ? item.Remeshed : geometry.remeshedIndex(other);
+        if (remeshed < 0)
+        {
+          if (other != item.Source)
+          {
+            const Triangle& y = mesh.Triangles[static_cast<std::size_t>(other)];
+            cuts = trianglesIntersect(x, geometry.current(y));
+          }
+          continue;
+        }
+        for (std::size_t r = frame.ReplacementOffsets[static_cast<std::size_t>(remeshed)];
+             r < frame.ReplacementOffsets[static_cast<std::size_t>(remeshed) + 1] && !cuts; ++r)
+        {
+          if (static_cast<long>(r) != item.Index && !hasRepeatedCorner(frame.Replacements[r]))
+          {
+            cuts = trianglesIntersect(x, geometry.current(frame.Replacements[r]));
+          }
+        }
+      }
+      verdict[k] = cuts ? 2 : 0;
+    }
+  });
+
+  FoldFindings findings;
+  findings.FoldingRemeshed.assign(frame.Remeshed.size(), 0);
+  for (std::size_t k = 0; k < items.size(); ++k)
+  {
+    if (verdict[k] == 0)
+    {
+      continue;
+    }
+    ++(verdict[k] == 1 ? findings.Turned : findings.Cutting);
+    if (items[k].Remeshed >= 0)
+    {
+      findings.FoldingRemeshed[static_cast<std::size_t>(items[k].Remeshed)] = 1;
+    }
+    for (const Id p : idsOf(items[k]))
+    {
+      if (geometry.isMoved(p))
+      {
+        findings.FoldingMovedPoints.push_back(p);
+      }
+    }
+  }
+  std::sort(findings.FoldingMovedPoints.begin(), findings.FoldingMovedPoints.end());
+  findings.FoldingMovedPoints.erase(
+    std::unique(findings.FoldingMovedPoints.begin(), findings.FoldingMovedPoints.end()),
+    findings.FoldingMovedPoints.end());
+  return findings;
+}
+
+} // namespace silsmooth

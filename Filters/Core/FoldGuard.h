@@ -1,0 +1,96 @@
+// The fold guard of the smoothing pass (issue 13): finds, in one frame's
+// output, the re-meshed triangles whose new triangles fold, so that the pass
+// can re-mesh them more conservatively, and the perturbed points that fold
+// their triangles, so that it can leave them in place.
+//
+// A new triangle folds when
+//   - it is turned over: its geometric normal and the normal of the input
+//     triangle it replaces lie on opposite sides of the sum S of its
+//     corners' shading normals (one points against S, the other does not;
+//     either way round, so that the rule does not depend on the winding the
+//     output is written in). S stands for the surface's normal where the new
+//     triangle is: the new points' normals interpolate the input corners'.
+//     Comparing with the input triangle at the same S, not with the input
+//     triangle's own corners, matters on coarse meshes: a corner normal may
+//     point against its own triangle, and the sub-triangles next to it would
+//     count as turned however flat they lie); or
+//   - it cuts through another output triangle (TriangleIntersection.h) whose
+//     input triangle its own input triangle does not cut through, or through
+//     another new triangle of the same input triangle.
+// Kept triangles with a corner the perturbation moved are checked by the
+// same two rules; their moved corners are the ones to leave in place.
+//
+// Candidates for a cut are the output triangles of the input triangles whose
+// boxes, as prepared, meet the triangle's box widened by the largest move of
+// the frame (TriangleGrid.h): a kept triangle moves with its corners, and a
+// new triangle lies in its input triangle's region of influence, which the
+// box of its own corners bounds.
+//
+// Invariant the pass builds on: an output in which every re-meshed triangle
+// is cut along the chord between silhouette points on its straight edges,
+// every feature segment is straight and no point is moved has no fold by
+// these rules, because its new triangles lie in their input triangles with
+// the input's orientation; so the fallbacks, each taken once, end. (On a
+// piece of a partitioned mesh the pass does not straighten a silhouette
+// point or feature segment on a boundary edge: the piece across the seam
+// computes the same point and cannot know of the fallback. A fold that only
+// that would undo is counted as unresolved.)
+#pragma once
+
+#include "MeshTopology.h"
+#include "TriangleGrid.h"
+
+#include <glm/vec3.hpp>
+
+#include <functional>
+#include <utility>
+#include <vector>
+
+namespace silsmooth
+{
+
+/// The prepared mesh the frame was made from.
+struct FoldGuardMesh
+{
+  const std::vector<glm::dvec3>& Points;
+  const std::vector<glm::dvec3>& Normals;
+  const std::vector<Triangle>& Triangles;
+  const TriangleGrid& Grid;
+};
+
+/// One frame's output: the re-meshed input triangles (ascending) with their
+/// replacements, the added points (ids from Points.size() on) and the moved
+/// input points (ascending ids).
+struct FoldGuardFrame
+{
+  const std::vector<Id>& Remeshed;
+  const std::vector<std::size_t>& ReplacementOffsets;
+  const std::vector<Triangle>& Replacements;
+  const std::vector<glm::dvec3>& NewPositions;
+  const std::vector<glm::dvec3>& NewNormals;
+  const std::vector<std::pair<Id, glm::dvec3>>& Moved;
+};
+
+struct FoldFindings
+{
+  /// Per entry of Remeshed: 1 when one of its new triangles folds.
+  std::vector<unsigned char> FoldingRemeshed;
+  /// Moved points that are corners of a folding triangle, ascending.
+  std::vector<Id> FoldingMovedPoints;
+  /// Folding triangles found: turned over, and cutting through another.
+  std::size_t Turned = 0;
+  std::size_t Cutting = 0;
+
+  bool any() const { return this->Turned + this->Cutting > 0; }
+};
+
+/// Same signature as silsmooth::ParallelFor (SilhouetteSmoother.h).
+using FoldGuardParallelFor =
+  std::function<void(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body)>;
+
+/// Checks every new triangle and every kept triangle with a moved corner.
+/// The findings do not depend on how parallelFor splits the work.
+FoldFindings findFolds(
+  const FoldGuardMesh& mesh, const FoldGuardFrame& frame, const FoldGuardParallelFor& parallelFor);
+
+} // namespace silsmooth

@@ -1,0 +1,176 @@
+#include "TriangleGrid.h"
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace silsmooth
+{
+namespace
+{
+
+bool finite(const glm::dvec3& p)
+{
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
+} // namespace
+
+TriangleGrid::TriangleGrid(
+  const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles)
+  : Low(triangles.size(), glm::dvec3(HUGE_VAL))
+  , High(triangles.size(), glm::dvec3(-HUGE_VAL))
+{
+  glm::dvec3 low(HUGE_VAL);
+  glm::dvec3 high(-HUGE_VAL);
+  double extentSum = 0.0;
+  std::size_t used = 0;
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const Triangle& tri = triangles[t];
+    if (hasRepeatedCorner(tri))
+    {
+      continue;
+    }
+    const glm::dvec3& a = points[static_cast<std::size_t>(tri[0])];
+    const glm::dvec3& b = points[static_cast<std::size_t>(tri[1])];
+    const glm::dvec3& c = points[static_cast<std::size_t>(tri[2])];
+    if (!finite(a) || !finite(b) || !finite(c))
+    {
+      continue;
+    }
+    this->Low[t] = glm::min(a, glm::min(b, c));
+    this->High[t] = glm::max(a, glm::max(b, c));
+    low = glm::min(low, this->Low[t]);
+    high = glm::max(high, this->High[t]);
+    const glm::dvec3 d = this->High[t] - this->Low[t];
+    extentSum += std::max({ d.x, d.y, d.z });
+    ++used;
+  }
+  if (used == 0)
+  {
+    return;
+  }
+  const glm::dvec3 size = high - low;
+  double cell = extentSum / static_cast<double>(used);
+  const double largest = std::max({ size.x, size.y, size.z });
+  if (!(cell > 0.0) || !std::isfinite(cell))
+  {
+    cell = largest > 0.0 ? largest : 1.0;
+  }
+  // At most about 4 cells per triangle.
+  const double budget = 4.0 * static_cast<double>(used) + 1.0;
+  auto cellsFor = [&](double c) {
+    return (std::floor(size.x / c) + 1) * (std::floor(size.y / c) + 1) *
+      (std::floor(size.z / c) + 1);
+  };
+  while (cellsFor(cell) > budget)
+  {
+    cell *= 1.5;
+  }
+  this->Origin = low;
+  this->CellSize = cell;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    this->Cells[axis] = static_cast<int>(std::floor(size[axis] / cell)) + 1;
+  }
+  const std::size_t cellCount = static_cast<std::size_t>(this->Cells[0]) *
+    static_cast<std::size_t>(this->Cells[1]) * static_cast<std::size_t>(this->Cells[2]);
+  // Two passes: count per cell, then fill (compressed rows).
+  this->Offsets.assign(cellCount + 1, 0);
+  for (int pass = 0; pass < 2; ++pass)
+  {
+    std::vector<std::size_t> next;
+    if (pass == 1)
+    {
+      for (std::size_t c = 1; c <= cellCount; ++c)
+      {
+        this->Offsets[c] += this->Offsets[c - 1];
+      }
+      this->Entries.resize(this->Offsets[cellCount]);
+      next.assign(this->Offsets.begin(), this->Offsets.end() - 1);
+    }
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      if (!(this->Low[t].x <= this->High[t].x))
+      {
+        continue;
+      }
+      const int i0 = this->cellIndex(this->Low[t].x, 0);
+      const int i1 = this->cellIndex(this->High[t].x, 0);
+      const int j0 = this->cellIndex(this->Low[t].y, 1);
+      const int j1 = this->cellIndex(this->High[t].y, 1);
+      const int k0 = this->cellIndex(this->Low[t].z, 2);
+      const int k1 = this->cellIndex(this->High[t].z, 2);
+      for (int k = k0; k <= k1; ++k)
+      {
+        for (int j = j0; j <= j1; ++j)
+        {
+          for (int i = i0; i <= i1; ++i)
+          {
+            const std::size_t c =
+              (static_cast<std::size_t>(k) * this->Cells[1] + j) * this->Cells[0] + i;
+            if (pass == 0)
+            {
+              ++this->Offsets[c + 1];
+            }
+            else
+            {
+              this->Entries[next[c]++] = static_cast<Id>(t);
+            }
+          }
+        }
+      }
+    }
+  }
+}
+
+int TriangleGrid::cellIndex(double x, int axis) const
+{
+  const double c = std::floor((x - this->Origin[axis]) / this->CellSize);
+  if (!(c >= 0.0))
+  {
+    return 0;
+  }
+  return static_cast<int>(std::min(c, static_cast<double>(this->Cells[axis] - 1)));
+}
+
+void TriangleGrid::query(const glm::dvec3& low, const glm::dvec3& high, std::vector<Id>& out) const
+{
+  out.clear();
+  if (this->Offsets.empty() || !finite(low) || !finite(high))
+  {
+    return;
+  }
+  const int i0 = this->cellIndex(low.x, 0);
+  const int i1 = this->cellIndex(high.x, 0);
+  const int j0 = this->cellIndex(low.y, 1);
+  const int j1 = this->cellIndex(high.y, 1);
+  const int k0 = this->cellIndex(low.z, 2);
+  const int k1 = this->cellIndex(high.z, 2);
+  for (int k = k0; k <= k1; ++k)
+  {
+    for (int j = j0; j <= j1; ++j)
+    {
+      for (int i = i0; i <= i1; ++i)
+      {
+        const std::size_t c =
+          (static_cast<std::size_t>(k) * this->Cells[1] + j) * this->Cells[0] + i;
+        for (std::size_t e = this->Offsets[c]; e < this->Offsets[c + 1]; ++e)
+        {
+          const std::size_t t = static_cast<std::size_t>(this->Entries[e]);
+          if (this->Low[t].x <= high.x && low.x <= this->High[t].x && this->Low[t].y <= high.y &&
+            low.y <= this->High[t].y && this->Low[t].z <= high.z && low.z <= this->High[t].z)
+          {
+            out.push_back(this->Entries[e]);
+          }
+        }
+      }
+    }
+  }
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+}
+
+} // namespace silsmooth

@@ -1,0 +1,47 @@
+// A uniform grid over the bounding boxes of a mesh's triangles, for finding
+// the triangles near a region (the fold guard's candidates, FoldGuard.h).
+// Built once per prepared mesh; queries are read-only and thread-safe.
+//
+// The cell size is the mean of the triangles' largest box extents, so a
+// triangle spans a few cells and a cell holds a few triangles on meshes of
+// even size; the cell count is capped at about 4 per triangle, so a mesh
+// with one huge triangle among small ones cannot make the grid huge.
+// Triangles with a repeated corner or a non-finite corner are left out.
+#pragma once
+
+#include "MeshTopology.h"
+
+#include <glm/vec3.hpp>
+
+#include <vector>
+
+namespace silsmooth
+{
+
+class TriangleGrid
+{
+public:
+  TriangleGrid() = default;
+  TriangleGrid(const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles);
+
+  /// Appends to `out` (cleared first) every triangle whose box meets the box
+  /// [low, high], ascending, each once.
+  void query(const glm::dvec3& low, const glm::dvec3& high, std::vector<Id>& out) const;
+
+  bool empty() const { return this->Offsets.empty(); }
+
+private:
+  int cellIndex(double x, int axis) const;
+
+  glm::dvec3 Origin{ 0.0 };
+  double CellSize = 1.0;
+  int Cells[3] = { 0, 0, 0 };
+  /// Triangles of cell c: Entries[Offsets[c] .. Offsets[c + 1]).
+  std::vector<std::size_t> Offsets;
+  std::vector<Id> Entries;
+  /// Each triangle's box, to drop candidates that share a cell only.
+  std::vector<glm::dvec3> Low;
+  std::vector<glm::dvec3> High;
+};
+
+} // namespace silsmooth

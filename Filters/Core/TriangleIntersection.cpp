@@ -1,0 +1,133 @@
+#include "TriangleIntersection.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace silsmooth
+{
+namespace
+{
+
+// Relative tolerances: of the plane distance to the triangles' size, and of
+// the barycentric coordinates of a crossing. Negative ones make the lenient
+// test of trianglesTouch.
+struct Tolerances
+{
+  double Plane;
+  double Interior;
+};
+constexpr Tolerances Strict{ 1e-9, 1e-7 };
+constexpr Tolerances Lenient{ -TouchTolerance, -TouchTolerance };
+
+double longestSide(const TriangleCorners& t)
+{
+  return std::max(
+    { glm::length(t.P[1] - t.P[0]), glm::length(t.P[2] - t.P[1]), glm::length(t.P[0] - t.P[2]) });
+}
+
+bool crosses(const glm::dvec3& u, const glm::dvec3& v, const TriangleCorners& t, double scale,
+  const Tolerances& tolerances = Strict)
+{
+  const glm::dvec3 normal = glm::cross(t.P[1] - t.P[0], t.P[2] - t.P[0]);
+  const double area2 = glm::length(normal);
+  if (!(area2 > 0.0) || !(scale > 0.0))
+  {
+    return false;
+  }
+  const glm::dvec3 unit = normal / area2;
+  const double du = glm::dot(unit, u - t.P[0]);
+  const double dv = glm::dot(unit, v - t.P[0]);
+  const double tolerance = tolerances.Plane * scale;
+  if (!((du > tolerance && dv < -tolerance) || (du < -tolerance && dv > tolerance)))
+  {
+    return false;
+  }
+  // Lenient: an end within the tolerance of the plane counts as on it.
+  const double along = du == dv ? 0.0 : std::clamp(du / (du - dv), 0.0, 1.0);
+  const glm::dvec3 x = u + along * (v - u);
+  // Barycentric coordinates of x from the sub-triangle areas, signed along
+  // the normal.
+  const double b0 = glm::dot(unit, glm::cross(t.P[1] - x, t.P[2] - x)) / area2;
+  const double b1 = glm::dot(unit, glm::cross(t.P[2] - x, t.P[0] - x)) / area2;
+  const double b2 = 1.0 - b0 - b1;
+  return b0 > tolerances.Interior && b1 > tolerances.Interior && b2 > tolerances.Interior;
+}
+
+struct SharedCorners
+{
+  int Count = 0;
+  int A = -1; // a corner of a that b has too
+  int B = -1;
+};
+
+SharedCorners sharedCorners(const TriangleCorners& a, const TriangleCorners& b)
+{
+  SharedCorners shared;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      if (a.P[i] == b.P[j])
+      {
+        ++shared.Count;
+        shared.A = i;
+        shared.B = j;
+      }
+    }
+  }
+  return shared;
+}
+
+bool repeatsAPosition(const TriangleCorners& t)
+{
+  return t.P[0] == t.P[1] || t.P[1] == t.P[2] || t.P[2] == t.P[0];
+}
+
+bool meet(const TriangleCorners& a, const TriangleCorners& b, const Tolerances& tolerances)
+{
+  if (repeatsAPosition(a) || repeatsAPosition(b))
+  {
+    return false; // a needle or a point: no interior to cut or be cut
+  }
+  const SharedCorners shared = sharedCorners(a, b);
+  if (shared.Count >= 2)
+  {
+    return false;
+  }
+  const double scale = std::max(longestSide(a), longestSide(b));
+  if (shared.Count == 1)
+  {
+    return crosses(a.P[(shared.A + 1) % 3], a.P[(shared.A + 2) % 3], b, scale, tolerances) ||
+      crosses(b.P[(shared.B + 1) % 3], b.P[(shared.B + 2) % 3], a, scale, tolerances);
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    if (crosses(a.P[k], a.P[(k + 1) % 3], b, scale, tolerances) ||
+      crosses(b.P[k], b.P[(k + 1) % 3], a, scale, tolerances))
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+} // namespace
+
+bool segmentCrossesTriangle(const glm::dvec3& u, const glm::dvec3& v, const TriangleCorners& t)
+{
+  return crosses(u, v, t, std::max(longestSide(t), glm::length(v - u)));
+}
+
+bool trianglesIntersect(const TriangleCorners& a, const TriangleCorners& b)
+{
+  return meet(a, b, Strict);
+}
+
+bool trianglesTouch(const TriangleCorners& a, const TriangleCorners& b)
+{
+  return meet(a, b, Lenient);
+}
+
+} // namespace silsmooth

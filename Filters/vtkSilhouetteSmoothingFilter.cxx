@@ -566,6 +566,7 @@ int vtkSilhouetteSmoothingFilter::RequestData(
     fd, "StraightFeatureSegmentCount", static_cast<vtkIdType>(result.StraightFeatureSegments));
   AddCount(fd, "PinnedPointCount", static_cast<vtkIdType>(result.PinnedPoints));
   AddCount(fd, "UnresolvedFoldCount", static_cast<vtkIdType>(result.UnresolvedFolds));
+  AddCount(fd, "FoldGuardRoundCount", static_cast<vtkIdType>(result.FoldGuardRounds));
   AddCount(fd, "InputTriangleCount", inputTriangles);
   AddCount(fd, "OutputTriangleCount", inputTriangles - remeshedTriangles + newTriangles);
 

@@ -171,36 +171,47 @@ FoldFindings findFolds(
         verdict[k] = 1;
         continue;
       }
-      glm::dvec3 low = glm::min(x.P[0], glm::min(x.P[1], x.P[2])) - glm::dvec3(largestMove);
-      glm::dvec3 high = glm::max(x.P[0], glm::max(x.P[1], x.P[2])) + glm::dvec3(largestMove);
-      mesh.Grid.query(low, high, candidates);
+      const glm::dvec3 xLow = glm::min(x.P[0], glm::min(x.P[1], x.P[2]));
+      const glm::dvec3 xHigh = glm::max(x.P[0], glm::max(x.P[1], x.P[2]));
+      mesh.Grid.query(xLow - glm::dvec3(largestMove), xHigh + glm::dvec3(largestMove), candidates);
+      // Whether y, an output triangle of input triangle `other`, cuts x:
+      // boxes first, the exact rule next, and last (rarely reached) whether
+      // the input triangles already touch there.
+      auto cutBy = [&](const Triangle& y, Id other) {
+        if (hasRepeatedCorner(y))
+        {
+          return false;
+        }
+        const TriangleCorners yc = geometry.current(y);
+        const glm::dvec3 yLow = glm::min(yc.P[0], glm::min(yc.P[1], yc.P[2]));
+        const glm::dvec3 yHigh = glm::max(yc.P[0], glm::max(yc.P[1], yc.P[2]));
+        if (yLow.x > xHigh.x || xLow.x > yHigh.x || yLow.y > xHigh.y || xLow.y > yHigh.y ||
+          yLow.z > xHigh.z || xLow.z > yHigh.z || !trianglesIntersect(x, yc))
+        {
+          return false;
+        }
+        return other == item.Source || !trianglesTouch(source, geometry.prepared(other));
+      };
       bool cuts = false;
       for (std::size_t c = 0; c < candidates.size() && !cuts; ++c)
       {
         const Id other = candidates[c];
         if (other != item.Source &&
-          (hasRepeatedCorner(mesh.Triangles[static_cast<std::size_t>(other)]) ||
-            trianglesTouch(source, geometry.prepared(other))))
+          hasRepeatedCorner(mesh.Triangles[static_cast<std::size_t>(other)]))
         {
-          continue; // the input already cuts there
+          continue;
         }
         const long remeshed = other == item.Source ? item.Remeshed : geometry.remeshedIndex(other);
         if (remeshed < 0)
         {
-          if (other != item.Source)
-          {
-            const Triangle& y = mesh.Triangles[static_cast<std::size_t>(other)];
-            cuts = trianglesIntersect(x, geometry.current(y));
-          }
+          cuts =
+            other != item.Source && cutBy(mesh.Triangles[static_cast<std::size_t>(other)], other);
           continue;
         }
         for (std::size_t r = frame.ReplacementOffsets[static_cast<std::size_t>(remeshed)];
              r < frame.ReplacementOffsets[static_cast<std::size_t>(remeshed) + 1] && !cuts; ++r)
         {
-          if (static_cast<long>(r) != item.Index && !hasRepeatedCorner(frame.Replacements[r]))
-          {
-            cuts = trianglesIntersect(x, geometry.current(frame.Replacements[r]));
-          }
+          cuts = static_cast<long>(r) != item.Index && cutBy(frame.Replacements[r], other);
         }
       }
       verdict[k] = cuts ? 2 : 0;

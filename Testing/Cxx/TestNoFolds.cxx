@@ -23,6 +23,7 @@
 #include "FoldCounting.h"
 #include "SilhouetteTestSupport.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -43,6 +44,8 @@ struct Counts
   double Straight = 0;
   double Pinned = 0;
   double Unresolved = 0;
+  double Silhouette = 0;
+  double Rounds = 0; // the most in any view
 };
 
 Counts OverViews(vtkPolyData* mesh, bool guard, int views)
@@ -67,6 +70,8 @@ Counts OverViews(vtkPolyData* mesh, bool guard, int views)
     counts.Straight += fd->GetArray("StraightSilhouettePointCount")->GetTuple1(0);
     counts.Pinned += fd->GetArray("PinnedPointCount")->GetTuple1(0);
     counts.Unresolved += fd->GetArray("UnresolvedFoldCount")->GetTuple1(0);
+    counts.Silhouette += fd->GetArray("SilhouetteTriangleCount")->GetTuple1(0);
+    counts.Rounds = std::max(counts.Rounds, fd->GetArray("FoldGuardRoundCount")->GetTuple1(0));
   }
   return counts;
 }
@@ -137,11 +142,12 @@ int TestNoFolds(int argc, char* argv[])
     const Counts on = OverViews(mesh, true, Views);
     const Counts off = OverViews(mesh, false, Views);
     std::printf("%-14s %5lld triangles, %d views: %ld turned over, %ld cutting (of %ld changed "
-                "triangles); fallbacks %.0f chord, %.0f straight points, %.0f pinned, %.0f "
-                "unresolved | guard off: %ld turned over, %ld cutting\n",
+                "triangles); fallbacks %.0f chord (of %.0f silhouette triangles), %.0f straight "
+                "points, %.0f pinned, %.0f "
+                "unresolved, at most %.0f extra rounds | guard off: %ld turned over, %ld cutting\n",
       name.c_str(), static_cast<long long>(mesh->GetNumberOfPolys()), Views, on.Flipped,
-      on.Intersecting, on.Changed, on.Fallbacks, on.Straight, on.Pinned, on.Unresolved, off.Flipped,
-      off.Intersecting);
+      on.Intersecting, on.Changed, on.Fallbacks, on.Silhouette, on.Straight, on.Pinned,
+      on.Unresolved, on.Rounds, off.Flipped, off.Intersecting);
     std::fflush(stdout);
     if (on.Flipped != 0 || on.Intersecting != 0 || on.Unresolved != 0)
     {

@@ -73,11 +73,6 @@ glm::dvec3 NormalSum(vtkDataArray* normals, const std::array<vtkIdType, 3>& ids)
   return sum;
 }
 
-double Facing(const TriangleCorners& t, const glm::dvec3& direction)
-{
-  return glm::dot(glm::cross(t.P[1] - t.P[0], t.P[2] - t.P[0]), direction);
-}
-
 struct Box
 {
   glm::dvec3 Low{ 0.0 };
@@ -175,7 +170,7 @@ FoldCount CountFolds(vtkPolyData* input, vtkPolyData* output)
     const glm::dvec3 sum = NormalSum(normals, out.Corners[t]);
     TriangleCorners original;
     if (inputTriangle(source[t], original) &&
-      (Facing(corners[t], sum) < 0.0) != (Facing(original, sum) < 0.0))
+      silsmooth::turnedOverAgainst(corners[t], original, sum))
     {
       ++count.Flipped;
     }

@@ -74,9 +74,8 @@ public:
   // its corners' shading normals.
   bool turnedOver(const TriangleCorners& c, const Triangle& ids, const TriangleCorners& input) const
   {
-    const glm::dvec3 sum = this->normal(ids[0]) + this->normal(ids[1]) + this->normal(ids[2]);
-    return (glm::dot(glm::cross(c.P[1] - c.P[0], c.P[2] - c.P[0]), sum) < 0.0) !=
-      (glm::dot(glm::cross(input.P[1] - input.P[0], input.P[2] - input.P[0]), sum) < 0.0);
+    return turnedOverAgainst(
+      c, input, this->normal(ids[0]) + this->normal(ids[1]) + this->normal(ids[2]));
   }
 
   /// The entry of Remeshed for input triangle t, or -1 when t is kept.

@@ -130,4 +130,19 @@ bool trianglesTouch(const TriangleCorners& a, const TriangleCorners& b)
   return meet(a, b, Lenient);
 }
 
+bool turnedOverAgainst(
+  const TriangleCorners& piece, const TriangleCorners& input, const glm::dvec3& normalSum)
+{
+  auto facing = [&normalSum](const TriangleCorners& t) {
+    const glm::dvec3 normal = glm::cross(t.P[1] - t.P[0], t.P[2] - t.P[0]);
+    const double scale = glm::length(normal) * glm::length(normalSum);
+    const double dot = glm::dot(normal, normalSum);
+    // -1, 0 (edge-on or degenerate) or +1.
+    return !(scale > 0.0) || !(std::abs(dot) > FacingTolerance * scale) ? 0 : (dot > 0.0 ? 1 : -1);
+  };
+  const int a = facing(piece);
+  const int b = facing(input);
+  return a != 0 && b != 0 && a != b;
+}
+
 } // namespace silsmooth

@@ -51,6 +51,18 @@ constexpr double TouchTolerance = 1e-4;
 /// its size apart).
 bool trianglesTouch(const TriangleCorners& a, const TriangleCorners& b);
 
+/// How far from edge-on (relative: the cosine between a triangle's normal
+/// and the normal sum) a facing must be to count in turnedOverAgainst.
+constexpr double FacingTolerance = 1e-9;
+
+/// Whether `piece` (a new triangle) and `input` (the input triangle it
+/// replaces) face opposite ways with respect to `normalSum` (the sum of the
+/// piece's corners' shading normals): one against it, the other not, each by
+/// more than FacingTolerance (a piece seen edge-on is not turned over, and a
+/// flat piece of its input triangle never is, whatever rounding does).
+bool turnedOverAgainst(
+  const TriangleCorners& piece, const TriangleCorners& input, const glm::dvec3& normalSum);
+
 /// Whether the open segment (u, v) crosses the interior of triangle t
 /// strictly (the rule's building block).
 bool segmentCrossesTriangle(const glm::dvec3& u, const glm::dvec3& v, const TriangleCorners& t);

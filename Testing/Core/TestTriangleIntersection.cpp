@@ -98,3 +98,21 @@ TEST(TriangleIntersection, ScaleDoesNotChangeTheAnswer)
     EXPECT_FALSE(trianglesIntersect(floor, above)) << s;
   }
 }
+
+TEST(TriangleIntersection, TurnedOverMeansFacingOppositeWaysClearly)
+{
+  const glm::dvec3 up(0, 0, 1);
+  const TriangleCorners reversed = tri({ 0, 0, 0 }, { 0, 2, 0 }, { 2, 0, 0 });
+  EXPECT_TRUE(turnedOverAgainst(reversed, Floor, up));
+  EXPECT_TRUE(turnedOverAgainst(Floor, reversed, up));
+  EXPECT_FALSE(turnedOverAgainst(Floor, Floor, up));
+  // Either way round against the normals: both facing away is no turn.
+  EXPECT_FALSE(turnedOverAgainst(reversed, reversed, up));
+  // A piece seen edge-on, or degenerate, is not turned over.
+  const TriangleCorners edgeOn = tri({ 0, 0, 0 }, { 1, 0, 0 }, { 0, 0, 1 });
+  EXPECT_FALSE(turnedOverAgainst(edgeOn, Floor, glm::dvec3(0, 1, 0)));
+  EXPECT_FALSE(turnedOverAgainst(tri({ 0, 0, 0 }, { 1, 0, 0 }, { 2, 0, 0 }), Floor, up));
+  // Tilted past edge-on by a little: turned over.
+  const TriangleCorners tilted = tri({ 0, 0, 0 }, { 0, 1, -1e-3 }, { 1, 0, 0 });
+  EXPECT_TRUE(turnedOverAgainst(tilted, Floor, up));
+}

@@ -2,8 +2,8 @@
 // non-manifold fans, inconsistent orientation, zero normals, coordinates from
 // 1e-30 to 1e30), random feature edges and random views go through the whole
 // smoothing pass, which
-// must not crash, hang, or produce non-finite points, out-of-range ids or
-// triangles that repeat an id.
+// must not crash, hang, or produce non-finite points, out-of-range ids,
+// triangles that repeat an id, or a fold its fold guard leaves unresolved.
 #include "SilhouetteSmoother.h"
 #include "WeldedSurface.h"
 
@@ -149,6 +149,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   {
     require(std::isfinite(n.x) && std::isfinite(n.y) && std::isfinite(n.z));
   }
+  // The fold guard always finds a fallback (FoldGuard.h's invariant): a
+  // whole mesh, not a piece, so every silhouette point may be straightened.
+  require(result.UnresolvedFolds == 0);
   const Id total = static_cast<Id>(prepared + result.NewPoints.size());
   for (const NewPoint& p : result.NewPoints)
   {

@@ -350,9 +350,11 @@ boundary with a Euclidean distance transform, mean over the views and max),
 and the whole-frame time (camera move, filter when view-dependent, render
 to completion; median over an orbit). 'filter ms' is per frame for the
 view-dependent methods and the one-off tessellation for PN triangles. For
-the sphere and the torus it also prints the distance to the exact
-silhouette (the exact circle for the sphere, a 518,400-triangle torus
-rendering for the torus).
+the analytic models (all but the bunny) it also prints the distance to the
+exact silhouette: the exact circle for the sphere; for the torus, the
+ellipsoid, the super-toroid and the knot, the outline of the same analytic
+surface sampled very finely (327,680 to 518,400 triangles, within a
+0.015 px of the true outline; docs/exact-surfaces.md).
 Temporal coherence: from the first view the camera turns in --frames steps
 of 1 degree; for each variant, each step compares the outline with its
 outline one step before (both ways, by distance transform). It prints the

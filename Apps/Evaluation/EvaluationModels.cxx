@@ -30,24 +30,41 @@ namespace silhouette_eval
 namespace
 {
 
+// How an analytic model's surface is sampled: the (u, v) grid of the
+// torus-like ones, or the icosphere subdivision level (in U) of the sphere
+// and the ellipsoid. The original and the exact stand-in differ only in this.
+struct Sampling
+{
+  int U = 0;
+  int V = 0;
+};
+
 struct ModelInfo
 {
   const char* Name;
   const char* Description;
   int CoarseTriangles;
   ExactShape Exact;
+  Sampling Original; ///< of MakeOriginal (analytic models)
+  Sampling StandIn;  ///< of ExactSurface (ExactShape::Surface only)
 };
 
 // Coarse sizes where the raw outline is visibly polygonal at 1024 x 768
-// (about 1.5 px or more from the fine reference on average).
+// (about 1.5 px or more from the fine reference on average). The exact
+// stand-ins' samplings are chosen and measured in EvaluationModels.h.
 const ModelInfo Models[] = {
-  { "bunny", "the Stanford bunny (Data/bunny.ply, 3,674 triangles)", 500, ExactShape::None },
-  { "sphere", "unit icosphere, 1,280 triangles, points on the sphere", 80, ExactShape::UnitSphere },
-  { "torus", "torus R = 1, r = 0.4, 48 x 24 grid", 300, ExactShape::Torus },
+  { "bunny", "the Stanford bunny (Data/bunny.ply, 3,674 triangles)", 500, ExactShape::None, {},
+    {} },
+  { "sphere", "unit icosphere, 1,280 triangles, points on the sphere", 80, ExactShape::UnitSphere,
+    { 3 }, {} },
+  { "torus", "torus R = 1, r = 0.4, 48 x 24 grid", 300, ExactShape::Surface, { 48, 24 },
+    { 720, 360 } },
   { "ellipsoid", "ellipsoid 2 : 1.2 : 0.7, from a 1,280-triangle icosphere", 200,
-    ExactShape::None },
-  { "supertoroid", "super-toroid with a rounded-square tube, 64 x 32 grid", 300, ExactShape::None },
-  { "knot", "trefoil knot tube, 192 x 16 grid", 600, ExactShape::None },
+    ExactShape::Surface, { 3 }, { 7 } },
+  { "supertoroid", "super-toroid with a rounded-square tube, 64 x 32 grid", 300,
+    ExactShape::Surface, { 64, 32 }, { 720, 360 } },
+  { "knot", "trefoil knot tube, 192 x 16 grid", 600, ExactShape::Surface, { 192, 16 },
+    { 1440, 180 } },
 };
 
 const ModelInfo& InfoOf(const std::string& name)
@@ -112,13 +129,6 @@ void TrefoilTube(double u, double v, double p[3])
   {
     p[k] = c[k] + radius * (std::cos(v) * normal[k] + std::sin(v) * binormal[k]);
   }
-}
-
-void Torus(double u, double v, double p[3])
-{
-  p[0] = (1.0 + 0.4 * std::cos(v)) * std::cos(u);
-  p[1] = (1.0 + 0.4 * std::cos(v)) * std::sin(u);
-  p[2] = 0.4 * std::sin(v);
 }
 
 // Moves every point of `coarse` to the closest point of `surface` and gives it
@@ -252,25 +262,18 @@ vtkSmartPointer<vtkPolyData> PeriodicGridSurface(
   return mesh;
 }
 
-vtkSmartPointer<vtkPolyData> MakeOriginal(const std::string& name, const std::string& dataDir)
+namespace
+{
+
+// The analytic surface of model `name` (not the bunny) sampled as `sampling`
+// says: every point on the surface.
+vtkSmartPointer<vtkPolyData> SampleAnalytic(const std::string& name, const Sampling& sampling)
 {
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  if (name == "bunny")
-  {
-    vtkNew<vtkPLYReader> reader;
-    const std::string path = dataDir + "/bunny.ply";
-    reader->SetFileName(path.c_str());
-    reader->Update();
-    if (reader->GetOutput()->GetNumberOfPolys() == 0)
-    {
-      throw std::runtime_error("cannot read the bunny from " + path);
-    }
-    mesh->ShallowCopy(reader->GetOutput());
-  }
-  else if (name == "sphere" || name == "ellipsoid")
+  if (name == "sphere" || name == "ellipsoid")
   {
     vtkNew<vtkIcosphereSource> sphere;
-    sphere->SetSubdivisionLevel(3);
+    sphere->SetSubdivisionLevel(sampling.U);
     sphere->Update();
     mesh->ShallowCopy(sphere->GetOutput());
     if (name == "ellipsoid")
@@ -288,24 +291,61 @@ vtkSmartPointer<vtkPolyData> MakeOriginal(const std::string& name, const std::st
   else if (name == "torus")
   {
     vtkNew<vtkTorusSurfaceSource> torus;
-    torus->SetRingResolution(48);
-    torus->SetTubeResolution(24);
+    torus->SetRingResolution(sampling.U);
+    torus->SetTubeResolution(sampling.V);
     torus->Update();
     mesh->ShallowCopy(torus->GetOutput());
   }
   else if (name == "supertoroid")
   {
-    mesh = PeriodicGridSurface(64, 32, SuperToroid);
+    mesh = PeriodicGridSurface(sampling.U, sampling.V, SuperToroid);
   }
   else if (name == "knot")
   {
-    mesh = PeriodicGridSurface(192, 16, TrefoilTube);
+    mesh = PeriodicGridSurface(sampling.U, sampling.V, TrefoilTube);
   }
   else
   {
-    InfoOf(name); // throws
+    throw std::runtime_error("'" + name + "' has no analytic surface");
   }
   return mesh;
+}
+
+} // namespace
+
+vtkSmartPointer<vtkPolyData> MakeOriginal(const std::string& name, const std::string& dataDir)
+{
+  if (name != "bunny")
+  {
+    return SampleAnalytic(name, InfoOf(name).Original); // InfoOf throws for an unknown name
+  }
+  vtkNew<vtkPLYReader> reader;
+  const std::string path = dataDir + "/bunny.ply";
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  if (reader->GetOutput()->GetNumberOfPolys() == 0)
+  {
+    throw std::runtime_error("cannot read the bunny from " + path);
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(reader->GetOutput());
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> ExactSurface(const std::string& name, int finer)
+{
+  if (ExactShapeOf(name) != ExactShape::Surface)
+  {
+    return nullptr;
+  }
+  Sampling sampling = InfoOf(name).StandIn;
+  for (int k = 0; k < finer; ++k)
+  {
+    // A level more halves an icosphere's edges, as twice the grid does.
+    sampling =
+      sampling.V == 0 ? Sampling{ sampling.U + 1, 0 } : Sampling{ 2 * sampling.U, 2 * sampling.V };
+  }
+  return SampleAnalytic(name, sampling);
 }
 
 long CountBoundaryOrNonManifoldEdges(vtkPolyData* mesh)

@@ -1,7 +1,9 @@
 // The model set of the evaluation (in the spirit of Xing's Table 1): each
 // model has an original mesh, a coarse version made by quadric decimation, and
-// a fine reference made by OpenSubdiv Loop refinement of the original.
-// Generated models are made here at run time; only the bunny is read from Data/.
+// a fine reference made by OpenSubdiv Loop refinement of the original; the
+// analytic models (all but the bunny) also have an exact silhouette to measure
+// against (ExactShapeOf, ExactSurface). Generated models are made here at run
+// time; only the bunny is read from Data/.
 #ifndef EvaluationModels_h
 #define EvaluationModels_h
 
@@ -18,9 +20,9 @@ namespace silhouette_eval
 /// What exact silhouette a model has, for measuring against it.
 enum class ExactShape
 {
-  None,
-  UnitSphere, ///< the unit sphere about the origin: the outline is a circle
-  Torus       ///< ring radius 1, tube radius 0.4, axis +Z: a very fine rendering stands in
+  None,       ///< no analytic surface (the bunny, mesh files)
+  UnitSphere, ///< the unit sphere about the origin: the outline is a circle, in closed form
+  Surface     ///< an analytic surface: ExactSurface(name), a very fine sampling of it, stands in
 };
 
 struct ModelVersions
@@ -45,6 +47,29 @@ vtkSmartPointer<vtkPolyData> MakeOriginal(const std::string& name, const std::st
 /// The default triangle count of a model's coarse version.
 int DefaultCoarseTriangles(const std::string& name);
 ExactShape ExactShapeOf(const std::string& name);
+
+/// The stand-in for the exact surface of a model whose ExactShapeOf is
+/// ExactShape::Surface (nullptr for any other name): the same analytic
+/// definition as MakeOriginal's, sampled far more finely, every point on the
+/// surface. Measured at 1024x768 with the evaluation's 12 cameras
+/// (docs/exact-surfaces.md):
+///
+///   model        sampling                    triangles  mesh to surface  outline vs 2x finer
+///   torus        720 x 360 (u, v) grid         518,400  0.007 px         0.0007 px
+///   ellipsoid    icosphere level 7, scaled     327,680  0.007 px         0.0013 px
+///   supertoroid  720 x 360 (u, v) grid         518,400  0.007 px         0.0026 px
+///   knot         1440 x 180 (u, v) grid        518,400  0.015 px         0.0026 px
+///
+/// "mesh to surface": the largest distance of the mesh from the analytic
+/// surface (sampled at 7 points per triangle), in pixels at the nearest depth
+/// of the framing: a bound on how far the stand-in's outline is from the
+/// true one. "outline vs 2x finer": the mean outline distance (OutlineDeviation)
+/// between the masks of the stand-in and of the same surface sampled twice as
+/// finely, over the views (the max is 1 px: a few single pixels flip, 14 to
+/// 82 of 20,000 to 42,000 outline pixels). `finer` halves the sample spacing
+/// that many times (twice the grid in u and v, one icosphere level more, at
+/// most level 8), for measuring that bound.
+vtkSmartPointer<vtkPolyData> ExactSurface(const std::string& name, int finer = 0);
 
 /// Quadric decimation (vtkSilhouetteQuadricDecimation without its contour
 /// rule: link condition kept, so closed stays closed) of `original` to at

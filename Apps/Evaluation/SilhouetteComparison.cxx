@@ -16,13 +16,14 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSilhouetteSmoothingFilter.h"
-#include "vtkTorusSurfaceSource.h"
 
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 namespace silhouette_eval
@@ -65,6 +66,59 @@ double Count(vtkPolyData* mesh, const char* name)
   vtkDataArray* array = mesh->GetFieldData()->GetArray(name);
   return array ? array->GetTuple1(0) : 0.0;
 }
+
+// The exact outline of a model, to measure masks against, view by view: the
+// unit sphere's projected circle in closed form, or the outline of the mask
+// of its exact surface's stand-in (ExactSurface: a very fine sampling of the
+// analytic surface), rendered once per view and kept.
+class ExactOutline
+{
+public:
+  ExactOutline(const ModelVersions& model, const ComparisonOptions& options)
+    : Shape(model.Exact)
+    , Width(options.Width)
+    , Height(options.Height)
+    , Surface(model.Exact == ExactShape::Surface ? ExactSurface(model.Name) : nullptr)
+  {
+  }
+
+  bool Exists() const { return this->Shape != ExactShape::None; }
+
+  /// Makes the view-th camera's outline the current one (`camera` is that
+  /// camera; the stand-in is rendered the first time a view is asked for).
+  void SetView(MaskRenderer& masks, int view, vtkCamera* camera)
+  {
+    this->View = view;
+    if (this->Shape == ExactShape::UnitSphere)
+    {
+      // Eye at distance d from the centre: the contour's projection is a
+      // circle of radius tan(asin(1 / d)) / tan(angle / 2) * height / 2.
+      this->Radius = std::tan(std::asin(1.0 / camera->GetDistance())) /
+        std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle() / 2.0)) * this->Height / 2.0;
+    }
+    else if (this->Shape == ExactShape::Surface && this->SurfaceMasks.count(view) == 0)
+    {
+      this->SurfaceMasks.emplace(view, masks.Render(this->Surface, camera));
+    }
+  }
+
+  /// The distance of `mask`'s outline to the current view's exact outline.
+  BoundaryDistance From(const Mask& mask) const
+  {
+    return this->Shape == ExactShape::UnitSphere
+      ? DistanceToCircle(mask, this->Width / 2.0, this->Height / 2.0, this->Radius)
+      : OutlineDeviation(mask, this->SurfaceMasks.at(this->View));
+  }
+
+private:
+  ExactShape Shape;
+  int Width;
+  int Height;
+  vtkSmartPointer<vtkPolyData> Surface;
+  std::map<int, Mask> SurfaceMasks;
+  int View = -1;
+  double Radius = 0.0;
+};
 
 } // namespace
 
@@ -204,15 +258,7 @@ ModelComparison CompareModel(const ModelVersions& model, const ComparisonOptions
   curves->SetViewportSize(options.Width, options.Height);
   curves->SetTolerance(options.Tolerance);
 
-  vtkSmartPointer<vtkPolyData> exactTorus;
-  if (model.Exact == ExactShape::Torus)
-  {
-    vtkNew<vtkTorusSurfaceSource> torus;
-    torus->SetRingResolution(720);
-    torus->SetTubeResolution(360);
-    torus->Update();
-    exactTorus = torus->GetOutput();
-  }
+  ExactOutline exact(model, options);
 
   progress("measuring outlines from " + std::to_string(options.Views) + " views");
   for (int view = 0; view < options.Views; ++view)
@@ -234,27 +280,15 @@ ModelComparison CompareModel(const ModelVersions& model, const ComparisonOptions
     result.SilhouetteTriangles +=
       Count(smoother->GetOutput(), "SilhouetteTriangleCount") / options.Views;
 
-    if (model.Exact == ExactShape::UnitSphere)
+    if (exact.Exists())
     {
-      // Eye at distance d from the centre: the contour's projection is a
-      // circle of radius tan(asin(1 / d)) / tan(angle / 2) * height / 2.
-      const double d = camera->GetDistance();
-      const double radius = std::tan(std::asin(1.0 / d)) /
-        std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle() / 2.0)) * options.Height / 2.0;
-      const double cx = options.Width / 2.0;
-      const double cy = options.Height / 2.0;
-      Accumulate(result.Coarse, DistanceToCircle(coarse, cx, cy, radius), true, options.Views);
-      Accumulate(result.Smoothed, DistanceToCircle(smoothed, cx, cy, radius), true, options.Views);
-      Accumulate(result.Wang2003, DistanceToCircle(wang2003, cx, cy, radius), true, options.Views);
-      Accumulate(result.Fine, DistanceToCircle(fine, cx, cy, radius), true, options.Views);
-    }
-    else if (model.Exact == ExactShape::Torus)
-    {
-      const Mask exact = masks.Render(exactTorus, camera);
-      Accumulate(result.Coarse, OutlineDeviation(coarse, exact), true, options.Views);
-      Accumulate(result.Smoothed, OutlineDeviation(smoothed, exact), true, options.Views);
-      Accumulate(result.Wang2003, OutlineDeviation(wang2003, exact), true, options.Views);
-      Accumulate(result.Fine, OutlineDeviation(fine, exact), true, options.Views);
+      exact.SetView(masks, view, camera);
+      for (const auto& [figures, mask] :
+        { std::make_pair(&result.Coarse, &coarse), std::make_pair(&result.Smoothed, &smoothed),
+          std::make_pair(&result.Wang2003, &wang2003), std::make_pair(&result.Fine, &fine) })
+      {
+        Accumulate(*figures, exact.From(*mask), true, options.Views);
+      }
     }
   }
   result.Coarse.Triangles = static_cast<double>(model.Coarse->GetNumberOfPolys());
@@ -279,19 +313,10 @@ ModelComparison CompareModel(const ModelVersions& model, const ComparisonOptions
     const Mask fine = masks.Render(model.Fine, camera);
     const Mask pnMask = masks.Render(pn, camera);
     Accumulate(result.PN, OutlineDeviation(pnMask, fine), false, options.Views);
-    if (model.Exact == ExactShape::UnitSphere)
+    if (exact.Exists())
     {
-      const double d = camera->GetDistance();
-      const double radius = std::tan(std::asin(1.0 / d)) /
-        std::tan(vtkMath::RadiansFromDegrees(camera->GetViewAngle() / 2.0)) * options.Height / 2.0;
-      Accumulate(result.PN,
-        DistanceToCircle(pnMask, options.Width / 2.0, options.Height / 2.0, radius), true,
-        options.Views);
-    }
-    else if (model.Exact == ExactShape::Torus)
-    {
-      Accumulate(
-        result.PN, OutlineDeviation(pnMask, masks.Render(exactTorus, camera)), true, options.Views);
+      exact.SetView(masks, view, camera);
+      Accumulate(result.PN, exact.From(pnMask), true, options.Views);
     }
   }
 

@@ -3,7 +3,9 @@
 // earlier methods it is compared with (Wang et al. 2003 boundary curves, and
 // PN triangles at the level whose triangle count is nearest ours) and the fine
 // reference are rendered; their outlines are compared with the fine
-// reference's (and, for the sphere and the torus, with the exact silhouette),
+// reference's (and, for every analytic model, with the exact silhouette: the
+// sphere's circle in closed form, the other surfaces' outlines through
+// ExactSurface's very fine stand-ins, EvaluationModels.h),
 // whole frames (filter plus render) are timed over an orbit, and temporal
 // coherence is measured over consecutive 1-degree frames.
 #ifndef SilhouetteComparison_h

@@ -117,6 +117,11 @@ Figures CollectFigures(const std::string& input, const std::optional<std::string
   figures.SilhouetteTriangles = CountFromFieldData(smoothed, "SilhouetteTriangleCount");
   figures.NewTriangles = CountFromFieldData(smoothed, "NewTriangleCount");
   figures.NewPoints = CountFromFieldData(smoothed, "NewPointCount");
+  figures.ChordFallbacks = CountFromFieldData(smoothed, "ChordFallbackCount");
+  figures.StraightSilhouettePoints = CountFromFieldData(smoothed, "StraightSilhouettePointCount");
+  figures.StraightFeatureSegments = CountFromFieldData(smoothed, "StraightFeatureSegmentCount");
+  figures.PinnedPoints = CountFromFieldData(smoothed, "PinnedPointCount");
+  figures.UnresolvedFolds = CountFromFieldData(smoothed, "UnresolvedFoldCount");
   figures.PrepareMilliseconds = RoundToMicroseconds(prepareMilliseconds);
   figures.FilterMilliseconds = RoundToMicroseconds(filterMilliseconds);
   figures.Tolerance = options.Tolerance;
@@ -138,6 +143,10 @@ void PrintFiguresAsText(std::ostream& out, const Figures& figures)
       << "silhouette triangles: " << figures.SilhouetteTriangles << "\n"
       << "new triangles:        " << figures.NewTriangles << "\n"
       << "new points:           " << figures.NewPoints << "\n"
+      << "fold fallbacks:       " << figures.ChordFallbacks << " chord, "
+      << figures.StraightSilhouettePoints << " straight points, " << figures.StraightFeatureSegments
+      << " straight feature segments, " << figures.PinnedPoints << " pinned points, "
+      << figures.UnresolvedFolds << " unresolved\n"
       << "first update:         " << std::fixed << std::setprecision(3)
       << figures.PrepareMilliseconds << " ms (prepares the mesh, then one frame)\n"
       << "filter time:          " << figures.FilterMilliseconds << " ms per frame (median of "
@@ -161,6 +170,11 @@ void PrintFiguresAsJson(std::ostream& out, const Figures& figures)
       << ", \"silhouette_triangles\": " << figures.SilhouetteTriangles
       << ", \"new_triangles\": " << figures.NewTriangles
       << ", \"new_points\": " << figures.NewPoints
+      << ", \"fold_fallbacks\": {\"chord_triangles\": " << figures.ChordFallbacks
+      << ", \"straight_points\": " << figures.StraightSilhouettePoints
+      << ", \"straight_feature_segments\": " << figures.StraightFeatureSegments
+      << ", \"pinned_points\": " << figures.PinnedPoints
+      << ", \"unresolved\": " << figures.UnresolvedFolds << "}"
       << ", \"prepare_ms\": " << JsonNumber(figures.PrepareMilliseconds)
       << ", \"filter_ms\": " << JsonNumber(figures.FilterMilliseconds)
       << ", \"tolerance\": " << JsonNumber(figures.Tolerance) << ", \"viewport\": ["

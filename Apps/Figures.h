@@ -26,6 +26,12 @@ struct Figures
   vtkIdType SilhouetteTriangles = 0;
   vtkIdType NewTriangles = 0;
   vtkIdType NewPoints = 0;
+  /// The fold guard's fallbacks (vtkSilhouetteSmoothingFilter::FoldPrevention).
+  vtkIdType ChordFallbacks = 0;
+  vtkIdType StraightSilhouettePoints = 0;
+  vtkIdType StraightFeatureSegments = 0;
+  vtkIdType PinnedPoints = 0;
+  vtkIdType UnresolvedFolds = 0;
   double PrepareMilliseconds = 0.0;
   double FilterMilliseconds = 0.0;
   double Tolerance = 0.0;

@@ -115,14 +115,8 @@ FoldFindings findFolds(
       items.push_back({ frame.Remeshed[i], static_cast<long>(i), static_cast<long>(r) });
     }
   }
-  double largestMove = 0.0;
   if (!frame.Moved.empty())
   {
-    for (const auto& [p, to] : frame.Moved)
-    {
-      largestMove =
-        std::max(largestMove, glm::length(to - mesh.Points[static_cast<std::size_t>(p)]));
-    }
     std::vector<Id> around;
     std::vector<Id> candidates;
     for (const auto& [p, to] : frame.Moved)
@@ -151,6 +145,30 @@ FoldFindings findFolds(
                            : mesh.Triangles[static_cast<std::size_t>(item.Source)];
   };
 
+  // The changed triangles where they are now, and a grid of their boxes
+  // made for this frame: the prepared grid knows only the input's boxes,
+  // which a lifted new triangle or a moved one may leave.
+  std::vector<TriangleCorners> corners(items.size());
+  std::vector<glm::dvec3> lows(items.size());
+  std::vector<glm::dvec3> highs(items.size());
+  for (std::size_t k = 0; k < items.size(); ++k)
+  {
+    corners[k] = geometry.current(idsOf(items[k]));
+    lows[k] = glm::min(corners[k].P[0], glm::min(corners[k].P[1], corners[k].P[2]));
+    highs[k] = glm::max(corners[k].P[0], glm::max(corners[k].P[1], corners[k].P[2]));
+  }
+  const TriangleGrid changed(lows, highs);
+
+  auto overlap = [](const glm::dvec3& aLow, const glm::dvec3& aHigh, const glm::dvec3& bLow,
+                   const glm::dvec3& bHigh) {
+    return aLow.x <= bHigh.x && bLow.x <= aHigh.x && aLow.y <= bHigh.y && bLow.y <= aHigh.y &&
+      aLow.z <= bHigh.z && bLow.z <= aHigh.z;
+  };
+  auto hasMovedCorner = [&](const Triangle& t) {
+    return !frame.Moved.empty() &&
+      (geometry.isMoved(t[0]) || geometry.isMoved(t[1]) || geometry.isMoved(t[2]));
+  };
+
   // 0: fine, 1: turned over, 2: cuts through another.
   std::vector<unsigned char> verdict(items.size(), 0);
   parallelFor(items.size(), [&](std::size_t begin, std::size_t end) {
@@ -163,54 +181,41 @@ FoldFindings findFolds(
       {
         continue;
       }
-      const TriangleCorners x = geometry.current(ids);
+      const TriangleCorners& x = corners[k];
       const TriangleCorners source = geometry.prepared(item.Source);
       if (geometry.turnedOver(x, ids, source))
       {
         verdict[k] = 1;
         continue;
       }
-      const glm::dvec3 xLow = glm::min(x.P[0], glm::min(x.P[1], x.P[2]));
-      const glm::dvec3 xHigh = glm::max(x.P[0], glm::max(x.P[1], x.P[2]));
-      mesh.Grid.query(xLow - glm::dvec3(largestMove), xHigh + glm::dvec3(largestMove), candidates);
-      // Whether y, an output triangle of input triangle `other`, cuts x:
-      // boxes first, the exact rule next, and last (rarely reached) whether
-      // the input triangles already touch there.
-      auto cutBy = [&](const Triangle& y, Id other) {
-        if (hasRepeatedCorner(y))
-        {
-          return false;
-        }
-        const TriangleCorners yc = geometry.current(y);
-        const glm::dvec3 yLow = glm::min(yc.P[0], glm::min(yc.P[1], yc.P[2]));
-        const glm::dvec3 yHigh = glm::max(yc.P[0], glm::max(yc.P[1], yc.P[2]));
-        if (yLow.x > xHigh.x || xLow.x > yHigh.x || yLow.y > xHigh.y || xLow.y > yHigh.y ||
-          yLow.z > xHigh.z || xLow.z > yHigh.z || !trianglesIntersect(x, yc))
-        {
-          return false;
-        }
-        return other == item.Source || !trianglesTouch(source, geometry.prepared(other));
+      // Whether y (of input triangle `other`) cuts x where the inputs do
+      // not already touch; the touch test, the dearest, comes last.
+      auto cutBy = [&](const TriangleCorners& y, Id other) {
+        return trianglesIntersect(x, y) &&
+          (other == item.Source || !trianglesTouch(source, geometry.prepared(other)));
       };
       bool cuts = false;
+      // Kept, unmoved triangles: where the prepared grid has them.
+      mesh.Grid.query(lows[k], highs[k], candidates);
       for (std::size_t c = 0; c < candidates.size() && !cuts; ++c)
       {
         const Id other = candidates[c];
-        if (other != item.Source &&
-          hasRepeatedCorner(mesh.Triangles[static_cast<std::size_t>(other)]))
+        const Triangle& y = mesh.Triangles[static_cast<std::size_t>(other)];
+        if (other != item.Source && !hasRepeatedCorner(y) && geometry.remeshedIndex(other) < 0 &&
+          !hasMovedCorner(y))
         {
-          continue;
+          cuts = cutBy(geometry.current(y), other);
         }
-        const long remeshed = other == item.Source ? item.Remeshed : geometry.remeshedIndex(other);
-        if (remeshed < 0)
+      }
+      // Changed triangles (new ones, and kept ones with a moved corner).
+      changed.query(lows[k], highs[k], candidates);
+      for (std::size_t c = 0; c < candidates.size() && !cuts; ++c)
+      {
+        const std::size_t j = static_cast<std::size_t>(candidates[c]);
+        if (j != k && !hasRepeatedCorner(idsOf(items[j])) &&
+          overlap(lows[k], highs[k], lows[j], highs[j]))
         {
-          cuts =
-            other != item.Source && cutBy(mesh.Triangles[static_cast<std::size_t>(other)], other);
-          continue;
-        }
-        for (std::size_t r = frame.ReplacementOffsets[static_cast<std::size_t>(remeshed)];
-             r < frame.ReplacementOffsets[static_cast<std::size_t>(remeshed) + 1] && !cuts; ++r)
-        {
-          cuts = static_cast<long>(r) != item.Index && cutBy(frame.Replacements[r], other);
+          cuts = cutBy(corners[j], items[j].Source);
         }
       }
       verdict[k] = cuts ? 2 : 0;

@@ -20,11 +20,11 @@
 // Kept triangles with a corner the perturbation moved are checked by the
 // same two rules; their moved corners are the ones to leave in place.
 //
-// Candidates for a cut are the output triangles of the input triangles whose
-// boxes, as prepared, meet the triangle's box widened by the largest move of
-// the frame (TriangleGrid.h): a kept triangle moves with its corners, and a
-// new triangle lies in its input triangle's region of influence, which the
-// box of its own corners bounds.
+// Candidates for a cut are the kept, unmoved triangles whose boxes meet the
+// triangle's box (the prepared mesh's TriangleGrid, built once), and the
+// changed triangles whose boxes, where they are now, meet it (a grid of the
+// frame's changed triangles, built per check: a lifted new triangle or a
+// moved one can leave its input triangle's box by any amount).
 //
 // Invariant the pass builds on: an output in which every re-meshed triangle
 // is cut along the chord between silhouette points on its straight edges,

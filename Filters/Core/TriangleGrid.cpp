@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace silsmooth
 {
@@ -22,10 +23,6 @@ TriangleGrid::TriangleGrid(
   : Low(triangles.size(), glm::dvec3(HUGE_VAL))
   , High(triangles.size(), glm::dvec3(-HUGE_VAL))
 {
-  glm::dvec3 low(HUGE_VAL);
-  glm::dvec3 high(-HUGE_VAL);
-  double extentSum = 0.0;
-  std::size_t used = 0;
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
     const Triangle& tri = triangles[t];
@@ -42,6 +39,39 @@ TriangleGrid::TriangleGrid(
     }
     this->Low[t] = glm::min(a, glm::min(b, c));
     this->High[t] = glm::max(a, glm::max(b, c));
+  }
+  this->build();
+}
+
+TriangleGrid::TriangleGrid(std::vector<glm::dvec3> low, std::vector<glm::dvec3> high)
+  : Low(std::move(low))
+  , High(std::move(high))
+{
+  for (std::size_t t = 0; t < this->Low.size(); ++t)
+  {
+    if (!finite(this->Low[t]) || !finite(this->High[t]) || !(this->Low[t].x <= this->High[t].x) ||
+      !(this->Low[t].y <= this->High[t].y) || !(this->Low[t].z <= this->High[t].z))
+    {
+      this->Low[t] = glm::dvec3(HUGE_VAL);
+      this->High[t] = glm::dvec3(-HUGE_VAL);
+    }
+  }
+  this->build();
+}
+
+void TriangleGrid::build()
+{
+  const std::size_t count = this->Low.size();
+  glm::dvec3 low(HUGE_VAL);
+  glm::dvec3 high(-HUGE_VAL);
+  double extentSum = 0.0;
+  std::size_t used = 0;
+  for (std::size_t t = 0; t < count; ++t)
+  {
+    if (!(this->Low[t].x <= this->High[t].x))
+    {
+      continue;
+    }
     low = glm::min(low, this->Low[t]);
     high = glm::max(high, this->High[t]);
     const glm::dvec3 d = this->High[t] - this->Low[t];
@@ -91,7 +121,7 @@ TriangleGrid::TriangleGrid(
       this->Entries.resize(this->Offsets[cellCount]);
       next.assign(this->Offsets.begin(), this->Offsets.end() - 1);
     }
-    for (std::size_t t = 0; t < triangles.size(); ++t)
+    for (std::size_t t = 0; t < count; ++t)
     {
       if (!(this->Low[t].x <= this->High[t].x))
       {

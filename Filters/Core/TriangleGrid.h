@@ -23,14 +23,18 @@ class TriangleGrid
 public:
   TriangleGrid() = default;
   TriangleGrid(const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles);
+  /// A grid of boxes given by their corners (entry i is box i; a box whose
+  /// low corner is not finite or lies above its high one is left out).
+  TriangleGrid(std::vector<glm::dvec3> low, std::vector<glm::dvec3> high);
 
-  /// Appends to `out` (cleared first) every triangle whose box meets the box
+  /// Appends to `out` (cleared first) every triangle (or box) whose box meets the box
   /// [low, high], ascending, each once.
   void query(const glm::dvec3& low, const glm::dvec3& high, std::vector<Id>& out) const;
 
   bool empty() const { return this->Offsets.empty(); }
 
 private:
+  void build();
   int cellIndex(double x, int axis) const;
 
   glm::dvec3 Origin{ 0.0 };

@@ -25,7 +25,8 @@ endif ()
 # Each documented key with its JSON type.
 foreach (key_type IN ITEMS
     input:STRING output:NULL input_triangles:NUMBER output_triangles:NUMBER
-    silhouette_triangles:NUMBER new_triangles:NUMBER new_points:NUMBER prepare_ms:NUMBER filter_ms:NUMBER
+    silhouette_triangles:NUMBER new_triangles:NUMBER new_points:NUMBER fold_fallbacks:OBJECT
+    prepare_ms:NUMBER filter_ms:NUMBER
     tolerance:NUMBER viewport:ARRAY camera:OBJECT)
   string(REPLACE ":" ";" key_type "${key_type}")
   list(GET key_type 0 key)

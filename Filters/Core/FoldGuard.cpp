@@ -157,8 +157,6 @@ FoldFindings findFolds(
     lows[k] = glm::min(corners[k].P[0], glm::min(corners[k].P[1], corners[k].P[2]));
     highs[k] = glm::max(corners[k].P[0], glm::max(corners[k].P[1], corners[k].P[2]));
   }
-  const TriangleGrid changed(lows, highs);
-
   auto overlap = [](const glm::dvec3& aLow, const glm::dvec3& aHigh, const glm::dvec3& bLow,
                    const glm::dvec3& bHigh) {
     return aLow.x <= bHigh.x && bLow.x <= aHigh.x && aLow.y <= bHigh.y && bLow.y <= aHigh.y &&
@@ -169,25 +167,64 @@ FoldFindings findFolds(
       (geometry.isMoved(t[0]) || geometry.isMoved(t[1]) || geometry.isMoved(t[2]));
   };
 
-  // 0: fine, 1: turned over, 2: cuts through another.
+  // Which items to check (all, unless the caller names what changed).
+  std::vector<unsigned char> toCheck(items.size(), 1);
+  if (frame.CheckSources && frame.CheckPoints)
+  {
+    for (std::size_t k = 0; k < items.size(); ++k)
+    {
+      const Triangle& t = idsOf(items[k]);
+      toCheck[k] = std::binary_search(
+                     frame.CheckSources->begin(), frame.CheckSources->end(), items[k].Source) ||
+          std::binary_search(frame.CheckPoints->begin(), frame.CheckPoints->end(), t[0]) ||
+          std::binary_search(frame.CheckPoints->begin(), frame.CheckPoints->end(), t[1]) ||
+          std::binary_search(frame.CheckPoints->begin(), frame.CheckPoints->end(), t[2])
+        ? 1
+        : 0;
+    }
+  }
+
+  // The grid pays off when many triangles are checked; a few (a partial
+  // check after the first round) scan the boxes instead.
+  const std::size_t checking =
+    static_cast<std::size_t>(std::count(toCheck.begin(), toCheck.end(), 1));
+  const bool scan = checking <= 64;
+  const TriangleGrid changed = scan ? TriangleGrid() : TriangleGrid(lows, highs);
+  auto changedCandidates = [&](std::size_t k, std::vector<Id>& out) {
+    if (!scan)
+    {
+      changed.query(lows[k], highs[k], out);
+      return;
+    }
+    out.clear();
+    for (std::size_t j = 0; j < items.size(); ++j)
+    {
+      if (overlap(lows[k], highs[k], lows[j], highs[j]))
+      {
+        out.push_back(static_cast<Id>(j));
+      }
+    }
+  };
+
+  // 0: fine, 1: turned over, 2: cuts through another; and per item, the
+  // changed triangles it cuts, which fold too.
   std::vector<unsigned char> verdict(items.size(), 0);
+  std::vector<std::vector<std::size_t>> cutItems(items.size());
   parallelFor(items.size(), [&](std::size_t begin, std::size_t end) {
     std::vector<Id> candidates;
     for (std::size_t k = begin; k < end; ++k)
     {
       const Item& item = items[k];
       const Triangle& ids = idsOf(item);
-      if (hasRepeatedCorner(ids))
+      if (!toCheck[k] || hasRepeatedCorner(ids))
       {
         continue;
       }
       const TriangleCorners& x = corners[k];
       const TriangleCorners source = geometry.prepared(item.Source);
-      if (geometry.turnedOver(x, ids, source))
-      {
-        verdict[k] = 1;
-        continue;
-      }
+      // Turned over or not, the cuts are looked for: the triangles it cuts
+      // fold too, and a partial check may not look at them.
+      const bool turned = geometry.turnedOver(x, ids, source);
       // Whether y (of input triangle `other`) cuts x where the inputs do
       // not already touch; the touch test, the dearest, comes last.
       auto cutBy = [&](const TriangleCorners& y, Id other) {
@@ -207,30 +244,27 @@ FoldFindings findFolds(
           cuts = cutBy(geometry.current(y), other);
         }
       }
-      // Changed triangles (new ones, and kept ones with a moved corner).
-      changed.query(lows[k], highs[k], candidates);
-      for (std::size_t c = 0; c < candidates.size() && !cuts; ++c)
+      // Changed triangles (new ones, and kept ones with a moved corner):
+      // all of those it cuts, since each of them folds too (a whole check
+      // would find that from there; a partial one may not look there).
+      changedCandidates(k, candidates);
+      for (const Id candidate : candidates)
       {
-        const std::size_t j = static_cast<std::size_t>(candidates[c]);
+        const std::size_t j = static_cast<std::size_t>(candidate);
         if (j != k && !hasRepeatedCorner(idsOf(items[j])) &&
-          overlap(lows[k], highs[k], lows[j], highs[j]))
+          overlap(lows[k], highs[k], lows[j], highs[j]) && cutBy(corners[j], items[j].Source))
         {
-          cuts = cutBy(corners[j], items[j].Source);
+          cuts = true;
+          cutItems[k].push_back(j);
         }
       }
-      verdict[k] = cuts ? 2 : 0;
+      verdict[k] = turned ? 1 : (cuts ? 2 : 0);
     }
   });
 
   FoldFindings findings;
   findings.FoldingRemeshed.assign(frame.Remeshed.size(), 0);
-  for (std::size_t k = 0; k < items.size(); ++k)
-  {
-    if (verdict[k] == 0)
-    {
-      continue;
-    }
-    ++(verdict[k] == 1 ? findings.Turned : findings.Cutting);
+  auto mark = [&](std::size_t k) {
     if (items[k].Remeshed >= 0)
     {
       findings.FoldingRemeshed[static_cast<std::size_t>(items[k].Remeshed)] = 1;
@@ -241,6 +275,19 @@ FoldFindings findFolds(
       {
         findings.FoldingMovedPoints.push_back(p);
       }
+    }
+  };
+  for (std::size_t k = 0; k < items.size(); ++k)
+  {
+    if (verdict[k] == 0)
+    {
+      continue;
+    }
+    ++(verdict[k] == 1 ? findings.Turned : findings.Cutting);
+    mark(k);
+    for (const std::size_t j : cutItems[k])
+    {
+      mark(j);
     }
   }
   std::sort(findings.FoldingMovedPoints.begin(), findings.FoldingMovedPoints.end());

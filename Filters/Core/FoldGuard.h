@@ -69,6 +69,15 @@ struct FoldGuardFrame
   const std::vector<glm::dvec3>& NewPositions;
   const std::vector<glm::dvec3>& NewNormals;
   const std::vector<std::pair<Id, glm::dvec3>>& Moved;
+  /// When given (both ascending), only the new triangles of these input
+  /// triangles and the triangles with a corner among these points are
+  /// checked, against everything; a cut found marks both triangles. A caller
+  /// that re-meshes a frame again after taking fallbacks passes the input
+  /// triangles the fallbacks changed and the points moved before or now:
+  /// every other triangle is as it was and was found not to fold, so the
+  /// findings are those of a whole check.
+  const std::vector<Id>* CheckSources = nullptr;
+  const std::vector<Id>* CheckPoints = nullptr;
 };
 
 struct FoldFindings

@@ -345,6 +345,11 @@ public:
     // a round that finds no fold, or no fallback left to take, is the last.
     // Rounds are bounded: every round but the last takes a fallback, and
     // there are at most two per silhouette triangle and one per moved point.
+    // After the first, a round checks only what its fallbacks changed: the
+    // triangles they re-meshed differently, and those around points moved
+    // in this round or the one before (FoldGuardFrame::CheckSources).
+    std::vector<Id> changedTriangles;
+    std::vector<Id> movedBefore;
     for (std::size_t round = 0;; ++round)
     {
       this->remeshFrame();
@@ -352,8 +357,20 @@ public:
       {
         break;
       }
-      const FoldFindings findings = this->findFrameFolds();
-      if (!findings.any() || !this->takeFallbacks(findings))
+      std::vector<Id> moved;
+      for (const auto& m : this->Result.MovedPoints)
+      {
+        moved.push_back(m.first);
+      }
+      std::vector<Id> aroundPoints;
+      std::set_union(movedBefore.begin(), movedBefore.end(), moved.begin(), moved.end(),
+        std::back_inserter(aroundPoints));
+      const FoldFindings findings = (round == 0 || !this->Parameters.IncrementalFoldChecks)
+        ? this->findFrameFolds(nullptr, nullptr)
+        : this->findFrameFolds(&changedTriangles, &aroundPoints);
+      movedBefore = std::move(moved);
+      changedTriangles.clear();
+      if (!findings.any() || !this->takeFallbacks(findings, changedTriangles))
       {
         this->Result.UnresolvedFolds = findings.Turned + findings.Cutting;
         this->Result.FoldGuardRounds = round;
@@ -437,7 +454,8 @@ private:
     }
   }
 
-  FoldFindings findFrameFolds() const
+  FoldFindings findFrameFolds(
+    const std::vector<Id>* checkSources, const std::vector<Id>* checkPoints) const
   {
     std::vector<glm::dvec3> positions;
     std::vector<glm::dvec3> normals;
@@ -451,15 +469,19 @@ private:
     const FoldGuardMesh mesh{ this->Mesh.points(), this->Mesh.normals(), this->Mesh.triangles(),
       this->Mesh.triangleGrid() };
     const FoldGuardFrame frame{ this->Result.RemeshedTriangles, this->Result.ReplacementOffsets,
-      this->Result.Replacements, positions, normals, this->Result.MovedPoints };
+      this->Result.Replacements, positions, normals, this->Result.MovedPoints, checkSources,
+      checkPoints };
     return findFolds(mesh, frame, this->For);
   }
 
   // Raises the fallback level of every folding silhouette triangle and pins
-  // every folding moved point; false when none could be taken.
-  bool takeFallbacks(const FoldFindings& findings)
+  // every folding moved point; false when none could be taken. `changed`
+  // gets the input triangles that the next round must check again
+  // (ascending): the folding ones, and those it re-meshes differently.
+  bool takeFallbacks(const FoldFindings& findings, std::vector<Id>& changed)
   {
     bool taken = false;
+    std::vector<Id> newEdges;
     const EdgeTable& edges = this->Mesh.edges();
     for (std::size_t i = 0; i < findings.FoldingRemeshed.size(); ++i)
     {
@@ -468,6 +490,7 @@ private:
       {
         continue;
       }
+      changed.push_back(t); // checked again, whether or not a fallback is left
       const bool silhouette =
         std::binary_search(this->Silhouette.begin(), this->Silhouette.end(), t);
       if (!silhouette || this->levelOf(t) >= StraightLevel)
@@ -484,6 +507,13 @@ private:
             this->StraightFeatures.insert(
               std::upper_bound(this->StraightFeatures.begin(), this->StraightFeatures.end(), f), f);
             taken = true;
+            // Every side of the crease samples the segment.
+            const auto& sides = this->Mesh.featureSideTriangles();
+            for (auto it = std::lower_bound(sides.begin(), sides.end(), std::make_pair(f, Id{ 0 }));
+                 it != sides.end() && it->first == f; ++it)
+            {
+              changed.push_back(it->second);
+            }
           }
         }
         continue;
@@ -504,16 +534,35 @@ private:
           const Edge& edge = edges.edge(e);
           if (isVisible(this->G[static_cast<std::size_t>(edge.low)]) !=
               isVisible(this->G[static_cast<std::size_t>(edge.high)]) &&
-            this->Mesh.edgeFeature(e) < 0 && !this->mayBeSeam(e))
+            this->Mesh.edgeFeature(e) < 0 && !this->mayBeSeam(e) &&
+            !std::binary_search(this->StraightEdges.begin(), this->StraightEdges.end(), e))
           {
-            this->StraightEdges.push_back(e);
+            newEdges.push_back(e);
           }
         }
       }
     }
-    std::sort(this->StraightEdges.begin(), this->StraightEdges.end());
-    this->StraightEdges.erase(std::unique(this->StraightEdges.begin(), this->StraightEdges.end()),
-      this->StraightEdges.end());
+    std::sort(newEdges.begin(), newEdges.end());
+    newEdges.erase(std::unique(newEdges.begin(), newEdges.end()), newEdges.end());
+    if (!newEdges.empty())
+    {
+      // The triangles across them share the points (both are silhouette
+      // triangles: the edges are mixed).
+      for (const Id t : this->Silhouette)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          if (std::binary_search(newEdges.begin(), newEdges.end(), edges.sideEdge(t, k)))
+          {
+            changed.push_back(t);
+          }
+        }
+      }
+      std::vector<Id> merged;
+      std::set_union(this->StraightEdges.begin(), this->StraightEdges.end(), newEdges.begin(),
+        newEdges.end(), std::back_inserter(merged));
+      this->StraightEdges = std::move(merged);
+    }
     for (const Id p : findings.FoldingMovedPoints)
     {
       if (!std::binary_search(this->Pinned.begin(), this->Pinned.end(), p))
@@ -522,6 +571,8 @@ private:
         taken = true;
       }
     }
+    std::sort(changed.begin(), changed.end());
+    changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
     return taken;
   }
 

@@ -181,6 +181,11 @@ struct SmoothingParameters
   /// guard leaves those curved (a fold only that would undo is counted as
   /// unresolved). Otherwise boundary edges are the surface's open border.
   bool BoundaryMayBeSeam = false;
+  /// After the first round, check only what the fallbacks changed
+  /// (FoldGuardFrame::CheckSources); the findings, and so the output, are
+  /// those of checking everything every round (core.SilhouetteSmoother
+  /// compares both), at a fraction of the cost. False checks everything.
+  bool IncrementalFoldChecks = true;
 };
 
 /// A point the pass adds. Its other attributes (texture coordinates, scalars)

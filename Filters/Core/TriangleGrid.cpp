@@ -3,6 +3,7 @@
 #include <glm/common.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
 
@@ -107,6 +108,15 @@ void TriangleGrid::build()
   }
   const std::size_t cellCount = static_cast<std::size_t>(this->Cells[0]) *
     static_cast<std::size_t>(this->Cells[1]) * static_cast<std::size_t>(this->Cells[2]);
+  this->FirstCell.assign(count, { { 0, 0, 0 } });
+  for (std::size_t t = 0; t < count; ++t)
+  {
+    if (this->Low[t].x <= this->High[t].x)
+    {
+      this->FirstCell[t] = { { this->cellIndex(this->Low[t].x, 0),
+        this->cellIndex(this->Low[t].y, 1), this->cellIndex(this->Low[t].z, 2) } };
+    }
+  }
   // Two passes: count per cell, then fill (compressed rows).
   this->Offsets.assign(cellCount + 1, 0);
   for (int pass = 0; pass < 2; ++pass)
@@ -190,8 +200,13 @@ void TriangleGrid::query(const glm::dvec3& low, const glm::dvec3& high, std::vec
         for (std::size_t e = this->Offsets[c]; e < this->Offsets[c + 1]; ++e)
         {
           const std::size_t t = static_cast<std::size_t>(this->Entries[e]);
-          if (this->Low[t].x <= high.x && low.x <= this->High[t].x && this->Low[t].y <= high.y &&
-            low.y <= this->High[t].y && this->Low[t].z <= high.z && low.z <= this->High[t].z)
+          // Each triangle once: from the first cell that both it and the
+          // query cover.
+          const std::array<int, 3>& first = this->FirstCell[t];
+          if (i == std::max(i0, first[0]) && j == std::max(j0, first[1]) &&
+            k == std::max(k0, first[2]) && this->Low[t].x <= high.x && low.x <= this->High[t].x &&
+            this->Low[t].y <= high.y && low.y <= this->High[t].y && this->Low[t].z <= high.z &&
+            low.z <= this->High[t].z)
           {
             out.push_back(this->Entries[e]);
           }
@@ -199,8 +214,6 @@ void TriangleGrid::query(const glm::dvec3& low, const glm::dvec3& high, std::vec
       }
     }
   }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
 }
 
 } // namespace silsmooth

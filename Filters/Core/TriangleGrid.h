@@ -13,6 +13,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <vector>
 
 namespace silsmooth
@@ -28,7 +29,7 @@ public:
   TriangleGrid(std::vector<glm::dvec3> low, std::vector<glm::dvec3> high);
 
   /// Appends to `out` (cleared first) every triangle (or box) whose box meets the box
-  /// [low, high], ascending, each once.
+  /// [low, high], each once, in no particular order.
   void query(const glm::dvec3& low, const glm::dvec3& high, std::vector<Id>& out) const;
 
   bool empty() const { return this->Offsets.empty(); }
@@ -46,6 +47,9 @@ private:
   /// Each triangle's box, to drop candidates that share a cell only.
   std::vector<glm::dvec3> Low;
   std::vector<glm::dvec3> High;
+  /// The cell of each triangle's low corner (queries report a triangle
+  /// once, from the first cell it shares with the query).
+  std::vector<std::array<int, 3>> FirstCell;
 };
 
 } // namespace silsmooth

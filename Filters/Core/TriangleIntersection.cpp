@@ -27,18 +27,34 @@ double longestSide(const TriangleCorners& t)
     { glm::length(t.P[1] - t.P[0]), glm::length(t.P[2] - t.P[1]), glm::length(t.P[0] - t.P[2]) });
 }
 
-bool crosses(const glm::dvec3& u, const glm::dvec3& v, const TriangleCorners& t, double scale,
-  const Tolerances& tolerances = Strict)
+// A triangle's plane: unit normal and twice its area (0: degenerate).
+struct Plane
+{
+  glm::dvec3 Unit{ 0.0 };
+  double Area2 = 0.0;
+};
+
+Plane planeOf(const TriangleCorners& t)
 {
   const glm::dvec3 normal = glm::cross(t.P[1] - t.P[0], t.P[2] - t.P[0]);
-  const double area2 = glm::length(normal);
-  if (!(area2 > 0.0) || !(scale > 0.0))
+  Plane plane;
+  plane.Area2 = glm::length(normal);
+  if (plane.Area2 > 0.0)
+  {
+    plane.Unit = normal / plane.Area2;
+  }
+  return plane;
+}
+
+// Whether the segment (u, v), whose ends are du and dv from t's plane,
+// crosses t's interior.
+bool crossesAt(const glm::dvec3& u, const glm::dvec3& v, double du, double dv,
+  const TriangleCorners& t, const Plane& plane, double scale, const Tolerances& tolerances)
+{
+  if (!(plane.Area2 > 0.0) || !(scale > 0.0))
   {
     return false;
   }
-  const glm::dvec3 unit = normal / area2;
-  const double du = glm::dot(unit, u - t.P[0]);
-  const double dv = glm::dot(unit, v - t.P[0]);
   const double tolerance = tolerances.Plane * scale;
   if (!((du > tolerance && dv < -tolerance) || (du < -tolerance && dv > tolerance)))
   {
@@ -49,10 +65,18 @@ bool crosses(const glm::dvec3& u, const glm::dvec3& v, const TriangleCorners& t,
   const glm::dvec3 x = u + along * (v - u);
   // Barycentric coordinates of x from the sub-triangle areas, signed along
   // the normal.
-  const double b0 = glm::dot(unit, glm::cross(t.P[1] - x, t.P[2] - x)) / area2;
-  const double b1 = glm::dot(unit, glm::cross(t.P[2] - x, t.P[0] - x)) / area2;
+  const double b0 = glm::dot(plane.Unit, glm::cross(t.P[1] - x, t.P[2] - x)) / plane.Area2;
+  const double b1 = glm::dot(plane.Unit, glm::cross(t.P[2] - x, t.P[0] - x)) / plane.Area2;
   const double b2 = 1.0 - b0 - b1;
   return b0 > tolerances.Interior && b1 > tolerances.Interior && b2 > tolerances.Interior;
+}
+
+bool crosses(const glm::dvec3& u, const glm::dvec3& v, const TriangleCorners& t, double scale,
+  const Tolerances& tolerances = Strict)
+{
+  const Plane plane = planeOf(t);
+  return crossesAt(u, v, glm::dot(plane.Unit, u - t.P[0]), glm::dot(plane.Unit, v - t.P[0]), t,
+    plane, scale, tolerances);
 }
 
 struct SharedCorners
@@ -97,15 +121,47 @@ bool meet(const TriangleCorners& a, const TriangleCorners& b, const Tolerances& 
     return false;
   }
   const double scale = std::max(longestSide(a), longestSide(b));
+  const Plane planeA = planeOf(a);
+  const Plane planeB = planeOf(b);
+  // Each corner's distance to the other's plane, once; a triangle whose
+  // corners all lie on one side of the other's plane (beyond the tolerance)
+  // has no side that crosses the other.
+  double toA[3];
+  double toB[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    toA[k] = glm::dot(planeA.Unit, b.P[k] - a.P[0]);
+    toB[k] = glm::dot(planeB.Unit, a.P[k] - b.P[0]);
+  }
+  const double tolerance = tolerances.Plane * scale;
+  auto straddles = [tolerance](const double d[3]) {
+    const bool below = d[0] < -tolerance || d[1] < -tolerance || d[2] < -tolerance;
+    const bool above = d[0] > tolerance || d[1] > tolerance || d[2] > tolerance;
+    return below && above;
+  };
+  const bool aSides = straddles(toB); // a's sides may cross b
+  const bool bSides = straddles(toA);
+  if (!aSides && !bSides)
+  {
+    return false;
+  }
+  auto sideOfACrossesB = [&](int k) {
+    const int l = (k + 1) % 3;
+    return crossesAt(a.P[k], a.P[l], toB[k], toB[l], b, planeB, scale, tolerances);
+  };
+  auto sideOfBCrossesA = [&](int k) {
+    const int l = (k + 1) % 3;
+    return crossesAt(b.P[k], b.P[l], toA[k], toA[l], a, planeA, scale, tolerances);
+  };
   if (shared.Count == 1)
   {
-    return crosses(a.P[(shared.A + 1) % 3], a.P[(shared.A + 2) % 3], b, scale, tolerances) ||
-      crosses(b.P[(shared.B + 1) % 3], b.P[(shared.B + 2) % 3], a, scale, tolerances);
+    // The sides opposite the shared corner: from corner A + 1 to A + 2.
+    return (aSides && sideOfACrossesB((shared.A + 1) % 3)) ||
+      (bSides && sideOfBCrossesA((shared.B + 1) % 3));
   }
   for (int k = 0; k < 3; ++k)
   {
-    if (crosses(a.P[k], a.P[(k + 1) % 3], b, scale, tolerances) ||
-      crosses(b.P[k], b.P[(k + 1) % 3], a, scale, tolerances))
+    if ((aSides && sideOfACrossesB(k)) || (bSides && sideOfBCrossesA(k)))
     {
       return true;
     }

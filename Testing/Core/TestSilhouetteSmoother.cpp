@@ -1,6 +1,7 @@
 // The whole per-frame pass on small exact meshes: the crack-free and
 // closed-manifold invariants (README, "How the open choices were closed").
 #include "CoreTestMeshes.h"
+#include "FoldGuard.h"
 #include "SilhouetteSmoother.h"
 
 #include <glm/geometric.hpp>
@@ -372,4 +373,106 @@ TEST(SilhouetteSmoother, PiecesMeetWithoutCracks)
   perturbed = 0;
   checkPiecesMeet(points, normals, triangles, perturbed);
   EXPECT_GT(perturbed, 0u);
+}
+
+namespace
+{
+
+// A coarse sphere whose normals are turned by up to `degrees` at random
+// (fixed seed): what a coarse real mesh's estimated normals look like, and
+// enough to make the re-meshing fold from some views.
+PreparedMesh noisySphere(double degrees)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::unitSphere(8, 12, points, triangles);
+  std::vector<glm::dvec3> normals = points;
+  unsigned state = 12345u;
+  auto next = [&state] {
+    state = state * 1664525u + 1013904223u;
+    return (state >> 8) / 16777216.0 * 2.0 - 1.0;
+  };
+  const double amount = std::tan(degrees * 3.14159265358979323846 / 180.0);
+  for (glm::dvec3& n : normals)
+  {
+    n = glm::normalize(n + amount * glm::dvec3(next(), next(), next()));
+  }
+  return PreparedMesh(points, triangles, normals);
+}
+
+bool sameResult(const SmoothingResult& a, const SmoothingResult& b)
+{
+  if (a.NewPoints.size() != b.NewPoints.size() || a.Replacements != b.Replacements ||
+    a.RemeshedTriangles != b.RemeshedTriangles || a.MovedPoints.size() != b.MovedPoints.size() ||
+    a.ChordFallbackTriangles != b.ChordFallbackTriangles ||
+    a.StraightSilhouettePoints != b.StraightSilhouettePoints || a.PinnedPoints != b.PinnedPoints ||
+    a.UnresolvedFolds != b.UnresolvedFolds)
+  {
+    return false;
+  }
+  for (std::size_t i = 0; i < a.NewPoints.size(); ++i)
+  {
+    if (a.NewPoints[i].Position != b.NewPoints[i].Position)
+    {
+      return false;
+    }
+  }
+  for (std::size_t i = 0; i < a.MovedPoints.size(); ++i)
+  {
+    if (a.MovedPoints[i] != b.MovedPoints[i])
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+} // namespace
+
+TEST(SilhouetteSmoother, FoldGuardLeavesNoFoldAndIncrementalChecksChangeNothing)
+{
+  const PreparedMesh mesh = noisySphere(50.0);
+  SmoothingParameters incremental;
+  SmoothingParameters whole;
+  whole.IncrementalFoldChecks = false;
+  SmoothingParameters unguarded;
+  unguarded.PreventFolds = false;
+  std::size_t fallbacks = 0;
+  std::size_t extraRounds = 0;
+  std::size_t unguardedFolds = 0;
+  for (int v = 0; v < 40; ++v)
+  {
+    const double a = 0.7 * v;
+    const double z = -0.9 + 1.8 * v / 39.0;
+    const ViewGeometry view = coretest::perspectiveFrom(
+      4.0 * glm::dvec3(std::sqrt(1 - z * z) * std::cos(a), std::sqrt(1 - z * z) * std::sin(a), z));
+    const SmoothingResult r = smoothSilhouettes(mesh, view, incremental);
+    const SmoothingResult w = smoothSilhouettes(mesh, view, whole);
+    EXPECT_TRUE(sameResult(r, w)) << "view " << v;
+    EXPECT_EQ(r.UnresolvedFolds, 0u) << "view " << v;
+    fallbacks += r.ChordFallbackTriangles + r.StraightSilhouettePoints + r.PinnedPoints;
+    extraRounds += r.FoldGuardRounds;
+    // The same frame without the guard folds wherever the guard fell back.
+    const SmoothingResult u = smoothSilhouettes(mesh, view, unguarded);
+    std::vector<glm::dvec3> positions;
+    std::vector<glm::dvec3> normals;
+    for (const NewPoint& p : u.NewPoints)
+    {
+      positions.push_back(p.Position);
+      normals.push_back(p.Normal);
+    }
+    const FoldGuardMesh guardMesh{ mesh.points(), mesh.normals(), mesh.triangles(),
+      mesh.triangleGrid() };
+    const FoldGuardFrame frame{ u.RemeshedTriangles, u.ReplacementOffsets, u.Replacements,
+      positions, normals, u.MovedPoints };
+    const FoldFindings found = findFolds(guardMesh, frame, serialFor);
+    const bool fellBack =
+      r.ChordFallbackTriangles + r.StraightSilhouettePoints + r.PinnedPoints > 0;
+    EXPECT_EQ(found.any(), fellBack) << "view " << v;
+    unguardedFolds += found.Turned + found.Cutting;
+  }
+  // The case exercises what it is meant to: folds, and more than one round.
+  EXPECT_GT(unguardedFolds, 0u);
+  EXPECT_GT(fallbacks, 0u);
+  EXPECT_GT(extraRounds, 40u) << "fallbacks " << fallbacks << ", folds " << unguardedFolds;
 }

@@ -73,7 +73,7 @@ struct FoldGuardFrame
   /// triangles and the triangles with a corner among these points are
   /// checked, against everything; a cut found marks both triangles. A caller
   /// that re-meshes a frame again after taking fallbacks passes the input
-  /// triangles the fallbacks changed and the points moved before or now:
+  /// triangles the fallbacks changed and the points whose move changed:
   /// every other triangle is as it was and was found not to fold, so the
   /// findings are those of a whole check.
   const std::vector<Id>* CheckSources = nullptr;

@@ -346,10 +346,10 @@ public:
     // Rounds are bounded: every round but the last takes a fallback, and
     // there are at most two per silhouette triangle and one per moved point.
     // After the first, a round checks only what its fallbacks changed: the
-    // triangles they re-meshed differently, and those around points moved
-    // in this round or the one before (FoldGuardFrame::CheckSources).
+    // triangles they re-meshed differently, and those around points whose
+    // move differs from the round before (FoldGuardFrame::CheckSources).
     std::vector<Id> changedTriangles;
-    std::vector<Id> movedBefore;
+    std::vector<std::pair<Id, glm::dvec3>> movedBefore;
     for (std::size_t round = 0;; ++round)
     {
       this->remeshFrame();
@@ -357,18 +357,39 @@ public:
       {
         break;
       }
-      std::vector<Id> moved;
-      for (const auto& m : this->Result.MovedPoints)
-      {
-        moved.push_back(m.first);
-      }
+      // Points whose move differs from the round before (moved only then,
+      // only now, or elsewhere now): their triangles changed.
+      const std::vector<std::pair<Id, glm::dvec3>>& moved = this->Result.MovedPoints;
       std::vector<Id> aroundPoints;
-      std::set_union(movedBefore.begin(), movedBefore.end(), moved.begin(), moved.end(),
-        std::back_inserter(aroundPoints));
+      {
+        std::size_t a = 0;
+        std::size_t b = 0;
+        while (a < movedBefore.size() || b < moved.size())
+        {
+          if (b == moved.size() ||
+            (a < movedBefore.size() && movedBefore[a].first < moved[b].first))
+          {
+            aroundPoints.push_back(movedBefore[a++].first);
+          }
+          else if (a == movedBefore.size() || moved[b].first < movedBefore[a].first)
+          {
+            aroundPoints.push_back(moved[b++].first);
+          }
+          else
+          {
+            if (movedBefore[a].second != moved[b].second)
+            {
+              aroundPoints.push_back(moved[b].first);
+            }
+            ++a;
+            ++b;
+          }
+        }
+      }
       const FoldFindings findings = (round == 0 || !this->Parameters.IncrementalFoldChecks)
         ? this->findFrameFolds(nullptr, nullptr)
         : this->findFrameFolds(&changedTriangles, &aroundPoints);
-      movedBefore = std::move(moved);
+      movedBefore = moved;
       changedTriangles.clear();
       if (!findings.any() || !this->takeFallbacks(findings, changedTriangles))
       {

@@ -115,11 +115,24 @@ FoldFindings findFolds(
       items.push_back({ frame.Remeshed[i], static_cast<long>(i), static_cast<long>(r) });
     }
   }
-  if (!frame.Moved.empty())
+  // Kept triangles around moved points, and in a partial check around the
+  // points whose move changed (a triangle that moved back is changed too).
+  std::vector<Id> aroundPoints;
+  for (const auto& m : frame.Moved)
+  {
+    aroundPoints.push_back(m.first);
+  }
+  if (frame.CheckSources && frame.CheckPoints)
+  {
+    aroundPoints.insert(aroundPoints.end(), frame.CheckPoints->begin(), frame.CheckPoints->end());
+    std::sort(aroundPoints.begin(), aroundPoints.end());
+    aroundPoints.erase(std::unique(aroundPoints.begin(), aroundPoints.end()), aroundPoints.end());
+  }
+  if (!aroundPoints.empty())
   {
     std::vector<Id> around;
     std::vector<Id> candidates;
-    for (const auto& [p, to] : frame.Moved)
+    for (const Id p : aroundPoints)
     {
       const glm::dvec3& at = mesh.Points[static_cast<std::size_t>(p)];
       mesh.Grid.query(at, at, candidates);

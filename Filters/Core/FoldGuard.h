@@ -18,7 +18,9 @@
 //     input triangle its own input triangle does not cut through, or through
 //     another new triangle of the same input triangle.
 // Kept triangles with a corner the perturbation moved are checked by the
-// same two rules; their moved corners are the ones to leave in place.
+// same two rules; their moved corners are the ones to leave in place. (In a
+// partial check, so are the kept triangles around points whose move
+// changed, moved back ones included.)
 //
 // Candidates for a cut are the kept, unmoved triangles whose boxes meet the
 // triangle's box (the prepared mesh's TriangleGrid, built once), and the

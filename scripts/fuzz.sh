@@ -94,7 +94,8 @@ run() { # target corpus max_len [seeds]
   rate=$(grep -o 'stat::average_exec_per_sec: *[0-9]*' "$work/$target.log" | grep -o '[0-9]*$')
   echo "fuzz: $target: $runs inputs ($rate a second), no crash, no sanitizer report, no invariant broken"
 }
-run fuzz_core "$work/corpus-core" 2048
+# Inputs it once failed on come first (Testing/Fuzz/Regressions).
+run fuzz_core "$work/corpus-core" 2048 "$here/Testing/Fuzz/Regressions/core"
 # VTK's readers leak on some error paths; see the suppression file.
 LSAN_OPTIONS="suppressions=$here/Testing/Fuzz/lsan-vtk.supp:print_suppressions=0" \
   run fuzz_mesh_io "$work/corpus-mesh" 8192 "$seeds"

@@ -104,16 +104,24 @@ SharedCorners sharedCorners(const TriangleCorners& a, const TriangleCorners& b)
   return shared;
 }
 
-bool repeatsAPosition(const TriangleCorners& t)
+// No interior: two corners at one position (a needle, as asset files hold),
+// or all three on a line up to rounding (twice the area at most 1e-12 of
+// the longest side squared; a re-meshed piece of a needle is such a line).
+bool hasNoInterior(const TriangleCorners& t)
 {
-  return t.P[0] == t.P[1] || t.P[1] == t.P[2] || t.P[2] == t.P[0];
+  if (t.P[0] == t.P[1] || t.P[1] == t.P[2] || t.P[2] == t.P[0])
+  {
+    return true;
+  }
+  const double side = longestSide(t);
+  return !(glm::length(glm::cross(t.P[1] - t.P[0], t.P[2] - t.P[0])) > 1e-12 * side * side);
 }
 
 bool meet(const TriangleCorners& a, const TriangleCorners& b, const Tolerances& tolerances)
 {
-  if (repeatsAPosition(a) || repeatsAPosition(b))
+  if (hasNoInterior(a) || hasNoInterior(b))
   {
-    return false; // a needle or a point: no interior to cut or be cut
+    return false; // a needle, a line or a point: no interior to cut or be cut
   }
   const SharedCorners shared = sharedCorners(a, b);
   if (shared.Count >= 2)
@@ -196,6 +204,10 @@ bool turnedOverAgainst(
     // -1, 0 (edge-on or degenerate) or +1.
     return !(scale > 0.0) || !(std::abs(dot) > FacingTolerance * scale) ? 0 : (dot > 0.0 ? 1 : -1);
   };
+  if (hasNoInterior(piece) || hasNoInterior(input))
+  {
+    return false; // a line or a point faces no way: rounding picks its normal
+  }
   const int a = facing(piece);
   const int b = facing(input);
   return a != 0 && b != 0 && a != b;

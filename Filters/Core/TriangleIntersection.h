@@ -18,7 +18,9 @@
 //     crosses the other: the segment two non-coplanar triangles have in
 //     common ends where a side of one meets the other.
 // A triangle with two corners at one position (a needle, as asset files
-// hold) has no interior and cuts nothing. Coplanar triangles and contacts
+// hold), or with its corners on a line up to rounding (twice its area at
+// most 1e-12 of its longest side squared), has no interior and cuts
+// nothing. Coplanar triangles and contacts
 // that merely touch (a corner on the other,
 // an edge through another's side) do not count: they have no volume of
 // overlap to show and are measure-zero in floating point.
@@ -59,7 +61,9 @@ constexpr double FacingTolerance = 1e-9;
 /// replaces) face opposite ways with respect to `normalSum` (the sum of the
 /// piece's corners' shading normals): one against it, the other not, each by
 /// more than FacingTolerance (a piece seen edge-on is not turned over, and a
-/// flat piece of its input triangle never is, whatever rounding does).
+/// flat piece of its input triangle never is, whatever rounding does). A
+/// triangle with no interior (the rule above) faces no way and is never
+/// turned over.
 bool turnedOverAgainst(
   const TriangleCorners& piece, const TriangleCorners& input, const glm::dvec3& normalSum);
 

@@ -81,6 +81,13 @@ TEST(TriangleIntersection, DegenerateTrianglesIntersectNothing)
   const TriangleCorners spike = tri({ 0.5, 0.5, -1 }, { 0.6, 0.5, 1 }, { 0.5, 0.5, -1 });
   EXPECT_FALSE(trianglesIntersect(Floor, spike));
   EXPECT_FALSE(trianglesTouch(Floor, spike));
+  // Corners on a line through the floor (distinct positions): no interior.
+  const TriangleCorners line = tri({ 0.5, 0.5, -1 }, { 0.5, 0.5, 0.5 }, { 0.5, 0.5, 1 });
+  EXPECT_FALSE(trianglesIntersect(Floor, line));
+  EXPECT_FALSE(trianglesIntersect(line, Floor));
+  // A thin sliver well above rounding still cuts.
+  const TriangleCorners sliver = tri({ 0.5, 0.5, -1 }, { 0.5 + 1e-5, 0.5, 0 }, { 0.5, 0.5, 1 });
+  EXPECT_TRUE(trianglesIntersect(Floor, sliver));
   EXPECT_TRUE(segmentCrossesTriangle({ 0.5, 0.5, -1 }, { 0.5, 0.5, 1 }, Floor));
   EXPECT_FALSE(segmentCrossesTriangle({ 0.5, 0.5, -1 }, { 0.5, 0.5, 1 }, needle));
 }

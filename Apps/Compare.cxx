@@ -390,13 +390,17 @@ Options:
                         (closed triangle meshes): a coarse version (our
                         link-condition quadric decimation to --coarse-triangles,
                         default 500, points moved onto the original) as it is,
-                        smoothed with its own normals and with the original's
-                        normals carried over, and as PN triangles and Phong
-                        tessellation at the level nearest ours and at level 3,
+                        smoothed with its own normals (each NormalEstimation),
+                        with the original's normals carried over and with the
+                        fold guard off, and as PN triangles and Phong
+                        tessellation (given the area-weighted normals ours
+                        uses) at the level nearest ours and at level 3,
                         against the original refined by two levels of
                         Butterfly subdivision (interpolating: unlike Loop's
                         limit it does not shrink the shape) and against the
-                        original itself (docs/fidelity.md)
+                        original itself; for ours also the folds (turned-over
+                        triangles / cutting pairs) and the chord fallbacks,
+                        summed over the views (docs/fidelity.md)
   --json                one JSON array, an object per model
   --markdown            the README's tables (the earlier methods and the
                         coherence in tables of their own)

@@ -1,5 +1,6 @@
 #include "FoldCounting.h"
 
+#include "TriangleGrid.h"
 #include "TriangleIntersection.h"
 
 #include "vtkCellArray.h"
@@ -17,8 +18,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdint>
-#include <unordered_map>
 #include <vector>
 
 namespace silhouette_eval
@@ -73,29 +72,6 @@ glm::dvec3 NormalSum(vtkDataArray* normals, const std::array<vtkIdType, 3>& ids)
   return sum;
 }
 
-struct Box
-{
-  glm::dvec3 Low{ 0.0 };
-  glm::dvec3 High{ 0.0 };
-};
-
-Box BoxOf(const TriangleCorners& t)
-{
-  Box b{ t.P[0], t.P[0] };
-  for (int k = 1; k < 3; ++k)
-  {
-    b.Low = glm::min(b.Low, t.P[k]);
-    b.High = glm::max(b.High, t.P[k]);
-  }
-  return b;
-}
-
-bool Overlap(const Box& a, const Box& b)
-{
-  return a.Low.x <= b.High.x && b.Low.x <= a.High.x && a.Low.y <= b.High.y && b.Low.y <= a.High.y &&
-    a.Low.z <= b.High.z && b.Low.z <= a.High.z;
-}
-
 } // namespace
 
 FoldCount CountFolds(vtkPolyData* input, vtkPolyData* output)
@@ -127,7 +103,9 @@ FoldCount CountFolds(vtkPolyData* input, vtkPolyData* output)
 
   const std::size_t n = out.Corners.size();
   std::vector<TriangleCorners> corners(n);
-  std::vector<Box> boxes(n);
+  // Boxes of the output's triangles; non-triangles stay out of the grid.
+  std::vector<glm::dvec3> lows(n, glm::dvec3(HUGE_VAL));
+  std::vector<glm::dvec3> highs(n, glm::dvec3(-HUGE_VAL));
   std::vector<vtkIdType> source(n, -1);
   std::vector<unsigned char> changed(n, 0);
   for (std::size_t t = 0; t < n; ++t)
@@ -138,7 +116,8 @@ FoldCount CountFolds(vtkPolyData* input, vtkPolyData* output)
       continue;
     }
     corners[t] = CornersOf(output, ids);
-    boxes[t] = BoxOf(corners[t]);
+    lows[t] = glm::min(corners[t].P[0], glm::min(corners[t].P[1], corners[t].P[2]));
+    highs[t] = glm::max(corners[t].P[0], glm::max(corners[t].P[1], corners[t].P[2]));
     const vtkIdType cell = static_cast<vtkIdType>(t) + cellOffset;
     source[t] = static_cast<vtkIdType>(sources->GetTuple1(cell)) - inputCellOffset;
     bool isChanged = kinds->GetTuple1(cell) != 0;
@@ -177,71 +156,22 @@ FoldCount CountFolds(vtkPolyData* input, vtkPolyData* output)
   }
 
   // Cut through: changed triangles against every triangle whose box meets
-  // theirs, found in a uniform grid of the output's boxes.
-  Box all{ glm::dvec3(HUGE_VAL), glm::dvec3(-HUGE_VAL) };
-  double size = 0.0;
-  std::size_t valid = 0;
-  for (std::size_t t = 0; t < n; ++t)
-  {
-    if (source[t] >= 0 || out.Corners[t][0] >= 0)
-    {
-      all.Low = glm::min(all.Low, boxes[t].Low);
-      all.High = glm::max(all.High, boxes[t].High);
-      const glm::dvec3 d = boxes[t].High - boxes[t].Low;
-      size += std::max({ d.x, d.y, d.z });
-      ++valid;
-    }
-  }
-  if (valid == 0)
-  {
-    return count;
-  }
-  const double cell = std::max(size / static_cast<double>(valid), 1e-300);
-  auto key = [&](int i, int j, int k) {
-    return (static_cast<std::int64_t>(i) * 73856093) ^ (static_cast<std::int64_t>(j) * 19349663) ^
-      (static_cast<std::int64_t>(k) * 83492791);
-  };
-  auto cellOf = [&](double x, double low) {
-    return static_cast<int>((x - low) / cell);
-  };
-  std::unordered_map<std::int64_t, std::vector<std::size_t>> grid;
-  for (std::size_t t = 0; t < n; ++t)
-  {
-    if (out.Corners[t][0] < 0)
-    {
-      continue;
-    }
-    for (int i = cellOf(boxes[t].Low.x, all.Low.x); i <= cellOf(boxes[t].High.x, all.Low.x); ++i)
-      for (int j = cellOf(boxes[t].Low.y, all.Low.y); j <= cellOf(boxes[t].High.y, all.Low.y); ++j)
-        for (int k = cellOf(boxes[t].Low.z, all.Low.z); k <= cellOf(boxes[t].High.z, all.Low.z);
-             ++k)
-          grid[key(i, j, k)].push_back(t);
-  }
-  std::vector<std::size_t> candidates;
+  // theirs, found in a grid of the output's boxes (the core's, which the
+  // fold guard uses too).
+  const silsmooth::TriangleGrid grid(lows, highs);
+  std::vector<silsmooth::Id> candidates;
   for (std::size_t a = 0; a < n; ++a)
   {
     if (!changed[a])
     {
       continue;
     }
-    candidates.clear();
-    for (int i = cellOf(boxes[a].Low.x, all.Low.x); i <= cellOf(boxes[a].High.x, all.Low.x); ++i)
-      for (int j = cellOf(boxes[a].Low.y, all.Low.y); j <= cellOf(boxes[a].High.y, all.Low.y); ++j)
-        for (int k = cellOf(boxes[a].Low.z, all.Low.z); k <= cellOf(boxes[a].High.z, all.Low.z);
-             ++k)
-        {
-          const auto found = grid.find(key(i, j, k));
-          if (found != grid.end())
-          {
-            candidates.insert(candidates.end(), found->second.begin(), found->second.end());
-          }
-        }
-    std::sort(candidates.begin(), candidates.end());
-    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-    for (const std::size_t b : candidates)
+    grid.query(lows[a], highs[a], candidates);
+    for (const silsmooth::Id candidate : candidates)
     {
       // Each pair once: a changed pair from its lower index.
-      if (b == a || (changed[b] && b < a) || !Overlap(boxes[a], boxes[b]))
+      const std::size_t b = static_cast<std::size_t>(candidate);
+      if (b == a || (changed[b] && b < a))
       {
         continue;
       }

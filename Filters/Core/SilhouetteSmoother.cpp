@@ -552,10 +552,8 @@ private:
         for (int k = 0; k < 3; ++k)
         {
           const Id e = edges.sideEdge(t, k);
-          const Edge& edge = edges.edge(e);
-          if (isVisible(this->G[static_cast<std::size_t>(edge.low)]) !=
-              isVisible(this->G[static_cast<std::size_t>(edge.high)]) &&
-            this->Mesh.edgeFeature(e) < 0 && !this->mayBeSeam(e) &&
+          if (this->isMixed(edges.edge(e)) && this->Mesh.edgeFeature(e) < 0 &&
+            !this->mayBeSeam(e) &&
             !std::binary_search(this->StraightEdges.begin(), this->StraightEdges.end(), e))
           {
             newEdges.push_back(e);
@@ -595,6 +593,13 @@ private:
     std::sort(changed.begin(), changed.end());
     changed.erase(std::unique(changed.begin(), changed.end()), changed.end());
     return taken;
+  }
+
+  // An edge whose ends differ in visibility: it holds a silhouette point.
+  bool isMixed(const Edge& edge) const
+  {
+    return isVisible(this->G[static_cast<std::size_t>(edge.low)]) !=
+      isVisible(this->G[static_cast<std::size_t>(edge.high)]);
   }
 
   bool mayBeSeam(Id e) const
@@ -673,9 +678,7 @@ private:
       for (int k = 0; k < 3; ++k)
       {
         const Id e = edges.sideEdge(t, k);
-        const Edge& edge = edges.edge(e);
-        if (isVisible(this->G[static_cast<std::size_t>(edge.low)]) !=
-          isVisible(this->G[static_cast<std::size_t>(edge.high)]))
+        if (this->isMixed(edges.edge(e)))
         {
           mixedEdges.push_back(e);
         }

@@ -22,22 +22,26 @@ public:
   {
   }
 
+  // Where input point p was moved to, or nullptr.
+  const glm::dvec3* moveOf(Id p) const
+  {
+    if (p >= this->PointCount || this->Frame.Moved.empty())
+    {
+      return nullptr;
+    }
+    const auto it = std::lower_bound(this->Frame.Moved.begin(), this->Frame.Moved.end(), p,
+      [](const std::pair<Id, glm::dvec3>& m, Id id) { return m.first < id; });
+    return it != this->Frame.Moved.end() && it->first == p ? &it->second : nullptr;
+  }
+
   glm::dvec3 position(Id p) const
   {
     if (p >= this->PointCount)
     {
       return this->Frame.NewPositions[static_cast<std::size_t>(p - this->PointCount)];
     }
-    if (!this->Frame.Moved.empty())
-    {
-      const auto it = std::lower_bound(this->Frame.Moved.begin(), this->Frame.Moved.end(), p,
-        [](const std::pair<Id, glm::dvec3>& m, Id id) { return m.first < id; });
-      if (it != this->Frame.Moved.end() && it->first == p)
-      {
-        return it->second;
-      }
-    }
-    return this->Mesh.Points[static_cast<std::size_t>(p)];
+    const glm::dvec3* moved = this->moveOf(p);
+    return moved ? *moved : this->Mesh.Points[static_cast<std::size_t>(p)];
   }
 
   glm::dvec3 normal(Id p) const
@@ -47,15 +51,7 @@ public:
       : this->Mesh.Normals[static_cast<std::size_t>(p)];
   }
 
-  bool isMoved(Id p) const
-  {
-    return p < this->PointCount &&
-      std::binary_search(this->Frame.Moved.begin(), this->Frame.Moved.end(),
-        std::make_pair(p, glm::dvec3(0.0)),
-        [](const std::pair<Id, glm::dvec3>& a, const std::pair<Id, glm::dvec3>& b) {
-          return a.first < b.first;
-        });
-  }
+  bool isMoved(Id p) const { return this->moveOf(p) != nullptr; }
 
   TriangleCorners current(const Triangle& t) const
   {

@@ -27,16 +27,26 @@ std::string ArgumentList::Take()
 
 std::string ArgumentList::TakeValue(const Option& option)
 {
+  std::string value;
   if (option.InlineValue)
   {
-    return *option.InlineValue;
+    value = *option.InlineValue;
   }
   // "-o --json" means the value was forgotten, not a file named "--json".
-  if (this->AtEnd() || this->Words[this->Next].rfind("--", 0) == 0)
+  else if (this->AtEnd() || this->Words[this->Next].rfind("--", 0) == 0)
   {
     throw UsageError("option '" + option.Name + "' needs a value");
   }
-  return this->Take();
+  else
+  {
+    value = this->Take();
+  }
+  // No option has a use for an empty value ("-o \"$unset\"" is a mistake).
+  if (value.empty())
+  {
+    throw UsageError("option '" + option.Name + "' needs a value, got an empty one");
+  }
+  return value;
 }
 
 std::array<double, 3> ArgumentList::TakeTriple(const Option& option)

@@ -25,7 +25,8 @@ public:
   bool AtEnd() const;
   std::string Take();
 
-  /// The one value of `option`: its "=value" or the next word.
+  /// The one value of `option`: its "=value" or the next word; UsageError if
+  /// there is none or it is empty.
   std::string TakeValue(const Option& option);
   /// The three values of `option` ("--focal-point X Y Z"), as numbers.
   std::array<double, 3> TakeTriple(const Option& option);

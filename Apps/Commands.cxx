@@ -3,6 +3,7 @@
 #include "CliErrors.h"
 #include "Figures.h"
 #include "MeshIO.h"
+#include "PrintableText.h"
 #include "Rendering.h"
 #include "Smoothing.h"
 
@@ -46,7 +47,7 @@ void PrintWarnings(const SmoothingRun& run)
 {
   for (const std::string& warning : run.Warnings)
   {
-    std::cerr << "silhouette: warning: " << warning << "\n";
+    std::cerr << "silhouette: warning: " << PrintableText(warning) << "\n";
   }
 }
 
@@ -64,7 +65,8 @@ void ReportDropped(const std::vector<std::string>& dropped, const std::string& p
   }
   std::cerr << "silhouette: note: PLY holds points, polygons, normals, texture coordinates and "
                "colours only: "
-            << names << " are not in '" << path << "' (write .vtp to keep them)\n";
+            << PrintableText(names) << " are not in '" << PrintableText(path)
+            << "' (write .vtp to keep them)\n";
 }
 
 } // namespace

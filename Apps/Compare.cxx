@@ -3,6 +3,7 @@
 #include "CliErrors.h"
 #include "Figures.h"
 #include "MeshIO.h"
+#include "PrintableText.h"
 #include "RenderingBackend.h"
 #include "VtkErrorLog.h"
 
@@ -263,7 +264,7 @@ void RunCompare(const CompareOptions& options)
   comparison.CoherenceSteps = options.Frames;
   comparison.Tolerance = options.Tolerance;
   comparison.Progress = [](const std::string& line) {
-    std::cerr << "compare: " << line << std::endl;
+    std::cerr << "compare: " << PrintableText(line) << std::endl;
   };
 
   VtkErrorLog& errors = VtkErrorLog::Instance();

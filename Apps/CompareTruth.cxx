@@ -2,6 +2,7 @@
 
 #include "CliErrors.h"
 #include "MeshIO.h"
+#include "PrintableText.h"
 #include "VtkErrorLog.h"
 
 #include "EvaluationModels.h"
@@ -131,7 +132,7 @@ void RunCompareTruth(const CompareOptions& options)
   fidelity.Tolerance = options.Tolerance;
   fidelity.CoarseTriangles = options.CoarseTriangles > 0 ? options.CoarseTriangles : 500;
   fidelity.Progress = [](const std::string& line) {
-    std::cerr << "compare: " << line << std::endl;
+    std::cerr << "compare: " << PrintableText(line) << std::endl;
   };
   VtkErrorLog& errors = VtkErrorLog::Instance();
   std::vector<silhouette_eval::FidelityResult> results;

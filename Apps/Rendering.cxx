@@ -1,5 +1,6 @@
 #include "Rendering.h"
 
+#include "AtomicFile.h"
 #include "CliErrors.h"
 #include "MeshIO.h"
 #include "RenderingBackend.h"
@@ -23,6 +24,7 @@
 #include <vtkRenderer.h>
 #include <vtkSilhouetteSmoothingFilter.h>
 #include <vtkStylizedStrokeFilter.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
 #include <csignal>
@@ -142,9 +144,17 @@ void WriteWindowPng(vtkRenderWindow* window, const std::string& path)
   vtkNew<vtkPNGWriter> writer;
   errors.Watch(writer);
   writer->SetInputConnection(capture->GetOutputPort());
-  writer->SetFileName(path.c_str());
+  writer->WriteToMemoryOn(); // our own file writing says why it fails, in one line
   writer->Write();
   errors.ThrowIfErrors("cannot write '" + path + "'");
+  vtkUnsignedCharArray* png = writer->GetResult();
+  if (!png || png->GetNumberOfValues() == 0)
+  {
+    throw RuntimeError("cannot write '" + path + "': VTK's PNG writer gave no image");
+  }
+  WriteFileAtomically(path,
+    std::string(reinterpret_cast<const char*>(png->GetPointer(0)),
+      static_cast<std::size_t>(png->GetNumberOfValues())));
 }
 
 namespace

@@ -6,10 +6,12 @@
 #include "Compare.h"
 #include "Figure.h"
 #include "Generate.h"
+#include "PrintableText.h"
 #include "RenderingBackend.h"
 #include "Viewer.h"
 #include "VtkErrorLog.h"
 
+#include <csignal>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -19,7 +21,7 @@ namespace
 
 int Fail(cli::ExitStatus status, const std::string& message)
 {
-  std::cerr << "silhouette: " << message << std::endl;
+  std::cerr << "silhouette: " << cli::PrintableText(message) << std::endl;
   return status;
 }
 
@@ -60,6 +62,9 @@ void SelectBackendFor(const cli::CommandLine& commandLine, char* argv[])
 int main(int argc, char* argv[])
 {
   cli::RestoreEnvironmentAfterReexec();
+  // Past a file-size limit, a write fails with EFBIG (and says so) instead of
+  // killing the program.
+  std::signal(SIGXFSZ, SIG_IGN);
   cli::VtkErrorLog::Instance().InstallMessageCapture();
   try
   {

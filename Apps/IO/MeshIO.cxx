@@ -1,9 +1,13 @@
 #include "MeshIO.h"
 
+#include "AtomicFile.h"
 #include "CliErrors.h"
 #include "LegacyCheck.h"
+#include "MeshValidation.h"
 #include "ObjCheck.h"
 #include "PlyCheck.h"
+#include "PrintableText.h"
+#include "SandboxedReading.h"
 #include "StlCheck.h"
 #include "VtkErrorLog.h"
 #include "VtpCheck.h"
@@ -32,7 +36,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <memory>
+#include <sstream>
+#include <sys/stat.h>
 
 namespace cli
 {
@@ -44,13 +51,32 @@ std::string Quoted(const std::string& path)
   return "'" + path + "'";
 }
 
-// VTK's readers say little about a file they cannot open; the C library says why.
-void RequireReadableFile(const std::string& path)
+const char* KindOfFile(mode_t mode)
 {
-  std::error_code ignored;
-  if (std::filesystem::is_directory(path, ignored))
+  return S_ISDIR(mode) ? "a directory"
+    : S_ISCHR(mode)    ? "a character device"
+    : S_ISBLK(mode)    ? "a block device"
+    : S_ISFIFO(mode)   ? "a pipe"
+    : S_ISSOCK(mode)   ? "a socket"
+                       : "not a regular file";
+}
+
+// VTK's readers say little about a file they cannot open; the C library says
+// why. Devices and pipes are refused before anything opens them: /dev/zero
+// reads forever, and opening a pipe waits for a writer. Returns the size.
+std::uint64_t RequireReadableFile(const std::string& path)
+{
+  struct stat status
   {
-    throw RuntimeError("cannot read " + Quoted(path) + ": it is a directory");
+  };
+  if (::stat(path.c_str(), &status) != 0)
+  {
+    throw RuntimeError("cannot read " + Quoted(path) + ": " + std::strerror(errno));
+  }
+  if (!S_ISREG(status.st_mode))
+  {
+    throw RuntimeError("cannot read " + Quoted(path) + ": it is " + KindOfFile(status.st_mode) +
+      ", not a regular file");
   }
   const std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(
     std::fopen(path.c_str(), "rb"), &std::fclose);
@@ -58,6 +84,7 @@ void RequireReadableFile(const std::string& path)
   {
     throw RuntimeError("cannot read " + Quoted(path) + ": " + std::strerror(errno));
   }
+  return static_cast<std::uint64_t>(status.st_size);
 }
 
 // The legacy reader happily reads nothing from a file of another dataset type.
@@ -122,6 +149,35 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, const std::str
     "'; expected .ply, .obj, .stl, .vtp or .vtk");
 }
 
+// What the reading process runs: the pre-check, VTK's reader, and the
+// checks that make the result safe to pass back.
+vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::string& extension)
+{
+  VtkErrorLog& errors = VtkErrorLog::Instance();
+  errors.Clear();
+  vtkSmartPointer<vtkAlgorithm> reader = MakeReader(path, extension);
+  errors.Clear();
+  errors.Watch(reader);
+  reader->Update();
+  errors.ThrowIfErrors("cannot read " + Quoted(path));
+  vtkPolyData* read = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!read)
+  {
+    throw RuntimeError("cannot read " + Quoted(path) + ": the reader gave no polygonal mesh");
+  }
+  // A copy of our own, so the reader's pipeline can go.
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(read);
+  RequireConsistentMesh(mesh, Quoted(path));
+  const std::string removed = RemoveCellsWithTooFewPoints(mesh);
+  if (!removed.empty())
+  {
+    errors.Record(VtkErrorLog::Kind::Warning, true,
+      (Quoted(path) + ": left out " + removed + ", which hold nothing to draw").c_str());
+  }
+  return mesh;
+}
+
 } // namespace
 
 std::string LowercaseExtension(const std::string& path)
@@ -139,23 +195,17 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
   {
     throw RuntimeError(Quoted(path) + " has no extension; expected .ply, .obj, .stl, .vtp or .vtk");
   }
-  VtkErrorLog& errors = VtkErrorLog::Instance();
-  errors.Clear();
-  RequireReadableFile(path);
-  vtkSmartPointer<vtkAlgorithm> reader = MakeReader(path, extension);
-
-  errors.Clear();
-  errors.Watch(reader);
-  reader->Update();
-  errors.ThrowIfErrors("cannot read " + Quoted(path));
-  vtkPolyData* read = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (!read)
+  const std::uint64_t bytes = RequireReadableFile(path);
+  VtkErrorLog::Instance().Clear();
+  vtkSmartPointer<vtkPolyData> mesh = ReadInSandbox(
+    Quoted(path), [&] { return ReadWithVtk(path, extension); }, ReadLimits::ForFileOfSize(bytes));
+  RequireConsistentMesh(mesh, Quoted(path));
+  // The reader's warnings now, so that they are not mistaken for later ones.
+  for (const std::string& warning : VtkErrorLog::Instance().Warnings())
   {
-    throw RuntimeError("cannot read " + Quoted(path) + ": the reader gave no polygonal mesh");
+    std::cerr << "silhouette: warning: " << PrintableText(warning) << "\n";
   }
-  // A copy of our own, so the reader's pipeline can go.
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->ShallowCopy(read);
+  VtkErrorLog::Instance().Clear();
   return mesh;
 }
 
@@ -257,11 +307,7 @@ std::vector<std::string> WritePly(vtkPolyData* mesh, const std::string& path)
     dropped.emplace_back("vertex cells");
   }
 
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out)
-  {
-    throw RuntimeError("cannot write " + Quoted(path) + ": " + std::strerror(errno));
-  }
+  std::ostringstream out(std::ios::binary);
   const vtkIdType n = mesh->GetNumberOfPoints();
   out << "ply\nformat binary_little_endian 1.0\ncomment written by silhouette\n";
   out << "element vertex " << n << "\n";
@@ -342,11 +388,7 @@ std::vector<std::string> WritePly(vtkPolyData* mesh, const std::string& path)
       Put(out, static_cast<std::int32_t>(ids[k]));
     }
   }
-  out.close();
-  if (!out)
-  {
-    throw RuntimeError("cannot write " + Quoted(path) + ": " + std::strerror(errno));
-  }
+  WriteFileAtomically(path, std::move(out).str());
   return dropped;
 }
 
@@ -364,15 +406,16 @@ std::vector<std::string> WriteMesh(vtkPolyData* mesh, const std::string& path)
   vtkNew<vtkXMLPolyDataWriter> writer;
   errors.Watch(writer);
   writer->SetInputData(mesh);
-  writer->SetFileName(path.c_str());
+  writer->WriteToOutputStringOn();
   writer->SetDataModeToBinary();
   writer->SetCompressorTypeToZLib();
   const int written = writer->Write();
   errors.ThrowIfErrors("cannot write " + Quoted(path));
   if (!written)
   {
-    throw RuntimeError("cannot write " + Quoted(path));
+    throw RuntimeError("cannot write " + Quoted(path) + ": VTK's XML writer failed");
   }
+  WriteFileAtomically(path, writer->GetOutputString());
   return {};
 }
 

@@ -171,6 +171,12 @@ private:
     throw RuntimeError("cannot read '" + this->Path + "': malformed PLY: " + problem);
   }
 
+  // For valid PLY that VTK 9.1's reader gets wrong.
+  [[noreturn]] void Unsupported(const std::string& problem) const
+  {
+    throw RuntimeError("cannot read '" + this->Path + "': " + problem);
+  }
+
   // vtkPLYReader reads a line into a C string of 4096 bytes and splits it at
   // spaces and tabs only, where we split at any white space: a NUL byte, a
   // control character (a vertical tab, say) or a longer line would give the
@@ -362,6 +368,20 @@ private:
     if (!vertices)
     {
       this->Fail("there is no vertex element");
+    }
+    // The reader reads the vertices first wherever they are, and crashes
+    // when the faces come before them.
+    for (const Element& element : header.Elements)
+    {
+      if (&element == vertices)
+      {
+        break;
+      }
+      if (element.Name == "face" && element.Count > 0)
+      {
+        this->Unsupported("its faces come before its vertices, which is valid PLY but "
+                          "vtkPLYReader 9.1 cannot read (write the vertex element first)");
+      }
     }
     // The reader reads the vertex and face elements and does not skip the
     // others, so one before them shifts everything after it.

@@ -1,0 +1,135 @@
+#include "AtomicFile.h"
+
+#include "CliErrors.h"
+
+#include <cerrno>
+#include <climits>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <vector>
+
+namespace cli
+{
+namespace
+{
+
+[[noreturn]] void Fail(const std::string& path, int error)
+{
+  throw RuntimeError("cannot write '" + path + "': " + std::strerror(error));
+}
+
+// 0 when every byte went, else the errno of the failure.
+int WriteAll(int fd, const std::string& bytes)
+{
+  const char* data = bytes.data();
+  std::size_t left = bytes.size();
+  while (left > 0)
+  {
+    const ssize_t written = ::write(fd, data, left);
+    if (written < 0 && errno == EINTR)
+    {
+      continue;
+    }
+    if (written < 0)
+    {
+      return errno;
+    }
+    if (written == 0)
+    {
+      return ENOSPC;
+    }
+    data += written;
+    left -= static_cast<std::size_t>(written);
+  }
+  return 0;
+}
+
+void WriteInPlace(const std::string& path, const std::string& bytes)
+{
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0)
+  {
+    Fail(path, errno);
+  }
+  const int error = WriteAll(fd, bytes);
+  const int closed = ::close(fd);
+  if (error != 0)
+  {
+    Fail(path, error);
+  }
+  if (closed != 0)
+  {
+    Fail(path, errno);
+  }
+}
+
+mode_t NewFileMode()
+{
+  const mode_t mask = ::umask(0);
+  ::umask(mask);
+  return 0666 & ~mask;
+}
+
+} // namespace
+
+void WriteFileAtomically(const std::string& path, const std::string& bytes)
+{
+  struct stat existing
+  {
+  };
+  const bool exists = ::stat(path.c_str(), &existing) == 0;
+  if (exists && S_ISDIR(existing.st_mode))
+  {
+    throw RuntimeError("cannot write '" + path + "': it is a directory");
+  }
+  if (exists && !S_ISREG(existing.st_mode))
+  {
+    WriteInPlace(path, bytes);
+    return;
+  }
+  // Through a link to its target, so the link stays a link.
+  std::string target = path;
+  if (exists)
+  {
+    char resolved[PATH_MAX];
+    if (::realpath(path.c_str(), resolved))
+    {
+      target = resolved;
+    }
+  }
+  const std::string::size_type slash = target.rfind('/');
+  const std::string directory = slash == std::string::npos ? "" : target.substr(0, slash + 1);
+  const std::string name = slash == std::string::npos ? target : target.substr(slash + 1);
+  std::string temporary = directory + "." + name + ".XXXXXX";
+  std::vector<char> pattern(temporary.begin(), temporary.end());
+  pattern.push_back('\0');
+  const int fd = ::mkostemp(pattern.data(), O_CLOEXEC);
+  if (fd < 0)
+  {
+    Fail(path, errno);
+  }
+  temporary = pattern.data();
+  int error = WriteAll(fd, bytes);
+  if (error == 0 && ::fchmod(fd, exists ? (existing.st_mode & 07777) : NewFileMode()) != 0)
+  {
+    error = errno;
+  }
+  if (::close(fd) != 0 && error == 0)
+  {
+    error = errno;
+  }
+  if (error == 0 && ::rename(temporary.c_str(), target.c_str()) != 0)
+  {
+    error = errno;
+  }
+  if (error != 0)
+  {
+    ::unlink(temporary.c_str());
+    Fail(path, error);
+  }
+}
+
+} // namespace cli

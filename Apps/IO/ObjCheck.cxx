@@ -70,6 +70,20 @@ void CheckObjFile(const std::string& path)
       {
         throw RuntimeError("cannot read " + where + ": '" + word + "' is not a finite number");
       }
+      // vtkOBJReader 9.1 reads a hexadecimal number such as 0x10 as 0, and a
+      // number beyond the range of a float, such as 1e39, as FLT_MAX. (One too
+      // small for a float becomes 0 or a subnormal, as it would in any float
+      // reader: that is rounding, not a misread.)
+      if (word.find_first_of("xX") != std::string::npos)
+      {
+        throw RuntimeError("cannot read " + where + ": '" + word +
+          "' is hexadecimal, which vtkOBJReader reads as 0");
+      }
+      if (std::isinf(std::strtof(word.c_str(), nullptr)))
+      {
+        throw RuntimeError(
+          "cannot read " + where + ": '" + word + "' is out of range for a float coordinate");
+      }
       ++coordinates;
     }
     if (coordinates < 3)

@@ -163,6 +163,7 @@ public:
         }
       }
     }
+    this->CheckEnd(header);
   }
 
 private:
@@ -445,23 +446,27 @@ private:
   void CheckAsciiInstance(const Element& element, long long instance)
   {
     const std::string where = element.Name + " " + std::to_string(instance);
-    std::vector<std::string> words;
-    while (words.empty())
+    if (this->Position >= this->Bytes.size())
     {
-      if (this->Position >= this->Bytes.size())
-      {
-        this->Fail("the file ends before " + where);
-      }
-      std::size_t end = this->Bytes.find('\n', this->Position);
-      if (end == std::string::npos)
-      {
-        end = this->Bytes.size();
-      }
-      const std::string text = this->Bytes.substr(this->Position, end - this->Position);
-      this->CheckLineText(text, where);
-      std::istringstream line(text);
-      this->Position = end + 1;
-      words.assign(std::istream_iterator<std::string>(line), std::istream_iterator<std::string>());
+      this->Fail("the file ends before " + where);
+    }
+    std::size_t end = this->Bytes.find('\n', this->Position);
+    if (end == std::string::npos)
+    {
+      end = this->Bytes.size();
+    }
+    const std::string text = this->Bytes.substr(this->Position, end - this->Position);
+    this->CheckLineText(text, where);
+    std::istringstream line(text);
+    this->Position = end + 1;
+    const std::vector<std::string> words(
+      (std::istream_iterator<std::string>(line)), std::istream_iterator<std::string>());
+    // vtkPLYReader 9.1 takes a line of white space for the end of the file,
+    // reads on with values it does not have and crashes or drops what
+    // follows.
+    if (words.empty())
+    {
+      this->Fail(where + " is a blank line, which vtkPLYReader takes for the end of the file");
     }
     std::size_t next = 0;
     const auto number = [&](ScalarType type) {
@@ -617,6 +622,33 @@ private:
         }
       }
     }
+  }
+
+  // vtkPLYReader stops after the elements the header declares and ignores the
+  // rest: with a count too small it drops faces without a word. Only white
+  // space (a final newline, say) may follow the last element.
+  void CheckEnd(const Header& header) const
+  {
+    const std::size_t from = std::min(this->Position, this->Bytes.size());
+    const std::size_t extra = this->Bytes.find_first_not_of(" \t\r\n", from);
+    if (extra == std::string::npos)
+    {
+      return;
+    }
+    const Element& last = header.Elements.back();
+    const bool one = last.Count == 1;
+    const std::string declared = std::to_string(last.Count) +
+      (last.Name == "vertex"    ? (one ? " vertex" : " vertices")
+          : last.Name == "face" ? (one ? " face" : " faces")
+                                : " '" + last.Name + (one ? "' element" : "' elements"));
+    if (header.BodyFormat == Format::Ascii)
+    {
+      const auto line = 1 + std::count(this->Bytes.begin(), this->Bytes.begin() + extra, '\n');
+      this->Fail("the body holds more than the " + declared + " its header declares (line " +
+        std::to_string(line) + ")");
+    }
+    this->Fail("the body holds " + std::to_string(this->Bytes.size() - from) +
+      " bytes more than the " + declared + " its header declares");
   }
 
   std::string Path;

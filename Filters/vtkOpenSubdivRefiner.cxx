@@ -1,5 +1,7 @@
 #include "vtkOpenSubdivRefiner.h"
 
+#include "vtkSilhouetteFilterSupport.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
@@ -29,6 +31,13 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkOpenSubdivRefiner);
+
+vtkTypeBool vtkOpenSubdivRefiner::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
+{
+  return vtkSilhouetteFilterSupport::GuardRequest(this, outputs,
+    [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });
+}
 
 namespace
 {

@@ -89,6 +89,13 @@ public:
   vtkTypeMacro(vtkOpenSubdivRefiner, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * The superclass's, except that no exception leaves it: std::bad_alloc or
+   * any other becomes an error, emptied outputs and a failed request.
+   */
+  vtkTypeBool ProcessRequest(
+    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
+
   ///@{
   /**
    * Number of uniform refinement levels: each multiplies the triangle count by

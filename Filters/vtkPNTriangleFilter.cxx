@@ -11,6 +11,13 @@
 
 vtkStandardNewMacro(vtkPNTriangleFilter);
 
+vtkTypeBool vtkPNTriangleFilter::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
+{
+  return vtkSilhouetteFilterSupport::GuardRequest(this, outputs,
+    [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });
+}
+
 namespace support = vtkSilhouetteFilterSupport;
 
 int vtkPNTriangleFilter::RequestData(

@@ -37,6 +37,13 @@ public:
   vtkTypeMacro(vtkPhongTessellationFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * The superclass's, except that no exception leaves it: std::bad_alloc or
+   * any other becomes an error, emptied outputs and a failed request.
+   */
+  vtkTypeBool ProcessRequest(
+    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
+
   ///@{
   /**
    * Points inserted on every edge (k). Default 2 (9 triangles per input

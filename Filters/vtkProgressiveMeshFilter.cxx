@@ -1,5 +1,7 @@
 #include "vtkProgressiveMeshFilter.h"
 
+#include "vtkSilhouetteFilterSupport.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
@@ -18,6 +20,13 @@
 #include <optional>
 
 vtkStandardNewMacro(vtkProgressiveMeshFilter);
+
+vtkTypeBool vtkProgressiveMeshFilter::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
+{
+  return vtkSilhouetteFilterSupport::GuardRequest(this, outputs,
+    [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });
+}
 
 struct vtkProgressiveMeshFilter::Internal
 {

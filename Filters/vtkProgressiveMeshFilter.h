@@ -38,6 +38,13 @@ public:
   vtkTypeMacro(vtkProgressiveMeshFilter, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * The superclass's, except that no exception leaves it: std::bad_alloc or
+   * any other becomes an error, emptied outputs and a failed request.
+   */
+  vtkTypeBool ProcessRequest(
+    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
+
   ///@{
   /** Triangles wanted; negative (the default, -1) uses Fraction. */
   vtkSetMacro(TriangleCount, vtkIdType);

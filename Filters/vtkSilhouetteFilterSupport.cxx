@@ -1,5 +1,6 @@
 #include "vtkSilhouetteFilterSupport.h"
 
+#include "vtkAlgorithm.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -8,7 +9,10 @@
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkMatrix4x4.h"
+#include "vtkObject.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -24,7 +28,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <new>
 #include <numeric>
+#include <stdexcept>
 
 namespace vtkSilhouetteFilterSupport
 {
@@ -285,6 +291,136 @@ std::string ReadFiniteTriangles(vtkPolyData* input, Triangles& out)
     " points with NaN or infinite coordinates.";
 }
 
+PassedCells PassVertsAndLines(vtkPolyData* input)
+{
+  PassedCells passed;
+  vtkCellArray* verts = input->GetVerts();
+  vtkCellArray* lines = input->GetLines();
+  const vtkIdType cells = verts->GetNumberOfCells() + lines->GetNumberOfCells();
+  passed.CellIds.reserve(static_cast<std::size_t>(cells));
+  vtkIdType cellId = 0;
+  std::array<vtkSmartPointer<vtkCellArray>, 2> kept;
+  std::array<vtkCellArray*, 2> inputs{ { verts, lines } };
+  for (std::size_t k = 0; k < 2; ++k)
+  {
+    const vtkIdType least = k == 0 ? 1 : 2;
+    kept[k] = vtkSmartPointer<vtkCellArray>::New();
+    auto cell = vtk::TakeSmartPointer(inputs[k]->NewIterator());
+    for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell(), ++cellId)
+    {
+      vtkIdList* ids = cell->GetCurrentCell();
+      if (ids->GetNumberOfIds() >= least)
+      {
+        kept[k]->InsertNextCell(ids);
+        passed.CellIds.push_back(cellId);
+      }
+      else
+      {
+        ++passed.Dropped;
+      }
+    }
+  }
+  // Nothing left out: the input's own arrays, shared.
+  passed.Verts = passed.Dropped == 0 ? vtkSmartPointer<vtkCellArray>(verts) : kept[0];
+  passed.Lines = passed.Dropped == 0 ? vtkSmartPointer<vtkCellArray>(lines) : kept[1];
+  return passed;
+}
+
+std::string MismatchedArrayError(vtkPolyData* input)
+{
+  const std::array<std::pair<vtkFieldData*, vtkIdType>, 2> sets{ {
+    { input->GetPointData(), input->GetNumberOfPoints() },
+    { input->GetCellData(), input->GetNumberOfCells() },
+  } };
+  for (std::size_t s = 0; s < sets.size(); ++s)
+  {
+    vtkFieldData* data = sets[s].first;
+    for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+    {
+      vtkAbstractArray* array = data->GetAbstractArray(a);
+      if (array && array->GetNumberOfTuples() != sets[s].second)
+      {
+        return std::string(s == 0 ? "Point" : "Cell") + " data array '" +
+          (array->GetName() ? array->GetName() : "(unnamed)") + "' has " +
+          std::to_string(array->GetNumberOfTuples()) + " tuples for " +
+          std::to_string(sets[s].second) + (s == 0 ? " points." : " cells.");
+      }
+    }
+  }
+  return {};
+}
+
+int GuardRequest(
+  vtkAlgorithm* self, vtkInformationVector* outputs, const std::function<int()>& request)
+{
+  std::string failure;
+  try
+  {
+    return request();
+  }
+  catch (const std::bad_alloc&)
+  {
+    failure = "Out of memory: the request needs more memory than the system gives.";
+  }
+  catch (const std::exception& error)
+  {
+    failure = std::string("The request failed: ") + error.what();
+  }
+  catch (...)
+  {
+    failure = "The request failed with an unknown exception.";
+  }
+  for (int i = 0; outputs && i < outputs->GetNumberOfInformationObjects(); ++i)
+  {
+    if (vtkDataObject* output = outputs->GetInformationObject(i)->Get(vtkDataObject::DATA_OBJECT()))
+    {
+      output->Initialize();
+    }
+  }
+  vtkErrorWithObjectMacro(self, << failure);
+  return 0;
+}
+
+namespace
+{
+
+template<typename T>
+bool StoreSetting(vtkObject* self, const char* name, T& setting, T value, T lo, T hi)
+{
+  if (value != value) // NaN
+  {
+    vtkWarningWithObjectMacro(
+      self, "Set" << name << ": NaN is not a value; " << name << " stays " << setting << ".");
+    return false;
+  }
+  const T clamped = value < lo ? lo : (value > hi ? hi : value);
+  if (clamped != value)
+  {
+    vtkWarningWithObjectMacro(self,
+      "Set" << name << "(" << value << ") is outside [" << lo << ", " << hi << "]; using "
+            << clamped << ".");
+  }
+  if (clamped == setting)
+  {
+    return false;
+  }
+  setting = clamped;
+  return true;
+}
+
+} // namespace
+
+bool SetSetting(
+  vtkObject* self, const char* name, double& setting, double value, double lo, double hi)
+{
+  return StoreSetting(self, name, setting, value, lo, hi);
+}
+
+bool SetSetting(vtkObject* self, const char* name, int& setting, int value, int lo, int hi)
+{
+  return StoreSetting(self, name, setting, value, lo, hi);
+}
+
 void WriteMesh(vtkPolyData* input, vtkPolyData* output, const std::vector<glm::dvec3>& inputNormals,
   const std::vector<glm::dvec3>& addedPoints, const std::vector<glm::dvec3>& addedNormals,
   const std::vector<PointSource>& addedSources, const std::vector<silsmooth::Triangle>& triangles,
@@ -350,9 +486,10 @@ void WriteMesh(vtkPolyData* input, vtkPolyData* output, const std::vector<glm::d
   }
   outPD->SetNormals(normals);
 
-  output->SetVerts(input->GetVerts());
-  output->SetLines(input->GetLines());
-  const vtkIdType passThrough = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  const PassedCells passed = PassVertsAndLines(input);
+  output->SetVerts(passed.Verts);
+  output->SetLines(passed.Lines);
+  const vtkIdType passThrough = static_cast<vtkIdType>(passed.CellIds.size());
   const vtkIdType outCells = passThrough + static_cast<vtkIdType>(triangles.size());
   vtkNew<vtkIdTypeArray> offsets;
   vtkNew<vtkIdTypeArray> connectivity;
@@ -380,7 +517,7 @@ void WriteMesh(vtkPolyData* input, vtkPolyData* output, const std::vector<glm::d
   kinds->SetName("NewGeometry");
   kinds->SetNumberOfValues(outCells);
   vtkIdType* origin = originalCellId->GetPointer(0);
-  std::iota(origin, origin + passThrough, vtkIdType{ 0 });
+  std::copy(passed.CellIds.begin(), passed.CellIds.end(), origin);
   std::copy(originalCell.begin(), originalCell.end(), origin + passThrough);
   unsigned char* kind = kinds->GetPointer(0);
   std::fill(kind, kind + passThrough, static_cast<unsigned char>(0));

@@ -8,6 +8,7 @@
 #ifndef vtkSilhouetteFilterSupport_h
 #define vtkSilhouetteFilterSupport_h
 
+#include "vtkSmartPointer.h"
 #include "vtkTimeStamp.h"
 #include "vtkType.h"
 
@@ -19,10 +20,15 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <functional>
 #include <string>
 #include <vector>
 
+class vtkAlgorithm;
 class vtkCamera;
+class vtkInformationVector;
+class vtkCellArray;
+class vtkObject;
 class vtkMatrix4x4;
 class vtkPolyData;
 class vtkProp3D;
@@ -98,6 +104,38 @@ std::string ReadTriangles(vtkPolyData* input, Triangles& out);
 /// ReadTriangles, and also the error for points with NaN or infinite
 /// coordinates, for the filters that cannot use such input at all.
 std::string ReadFiniteTriangles(vtkPolyData* input, Triangles& out);
+
+/// The vertex and line cells a mesh-output filter passes through: those with
+/// enough points for their kind (a vertex cell one, a line two), with each
+/// one's input cell id. The others draw nothing, and VTK's XML writer crashes
+/// on them: they are left out and counted in `Dropped`.
+struct PassedCells
+{
+  vtkSmartPointer<vtkCellArray> Verts;
+  vtkSmartPointer<vtkCellArray> Lines;
+  std::vector<vtkIdType> CellIds;
+  vtkIdType Dropped = 0;
+};
+PassedCells PassVertsAndLines(vtkPolyData* input);
+
+/// The error to report when a point data array does not have one tuple per
+/// point or a cell data array one per cell (a reader's or a user's mistake
+/// that would make the output's arrays garbage), else "".
+std::string MismatchedArrayError(vtkPolyData* input);
+
+/// For a filter's ProcessRequest: runs `request` (the superclass's
+/// ProcessRequest) so that no exception leaves the filter. std::bad_alloc
+/// and any other exception become an error (vtkErrorMacro), emptied outputs
+/// and a failed request, so one too-large request cannot end the program.
+int GuardRequest(
+  vtkAlgorithm* self, vtkInformationVector* outputs, const std::function<int()>& request);
+
+/// For the Set methods of a filter's settings: stores `value` clamped to
+/// [lo, hi], with a warning when it was outside; keeps the current setting,
+/// with a warning, when `value` is NaN. Returns whether the setting changed.
+bool SetSetting(
+  vtkObject* self, const char* name, double& setting, double value, double lo, double hi);
+bool SetSetting(vtkObject* self, const char* name, int& setting, int value, int lo, int hi);
 
 /// An added point as a weighted sum of input points (weights sum to one).
 struct PointSource

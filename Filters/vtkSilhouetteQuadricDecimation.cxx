@@ -21,6 +21,13 @@
 
 vtkStandardNewMacro(vtkSilhouetteQuadricDecimation);
 
+vtkTypeBool vtkSilhouetteQuadricDecimation::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
+{
+  return vtkSilhouetteFilterSupport::GuardRequest(this, outputs,
+    [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });
+}
+
 void vtkSilhouetteQuadricDecimation::SetDistanceArrayName(const std::string& name)
 {
   if (this->DistanceArrayName != name)

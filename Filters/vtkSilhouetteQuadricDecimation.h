@@ -49,6 +49,13 @@ public:
   vtkTypeMacro(vtkSilhouetteQuadricDecimation, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * The superclass's, except that no exception leaves it: std::bad_alloc or
+   * any other becomes an error, emptied outputs and a failed request.
+   */
+  vtkTypeBool ProcessRequest(
+    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
+
   ///@{
   /** Stop at this many triangles or fewer (at least 4). Default 1000. */
   vtkSetClampMacro(TargetTriangles, vtkIdType, 4, VTK_ID_MAX);

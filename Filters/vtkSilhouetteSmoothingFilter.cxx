@@ -38,6 +38,23 @@
 
 vtkStandardNewMacro(vtkSilhouetteSmoothingFilter);
 
+#define SILHOUETTE_CHECKED_SETTER(Name, Type, Lo, Hi)                                              \
+  void vtkSilhouetteSmoothingFilter::Set##Name(Type value)                                         \
+  {                                                                                                \
+    if (vtkSilhouetteFilterSupport::SetSetting(this, #Name, this->Name, value, Lo, Hi))            \
+    {                                                                                              \
+      this->Modified();                                                                            \
+    }                                                                                              \
+  }
+SILHOUETTE_CHECKED_SETTER(Tolerance, double, 1e-3, VTK_DOUBLE_MAX)
+SILHOUETTE_CHECKED_SETTER(MinimumSamples, int, 2, 65536)
+SILHOUETTE_CHECKED_SETTER(MaximumSamples, int, 2, 65536)
+SILHOUETTE_CHECKED_SETTER(NewPointBudget, double, 1.0, 1e6)
+SILHOUETTE_CHECKED_SETTER(FeatureAngle, double, 0.0, 180.0)
+SILHOUETTE_CHECKED_SETTER(WeldTolerance, double, 0.0, VTK_DOUBLE_MAX)
+SILHOUETTE_CHECKED_SETTER(FlatCreaseAngle, double, 0.0, 180.0)
+#undef SILHOUETTE_CHECKED_SETTER
+
 namespace
 {
 
@@ -227,16 +244,18 @@ void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
   out->SetNormals(normals);
 }
 
-// Verts and lines pass through; polygons and strips become the frame's
-// triangles, written by the surface straight into the cell arrays.
-// `OriginalCellId` is composed with an input array of that name.
+// Verts and lines pass through (PassVertsAndLines); polygons and strips
+// become the frame's triangles, written by the surface straight into the
+// cell arrays. `OriginalCellId` is composed with an input array of that name.
 silsmooth::SurfaceFrame BuildCells(vtkPolyData* input, vtkPolyData* output,
   const std::vector<vtkIdType>& triangleCell, const silsmooth::WeldedSurface& surface,
   const silsmooth::SmoothingResult& result)
 {
-  output->SetVerts(input->GetVerts());
-  output->SetLines(input->GetLines());
-  const vtkIdType passThrough = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  const vtkSilhouetteFilterSupport::PassedCells passed =
+    vtkSilhouetteFilterSupport::PassVertsAndLines(input);
+  output->SetVerts(passed.Verts);
+  output->SetLines(passed.Lines);
+  const vtkIdType passThrough = static_cast<vtkIdType>(passed.CellIds.size());
 
   const std::size_t outTriangles = surface.outputTriangleCount(result);
   vtkNew<vtkIdTypeArray> offsets;
@@ -249,7 +268,7 @@ silsmooth::SurfaceFrame BuildCells(vtkPolyData* input, vtkPolyData* output,
   newGeometry->SetNumberOfValues(outCells);
   std::vector<vtkIdType> origin(static_cast<std::size_t>(outCells));
   unsigned char* kinds = newGeometry->GetPointer(0);
-  std::iota(origin.begin(), origin.begin() + passThrough, vtkIdType{ 0 });
+  std::copy(passed.CellIds.begin(), passed.CellIds.end(), origin.begin());
   std::fill(kinds, kinds + passThrough, static_cast<unsigned char>(0));
   silsmooth::SurfaceFrame frame = surface.assemble(
     result, connectivity->GetPointer(0), origin.data() + passThrough, kinds + passThrough);
@@ -422,6 +441,19 @@ int vtkSilhouetteSmoothingFilter::RequestData(
     return 0;
   }
 
+  if (this->MinimumSamples > this->MaximumSamples)
+  {
+    vtkErrorMacro("MinimumSamples (" << this->MinimumSamples << ") is more than MaximumSamples ("
+                                     << this->MaximumSamples << ").");
+    return 0;
+  }
+  const std::string arrayError = vtkSilhouetteFilterSupport::MismatchedArrayError(input);
+  if (!arrayError.empty())
+  {
+    vtkErrorMacro(<< arrayError);
+    return 0;
+  }
+
   vtkSilhouetteFilterSupport::View view;
   const ViewStatus viewStatus = this->RequestView(view);
   if (viewStatus == VIEW_NO_CAMERA_YET)
@@ -507,7 +539,9 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   silsmooth::SamplingParameters& sampling = parameters.Sampling;
   sampling.TolerancePixels = this->Tolerance;
   sampling.MinimumSamples = this->MinimumSamples;
-  sampling.MaximumSamples = std::max(this->MinimumSamples, this->MaximumSamples);
+  sampling.MaximumSamples = this->MaximumSamples;
+  parameters.MaximumSampledPoints = static_cast<std::size_t>(std::max(
+    1e5, std::min(this->NewPointBudget * static_cast<double>(input->GetNumberOfPoints()), 1e15)));
   sampling.Rule = this->SamplingRule == WANG_EQUATION_8 ? silsmooth::SamplingRule::WangEquation8
                                                         : silsmooth::SamplingRule::SecondDifference;
   const silsmooth::ParallelFor smpFor =
@@ -539,6 +573,22 @@ int vtkSilhouetteSmoothingFilter::RequestData(
     vtkWarningMacro(<< internal.TooSmallPolygons
                     << " polygons with fewer than 3 points make no triangle and were dropped.");
   }
+  const vtkIdType droppedCells =
+    rebuilt ? vtkSilhouetteFilterSupport::PassVertsAndLines(input).Dropped : 0;
+  if (droppedCells > 0)
+  {
+    vtkWarningMacro(<< droppedCells
+                    << " vertex cells without points or lines with one point draw nothing and "
+                       "were dropped.");
+  }
+  if (result.SampleBudgetMaximum > 0)
+  {
+    vtkWarningMacro("Sampled this frame's segments with at most "
+      << result.SampleBudgetMaximum << " points each (MaximumSamples " << this->MaximumSamples
+      << "), so that its " << result.SilhouetteTriangleCount
+      << " silhouette triangles stay within NewPointBudget's " << parameters.MaximumSampledPoints
+      << " new points.");
+  }
 
   vtkFieldData* fd = output->GetFieldData();
   fd->PassData(input->GetFieldData());
@@ -567,6 +617,7 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   AddCount(fd, "PinnedPointCount", static_cast<vtkIdType>(result.PinnedPoints));
   AddCount(fd, "UnresolvedFoldCount", static_cast<vtkIdType>(result.UnresolvedFolds));
   AddCount(fd, "FoldGuardRoundCount", static_cast<vtkIdType>(result.FoldGuardRounds));
+  AddCount(fd, "SampleBudgetMaximum", static_cast<vtkIdType>(result.SampleBudgetMaximum));
   AddCount(fd, "InputTriangleCount", inputTriangles);
   AddCount(fd, "OutputTriangleCount", inputTriangles - remeshedTriangles + newTriangles);
 
@@ -581,6 +632,7 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Tolerance: " << this->Tolerance << "\n";
   os << indent << "MinimumSamples: " << this->MinimumSamples << "\n";
   os << indent << "MaximumSamples: " << this->MaximumSamples << "\n";
+  os << indent << "NewPointBudget: " << this->NewPointBudget << "\n";
   os << indent << "PerturbVertices: " << (this->PerturbVertices ? "On" : "Off") << "\n";
   os << indent << "FoldPrevention: " << (this->FoldPrevention ? "On" : "Off") << "\n";
   os << indent << "FeatureLines: " << (this->FeatureLines ? "On" : "Off") << "\n";

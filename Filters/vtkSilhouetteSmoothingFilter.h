@@ -95,9 +95,10 @@ public:
   ///@{
   /**
    * Largest distance, in pixels, allowed between a sampled silhouette segment
-   * and its curve. Default 0.5 (the paper's range is 0.5 to 2).
+   * and its curve. Default 0.5 (the paper's range is 0.5 to 2). Values below
+   * 1e-3 are raised to it, with a warning; NaN is refused with a warning.
    */
-  vtkSetClampMacro(Tolerance, double, 1e-3, VTK_DOUBLE_MAX);
+  virtual void SetTolerance(double);
   vtkGetMacro(Tolerance, double);
   ///@}
 
@@ -105,12 +106,28 @@ public:
   /**
    * Fewest and most points sampled on one silhouette segment, counting both
    * ends. Defaults 2 (the chord, when the curve is within tolerance of it)
-   * and 256.
+   * and 256; values outside [2, 65536] are clamped with a warning. An update
+   * with MinimumSamples above MaximumSamples fails with an error. A frame
+   * samples fewer points when NewPointBudget requires it.
    */
-  vtkSetClampMacro(MinimumSamples, int, 2, 65536);
+  virtual void SetMinimumSamples(int);
   vtkGetMacro(MinimumSamples, int);
-  vtkSetClampMacro(MaximumSamples, int, 2, 65536);
+  virtual void SetMaximumSamples(int);
   vtkGetMacro(MaximumSamples, int);
+  ///@}
+
+  ///@{
+  /**
+   * The most points one frame's sampling may add, as a multiple of the
+   * input's points (and never fewer than 100,000). A frame whose segments
+   * could need more samples than that at MaximumSamples samples them with
+   * fewer (2 + budget / segments each), warns, and reports the lowered
+   * maximum in the field data's SampleBudgetMaximum; a frame within budget
+   * reports 0 there. So a large MinimumSamples on a large mesh degrades the
+   * sampling instead of exhausting memory. Default 8; clamped to [1, 1e6].
+   */
+  virtual void SetNewPointBudget(double);
+  vtkGetMacro(NewPointBudget, double);
   ///@}
 
   enum SamplingRules
@@ -181,7 +198,7 @@ public:
   vtkSetMacro(FeatureEdgeDetection, bool);
   vtkGetMacro(FeatureEdgeDetection, bool);
   vtkBooleanMacro(FeatureEdgeDetection, bool);
-  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  virtual void SetFeatureAngle(double); ///< degrees in [0, 180], clamped with a warning
   vtkGetMacro(FeatureAngle, double);
   ///@}
 
@@ -199,7 +216,7 @@ public:
   vtkSetMacro(WeldCoincidentPoints, bool);
   vtkGetMacro(WeldCoincidentPoints, bool);
   vtkBooleanMacro(WeldCoincidentPoints, bool);
-  vtkSetClampMacro(WeldTolerance, double, 0.0, VTK_DOUBLE_MAX);
+  virtual void SetWeldTolerance(double); ///< at least 0, raised with a warning
   vtkGetMacro(WeldTolerance, double);
   ///@}
 
@@ -265,7 +282,7 @@ public:
   vtkSetMacro(FlatCreaseDetection, bool);
   vtkGetMacro(FlatCreaseDetection, bool);
   vtkBooleanMacro(FlatCreaseDetection, bool);
-  vtkSetClampMacro(FlatCreaseAngle, double, 0.0, 180.0);
+  virtual void SetFlatCreaseAngle(double); ///< degrees in [0, 180], clamped with a warning
   vtkGetMacro(FlatCreaseAngle, double);
   ///@}
 
@@ -328,6 +345,7 @@ protected:
   double Tolerance = 0.5;
   int MinimumSamples = 2;
   int MaximumSamples = 256;
+  double NewPointBudget = 8.0;
   int SamplingRule = SECOND_DIFFERENCE;
   bool PerturbVertices = true;
   bool FoldPrevention = true;

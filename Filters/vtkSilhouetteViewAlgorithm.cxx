@@ -111,6 +111,12 @@ vtkSilhouetteViewAlgorithm::ViewStatus vtkSilhouetteViewAlgorithm::RequestView(
   return VIEW_READY;
 }
 
+vtkTypeBool vtkSilhouetteViewAlgorithm::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
+{
+  return vtkSilhouetteFilterSupport::GuardRequest(this, outputs,
+    [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });
+}
 void vtkSilhouetteViewAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -60,6 +60,13 @@ public:
   vtkTypeMacro(vtkSilhouetteViewAlgorithm, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * The superclass's, except that no exception leaves it: std::bad_alloc or
+   * any other becomes an error, emptied outputs and a failed request.
+   */
+  vtkTypeBool ProcessRequest(
+    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
+
   ///@{
   /**
    * The camera that defines the view. Required unless a renderer is set.

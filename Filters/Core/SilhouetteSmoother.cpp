@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <iterator>
 #include <tuple>
@@ -422,6 +423,7 @@ private:
     this->Concave.clear();
     this->Result = SmoothingResult();
     this->computeSilhouettePoints();
+    this->applySampleBudget();
     this->countFeatureSamples();
     std::vector<std::vector<Id>> segments;
     segments.reserve(this->Silhouette.size());
@@ -452,6 +454,7 @@ private:
       this->Result.ReplacementOffsets.push_back(this->Result.Replacements.size());
     }
     this->Result.SilhouetteTriangleCount = this->Silhouette.size();
+    this->Result.SampleBudgetMaximum = this->SampleCapBit ? this->SampleCap : 0;
     this->Result.Polylines = chainSegments(segments);
     this->Result.ConcaveSegmentCount = this->Concave.size();
     if (this->Parameters.PerturbConcaveSilhouettes && !this->Concave.empty())
@@ -799,6 +802,39 @@ private:
       });
   }
 
+  // SmoothingParameters::MaximumSampledPoints, shared evenly by the frame's
+  // silhouette triangles and feature edges: the most samples a segment may
+  // have in this frame, 0 for no cap.
+  void applySampleBudget()
+  {
+    this->SampleCap = 0;
+    this->SampleCapBit = false;
+    const std::size_t budget = this->Parameters.MaximumSampledPoints;
+    if (budget == 0)
+    {
+      return;
+    }
+    const std::size_t segments =
+      std::max<std::size_t>(1, this->Silhouette.size() + this->Mesh.features().edges().size());
+    const std::size_t perSegment = 2 + budget / segments;
+    if (perSegment < static_cast<std::size_t>(this->Parameters.Sampling.MaximumSamples))
+    {
+      this->SampleCap = static_cast<int>(perSegment);
+    }
+  }
+
+  // silhouetteSampleCount, within the frame's cap; notes when the cap bites.
+  int sampleCount(const HermiteCurve& segment, const glm::dvec3& n0, const glm::dvec3& n1)
+  {
+    const int wanted = silhouetteSampleCount(segment, n0, n1, this->View, this->Sampling);
+    if (this->SampleCap > 0 && wanted > this->SampleCap)
+    {
+      this->SampleCapBit.store(true, std::memory_order_relaxed);
+      return this->SampleCap;
+    }
+    return wanted;
+  }
+
   // Points per smoothed feature segment in this view (both ends counted), by
   // the same rule as silhouette segments. Both sides of a crease use the
   // segment's one count, so their samples coincide. Straight ones keep 2.
@@ -817,8 +853,8 @@ private:
         {
           const HermiteCurve& curve = features.curve(static_cast<Id>(f));
           // Eq. 8 wants the arc's turning: the end tangents give it here.
-          this->FeatureSampleCounts[f] = silhouetteSampleCount(
-            curve, safeNormalize(curve.T0), safeNormalize(curve.T1), this->View, this->Sampling);
+          this->FeatureSampleCounts[f] =
+            this->sampleCount(curve, safeNormalize(curve.T0), safeNormalize(curve.T1));
         }
       }
     });
@@ -876,9 +912,7 @@ private:
     const glm::dvec3 nQ = this->normalOf(q.Point);
     const HermiteCurve segment =
       makeCircleApproximatingCurve(this->positionOf(p.Point), nP, this->positionOf(q.Point), nQ);
-    const int samples = this->levelOf(t) >= ChordLevel
-      ? 2
-      : silhouetteSampleCount(segment, nP, nQ, this->View, this->Sampling);
+    const int samples = this->levelOf(t) >= ChordLevel ? 2 : this->sampleCount(segment, nP, nQ);
     if (isConcaveSegment(segment.P0, nP, segment.P1, nQ))
     {
       const glm::dvec3 midNormal = safeNormalize(nP + nQ);
@@ -1196,6 +1230,8 @@ private:
   const ViewGeometry& View;
   const SmoothingParameters& Parameters;
   const SamplingParameters& Sampling;
+  int SampleCap = 0; // applySampleBudget
+  std::atomic<bool> SampleCapBit{ false };
   const ParallelFor& For;
   std::vector<double> G;
   std::vector<Id> Silhouette;

@@ -186,6 +186,16 @@ struct SmoothingParameters
   /// those of checking everything every round (core.SilhouetteSmoother
   /// compares both), at a fraction of the cost. False checks everything.
   bool IncrementalFoldChecks = true;
+  /// The most points a frame's sampling may add, 0 for no bound. A frame
+  /// caps each segment's samples at 2 + MaximumSampledPoints / (silhouette
+  /// triangles + feature edges) when that is below MaximumSamples (the cap
+  /// wins over MinimumSamples). A silhouette triangle holds one silhouette
+  /// segment and a feature edge one feature segment, so the frame's samples
+  /// stay within about the budget however its segments share it; a segment
+  /// that wants fewer samples than the cap is sampled as without it. The cap
+  /// depends only on the frame's counts, so the output stays the same for
+  /// any thread count.
+  std::size_t MaximumSampledPoints = 0;
 };
 
 /// A point the pass adds. Its other attributes (texture coordinates, scalars)
@@ -240,6 +250,9 @@ struct SmoothingResult
   std::size_t UnresolvedFolds = 0;
   /// How many times the frame was re-meshed because of folds.
   std::size_t FoldGuardRounds = 0;
+  /// The cap of MaximumSampledPoints when it lowered a segment's samples,
+  /// else 0.
+  int SampleBudgetMaximum = 0;
 
   std::size_t newTriangleCount() const { return this->Replacements.size(); }
 };

@@ -10,8 +10,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 #include <random>
+#include <thread>
 #include <utility>
 
 using namespace silsmooth;
@@ -475,4 +477,76 @@ TEST(SilhouetteSmoother, FoldGuardLeavesNoFoldAndIncrementalChecksChangeNothing)
   EXPECT_GT(unguardedFolds, 0u);
   EXPECT_GT(fallbacks, 0u);
   EXPECT_GT(extraRounds, 40u) << "fallbacks " << fallbacks << ", folds " << unguardedFolds;
+}
+
+namespace
+{
+
+// Splits [0, count) over `threads` std::threads, the way a thread pool would
+// (ThreadSanitizer sees these threads start and join).
+ParallelFor threadedFor(unsigned threads)
+{
+  return [threads](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
+    std::vector<std::thread> pool;
+    const std::size_t chunk = (count + threads - 1) / threads;
+    for (std::size_t begin = 0; begin < count; begin += chunk)
+    {
+      pool.emplace_back(body, begin, std::min(count, begin + chunk));
+    }
+    for (std::thread& t : pool)
+    {
+      t.join();
+    }
+  };
+}
+
+} // namespace
+
+TEST(SilhouetteSmoother, ThreadsGiveTheSerialResult)
+{
+  const PreparedMesh mesh = noisySphere(50.0);
+  SmoothingParameters capped;
+  capped.MaximumSampledPoints = 40; // the sample cap bites, from every thread
+  capped.Sampling.TolerancePixels = 0.01;
+  for (const SmoothingParameters& parameters : { SmoothingParameters{}, capped })
+  {
+    for (int v = 0; v < 6; ++v)
+    {
+      const ViewGeometry view =
+        coretest::perspectiveFrom(glm::dvec3(4.0 * std::cos(v), 1.5, 4.0 * std::sin(v)));
+      const SmoothingResult serial = smoothSilhouettes(mesh, view, parameters);
+      const SmoothingResult threaded = smoothSilhouettes(mesh, view, parameters, threadedFor(4));
+      EXPECT_TRUE(sameResult(serial, threaded)) << "view " << v;
+      EXPECT_EQ(serial.SampleBudgetMaximum, threaded.SampleBudgetMaximum) << "view " << v;
+    }
+  }
+}
+
+TEST(SilhouetteSmoother, SampleBudgetCapsTheFrameAndChangesNothingWhereItDoesNotBite)
+{
+  const PreparedMesh mesh = noisySphere(10.0);
+  const ViewGeometry view = coretest::perspectiveFrom({ 2.5, 1.0, 0.3 });
+  SmoothingParameters dense;
+  dense.Sampling.MinimumSamples = 64;
+  dense.Sampling.MaximumSamples = 64;
+  const SmoothingResult unbounded = smoothSilhouettes(mesh, view, dense);
+  ASSERT_GT(unbounded.NewPoints.size(), 500u);
+
+  // A budget the frame stays within changes nothing.
+  SmoothingParameters roomy = dense;
+  roomy.MaximumSampledPoints = 100000;
+  const SmoothingResult within = smoothSilhouettes(mesh, view, roomy);
+  EXPECT_TRUE(sameResult(unbounded, within));
+  EXPECT_EQ(within.SampleBudgetMaximum, 0);
+
+  // A tight one caps every segment and bounds the frame's samples.
+  SmoothingParameters tight = dense;
+  tight.MaximumSampledPoints = 200;
+  const SmoothingResult capped = smoothSilhouettes(mesh, view, tight);
+  const std::size_t segments = capped.SilhouetteTriangleCount;
+  EXPECT_EQ(capped.SampleBudgetMaximum, static_cast<int>(2 + 200 / segments));
+  // Interior samples plus the silhouette points on edges (at most two per
+  // silhouette triangle, shared with neighbours).
+  EXPECT_LE(capped.NewPoints.size(), 200u + 2 * segments);
+  EXPECT_LT(capped.NewPoints.size(), unbounded.NewPoints.size() / 2);
 }

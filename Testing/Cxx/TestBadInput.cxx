@@ -4,6 +4,7 @@
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
@@ -53,6 +54,10 @@ struct Run
     this->Result = this->Filter->GetExecutive()->Update();
   }
   std::string Error() { return this->Errors->GetError() ? this->Errors->GetErrorMessage() : ""; }
+  std::string Warning()
+  {
+    return this->Errors->GetWarning() ? this->Errors->GetWarningMessage() : "";
+  }
   bool Failed() const { return this->Result == 0; }
 };
 
@@ -356,6 +361,136 @@ bool ExtremeScales()
   return true;
 }
 
+// Issue 14, item 3: the filter's own input hygiene.
+
+bool NaNAndOutOfRangeSettings()
+{
+  vtkNew<vtkSilhouetteSmoothingFilter> filter;
+  vtkNew<vtkTest::ErrorObserver> warnings;
+  filter->AddObserver(vtkCommand::WarningEvent, warnings);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  filter->SetTolerance(0.75);
+  filter->SetTolerance(nan);
+  CHECK(filter->GetTolerance() == 0.75, "a NaN tolerance is refused, the setting kept");
+  CHECK(warnings->GetWarning() &&
+      std::string(warnings->GetWarningMessage()).find("NaN") != std::string::npos,
+    "with a warning that says NaN");
+  filter->SetFeatureAngle(nan);
+  filter->SetWeldTolerance(nan);
+  filter->SetFlatCreaseAngle(nan);
+  filter->SetNewPointBudget(nan);
+  CHECK(std::isfinite(filter->GetFeatureAngle()) && std::isfinite(filter->GetWeldTolerance()) &&
+      std::isfinite(filter->GetFlatCreaseAngle()) && std::isfinite(filter->GetNewPointBudget()),
+    "no setting of the filter takes NaN");
+  warnings->Clear();
+  filter->SetFeatureAngle(400.0);
+  CHECK(filter->GetFeatureAngle() == 180.0 && warnings->GetWarning(),
+    "an angle past 180 degrees is clamped, with a warning");
+  std::printf("NaN settings refused, out-of-range ones clamped, each with a warning\n");
+  return true;
+}
+
+bool MinimumAboveMaximumSamples()
+{
+  Run run(Sphere(), Camera(0, 0, 5), [](vtkSilhouetteSmoothingFilter* f) {
+    f->SetMinimumSamples(9);
+    f->SetMaximumSamples(4);
+  });
+  CHECK(run.Failed(), "MinimumSamples above MaximumSamples fails the request");
+  CHECK(run.Error().find("MinimumSamples (9) is more than MaximumSamples (4)") != std::string::npos,
+    "the error gives both");
+  Run equal(Sphere(), Camera(0, 0, 5), [](vtkSilhouetteSmoothingFilter* f) {
+    f->SetMinimumSamples(4);
+    f->SetMaximumSamples(4);
+  });
+  CHECK(!equal.Failed(), "equal ones are fine");
+  std::printf("MinimumSamples > MaximumSamples: \"%s\"\n", run.Error().c_str());
+  return true;
+}
+
+bool ArraysOfTheWrongLength()
+{
+  for (const bool pointData : { true, false })
+  {
+    auto mesh = Sphere();
+    vtkNew<vtkDoubleArray> values;
+    values->SetName("Temperature");
+    values->SetNumberOfTuples(
+      (pointData ? mesh->GetNumberOfPoints() : mesh->GetNumberOfCells()) - 1);
+    values->Fill(1.0);
+    if (pointData)
+    {
+      mesh->GetPointData()->AddArray(values);
+    }
+    else
+    {
+      mesh->GetCellData()->AddArray(values);
+    }
+    Run run(mesh, Camera(0, 0, 5));
+    CHECK(run.Failed(), "an array one tuple short fails the request");
+    CHECK(run.Error().find("'Temperature' has") != std::string::npos, "the error names it");
+    std::printf(
+      "%s array one tuple short: \"%s\"\n", pointData ? "point" : "cell", run.Error().c_str());
+  }
+  return true;
+}
+
+bool CellsWithTooFewPoints()
+{
+  auto mesh = Sphere();
+  vtkNew<vtkCellArray> verts;
+  verts->InsertNextCell(0); // no point
+  verts->InsertNextCell(1); // one: kept
+  verts->InsertCellPoint(3);
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell(1); // one point
+  lines->InsertCellPoint(0);
+  mesh->SetVerts(verts);
+  mesh->SetLines(lines);
+  Run run(mesh, Camera(0, 0, 5));
+  CHECK(!run.Failed(), "the request succeeds");
+  CHECK(run.Warning().find("dropped") != std::string::npos, "with a warning");
+  vtkPolyData* out = run.Filter->GetOutput();
+  CHECK(out->GetNumberOfVerts() == 1 && out->GetNumberOfLines() == 0,
+    "the empty vertex cell and the one-point line are gone, the good vertex kept");
+  vtkDataArray* original = out->GetCellData()->GetArray("OriginalCellId");
+  CHECK(original && original->GetTuple1(0) == 1, "the kept vertex keeps its input cell id");
+  std::printf("cells with too few points: dropped, \"%s\"\n", run.Warning().c_str());
+  return true;
+}
+
+bool NewPointBudget()
+{
+  // 1,280 triangles; 4,096 samples on each of about 50 silhouette segments
+  // would add about 200,000 points, twice the budget's floor of 100,000.
+  const auto newPoints = [](Run& run) {
+    return run.Filter->GetOutput()->GetFieldData()->GetArray("NewPointCount")->GetTuple1(0);
+  };
+  const auto lowered = [](Run& run) {
+    return run.Filter->GetOutput()->GetFieldData()->GetArray("SampleBudgetMaximum")->GetTuple1(0);
+  };
+  const auto configure = [](double budget) {
+    return [budget](vtkSilhouetteSmoothingFilter* f) {
+      f->SetMinimumSamples(4096);
+      f->SetMaximumSamples(4096);
+      f->FoldPreventionOff(); // the fans of thousands of slivers are slow to check
+      f->SetNewPointBudget(budget);
+    };
+  };
+  Run bounded(Sphere(3), Camera(0, 0, 5), configure(8.0));
+  CHECK(!bounded.Failed(), "the request succeeds");
+  CHECK(lowered(bounded) > 2 && lowered(bounded) < 4096, "the frame lowers its samples");
+  CHECK(newPoints(bounded) <= 1.05e5, "and stays within about the budget");
+  CHECK(bounded.Warning().find("NewPointBudget") != std::string::npos, "with a warning");
+  // The deliberately wrong variant: a budget too large to bite.
+  Run unbounded(Sphere(3), Camera(0, 0, 5), configure(1e6));
+  CHECK(lowered(unbounded) == 0 && newPoints(unbounded) > 1.5e5,
+    "without the bound the same frame adds more than the budget");
+  std::printf("new point budget: %.0f new points (samples lowered to %.0f); %.0f unbounded\n",
+    newPoints(bounded), lowered(bounded), newPoints(unbounded));
+  return true;
+}
+
 } // namespace
 
 int TestBadInput(int, char*[])
@@ -371,5 +506,10 @@ int TestBadInput(int, char*[])
   ok = ExtremeScales() && ok;
   ok = DegenerateViews() && ok;
   ok = BadLineIds() && ok;
+  ok = NaNAndOutOfRangeSettings() && ok;
+  ok = MinimumAboveMaximumSamples() && ok;
+  ok = ArraysOfTheWrongLength() && ok;
+  ok = CellsWithTooFewPoints() && ok;
+  ok = NewPointBudget() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -173,7 +173,7 @@ vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::str
   if (!removed.empty())
   {
     errors.Record(VtkErrorLog::Kind::Warning, true,
-      (Quoted(path) + ": left out " + removed + ", which hold nothing to draw").c_str());
+      (Quoted(path) + ": left out " + removed + " (they draw nothing)").c_str());
   }
   return mesh;
 }

@@ -183,9 +183,12 @@ std::string RemoveCellsWithTooFewPoints(vtkPolyData* mesh)
   {
     if (removed[k] > 0)
     {
+      const vtkIdType least = Kinds[k].LeastPoints;
       what += (what.empty() ? "" : ", ") + std::to_string(removed[k]) + " " + Kinds[k].Name +
-        (removed[k] == 1 ? "" : "s") + " with fewer than " + std::to_string(Kinds[k].LeastPoints) +
-        (Kinds[k].LeastPoints == 1 ? " point" : " points");
+        (removed[k] == 1 ? "" : "s") +
+        (least == 1      ? " without a point"
+            : least == 2 ? " with one point or none"
+                         : " with fewer than " + std::to_string(least) + " points");
     }
   }
   return what;

@@ -131,8 +131,8 @@ std::string MeshAsVtp(vtkPolyData* mesh)
   return writer->GetOutputString();
 }
 
-[[noreturn]] void RunChild(
-  int fd, const std::function<vtkSmartPointer<vtkPolyData>()>& read, const ReadLimits& limits)
+[[noreturn]] void RunChild(int fd, const std::string& quotedFile,
+  const std::function<vtkSmartPointer<vtkPolyData>()>& read, const ReadLimits& limits)
 {
   ConfineChild(limits);
   VtkErrorLog& log = VtkErrorLog::Instance();
@@ -153,12 +153,12 @@ std::string MeshAsVtp(vtkPolyData* mesh)
   catch (const std::bad_alloc&)
   {
     SendFrame(fd, Frame::Error,
-      "reading it needed more than the " + std::to_string(limits.MemoryBytes / MiB) +
-        " MiB of memory allowed for a file of its size");
+      "cannot read " + quotedFile + ": reading it needed more than the " +
+        std::to_string(limits.MemoryBytes / MiB) + " MiB of memory allowed for a file of its size");
   }
   catch (const std::exception& error)
   {
-    SendFrame(fd, Frame::Error, std::string("the reader failed: ") + error.what());
+    SendFrame(fd, Frame::Error, "cannot read " + quotedFile + ": " + error.what());
   }
   ::close(fd);
   ::_exit(0);
@@ -331,7 +331,7 @@ vtkSmartPointer<vtkPolyData> ReadInSandbox(const std::string& quotedFile,
   if (child == 0)
   {
     ::close(fds[0]);
-    RunChild(fds[1], read, limits);
+    RunChild(fds[1], quotedFile, read, limits);
   }
   ::close(fds[1]);
   const ChildAnswer answer = Collect(fds[0], child, limits);

@@ -11,6 +11,13 @@
 #   EXPECT_PNG       optional PNG file the run must write (removed first)
 #   EXPECT_PNG_SIZE  its size, WxH
 #   EXPECT_PNG_BYTES the least file size in bytes, so a blank image fails
+#   KEEP_FILE        optional file that holds a line of ours before the run
+#                    and must hold it unchanged after (a failed write must
+#                    not leave half a file in place of the user's)
+#   MEASURE          optional MeasureRun program: the run is measured, and a
+#                    failing run must take under MAX_SECONDS (default 10) and
+#                    MAX_MIB of memory (default 1024), its reading process
+#                    included
 cmake_minimum_required(VERSION 3.16)
 
 if (NOT DEFINED EXPECT_EXIT)
@@ -21,8 +28,20 @@ if (EXPECT_PNG)
   file(REMOVE "${EXPECT_PNG}")
 endif ()
 
+set(kept_text "the user's file, which a failed write must leave as it was\n")
+if (KEEP_FILE)
+  file(WRITE "${KEEP_FILE}" "${kept_text}")
+endif ()
+
+set(measure_command)
+if (MEASURE)
+  string(MD5 run_key "${PROGRAM}|${ARGS}|${WRAPPER}")
+  set(measure_report "${CMAKE_CURRENT_BINARY_DIR}/measure-${run_key}.txt")
+  file(REMOVE "${measure_report}")
+  set(measure_command "${MEASURE}" "${measure_report}")
+endif ()
 execute_process(
-  COMMAND ${WRAPPER} "${PROGRAM}" ${arguments}
+  COMMAND ${measure_command} ${WRAPPER} "${PROGRAM}" ${arguments}
   RESULT_VARIABLE exit_status
   OUTPUT_VARIABLE out
   ERROR_VARIABLE err
@@ -32,6 +51,22 @@ set(report "command: ${PROGRAM} ${arguments}\nexit status: ${exit_status}\nstdou
 # Crashes show up here as "Segmentation fault" and the like, never as EXPECT_EXIT.
 if (NOT exit_status STREQUAL "${EXPECT_EXIT}")
   message(FATAL_ERROR "expected exit status ${EXPECT_EXIT}\n${report}")
+endif ()
+
+if (MEASURE AND NOT EXPECT_EXIT EQUAL 0)
+  if (NOT DEFINED MAX_SECONDS)
+    set(MAX_SECONDS 10)
+  endif ()
+  if (NOT DEFINED MAX_MIB)
+    set(MAX_MIB 1024)
+  endif ()
+  file(STRINGS "${measure_report}" measured)
+  string(REGEX REPLACE ".*seconds=([0-9.]+).*" "\\1" seconds "${measured}")
+  string(REGEX REPLACE ".*max_rss_mib=([0-9.]+).*" "\\1" mib "${measured}")
+  message(STATUS "measured: ${seconds} s, ${mib} MiB")
+  if (seconds GREATER MAX_SECONDS OR mib GREATER MAX_MIB)
+    message(FATAL_ERROR "the failure took ${seconds} s and ${mib} MiB; the limits are ${MAX_SECONDS} s and ${MAX_MIB} MiB\n${report}")
+  endif ()
 endif ()
 
 if (NOT EXPECT_EXIT EQUAL 0)
@@ -50,6 +85,21 @@ if (NOT EXPECT_EXIT EQUAL 0)
   endif ()
 elseif (EXPECT_QUIET AND NOT err STREQUAL "")
   message(FATAL_ERROR "a success must print nothing on stderr\n${report}")
+elseif (DEFINED EXPECT_STDERR AND NOT err MATCHES "${EXPECT_STDERR}")
+  message(FATAL_ERROR "stderr does not match '${EXPECT_STDERR}'\n${report}")
+endif ()
+
+if (KEEP_FILE)
+  file(READ "${KEEP_FILE}" kept)
+  if (NOT kept STREQUAL kept_text)
+    message(FATAL_ERROR "${KEEP_FILE} changed\n${report}")
+  endif ()
+  get_filename_component(kept_dir "${KEEP_FILE}" DIRECTORY)
+  get_filename_component(kept_name "${KEEP_FILE}" NAME)
+  file(GLOB leftovers "${kept_dir}/.${kept_name}.*")
+  if (leftovers)
+    message(FATAL_ERROR "the failed write left ${leftovers}\n${report}")
+  endif ()
 endif ()
 
 if (DEFINED EXPECT_STDOUT AND NOT out MATCHES "${EXPECT_STDOUT}")

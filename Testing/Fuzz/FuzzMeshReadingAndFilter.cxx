@@ -3,7 +3,9 @@
 // Input layout: byte 0 picks the format (.ply .obj .stl .vtp .vtk), the next
 // ParameterBytes bytes pick the camera and the filter's settings, and the rest
 // is the file. The file goes through cli::ReadMesh, the code path of the
-// `silhouette` program (its PLY, OBJ, STL and legacy VTK pre-checks included);
+// `silhouette` program: its pre-checks, VTK's reader in the reading process
+// (a crash there is the program's clear error, as it must be) and the
+// validation after it. A custom mutator adds mutations that know the formats;
 // whatever reads is smoothed by vtkSilhouetteSmoothingFilter for a camera
 // made from the parameter bytes: around the mesh or anywhere (eye inside or
 // outside, on the focal point, any view-up), parallel or perspective, any
@@ -28,14 +30,19 @@
 #include "vtkSilhouetteSmoothingFilter.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
+#include <iterator>
+#include <random>
 #include <string>
 #include <unistd.h>
+#include <vector>
 
 namespace
 {
@@ -205,7 +212,265 @@ std::string InputPath(std::size_t format)
   return stem + Extensions[format];
 }
 
+// ---------------------------------------------- structure-aware mutations
+// libFuzzer's byte-level mutations rarely produce what trips the readers:
+// a reordered PLY header, a blank body line, an extra list property, the
+// other quoting style, an extreme count or offset, another data mode, cut
+// appended data. One input in three gets one of these instead (issue 14).
+
+using Random = std::minstd_rand;
+
+std::size_t Pick(Random& random, std::size_t n)
+{
+  return n == 0 ? 0 : static_cast<std::size_t>(random() % n);
+}
+
+std::vector<std::string> SplitLines(const std::string& text)
+{
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start <= text.size())
+  {
+    const std::size_t end = text.find('\n', start);
+    lines.push_back(text.substr(start, end == std::string::npos ? std::string::npos : end - start));
+    if (end == std::string::npos)
+    {
+      break;
+    }
+    start = end + 1;
+  }
+  return lines;
+}
+
+std::string JoinLines(const std::vector<std::string>& lines)
+{
+  std::string text;
+  for (std::size_t i = 0; i < lines.size(); ++i)
+  {
+    text += lines[i];
+    if (i + 1 < lines.size())
+    {
+      text += '\n';
+    }
+  }
+  return text;
+}
+
+const char* const ExtremeNumbers[] = { "-1", "0", "1", "2147483647", "2147483648", "3000000000",
+  "4294967295", "2000000000", "18446744073709551615", "1e2", "0x10", "+", "nan", "1e39" };
+
+// Replaces the number after one occurrence of `key` by an extreme one.
+void ReplaceNumberAfter(std::string& text, const std::string& key, Random& random)
+{
+  std::vector<std::size_t> places;
+  for (std::size_t at = text.find(key); at != std::string::npos; at = text.find(key, at + 1))
+  {
+    places.push_back(at + key.size());
+  }
+  if (places.empty())
+  {
+    return;
+  }
+  std::size_t begin = places[Pick(random, places.size())];
+  while (begin < text.size() && (text[begin] == ' ' || text[begin] == '"' || text[begin] == '\''))
+  {
+    ++begin;
+  }
+  std::size_t end = begin;
+  while (end < text.size() &&
+    (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '-' || text[end] == '+' ||
+      text[end] == '.'))
+  {
+    ++end;
+  }
+  text.replace(begin, end - begin, ExtremeNumbers[Pick(random, std::size(ExtremeNumbers))]);
+}
+
+void MutatePly(std::string& file, Random& random)
+{
+  std::vector<std::string> lines = SplitLines(file);
+  std::size_t header = 0;
+  while (header < lines.size() && lines[header].rfind("end_header", 0) != 0)
+  {
+    ++header;
+  }
+  std::vector<std::size_t> elements;
+  for (std::size_t i = 0; i < header; ++i)
+  {
+    if (lines[i].rfind("element ", 0) == 0)
+    {
+      elements.push_back(i);
+    }
+  }
+  switch (Pick(random, 4))
+  {
+    case 0: // swap the first two elements' header blocks (not their data)
+      if (elements.size() >= 2)
+      {
+        const std::vector<std::string> first(
+          lines.begin() + static_cast<std::ptrdiff_t>(elements[0]),
+          lines.begin() + static_cast<std::ptrdiff_t>(elements[1]));
+        const std::size_t secondEnd = elements.size() > 2 ? elements[2] : header;
+        std::vector<std::string> swapped(lines.begin() + static_cast<std::ptrdiff_t>(elements[1]),
+          lines.begin() + static_cast<std::ptrdiff_t>(secondEnd));
+        swapped.insert(swapped.end(), first.begin(), first.end());
+        std::copy(
+          swapped.begin(), swapped.end(), lines.begin() + static_cast<std::ptrdiff_t>(elements[0]));
+      }
+      break;
+    case 1: // a blank line somewhere in the body
+      if (header + 1 < lines.size())
+      {
+        lines.insert(lines.begin() +
+            static_cast<std::ptrdiff_t>(header + 1 + Pick(random, lines.size() - header - 1)),
+          Pick(random, 2) ? "" : " \r");
+      }
+      break;
+    case 2: // an extra list property on some element
+      if (!elements.empty())
+      {
+        lines.insert(
+          lines.begin() + static_cast<std::ptrdiff_t>(elements[Pick(random, elements.size())] + 1),
+          Pick(random, 2) ? "property list uchar float texcoord" : "property list int int extra");
+      }
+      break;
+    default: // an extreme count or index
+      file = JoinLines(lines);
+      ReplaceNumberAfter(file, Pick(random, 2) ? "element vertex" : "element face", random);
+      return;
+  }
+  file = JoinLines(lines);
+}
+
+void MutateVtp(std::string& file, Random& random)
+{
+  switch (Pick(random, 6))
+  {
+    case 0: // the other quoting style, throughout
+      std::replace(file.begin(), file.end(), '"', '\'');
+      break;
+    case 1:
+    {
+      const char* const keys[] = { "NumberOfPoints=", "NumberOfComponents=", "NumberOfTuples=",
+        "NumberOfPolys=", "NumberOfVerts=", "offset=", "RangeMax=" };
+      ReplaceNumberAfter(file, keys[Pick(random, std::size(keys))], random);
+      break;
+    }
+    case 2: // another data mode for one array
+    {
+      const std::size_t at = file.find("format=", Pick(random, file.size()));
+      const char* const modes[] = { "\"ascii\"", "\"binary\"", "\"appended\"" };
+      if (at != std::string::npos && at + 8 < file.size())
+      {
+        const std::size_t end = file.find_first_of("\"'", at + 8);
+        if (end != std::string::npos)
+        {
+          file.replace(at + 7, end + 1 - (at + 7), modes[Pick(random, 3)]);
+        }
+      }
+      break;
+    }
+    case 3: // the other header type, or compression added or removed
+      if (file.find("UInt32") != std::string::npos && Pick(random, 2))
+      {
+        file.replace(file.find("UInt32"), 6, "UInt64");
+      }
+      else if (file.find(" compressor=") == std::string::npos)
+      {
+        const std::size_t at = file.find("<VTKFile ");
+        if (at != std::string::npos)
+        {
+          file.insert(at + 9, "compressor=\"vtkZLibDataCompressor\" ");
+        }
+      }
+      break;
+    case 4: // appended data cut short by a few bytes
+    {
+      const std::size_t end = file.rfind("</AppendedData>");
+      const std::size_t cut = 1 + Pick(random, 16);
+      if (end != std::string::npos && end > cut + 1)
+      {
+        file.erase(end - 1 - cut, cut);
+      }
+      break;
+    }
+    default: // one array's element repeated
+    {
+      const std::size_t begin = file.find("<DataArray", Pick(random, file.size()));
+      const std::size_t end = begin == std::string::npos ? begin : file.find("</DataArray>", begin);
+      if (end != std::string::npos)
+      {
+        file.insert(begin, file.substr(begin, end + 12 - begin));
+      }
+      break;
+    }
+  }
+}
+
+void MutateLegacyOrObj(std::string& file, Random& random, bool legacy)
+{
+  if (legacy)
+  {
+    const char* const keys[] = { "POINTS ", "POLYGONS ", "VERTICES ", "LINES ", "POINT_DATA ",
+      "TRIANGLE_STRIPS ", "\n3 " };
+    ReplaceNumberAfter(file, keys[Pick(random, std::size(keys))], random);
+    return;
+  }
+  const char* const keys[] = { "v ", "f ", "vt ", "vn ", "/" };
+  ReplaceNumberAfter(file, keys[Pick(random, std::size(keys))], random);
+}
+
+void MutateStl(std::string& file, Random& random)
+{
+  if (file.size() >= 84 && file.rfind("solid", 0) != 0)
+  {
+    const std::uint32_t counts[] = { 0, 1, 0x7fffffffu, 0xffffffffu, 100000000u };
+    const std::uint32_t count = counts[Pick(random, std::size(counts))];
+    std::memcpy(&file[80], &count, sizeof(count));
+    return;
+  }
+  ReplaceNumberAfter(file, Pick(random, 2) ? "vertex " : "normal ", random);
+}
+
 } // namespace
+
+extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, std::size_t maxSize);
+
+extern "C" std::size_t LLVMFuzzerCustomMutator(
+  std::uint8_t* data, std::size_t size, std::size_t maxSize, unsigned int seed)
+{
+  Random random(seed);
+  const std::size_t prefix = 1 + ParameterBytes;
+  if (size <= prefix || Pick(random, 3) != 0)
+  {
+    return LLVMFuzzerMutate(data, size, maxSize);
+  }
+  std::string file(reinterpret_cast<const char*>(data + prefix), size - prefix);
+  switch (data[0] % FormatCount)
+  {
+    case 0:
+      MutatePly(file, random);
+      break;
+    case 1:
+      MutateLegacyOrObj(file, random, false);
+      break;
+    case 2:
+      MutateStl(file, random);
+      break;
+    case 3:
+      MutateVtp(file, random);
+      break;
+    default:
+      MutateLegacyOrObj(file, random, true);
+      break;
+  }
+  if (prefix + file.size() > maxSize)
+  {
+    return LLVMFuzzerMutate(data, size, maxSize);
+  }
+  std::memcpy(data + prefix, file.data(), file.size());
+  return prefix + file.size();
+}
 
 extern "C" int LLVMFuzzerInitialize(int*, char***)
 {

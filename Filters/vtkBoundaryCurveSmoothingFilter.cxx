@@ -20,7 +20,10 @@
 
 vtkStandardNewMacro(vtkBoundaryCurveSmoothingFilter);
 
-namespace support = vtkSilhouetteFilterSupport;
+vtkSilhouetteCheckedSetterMacro(
+  vtkBoundaryCurveSmoothingFilter, Tolerance, double, 1e-3, VTK_DOUBLE_MAX)
+
+  namespace support = vtkSilhouetteFilterSupport;
 
 struct vtkBoundaryCurveSmoothingFilter::Internals
 {

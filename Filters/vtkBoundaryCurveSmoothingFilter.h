@@ -57,7 +57,7 @@ public:
    */
   vtkSetClampMacro(SamplesPerCurve, int, 0, 65536);
   vtkGetMacro(SamplesPerCurve, int);
-  vtkSetClampMacro(Tolerance, double, 1e-3, VTK_DOUBLE_MAX);
+  virtual void SetTolerance(double); ///< clamped to [1e-3, inf] with a warning; NaN refused
   vtkGetMacro(Tolerance, double);
   ///@}
 

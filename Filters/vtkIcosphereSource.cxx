@@ -1,5 +1,7 @@
 #include "vtkIcosphereSource.h"
 
+#include "vtkSilhouetteFilterSupport.h"
+
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkInformation.h"
@@ -17,7 +19,9 @@
 
 vtkStandardNewMacro(vtkIcosphereSource);
 
-vtkIcosphereSource::vtkIcosphereSource()
+vtkSilhouetteCheckedSetterMacro(vtkIcosphereSource, Radius, double, 0.0, VTK_DOUBLE_MAX)
+
+  vtkIcosphereSource::vtkIcosphereSource()
 {
   this->SetNumberOfInputPorts(0);
 }

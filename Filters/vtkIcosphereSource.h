@@ -35,7 +35,7 @@ public:
   /**
    * Sphere radius (default 1) and centre (default the origin).
    */
-  vtkSetClampMacro(Radius, double, 0.0, VTK_DOUBLE_MAX);
+  virtual void SetRadius(double); ///< clamped to [0.0, inf] with a warning; NaN refused
   vtkGetMacro(Radius, double);
   vtkSetVector3Macro(Center, double);
   vtkGetVectorMacro(Center, double, 3);

@@ -122,7 +122,7 @@ public:
    * triangles) exceeds this angle in degrees become infinitely sharp creases.
    * Default 0: off. Clamped to 0..180.
    */
-  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  virtual void SetFeatureAngle(double); ///< clamped to [0.0, 180.0] with a warning; NaN refused
   vtkGetMacro(FeatureAngle, double);
   ///@}
 

@@ -14,7 +14,7 @@ vtkStandardNewMacro(vtkPNTriangleFilter);
 vtkTypeBool vtkPNTriangleFilter::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
 {
-  return vtkSilhouetteFilterSupport::GuardRequest(this, outputs,
+  return vtkSilhouetteFilterSupport::GuardRequest(this, request, inputs, outputs,
     [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });
 }
 

@@ -59,7 +59,7 @@ public:
    * planes' patch: 0 is the flat tessellation, 1 the full projection. Default
    * 0.75, the paper's.
    */
-  vtkSetClampMacro(ShapeFactor, double, 0.0, 1.0);
+  virtual void SetShapeFactor(double); ///< clamped to [0.0, 1.0] with a warning; NaN refused
   vtkGetMacro(ShapeFactor, double);
   ///@}
 

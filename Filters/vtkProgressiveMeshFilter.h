@@ -53,7 +53,7 @@ public:
 
   ///@{
   /** Fraction of the input's triangles wanted when TriangleCount < 0. Default 1. */
-  vtkSetClampMacro(Fraction, double, 0.0, 1.0);
+  virtual void SetFraction(double); ///< clamped to [0.0, 1.0] with a warning; NaN refused
   vtkGetMacro(Fraction, double);
   ///@}
 

@@ -6,6 +6,7 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDemandDrivenPipeline.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
@@ -150,6 +151,20 @@ std::string MakeViewGeometry(vtkCamera* camera, const double model[16], std::arr
   {
     return "The viewport size must be at least 1 x 1 pixels, not " + std::to_string(viewport[0]) +
       " x " + std::to_string(viewport[1]) + ".";
+  }
+  // The projection's own parameters: a NaN or zero here makes a clip matrix
+  // that looks valid and projects nothing.
+  const double viewAngle = camera->GetViewAngle();
+  const double parallelScale = camera->GetParallelScale();
+  if (camera->GetParallelProjection() && !(parallelScale > 0.0 && std::isfinite(parallelScale)))
+  {
+    return "The camera's parallel scale must be positive and finite, not " +
+      std::to_string(parallelScale) + ".";
+  }
+  if (!camera->GetParallelProjection() && !(viewAngle > 0.0 && viewAngle < 180.0))
+  {
+    return "The camera's view angle must be between 0 and 180 degrees, not " +
+      std::to_string(viewAngle) + ".";
   }
   double inverse[16];
   vtkMatrix4x4::Invert(modelView, inverse);
@@ -350,13 +365,26 @@ std::string MismatchedArrayError(vtkPolyData* input)
   return {};
 }
 
-int GuardRequest(
-  vtkAlgorithm* self, vtkInformationVector* outputs, const std::function<int()>& request)
+int GuardRequest(vtkAlgorithm* self, vtkInformation* request, vtkInformationVector** inputs,
+  vtkInformationVector* outputs, const std::function<int()>& process)
 {
+  if (request && request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()) && inputs &&
+    self->GetNumberOfInputPorts() > 0)
+  {
+    if (vtkPolyData* input = vtkPolyData::GetData(inputs[0]))
+    {
+      const std::string error = MismatchedArrayError(input);
+      if (!error.empty())
+      {
+        vtkErrorWithObjectMacro(self, << error);
+        return 0;
+      }
+    }
+  }
   std::string failure;
   try
   {
-    return request();
+    return process();
   }
   catch (const std::bad_alloc&)
   {

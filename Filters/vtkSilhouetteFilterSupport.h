@@ -26,6 +26,7 @@
 
 class vtkAlgorithm;
 class vtkCamera;
+class vtkInformation;
 class vtkInformationVector;
 class vtkCellArray;
 class vtkObject;
@@ -123,12 +124,14 @@ PassedCells PassVertsAndLines(vtkPolyData* input);
 /// that would make the output's arrays garbage), else "".
 std::string MismatchedArrayError(vtkPolyData* input);
 
-/// For a filter's ProcessRequest: runs `request` (the superclass's
+/// For a filter's ProcessRequest: runs `process` (the superclass's
 /// ProcessRequest) so that no exception leaves the filter. std::bad_alloc
 /// and any other exception become an error (vtkErrorMacro), emptied outputs
 /// and a failed request, so one too-large request cannot end the program.
-int GuardRequest(
-  vtkAlgorithm* self, vtkInformationVector* outputs, const std::function<int()>& request);
+/// Before a data request it also refuses, with an error, a polygonal input
+/// whose arrays have the wrong number of tuples (MismatchedArrayError).
+int GuardRequest(vtkAlgorithm* self, vtkInformation* request, vtkInformationVector** inputs,
+  vtkInformationVector* outputs, const std::function<int()>& process);
 
 /// For the Set methods of a filter's settings: stores `value` clamped to
 /// [lo, hi], with a warning when it was outside; keeps the current setting,
@@ -136,6 +139,17 @@ int GuardRequest(
 bool SetSetting(
   vtkObject* self, const char* name, double& setting, double value, double lo, double hi);
 bool SetSetting(vtkObject* self, const char* name, int& setting, int value, int lo, int hi);
+
+/// Defines Class::SetName(Type) with SetSetting: clamped to [Lo, Hi] with a
+/// warning, NaN refused with a warning.
+#define vtkSilhouetteCheckedSetterMacro(Class, Name, Type, Lo, Hi)                                 \
+  void Class::Set##Name(Type value)                                                                \
+  {                                                                                                \
+    if (vtkSilhouetteFilterSupport::SetSetting(this, #Name, this->Name, value, Lo, Hi))            \
+    {                                                                                              \
+      this->Modified();                                                                            \
+    }                                                                                              \
+  }
 
 /// An added point as a weighted sum of input points (weights sum to one).
 struct PointSource

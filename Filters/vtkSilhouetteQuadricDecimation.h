@@ -64,15 +64,15 @@ public:
 
   ///@{
   /** The distance interval, in grid cells, that counts as near. Default [1, 3]. */
-  vtkSetMacro(NearMinimum, double);
+  virtual void SetNearMinimum(double); ///< NaN refused with a warning
   vtkGetMacro(NearMinimum, double);
-  vtkSetMacro(NearMaximum, double);
+  virtual void SetNearMaximum(double); ///< NaN refused with a warning
   vtkGetMacro(NearMaximum, double);
   ///@}
 
   ///@{
   /** f: the error allowed near the contour is f * e. Default 0.1. */
-  vtkSetClampMacro(NearFactor, double, 0.0, VTK_DOUBLE_MAX);
+  virtual void SetNearFactor(double); ///< clamped to [0.0, inf] with a warning; NaN refused
   vtkGetMacro(NearFactor, double);
   ///@}
 

@@ -114,7 +114,7 @@ vtkSilhouetteViewAlgorithm::ViewStatus vtkSilhouetteViewAlgorithm::RequestView(
 vtkTypeBool vtkSilhouetteViewAlgorithm::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
 {
-  return vtkSilhouetteFilterSupport::GuardRequest(this, outputs,
+  return vtkSilhouetteFilterSupport::GuardRequest(this, request, inputs, outputs,
     [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });
 }
 void vtkSilhouetteViewAlgorithm::PrintSelf(ostream& os, vtkIndent indent)

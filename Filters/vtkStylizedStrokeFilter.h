@@ -70,7 +70,7 @@ public:
 
   ///@{
   /** Bound on |v_x| and |v_y|, as a fraction of the input's diagonal. Default 0.006. */
-  vtkSetClampMacro(Amplitude, double, 0.0, VTK_DOUBLE_MAX);
+  virtual void SetAmplitude(double); ///< clamped to [0.0, inf] with a warning; NaN refused
   vtkGetMacro(Amplitude, double);
   ///@}
 
@@ -79,7 +79,7 @@ public:
    * Period of the sawtooth (charcoal) and parabola (lazy), knot spacing of
    * the hand noise; a fraction of the input's diagonal. Default 0.02.
    */
-  vtkSetClampMacro(Wavelength, double, 0.0, VTK_DOUBLE_MAX);
+  virtual void SetWavelength(double); ///< clamped to [0.0, inf] with a warning; NaN refused
   vtkGetMacro(Wavelength, double);
   ///@}
 
@@ -88,7 +88,7 @@ public:
    * When > 0, strokes are resampled at about this spacing (a fraction of the
    * input's diagonal) before the brush, keeping their points. Default 0.002.
    */
-  vtkSetClampMacro(Spacing, double, 0.0, VTK_DOUBLE_MAX);
+  virtual void SetSpacing(double); ///< clamped to [0.0, inf] with a warning; NaN refused
   vtkGetMacro(Spacing, double);
   ///@}
 

@@ -1,5 +1,7 @@
 #include "vtkTorusSurfaceSource.h"
 
+#include "vtkSilhouetteFilterSupport.h"
+
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkInformation.h"
@@ -14,7 +16,10 @@
 
 vtkStandardNewMacro(vtkTorusSurfaceSource);
 
-vtkTorusSurfaceSource::vtkTorusSurfaceSource()
+vtkSilhouetteCheckedSetterMacro(vtkTorusSurfaceSource, RingRadius, double, 0.0, VTK_DOUBLE_MAX)
+  vtkSilhouetteCheckedSetterMacro(vtkTorusSurfaceSource, TubeRadius, double, 0.0, VTK_DOUBLE_MAX)
+
+    vtkTorusSurfaceSource::vtkTorusSurfaceSource()
 {
   this->SetNumberOfInputPorts(0);
 }

@@ -28,9 +28,9 @@ public:
    * Distance from the axis to the tube's centre (default 1) and the tube's
    * radius (default 0.4).
    */
-  vtkSetClampMacro(RingRadius, double, 0.0, VTK_DOUBLE_MAX);
+  virtual void SetRingRadius(double); ///< clamped to [0.0, inf] with a warning; NaN refused
   vtkGetMacro(RingRadius, double);
-  vtkSetClampMacro(TubeRadius, double, 0.0, VTK_DOUBLE_MAX);
+  virtual void SetTubeRadius(double); ///< clamped to [0.0, inf] with a warning; NaN refused
   vtkGetMacro(TubeRadius, double);
   ///@}
 

@@ -12,10 +12,13 @@
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
+#include "vtkPNTriangleFilter.h"
+#include "vtkPhongTessellationFilter.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSilhouetteSmoothingFilter.h"
+#include "vtkStylizedStrokeFilter.h"
 #include "vtkTestErrorObserver.h"
 
 #include "SilhouetteTestSupport.h"
@@ -386,6 +389,21 @@ bool NaNAndOutOfRangeSettings()
   filter->SetFeatureAngle(400.0);
   CHECK(filter->GetFeatureAngle() == 180.0 && warnings->GetWarning(),
     "an angle past 180 degrees is clamped, with a warning");
+  // The module's other filters, through the same setters.
+  vtkNew<vtkPhongTessellationFilter> phong;
+  phong->SetShapeFactor(nan);
+  CHECK(phong->GetShapeFactor() == 0.75, "Phong tessellation keeps its shape factor");
+  vtkNew<vtkStylizedStrokeFilter> strokes;
+  const double amplitude = strokes->GetAmplitude();
+  strokes->SetAmplitude(nan);
+  CHECK(strokes->GetAmplitude() == amplitude, "the strokes keep their amplitude");
+  // And a camera's NaN parallel scale fails the request.
+  auto camera = Camera(0, 0, 5);
+  camera->ParallelProjectionOn();
+  camera->SetParallelScale(nan);
+  Run run(Sphere(), camera);
+  CHECK(run.Failed() && run.Error().find("parallel scale") != std::string::npos,
+    "a NaN parallel scale fails the request, naming it");
   std::printf("NaN settings refused, out-of-range ones clamped, each with a warning\n");
   return true;
 }
@@ -429,6 +447,13 @@ bool ArraysOfTheWrongLength()
     Run run(mesh, Camera(0, 0, 5));
     CHECK(run.Failed(), "an array one tuple short fails the request");
     CHECK(run.Error().find("'Temperature' has") != std::string::npos, "the error names it");
+    // The other filters refuse it the same way (GuardRequest).
+    vtkNew<vtkPNTriangleFilter> pn;
+    vtkNew<vtkTest::ErrorObserver> pnErrors;
+    pn->AddObserver(vtkCommand::ErrorEvent, pnErrors);
+    pn->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, pnErrors);
+    pn->SetInputData(mesh);
+    CHECK(pn->GetExecutive()->Update() == 0 && pnErrors->GetError(), "PN triangles refuse it too");
     std::printf(
       "%s array one tuple short: \"%s\"\n", pointData ? "point" : "cell", run.Error().c_str());
   }

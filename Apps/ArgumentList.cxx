@@ -108,9 +108,14 @@ double ParseNumber(const std::string& option, const std::string& text)
   errno = 0;
   const double value = std::strtod(begin, &end);
   // strtod also accepts "nan", "inf" and hex; only plain finite numbers make sense here.
-  if (text.empty() || end != begin + text.size() || errno == ERANGE || !std::isfinite(value))
+  if (text.empty() || end != begin + text.size() || !std::isfinite(value))
   {
     throw UsageError("option '" + option + "' needs a number, got '" + text + "'");
+  }
+  if (errno == ERANGE)
+  {
+    throw UsageError("option '" + option + "' needs a number within the range of a double " +
+      "(magnitudes from 2.2e-308 to 1.8e308, or 0), got '" + text + "'");
   }
   return value;
 }

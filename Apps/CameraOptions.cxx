@@ -8,6 +8,7 @@
 #include <vtkRenderer.h>
 #include <vtkTransform.h>
 
+#include <algorithm>
 #include <cmath>
 #include <regex>
 
@@ -27,11 +28,22 @@ std::array<double, 3> Difference(const double a[3], const double b[3])
 }
 
 // Whether `up` cannot orient a camera looking along `direction`.
+// `v` divided by its largest component, so that products of huge or tiny
+// coordinates neither overflow nor underflow.
+std::array<double, 3> Scaled(const std::array<double, 3>& v)
+{
+  const double largest = std::max({ std::abs(v[0]), std::abs(v[1]), std::abs(v[2]) });
+  return largest > 0.0 ? std::array<double, 3>{ v[0] / largest, v[1] / largest, v[2] / largest }
+                       : v;
+}
+
 bool IsParallel(const std::array<double, 3>& up, const std::array<double, 3>& direction)
 {
+  const std::array<double, 3> u = Scaled(up);
+  const std::array<double, 3> d = Scaled(direction);
   double cross[3];
-  vtkMath::Cross(up.data(), direction.data(), cross);
-  return Length({ cross[0], cross[1], cross[2] }) <= 1e-9 * Length(up) * Length(direction);
+  vtkMath::Cross(u.data(), d.data(), cross);
+  return Length({ cross[0], cross[1], cross[2] }) <= 1e-9 * Length(u) * Length(d);
 }
 
 // vtkCamera::Elevation() keeps the view-up, so 90 degrees would leave it

@@ -168,6 +168,13 @@ vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::str
   // A copy of our own, so the reader's pipeline can go.
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->ShallowCopy(read);
+  const std::string unmatched = RemoveMismatchedArrays(mesh);
+  if (!unmatched.empty())
+  {
+    errors.Record(VtkErrorLog::Kind::Warning, true,
+      (Quoted(path) + ": left out " + unmatched + ", which the reader gave the wrong length")
+        .c_str());
+  }
   RequireConsistentMesh(mesh, Quoted(path));
   const std::string removed = RemoveCellsWithTooFewPoints(mesh);
   if (!removed.empty())

@@ -130,6 +130,32 @@ void RequireConsistentMesh(vtkPolyData* mesh, const std::string& quotedFile)
     mesh->GetCellData(), mesh->GetNumberOfCells(), "cells", "cell data", quotedFile);
 }
 
+std::string RemoveMismatchedArrays(vtkPolyData* mesh)
+{
+  std::string what;
+  const std::array<std::pair<vtkFieldData*, vtkIdType>, 2> sets{ {
+    { mesh->GetPointData(), mesh->GetNumberOfPoints() },
+    { mesh->GetCellData(), mesh->GetNumberOfCells() },
+  } };
+  for (std::size_t s = 0; s < sets.size(); ++s)
+  {
+    vtkFieldData* data = sets[s].first;
+    for (int a = data->GetNumberOfArrays() - 1; a >= 0; --a)
+    {
+      vtkAbstractArray* array = data->GetAbstractArray(a);
+      if (array && array->GetNumberOfTuples() != sets[s].second)
+      {
+        what += std::string(what.empty() ? "" : ", ") + "the " + (s == 0 ? "point" : "cell") +
+          " data array '" + (array->GetName() ? array->GetName() : "(unnamed)") + "' (" +
+          std::to_string(array->GetNumberOfTuples()) + " values for " +
+          std::to_string(sets[s].second) + (s == 0 ? " points)" : " cells)");
+        data->RemoveArray(a);
+      }
+    }
+  }
+  return what;
+}
+
 std::string RemoveCellsWithTooFewPoints(vtkPolyData* mesh)
 {
   std::array<vtkIdType, 4> removed{};

@@ -3,10 +3,11 @@
 #include "CliErrors.h"
 #include "VtkErrorLog.h"
 
+#include <vtkCharArray.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
-#include <vtkXMLPolyDataReader.h>
-#include <vtkXMLPolyDataWriter.h>
+#include <vtkPolyDataReader.h>
+#include <vtkPolyDataWriter.h>
 
 #include <algorithm>
 #include <cerrno>
@@ -114,21 +115,20 @@ void ConfineChild(const ReadLimits& limits)
 #endif
 }
 
-std::string MeshAsVtp(vtkPolyData* mesh)
+// Legacy binary VTK, not VTP: array names come from files and need not be
+// UTF-8, which the XML parser refuses (assimp's regr01.obj has one).
+std::string MeshAsLegacyVtk(vtkPolyData* mesh)
 {
-  vtkNew<vtkXMLPolyDataWriter> writer;
+  vtkNew<vtkPolyDataWriter> writer;
   writer->SetInputData(mesh);
   writer->WriteToOutputStringOn();
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff();
-  writer->SetCompressorTypeToNone();
-  writer->SetHeaderTypeToUInt64();
-  writer->SetIdTypeToInt64();
+  writer->SetFileTypeToBinary();
   if (!writer->Write())
   {
     throw RuntimeError("could not pass the mesh back from the reading process");
   }
-  return writer->GetOutputString();
+  return std::string(
+    writer->GetOutputString(), static_cast<std::size_t>(writer->GetOutputStringLength()));
 }
 
 [[noreturn]] void RunChild(int fd, const std::string& quotedFile,
@@ -143,8 +143,7 @@ std::string MeshAsVtp(vtkPolyData* mesh)
     {
       SendFrame(fd, Frame::Warning, warning);
     }
-    const std::string vtp = MeshAsVtp(mesh);
-    SendFrame(fd, Frame::Mesh, vtp);
+    SendFrame(fd, Frame::Mesh, MeshAsLegacyVtk(mesh));
   }
   catch (const RuntimeError& error)
   {
@@ -283,17 +282,28 @@ std::string WhyTheChildFailed(
   return "the reading process stopped without an answer";
 }
 
-vtkSmartPointer<vtkPolyData> MeshFromVtp(const std::string& vtp, const std::string& quotedFile)
+vtkSmartPointer<vtkPolyData> MeshFromLegacyVtk(
+  const std::string& bytes, const std::string& quotedFile)
 {
   VtkErrorLog& log = VtkErrorLog::Instance();
-  vtkNew<vtkXMLPolyDataReader> reader;
+  // The reader reads from this array in place (no copy, no 2 GB limit).
+  vtkNew<vtkCharArray> input;
+  input->SetArray(const_cast<char*>(bytes.data()), static_cast<vtkIdType>(bytes.size()), 1);
+  vtkNew<vtkPolyDataReader> reader;
   log.Watch(reader);
   reader->ReadFromInputStringOn();
-  reader->SetInputString(vtp);
+  reader->SetInputArray(input);
+  reader->ReadAllScalarsOn();
+  reader->ReadAllVectorsOn();
+  reader->ReadAllNormalsOn();
+  reader->ReadAllTensorsOn();
+  reader->ReadAllColorScalarsOn();
+  reader->ReadAllTCoordsOn();
+  reader->ReadAllFieldsOn();
   reader->Update();
   log.ThrowIfErrors("cannot read " + quotedFile + " (passing the mesh back)");
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->ShallowCopy(reader->GetOutput());
+  mesh->ShallowCopy(reader->GetOutput()); // the reader's own arrays, not views of `bytes`
   return mesh;
 }
 
@@ -364,7 +374,7 @@ vtkSmartPointer<vtkPolyData> ReadInSandbox(const std::string& quotedFile,
       case Frame::Mesh:
         if (WIFEXITED(status) && WEXITSTATUS(status) == 0)
         {
-          return MeshFromVtp(payload, quotedFile);
+          return MeshFromLegacyVtk(payload, quotedFile);
         }
         break;
     }

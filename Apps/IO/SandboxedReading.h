@@ -28,7 +28,7 @@ struct ReadLimits
   unsigned CpuSeconds = 0;
   /// Time the parent waits for the child's answer before it kills the child.
   double WallSeconds = 0.0;
-  /// The most the child may send back (the mesh as VTP, its messages).
+  /// The most the child may send back (the mesh, its messages).
   std::uint64_t OutputBytes = 0;
 
   /// Limits for a file of `fileBytes` bytes: 768 MiB plus 32 times the file's
@@ -39,8 +39,9 @@ struct ReadLimits
 
 /**
  * Runs `read` in a child process (fork) under `limits` and returns the mesh
- * it produced, copied back through a pipe as VTP (all points, cells and
- * point, cell and field data arrays, in their own types).
+ * it produced, copied back through a pipe as binary legacy VTK (all points,
+ * cells and point, cell and field data arrays, in their own types, with
+ * their names whatever bytes they hold, and the active attributes).
  *
  * Rules:
  * - the child writes no files (RLIMIT_FSIZE 0), dumps no core, and dies with

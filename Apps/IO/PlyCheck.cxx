@@ -164,6 +164,13 @@ public:
       }
     }
     this->CheckEnd(header);
+    // vtkPLYReader 9.1 frees a line buffer twice when the last line of an
+    // ASCII body has no line end.
+    if (header.BodyFormat == Format::Ascii && !this->Bytes.empty() && this->Bytes.back() != '\n')
+    {
+      this->Unsupported("its last line has no line end, which vtkPLYReader 9.1 cannot read (it "
+                        "crashes); end the file with a newline");
+    }
   }
 
 private:

@@ -23,7 +23,7 @@ bash "$here/scripts/real-meshes.sh" "$meshes"
 cmake -S "$here" -B "$build" -DSILHOUETTE_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DSILHOUETTE_REAL_MESHES_DIR="$meshes" \
   >"$build/sanitize-configure.log" 2>&1 || { cat "$build/sanitize-configure.log" >&2; exit 1; }
-cmake --build "$build" -j "$jobs" --target silhouette_core_tests visibility_benchmark SilhouetteModuleTests silhouette \
+cmake --build "$build" -j "$jobs" --target silhouette_core_tests visibility_benchmark SilhouetteModuleTests silhouette MeasureRun \
   >"$build/sanitize-build.log" 2>&1 || { tail -50 "$build/sanitize-build.log" >&2; exit 1; }
 echo "sanitize: built in $((SECONDS - started)) s"
 
@@ -41,10 +41,11 @@ ASAN_OPTIONS=detect_leaks=0 "${display[@]}" ctest --output-on-failure \
 echo "sanitize: core and module tests in $((SECONDS - started)) s"
 started=$SECONDS
 # The program reads files in a child process (Apps/IO/SandboxedReading.h),
-# which under ASan has no memory limit of its own: a failed allocation must
-# throw std::bad_alloc there as it does in the normal build, and a reader's
-# segmentation fault must end the child by its signal, not by ASan's report.
-ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1:handle_segv=0 \
+# which under ASan has no address-space limit (ASan reserves terabytes):
+# allocations past 1 GiB fail instead, and a failed allocation throws
+# std::bad_alloc there as it does in the normal build; a reader's
+# segmentation fault ends the child by its signal, not by ASan's report.
+ASAN_OPTIONS=detect_leaks=1:allocator_may_return_null=1:max_allocation_size_mb=1024:handle_segv=0 \
   LSAN_OPTIONS="suppressions=$here/Testing/Fuzz/lsan-vtk.supp:print_suppressions=0" \
   ctest --output-on-failure -j "$jobs" \
   -R '^cli\.(help|smooth\.|read\.|generate\.|bad\.)' \

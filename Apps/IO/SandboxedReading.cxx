@@ -97,6 +97,12 @@ void SetLimit(int resource, rlim_t value)
 void ConfineChild(const ReadLimits& limits)
 {
   ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  // A crash ends the child by its signal, whatever handlers the parent has
+  // (libFuzzer's would report the child's crash as the fuzzer's own).
+  for (const int signal : { SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL, SIGXCPU })
+  {
+    std::signal(signal, SIG_DFL);
+  }
   const int null = ::open("/dev/null", O_RDWR);
   if (null >= 0)
   {

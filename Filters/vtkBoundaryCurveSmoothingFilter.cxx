@@ -21,9 +21,9 @@
 vtkStandardNewMacro(vtkBoundaryCurveSmoothingFilter);
 
 vtkSilhouetteCheckedSetterMacro(
-  vtkBoundaryCurveSmoothingFilter, Tolerance, double, 1e-3, VTK_DOUBLE_MAX)
+  vtkBoundaryCurveSmoothingFilter, Tolerance, double, 1e-3, VTK_DOUBLE_MAX);
 
-  namespace support = vtkSilhouetteFilterSupport;
+namespace support = vtkSilhouetteFilterSupport;
 
 struct vtkBoundaryCurveSmoothingFilter::Internals
 {

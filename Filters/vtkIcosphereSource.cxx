@@ -19,9 +19,9 @@
 
 vtkStandardNewMacro(vtkIcosphereSource);
 
-vtkSilhouetteCheckedSetterMacro(vtkIcosphereSource, Radius, double, 0.0, VTK_DOUBLE_MAX)
+vtkSilhouetteCheckedSetterMacro(vtkIcosphereSource, Radius, double, 0.0, VTK_DOUBLE_MAX);
 
-  vtkIcosphereSource::vtkIcosphereSource()
+vtkIcosphereSource::vtkIcosphereSource()
 {
   this->SetNumberOfInputPorts(0);
 }

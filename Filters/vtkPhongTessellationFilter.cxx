@@ -11,10 +11,10 @@
 
 vtkStandardNewMacro(vtkPhongTessellationFilter);
 
-vtkSilhouetteCheckedSetterMacro(vtkPhongTessellationFilter, ShapeFactor, double, 0.0, 1.0)
+vtkSilhouetteCheckedSetterMacro(vtkPhongTessellationFilter, ShapeFactor, double, 0.0, 1.0);
 
-  vtkTypeBool vtkPhongTessellationFilter::ProcessRequest(
-    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
+vtkTypeBool vtkPhongTessellationFilter::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
 {
   return vtkSilhouetteFilterSupport::GuardRequest(this, request, inputs, outputs,
     [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });

@@ -21,10 +21,10 @@
 
 vtkStandardNewMacro(vtkProgressiveMeshFilter);
 
-vtkSilhouetteCheckedSetterMacro(vtkProgressiveMeshFilter, Fraction, double, 0.0, 1.0)
+vtkSilhouetteCheckedSetterMacro(vtkProgressiveMeshFilter, Fraction, double, 0.0, 1.0);
 
-  vtkTypeBool vtkProgressiveMeshFilter::ProcessRequest(
-    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
+vtkTypeBool vtkProgressiveMeshFilter::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
 {
   return vtkSilhouetteFilterSupport::GuardRequest(this, request, inputs, outputs,
     [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });

@@ -13,6 +13,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkMatrix4x4.h"
+#include "vtkNew.h"
 #include "vtkObject.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -308,36 +309,47 @@ std::string ReadFiniteTriangles(vtkPolyData* input, Triangles& out)
 
 PassedCells PassVertsAndLines(vtkPolyData* input)
 {
+  const std::array<vtkCellArray*, 2> inputs{ { input->GetVerts(), input->GetLines() } };
+  const std::array<vtkIdType, 2> least{ { 1, 2 } };
+  const auto tooSmall = [&](std::size_t k, vtkIdType cell) {
+    return inputs[k]->GetCellSize(cell) < least[k];
+  };
   PassedCells passed;
-  vtkCellArray* verts = input->GetVerts();
-  vtkCellArray* lines = input->GetLines();
-  const vtkIdType cells = verts->GetNumberOfCells() + lines->GetNumberOfCells();
-  passed.CellIds.reserve(static_cast<std::size_t>(cells));
-  vtkIdType cellId = 0;
-  std::array<vtkSmartPointer<vtkCellArray>, 2> kept;
-  std::array<vtkCellArray*, 2> inputs{ { verts, lines } };
   for (std::size_t k = 0; k < 2; ++k)
   {
-    const vtkIdType least = k == 0 ? 1 : 2;
-    kept[k] = vtkSmartPointer<vtkCellArray>::New();
-    auto cell = vtk::TakeSmartPointer(inputs[k]->NewIterator());
-    for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell(), ++cellId)
+    for (vtkIdType c = 0; c < inputs[k]->GetNumberOfCells(); ++c)
     {
-      vtkIdList* ids = cell->GetCurrentCell();
-      if (ids->GetNumberOfIds() >= least)
+      passed.Dropped += tooSmall(k, c) ? 1 : 0;
+    }
+  }
+  // Nothing left out (the usual case, every frame): the input's own arrays.
+  if (passed.Dropped == 0)
+  {
+    passed.Verts = inputs[0];
+    passed.Lines = inputs[1];
+    passed.CellIds.resize(
+      static_cast<std::size_t>(inputs[0]->GetNumberOfCells() + inputs[1]->GetNumberOfCells()));
+    std::iota(passed.CellIds.begin(), passed.CellIds.end(), vtkIdType{ 0 });
+    return passed;
+  }
+  std::array<vtkSmartPointer<vtkCellArray>, 2> kept;
+  vtkNew<vtkIdList> ids;
+  vtkIdType cellId = 0;
+  for (std::size_t k = 0; k < 2; ++k)
+  {
+    kept[k] = vtkSmartPointer<vtkCellArray>::New();
+    for (vtkIdType c = 0; c < inputs[k]->GetNumberOfCells(); ++c, ++cellId)
+    {
+      if (!tooSmall(k, c))
       {
+        inputs[k]->GetCellAtId(c, ids);
         kept[k]->InsertNextCell(ids);
         passed.CellIds.push_back(cellId);
       }
-      else
-      {
-        ++passed.Dropped;
-      }
     }
   }
-  // Nothing left out: the input's own arrays, shared.
-  passed.Verts = passed.Dropped == 0 ? vtkSmartPointer<vtkCellArray>(verts) : kept[0];
-  passed.Lines = passed.Dropped == 0 ? vtkSmartPointer<vtkCellArray>(lines) : kept[1];
+  passed.Verts = kept[0];
+  passed.Lines = kept[1];
   return passed;
 }
 

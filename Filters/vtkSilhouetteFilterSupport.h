@@ -141,7 +141,7 @@ bool SetSetting(
 bool SetSetting(vtkObject* self, const char* name, int& setting, int value, int lo, int hi);
 
 /// Defines Class::SetName(Type) with SetSetting: clamped to [Lo, Hi] with a
-/// warning, NaN refused with a warning.
+/// warning, NaN refused with a warning. Used as a statement, with a `;`.
 #define vtkSilhouetteCheckedSetterMacro(Class, Name, Type, Lo, Hi)                                 \
   void Class::Set##Name(Type value)                                                                \
   {                                                                                                \
@@ -149,7 +149,8 @@ bool SetSetting(vtkObject* self, const char* name, int& setting, int value, int 
     {                                                                                              \
       this->Modified();                                                                            \
     }                                                                                              \
-  }
+  }                                                                                                \
+  static_assert(true, "")
 
 /// An added point as a weighted sum of input points (weights sum to one).
 struct PointSource

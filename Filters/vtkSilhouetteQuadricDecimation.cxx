@@ -22,13 +22,14 @@
 vtkStandardNewMacro(vtkSilhouetteQuadricDecimation);
 
 vtkSilhouetteCheckedSetterMacro(
-  vtkSilhouetteQuadricDecimation, NearMinimum, double, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX)
-  vtkSilhouetteCheckedSetterMacro(vtkSilhouetteQuadricDecimation, NearMaximum, double,
-    -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX) vtkSilhouetteCheckedSetterMacro(vtkSilhouetteQuadricDecimation,
-    NearFactor, double, 0.0, VTK_DOUBLE_MAX)
+  vtkSilhouetteQuadricDecimation, NearMinimum, double, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX);
+vtkSilhouetteCheckedSetterMacro(
+  vtkSilhouetteQuadricDecimation, NearMaximum, double, -VTK_DOUBLE_MAX, VTK_DOUBLE_MAX);
+vtkSilhouetteCheckedSetterMacro(
+  vtkSilhouetteQuadricDecimation, NearFactor, double, 0.0, VTK_DOUBLE_MAX);
 
-    vtkTypeBool vtkSilhouetteQuadricDecimation::ProcessRequest(
-      vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
+vtkTypeBool vtkSilhouetteQuadricDecimation::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
 {
   return vtkSilhouetteFilterSupport::GuardRequest(this, request, inputs, outputs,
     [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });

@@ -39,313 +39,314 @@
 vtkStandardNewMacro(vtkSilhouetteSmoothingFilter);
 
 vtkSilhouetteCheckedSetterMacro(
-  vtkSilhouetteSmoothingFilter, Tolerance, double, 1e-3, VTK_DOUBLE_MAX)
-  vtkSilhouetteCheckedSetterMacro(vtkSilhouetteSmoothingFilter, MinimumSamples, int, 2, 65536)
-    vtkSilhouetteCheckedSetterMacro(vtkSilhouetteSmoothingFilter, MaximumSamples, int, 2, 65536)
-      vtkSilhouetteCheckedSetterMacro(vtkSilhouetteSmoothingFilter, NewPointBudget, double, 1.0,
-        1e6) vtkSilhouetteCheckedSetterMacro(vtkSilhouetteSmoothingFilter, FeatureAngle, double,
-        0.0, 180.0) vtkSilhouetteCheckedSetterMacro(vtkSilhouetteSmoothingFilter, WeldTolerance,
-        double, 0.0, VTK_DOUBLE_MAX) vtkSilhouetteCheckedSetterMacro(vtkSilhouetteSmoothingFilter,
-        FlatCreaseAngle, double, 0.0, 180.0)
+  vtkSilhouetteSmoothingFilter, Tolerance, double, 1e-3, VTK_DOUBLE_MAX);
+vtkSilhouetteCheckedSetterMacro(vtkSilhouetteSmoothingFilter, MinimumSamples, int, 2, 65536);
+vtkSilhouetteCheckedSetterMacro(vtkSilhouetteSmoothingFilter, MaximumSamples, int, 2, 65536);
+vtkSilhouetteCheckedSetterMacro(vtkSilhouetteSmoothingFilter, NewPointBudget, double, 1.0, 1e6);
+vtkSilhouetteCheckedSetterMacro(vtkSilhouetteSmoothingFilter, FeatureAngle, double, 0.0, 180.0);
+vtkSilhouetteCheckedSetterMacro(
+  vtkSilhouetteSmoothingFilter, WeldTolerance, double, 0.0, VTK_DOUBLE_MAX);
+vtkSilhouetteCheckedSetterMacro(vtkSilhouetteSmoothingFilter, FlatCreaseAngle, double, 0.0, 180.0);
 
-        namespace
+namespace
 {
 
-  void AddCount(vtkFieldData * fd, const char* name, vtkIdType value)
-  {
-    vtkNew<vtkIdTypeArray> array;
-    array->SetName(name);
-    array->SetNumberOfTuples(1);
-    array->SetValue(0, value);
-    fd->AddArray(array);
-  }
+void AddCount(vtkFieldData* fd, const char* name, vtkIdType value)
+{
+  vtkNew<vtkIdTypeArray> array;
+  array->SetName(name);
+  array->SetNumberOfTuples(1);
+  array->SetValue(0, value);
+  fd->AddArray(array);
+}
 
-  int OutputPointType(vtkPolyData * input, int precision)
+int OutputPointType(vtkPolyData* input, int precision)
+{
+  if (precision == vtkAlgorithm::SINGLE_PRECISION)
   {
-    if (precision == vtkAlgorithm::SINGLE_PRECISION)
-    {
-      return VTK_FLOAT;
-    }
-    if (precision == vtkAlgorithm::DOUBLE_PRECISION)
-    {
-      return VTK_DOUBLE;
-    }
-    vtkPoints* inPoints = input->GetPoints();
-    return inPoints ? inPoints->GetDataType() : VTK_FLOAT;
+    return VTK_FLOAT;
   }
-
-  // Input points (ids kept), copies of input points for extra smooth groups,
-  // then the added points; points lowered by the perturbation move in every
-  // copy.
-  vtkSmartPointer<vtkPoints> BuildPoints(vtkPolyData * input, int pointType,
-    const silsmooth::WeldedSurface& surface, const silsmooth::SmoothingResult& result,
-    const silsmooth::SurfaceFrame& frame)
+  if (precision == vtkAlgorithm::DOUBLE_PRECISION)
   {
-    auto points = vtkSmartPointer<vtkPoints>::New();
-    points->SetDataType(pointType);
-    vtkPoints* inPoints = input->GetPoints();
-    const vtkIdType numPoints = input->GetNumberOfPoints();
-    const vtkIdType base = static_cast<vtkIdType>(surface.outputPointCount());
-    points->SetNumberOfPoints(base + static_cast<vtkIdType>(frame.Added.size()));
-    if (numPoints > 0)
-    {
-      points->GetData()->InsertTuples(0, numPoints, 0, inPoints->GetData());
-    }
-    for (vtkIdType id = numPoints; id < base; ++id)
-    {
-      points->GetData()->SetTuple(id, surface.outputSource(id), inPoints->GetData());
-    }
-    vtkIdType id = base;
-    for (const silsmooth::SurfaceFrame::AddedPoint& added : frame.Added)
-    {
-      const glm::dvec3& p = result.NewPoints[added.NewPoint].Position;
-      points->SetPoint(id++, p.x, p.y, p.z);
-    }
-    for (const auto& moved : frame.Moved)
-    {
-      points->SetPoint(moved.first, moved.second.x, moved.second.y, moved.second.z);
-    }
-    return points;
+    return VTK_DOUBLE;
   }
+  vtkPoints* inPoints = input->GetPoints();
+  return inPoints ? inPoints->GetDataType() : VTK_FLOAT;
+}
 
-  // The source with the largest weight: the value an added point takes of an
-  // array that cannot be interpolated (ids, labels, strings).
-  vtkIdType NearestSource(
-    const silsmooth::SurfaceFrame::AddedPoint& added, const silsmooth::SmoothingResult& result)
+// Input points (ids kept), copies of input points for extra smooth groups,
+// then the added points; points lowered by the perturbation move in every
+// copy.
+vtkSmartPointer<vtkPoints> BuildPoints(vtkPolyData* input, int pointType,
+  const silsmooth::WeldedSurface& surface, const silsmooth::SmoothingResult& result,
+  const silsmooth::SurfaceFrame& frame)
+{
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataType(pointType);
+  vtkPoints* inPoints = input->GetPoints();
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  const vtkIdType base = static_cast<vtkIdType>(surface.outputPointCount());
+  points->SetNumberOfPoints(base + static_cast<vtkIdType>(frame.Added.size()));
+  if (numPoints > 0)
   {
+    points->GetData()->InsertTuples(0, numPoints, 0, inPoints->GetData());
+  }
+  for (vtkIdType id = numPoints; id < base; ++id)
+  {
+    points->GetData()->SetTuple(id, surface.outputSource(id), inPoints->GetData());
+  }
+  vtkIdType id = base;
+  for (const silsmooth::SurfaceFrame::AddedPoint& added : frame.Added)
+  {
+    const glm::dvec3& p = result.NewPoints[added.NewPoint].Position;
+    points->SetPoint(id++, p.x, p.y, p.z);
+  }
+  for (const auto& moved : frame.Moved)
+  {
+    points->SetPoint(moved.first, moved.second.x, moved.second.y, moved.second.z);
+  }
+  return points;
+}
+
+// The source with the largest weight: the value an added point takes of an
+// array that cannot be interpolated (ids, labels, strings).
+vtkIdType NearestSource(
+  const silsmooth::SurfaceFrame::AddedPoint& added, const silsmooth::SmoothingResult& result)
+{
+  const std::array<double, 3>& w = result.NewPoints[added.NewPoint].Weights;
+  const std::size_t k = w[0] >= w[1] && w[0] >= w[2] ? 0 : (w[1] >= w[2] ? 1 : 2);
+  return static_cast<vtkIdType>(added.Sources[k]);
+}
+
+// Copies of every input array that VTK's attribute rules left out (vtkIdType
+// and string arrays, global and pedigree ids): from[i] is the input tuple of
+// output tuple i. They come out as plain arrays under their own names: ids
+// repeated on copies are no longer unique.
+void AddUncopiedArrays(vtkDataSetAttributes* in, vtkDataSetAttributes* out,
+  const std::vector<vtkIdType>& from, const char* skip)
+{
+  for (int a = 0; a < in->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = in->GetAbstractArray(a);
+    if (!array->GetName() || out->GetAbstractArray(array->GetName()) ||
+      (skip && std::strcmp(array->GetName(), skip) == 0))
+    {
+      continue;
+    }
+    vtkSmartPointer<vtkAbstractArray> copy = vtk::TakeSmartPointer(array->NewInstance());
+    copy->SetName(array->GetName());
+    copy->SetNumberOfComponents(array->GetNumberOfComponents());
+    copy->SetNumberOfTuples(static_cast<vtkIdType>(from.size()));
+    for (std::size_t i = 0; i < from.size(); ++i)
+    {
+      copy->SetTuple(static_cast<vtkIdType>(i), from[i], array);
+    }
+    out->AddArray(copy);
+  }
+}
+
+// Input point arrays are copied and extended with values interpolated for the
+// added points (VTK's interpolation rules; the arrays those rules do not
+// interpolate take the nearest source's value). The shading normals replace
+// the input's normals (if any) as the active normals, keeping the input's
+// array name. `OriginalPointId` gives every output point's input point (-1
+// for added points), composed with an input array of that name.
+void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
+  const silsmooth::WeldedSurface& surface, const silsmooth::SmoothingResult& result,
+  const silsmooth::SurfaceFrame& frame)
+{
+  const vtkIdType base = static_cast<vtkIdType>(surface.outputPointCount());
+  const vtkIdType total = base + static_cast<vtkIdType>(frame.Added.size());
+  vtkDataArray* inNormals = in->GetNormals();
+  vtkDataArray* inOriginal = in->GetArray("OriginalPointId");
+  out->CopyAllOn();
+  out->CopyNormalsOff();
+  out->InterpolateAllocate(in, total);
+  if (numPoints > 0)
+  {
+    out->CopyData(in, 0, numPoints, 0);
+  }
+  for (vtkIdType id = numPoints; id < base; ++id)
+  {
+    out->CopyData(in, surface.outputSource(id), id);
+  }
+  vtkNew<vtkIdList> sources;
+  sources->SetNumberOfIds(3);
+  vtkIdType id = base;
+  for (const silsmooth::SurfaceFrame::AddedPoint& added : frame.Added)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      sources->SetId(k, added.Sources[static_cast<std::size_t>(k)]);
+    }
     const std::array<double, 3>& w = result.NewPoints[added.NewPoint].Weights;
-    const std::size_t k = w[0] >= w[1] && w[0] >= w[2] ? 0 : (w[1] >= w[2] ? 1 : 2);
-    return static_cast<vtkIdType>(added.Sources[k]);
+    double weights[3] = { w[0], w[1], w[2] };
+    out->InterpolatePoint(in, id++, sources, weights);
+  }
+  if (inNormals && inNormals->GetName() && out->GetArray(inNormals->GetName()))
+  {
+    out->RemoveArray(inNormals->GetName());
   }
 
-  // Copies of every input array that VTK's attribute rules left out (vtkIdType
-  // and string arrays, global and pedigree ids): from[i] is the input tuple of
-  // output tuple i. They come out as plain arrays under their own names: ids
-  // repeated on copies are no longer unique.
-  void AddUncopiedArrays(vtkDataSetAttributes * in, vtkDataSetAttributes * out,
-    const std::vector<vtkIdType>& from, const char* skip)
+  std::vector<vtkIdType> from(static_cast<std::size_t>(total));
+  for (vtkIdType o = 0; o < base; ++o)
   {
-    for (int a = 0; a < in->GetNumberOfArrays(); ++a)
-    {
-      vtkAbstractArray* array = in->GetAbstractArray(a);
-      if (!array->GetName() || out->GetAbstractArray(array->GetName()) ||
-        (skip && std::strcmp(array->GetName(), skip) == 0))
-      {
-        continue;
-      }
-      vtkSmartPointer<vtkAbstractArray> copy = vtk::TakeSmartPointer(array->NewInstance());
-      copy->SetName(array->GetName());
-      copy->SetNumberOfComponents(array->GetNumberOfComponents());
-      copy->SetNumberOfTuples(static_cast<vtkIdType>(from.size()));
-      for (std::size_t i = 0; i < from.size(); ++i)
-      {
-        copy->SetTuple(static_cast<vtkIdType>(i), from[i], array);
-      }
-      out->AddArray(copy);
-    }
+    from[static_cast<std::size_t>(o)] = surface.outputSource(o);
   }
-
-  // Input point arrays are copied and extended with values interpolated for the
-  // added points (VTK's interpolation rules; the arrays those rules do not
-  // interpolate take the nearest source's value). The shading normals replace
-  // the input's normals (if any) as the active normals, keeping the input's
-  // array name. `OriginalPointId` gives every output point's input point (-1
-  // for added points), composed with an input array of that name.
-  void BuildPointData(vtkPointData * in, vtkPointData * out, vtkIdType numPoints,
-    const silsmooth::WeldedSurface& surface, const silsmooth::SmoothingResult& result,
-    const silsmooth::SurfaceFrame& frame)
+  for (std::size_t a = 0; a < frame.Added.size(); ++a)
   {
-    const vtkIdType base = static_cast<vtkIdType>(surface.outputPointCount());
-    const vtkIdType total = base + static_cast<vtkIdType>(frame.Added.size());
-    vtkDataArray* inNormals = in->GetNormals();
-    vtkDataArray* inOriginal = in->GetArray("OriginalPointId");
+    from[static_cast<std::size_t>(base) + a] = NearestSource(frame.Added[a], result);
+  }
+  AddUncopiedArrays(in, out, from, inNormals ? inNormals->GetName() : nullptr);
+
+  vtkNew<vtkIdTypeArray> original;
+  original->SetName("OriginalPointId");
+  original->SetNumberOfValues(total);
+  for (vtkIdType o = 0; o < total; ++o)
+  {
+    const vtkIdType source = o < base ? surface.outputSource(o) : -1;
+    original->SetValue(o,
+      source >= 0 && inOriginal ? static_cast<vtkIdType>(inOriginal->GetTuple1(source)) : source);
+  }
+  if (out->GetAbstractArray("OriginalPointId"))
+  {
+    out->RemoveArray("OriginalPointId");
+  }
+  out->AddArray(original);
+
+  const silsmooth::PreparedMesh& mesh = surface.prepared();
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName(inNormals && inNormals->GetName() ? inNormals->GetName() : "Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(total);
+  float* n = normals->GetPointer(0);
+  for (vtkIdType o = 0; o < base; ++o)
+  {
+    const glm::dvec3& normal = mesh.normals()[static_cast<std::size_t>(surface.outputPrepared(o))];
+    *n++ = static_cast<float>(normal.x);
+    *n++ = static_cast<float>(normal.y);
+    *n++ = static_cast<float>(normal.z);
+  }
+  for (const silsmooth::SurfaceFrame::AddedPoint& added : frame.Added)
+  {
+    const glm::dvec3& normal = result.NewPoints[added.NewPoint].Normal;
+    *n++ = static_cast<float>(normal.x);
+    *n++ = static_cast<float>(normal.y);
+    *n++ = static_cast<float>(normal.z);
+  }
+  out->SetNormals(normals);
+}
+
+// Verts and lines pass through (PassVertsAndLines: `droppedCells` counts the
+// ones left out); polygons and strips become the frame's triangles, written
+// by the surface straight into the cell arrays. `OriginalCellId` is composed
+// with an input array of that name.
+silsmooth::SurfaceFrame BuildCells(vtkPolyData* input, vtkPolyData* output,
+  const std::vector<vtkIdType>& triangleCell, const silsmooth::WeldedSurface& surface,
+  const silsmooth::SmoothingResult& result, vtkIdType& droppedCells)
+{
+  const vtkSilhouetteFilterSupport::PassedCells passed =
+    vtkSilhouetteFilterSupport::PassVertsAndLines(input);
+  droppedCells = passed.Dropped;
+  output->SetVerts(passed.Verts);
+  output->SetLines(passed.Lines);
+  const vtkIdType passThrough = static_cast<vtkIdType>(passed.CellIds.size());
+
+  const std::size_t outTriangles = surface.outputTriangleCount(result);
+  vtkNew<vtkIdTypeArray> offsets;
+  vtkNew<vtkIdTypeArray> connectivity;
+  offsets->SetNumberOfValues(static_cast<vtkIdType>(outTriangles + 1));
+  connectivity->SetNumberOfValues(static_cast<vtkIdType>(outTriangles * 3));
+  const vtkIdType outCells = passThrough + static_cast<vtkIdType>(outTriangles);
+  vtkNew<vtkUnsignedCharArray> newGeometry;
+  newGeometry->SetName("NewGeometry");
+  newGeometry->SetNumberOfValues(outCells);
+  std::vector<vtkIdType> origin(static_cast<std::size_t>(outCells));
+  unsigned char* kinds = newGeometry->GetPointer(0);
+  std::copy(passed.CellIds.begin(), passed.CellIds.end(), origin.begin());
+  std::fill(kinds, kinds + passThrough, static_cast<unsigned char>(0));
+  silsmooth::SurfaceFrame frame = surface.assemble(
+    result, connectivity->GetPointer(0), origin.data() + passThrough, kinds + passThrough);
+  for (vtkIdType c = passThrough; c < outCells; ++c)
+  {
+    origin[static_cast<std::size_t>(c)] =
+      triangleCell[static_cast<std::size_t>(origin[static_cast<std::size_t>(c)])];
+  }
+  vtkIdType* offs = offsets->GetPointer(0);
+  for (std::size_t t = 0; t <= outTriangles; ++t)
+  {
+    offs[t] = static_cast<vtkIdType>(t * 3);
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+  output->SetPolys(polys);
+
+  vtkCellData* in = input->GetCellData();
+  vtkCellData* out = output->GetCellData();
+  // Each output cell takes its original cell's data.
+  if (in->GetNumberOfArrays() > 0)
+  {
+    vtkNew<vtkIdList> source;
+    source->SetNumberOfIds(outCells);
+    std::copy(origin.begin(), origin.end(), source->begin());
+    vtkNew<vtkIdList> destination;
+    destination->SetNumberOfIds(outCells);
+    std::iota(destination->begin(), destination->end(), vtkIdType{ 0 });
     out->CopyAllOn();
-    out->CopyNormalsOff();
-    out->InterpolateAllocate(in, total);
-    if (numPoints > 0)
-    {
-      out->CopyData(in, 0, numPoints, 0);
-    }
-    for (vtkIdType id = numPoints; id < base; ++id)
-    {
-      out->CopyData(in, surface.outputSource(id), id);
-    }
-    vtkNew<vtkIdList> sources;
-    sources->SetNumberOfIds(3);
-    vtkIdType id = base;
-    for (const silsmooth::SurfaceFrame::AddedPoint& added : frame.Added)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        sources->SetId(k, added.Sources[static_cast<std::size_t>(k)]);
-      }
-      const std::array<double, 3>& w = result.NewPoints[added.NewPoint].Weights;
-      double weights[3] = { w[0], w[1], w[2] };
-      out->InterpolatePoint(in, id++, sources, weights);
-    }
-    if (inNormals && inNormals->GetName() && out->GetArray(inNormals->GetName()))
-    {
-      out->RemoveArray(inNormals->GetName());
-    }
-
-    std::vector<vtkIdType> from(static_cast<std::size_t>(total));
-    for (vtkIdType o = 0; o < base; ++o)
-    {
-      from[static_cast<std::size_t>(o)] = surface.outputSource(o);
-    }
-    for (std::size_t a = 0; a < frame.Added.size(); ++a)
-    {
-      from[static_cast<std::size_t>(base) + a] = NearestSource(frame.Added[a], result);
-    }
-    AddUncopiedArrays(in, out, from, inNormals ? inNormals->GetName() : nullptr);
-
-    vtkNew<vtkIdTypeArray> original;
-    original->SetName("OriginalPointId");
-    original->SetNumberOfValues(total);
-    for (vtkIdType o = 0; o < total; ++o)
-    {
-      const vtkIdType source = o < base ? surface.outputSource(o) : -1;
-      original->SetValue(o,
-        source >= 0 && inOriginal ? static_cast<vtkIdType>(inOriginal->GetTuple1(source)) : source);
-    }
-    if (out->GetAbstractArray("OriginalPointId"))
-    {
-      out->RemoveArray("OriginalPointId");
-    }
-    out->AddArray(original);
-
-    const silsmooth::PreparedMesh& mesh = surface.prepared();
-    vtkNew<vtkFloatArray> normals;
-    normals->SetName(inNormals && inNormals->GetName() ? inNormals->GetName() : "Normals");
-    normals->SetNumberOfComponents(3);
-    normals->SetNumberOfTuples(total);
-    float* n = normals->GetPointer(0);
-    for (vtkIdType o = 0; o < base; ++o)
-    {
-      const glm::dvec3& normal =
-        mesh.normals()[static_cast<std::size_t>(surface.outputPrepared(o))];
-      *n++ = static_cast<float>(normal.x);
-      *n++ = static_cast<float>(normal.y);
-      *n++ = static_cast<float>(normal.z);
-    }
-    for (const silsmooth::SurfaceFrame::AddedPoint& added : frame.Added)
-    {
-      const glm::dvec3& normal = result.NewPoints[added.NewPoint].Normal;
-      *n++ = static_cast<float>(normal.x);
-      *n++ = static_cast<float>(normal.y);
-      *n++ = static_cast<float>(normal.z);
-    }
-    out->SetNormals(normals);
+    out->CopyAllocate(in, outCells);
+    out->CopyData(in, source, destination);
+    AddUncopiedArrays(in, out, origin, "OriginalCellId");
   }
-
-  // Verts and lines pass through (PassVertsAndLines); polygons and strips
-  // become the frame's triangles, written by the surface straight into the
-  // cell arrays. `OriginalCellId` is composed with an input array of that name.
-  silsmooth::SurfaceFrame BuildCells(vtkPolyData * input, vtkPolyData * output,
-    const std::vector<vtkIdType>& triangleCell, const silsmooth::WeldedSurface& surface,
-    const silsmooth::SmoothingResult& result)
+  vtkDataArray* inOriginal = in->GetArray("OriginalCellId");
+  vtkNew<vtkIdTypeArray> originalCellId;
+  originalCellId->SetName("OriginalCellId");
+  originalCellId->SetNumberOfValues(outCells);
+  vtkIdType* originalIds = originalCellId->GetPointer(0);
+  for (vtkIdType c = 0; c < outCells; ++c)
   {
-    const vtkSilhouetteFilterSupport::PassedCells passed =
-      vtkSilhouetteFilterSupport::PassVertsAndLines(input);
-    output->SetVerts(passed.Verts);
-    output->SetLines(passed.Lines);
-    const vtkIdType passThrough = static_cast<vtkIdType>(passed.CellIds.size());
-
-    const std::size_t outTriangles = surface.outputTriangleCount(result);
-    vtkNew<vtkIdTypeArray> offsets;
-    vtkNew<vtkIdTypeArray> connectivity;
-    offsets->SetNumberOfValues(static_cast<vtkIdType>(outTriangles + 1));
-    connectivity->SetNumberOfValues(static_cast<vtkIdType>(outTriangles * 3));
-    const vtkIdType outCells = passThrough + static_cast<vtkIdType>(outTriangles);
-    vtkNew<vtkUnsignedCharArray> newGeometry;
-    newGeometry->SetName("NewGeometry");
-    newGeometry->SetNumberOfValues(outCells);
-    std::vector<vtkIdType> origin(static_cast<std::size_t>(outCells));
-    unsigned char* kinds = newGeometry->GetPointer(0);
-    std::copy(passed.CellIds.begin(), passed.CellIds.end(), origin.begin());
-    std::fill(kinds, kinds + passThrough, static_cast<unsigned char>(0));
-    silsmooth::SurfaceFrame frame = surface.assemble(
-      result, connectivity->GetPointer(0), origin.data() + passThrough, kinds + passThrough);
-    for (vtkIdType c = passThrough; c < outCells; ++c)
-    {
-      origin[static_cast<std::size_t>(c)] =
-        triangleCell[static_cast<std::size_t>(origin[static_cast<std::size_t>(c)])];
-    }
-    vtkIdType* offs = offsets->GetPointer(0);
-    for (std::size_t t = 0; t <= outTriangles; ++t)
-    {
-      offs[t] = static_cast<vtkIdType>(t * 3);
-    }
-    vtkNew<vtkCellArray> polys;
-    polys->SetData(offsets, connectivity);
-    output->SetPolys(polys);
-
-    vtkCellData* in = input->GetCellData();
-    vtkCellData* out = output->GetCellData();
-    // Each output cell takes its original cell's data.
-    if (in->GetNumberOfArrays() > 0)
-    {
-      vtkNew<vtkIdList> source;
-      source->SetNumberOfIds(outCells);
-      std::copy(origin.begin(), origin.end(), source->begin());
-      vtkNew<vtkIdList> destination;
-      destination->SetNumberOfIds(outCells);
-      std::iota(destination->begin(), destination->end(), vtkIdType{ 0 });
-      out->CopyAllOn();
-      out->CopyAllocate(in, outCells);
-      out->CopyData(in, source, destination);
-      AddUncopiedArrays(in, out, origin, "OriginalCellId");
-    }
-    vtkDataArray* inOriginal = in->GetArray("OriginalCellId");
-    vtkNew<vtkIdTypeArray> originalCellId;
-    originalCellId->SetName("OriginalCellId");
-    originalCellId->SetNumberOfValues(outCells);
-    vtkIdType* originalIds = originalCellId->GetPointer(0);
-    for (vtkIdType c = 0; c < outCells; ++c)
-    {
-      const vtkIdType from = origin[static_cast<std::size_t>(c)];
-      originalIds[c] = inOriginal ? static_cast<vtkIdType>(inOriginal->GetTuple1(from)) : from;
-    }
-    if (out->GetAbstractArray("OriginalCellId"))
-    {
-      out->RemoveArray("OriginalCellId");
-    }
-    out->AddArray(newGeometry);
-    out->AddArray(originalCellId);
-    return frame;
+    const vtkIdType from = origin[static_cast<std::size_t>(c)];
+    originalIds[c] = inOriginal ? static_cast<vtkIdType>(inOriginal->GetTuple1(from)) : from;
   }
-
-  // Output port 1: the silhouette polylines over their own compact point set.
-  void BuildSilhouetteLines(
-    vtkPolyData * mesh, const silsmooth::SurfaceFrame& frame, vtkPolyData* lines)
+  if (out->GetAbstractArray("OriginalCellId"))
   {
-    vtkPoints* meshPoints = mesh->GetPoints();
-    vtkDataArray* meshNormals = mesh->GetPointData()->GetNormals();
-    vtkNew<vtkPoints> points;
-    points->SetDataType(meshPoints->GetDataType());
-    vtkNew<vtkFloatArray> normals;
-    normals->SetName("Normals");
-    normals->SetNumberOfComponents(3);
-    vtkNew<vtkCellArray> cells;
-    std::unordered_map<silsmooth::Id, vtkIdType> compact;
-    for (const std::vector<silsmooth::Id>& chain : frame.Polylines)
-    {
-      cells->InsertNextCell(static_cast<int>(chain.size())); // VTK takes the size as int here
-      for (const silsmooth::Id id : chain)
-      {
-        auto inserted = compact.emplace(id, points->GetNumberOfPoints());
-        if (inserted.second)
-        {
-          points->InsertNextPoint(meshPoints->GetPoint(id));
-          normals->InsertNextTuple(meshNormals->GetTuple(id));
-        }
-        cells->InsertCellPoint(inserted.first->second);
-      }
-    }
-    lines->SetPoints(points);
-    lines->SetLines(cells);
-    lines->GetPointData()->SetNormals(normals);
+    out->RemoveArray("OriginalCellId");
   }
+  out->AddArray(newGeometry);
+  out->AddArray(originalCellId);
+  return frame;
+}
+
+// Output port 1: the silhouette polylines over their own compact point set.
+void BuildSilhouetteLines(
+  vtkPolyData* mesh, const silsmooth::SurfaceFrame& frame, vtkPolyData* lines)
+{
+  vtkPoints* meshPoints = mesh->GetPoints();
+  vtkDataArray* meshNormals = mesh->GetPointData()->GetNormals();
+  vtkNew<vtkPoints> points;
+  points->SetDataType(meshPoints->GetDataType());
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  vtkNew<vtkCellArray> cells;
+  std::unordered_map<silsmooth::Id, vtkIdType> compact;
+  for (const std::vector<silsmooth::Id>& chain : frame.Polylines)
+  {
+    cells->InsertNextCell(static_cast<int>(chain.size())); // VTK takes the size as int here
+    for (const silsmooth::Id id : chain)
+    {
+      auto inserted = compact.emplace(id, points->GetNumberOfPoints());
+      if (inserted.second)
+      {
+        points->InsertNextPoint(meshPoints->GetPoint(id));
+        normals->InsertNextTuple(meshNormals->GetTuple(id));
+      }
+      cells->InsertCellPoint(inserted.first->second);
+    }
+  }
+  lines->SetPoints(points);
+  lines->SetLines(cells);
+  lines->GetPointData()->SetNormals(normals);
+}
 
 } // namespace
 
@@ -550,8 +551,9 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   }
 
   const vtkIdType numPoints = input->GetNumberOfPoints();
+  vtkIdType droppedCells = 0;
   const silsmooth::SurfaceFrame frame =
-    BuildCells(input, output, internal.TriangleCell, *internal.Surface, result);
+    BuildCells(input, output, internal.TriangleCell, *internal.Surface, result, droppedCells);
   this->UpdateProgress(0.7);
   output->SetPoints(BuildPoints(
     input, OutputPointType(input, this->OutputPointsPrecision), *internal.Surface, result, frame));
@@ -562,9 +564,7 @@ int vtkSilhouetteSmoothingFilter::RequestData(
     vtkWarningMacro(<< internal.TooSmallPolygons
                     << " polygons with fewer than 3 points make no triangle and were dropped.");
   }
-  const vtkIdType droppedCells =
-    rebuilt ? vtkSilhouetteFilterSupport::PassVertsAndLines(input).Dropped : 0;
-  if (droppedCells > 0)
+  if (rebuilt && droppedCells > 0) // said once per input, not every frame
   {
     vtkWarningMacro(<< droppedCells
                     << " vertex cells without points or lines with one point draw nothing and "

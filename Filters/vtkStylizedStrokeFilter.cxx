@@ -21,11 +21,11 @@
 
 vtkStandardNewMacro(vtkStylizedStrokeFilter);
 
-vtkSilhouetteCheckedSetterMacro(vtkStylizedStrokeFilter, Amplitude, double, 0.0, VTK_DOUBLE_MAX)
-  vtkSilhouetteCheckedSetterMacro(vtkStylizedStrokeFilter, Wavelength, double, 0.0, VTK_DOUBLE_MAX)
-    vtkSilhouetteCheckedSetterMacro(vtkStylizedStrokeFilter, Spacing, double, 0.0, VTK_DOUBLE_MAX)
+vtkSilhouetteCheckedSetterMacro(vtkStylizedStrokeFilter, Amplitude, double, 0.0, VTK_DOUBLE_MAX);
+vtkSilhouetteCheckedSetterMacro(vtkStylizedStrokeFilter, Wavelength, double, 0.0, VTK_DOUBLE_MAX);
+vtkSilhouetteCheckedSetterMacro(vtkStylizedStrokeFilter, Spacing, double, 0.0, VTK_DOUBLE_MAX);
 
-      vtkStylizedStrokeFilter::vtkStylizedStrokeFilter()
+vtkStylizedStrokeFilter::vtkStylizedStrokeFilter()
 {
   this->ViewportDependent = false; // offsets are in model units, not pixels
 }

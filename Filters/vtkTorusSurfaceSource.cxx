@@ -16,10 +16,10 @@
 
 vtkStandardNewMacro(vtkTorusSurfaceSource);
 
-vtkSilhouetteCheckedSetterMacro(vtkTorusSurfaceSource, RingRadius, double, 0.0, VTK_DOUBLE_MAX)
-  vtkSilhouetteCheckedSetterMacro(vtkTorusSurfaceSource, TubeRadius, double, 0.0, VTK_DOUBLE_MAX)
+vtkSilhouetteCheckedSetterMacro(vtkTorusSurfaceSource, RingRadius, double, 0.0, VTK_DOUBLE_MAX);
+vtkSilhouetteCheckedSetterMacro(vtkTorusSurfaceSource, TubeRadius, double, 0.0, VTK_DOUBLE_MAX);
 
-    vtkTorusSurfaceSource::vtkTorusSurfaceSource()
+vtkTorusSurfaceSource::vtkTorusSurfaceSource()
 {
   this->SetNumberOfInputPorts(0);
 }

@@ -107,46 +107,37 @@ void RequireLegacyPolyData(vtkPolyDataReader* reader, const std::string& path)
   throw RuntimeError(Quoted(path) + " is not a readable legacy VTK POLYDATA file");
 }
 
+// The pre-check for the format, then VTK's reader.
 vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, const std::string& extension)
 {
   if (extension == ".ply")
   {
     CheckPlyFile(path); // vtkPLYReader crashes on some malformed files
-    auto reader = vtkSmartPointer<vtkPLYReader>::New();
-    reader->SetFileName(path.c_str());
-    return reader;
   }
-  if (extension == ".obj")
+  else if (extension == ".obj")
   {
     CheckObjFile(path); // vtkOBJReader silently misreads "nan"
-    auto reader = vtkSmartPointer<vtkOBJReader>::New();
-    reader->SetFileName(path.c_str());
-    return reader;
   }
-  if (extension == ".stl")
+  else if (extension == ".stl")
   {
     CheckStlFile(path); // vtkSTLReader allocates for any triangle count a binary header declares
-    auto reader = vtkSmartPointer<vtkSTLReader>::New();
-    reader->SetFileName(path.c_str());
-    return reader;
   }
-  if (extension == ".vtp")
+  else if (extension == ".vtp")
   {
     CheckVtpFile(path); // vtkXMLPolyDataReader allocates what a binary array's header declares
-    auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
-    reader->SetFileName(path.c_str());
-    return reader;
+  }
+  vtkSmartPointer<vtkAlgorithm> reader = NewVtkReader(path);
+  if (!reader)
+  {
+    throw RuntimeError(Quoted(path) + ": unknown mesh format '" + extension +
+      "'; expected .ply, .obj, .stl, .vtp or .vtk");
   }
   if (extension == ".vtk")
   {
-    auto reader = vtkSmartPointer<vtkPolyDataReader>::New();
-    reader->SetFileName(path.c_str());
-    RequireLegacyPolyData(reader, path);
+    RequireLegacyPolyData(vtkPolyDataReader::SafeDownCast(reader), path);
     CheckLegacyVtkFile(path); // vtkPolyDataReader crashes on short or unparsable cell sections
-    return reader;
   }
-  throw RuntimeError(Quoted(path) + ": unknown mesh format '" + extension +
-    "'; expected .ply, .obj, .stl, .vtp or .vtk");
+  return reader;
 }
 
 // What the reading process runs: the pre-check, VTK's reader, and the
@@ -195,6 +186,36 @@ std::string LowercaseExtension(const std::string& path)
   return extension;
 }
 
+vtkSmartPointer<vtkAlgorithm> NewVtkReader(const std::string& path)
+{
+  const std::string extension = LowercaseExtension(path);
+  const auto make = [&path](auto reader) -> vtkSmartPointer<vtkAlgorithm> {
+    reader->SetFileName(path.c_str());
+    return reader;
+  };
+  if (extension == ".ply")
+  {
+    return make(vtkSmartPointer<vtkPLYReader>::New());
+  }
+  if (extension == ".obj")
+  {
+    return make(vtkSmartPointer<vtkOBJReader>::New());
+  }
+  if (extension == ".stl")
+  {
+    return make(vtkSmartPointer<vtkSTLReader>::New());
+  }
+  if (extension == ".vtp")
+  {
+    return make(vtkSmartPointer<vtkXMLPolyDataReader>::New());
+  }
+  if (extension == ".vtk")
+  {
+    return make(vtkSmartPointer<vtkPolyDataReader>::New());
+  }
+  return nullptr;
+}
+
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
 {
   const std::string extension = LowercaseExtension(path);
@@ -206,6 +227,8 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
   VtkErrorLog::Instance().Clear();
   vtkSmartPointer<vtkPolyData> mesh = ReadInSandbox(
     Quoted(path), [&] { return ReadWithVtk(path, extension); }, ReadLimits::ForFileOfSize(bytes));
+  // Again on this side: the child ran a reader on hostile bytes, and what it
+  // sent is trusted no more than the file.
   RequireConsistentMesh(mesh, Quoted(path));
   // The reader's warnings now, so that they are not mistaken for later ones.
   for (const std::string& warning : VtkErrorLog::Instance().Warnings())

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+class vtkAlgorithm;
 class vtkPolyData;
 
 namespace cli
@@ -14,6 +15,10 @@ namespace cli
 
 /// The extension of `path` in lower case, with its dot ("" if none).
 std::string LowercaseExtension(const std::string& path);
+
+/// VTK's reader for the extension of `path` (.ply .obj .stl .vtp .vtk), set
+/// to read it, with none of ReadMesh's checks; null for another extension.
+vtkSmartPointer<vtkAlgorithm> NewVtkReader(const std::string& path);
 
 /**
  * Reads a mesh with the reader its extension picks (.ply .obj .stl .vtp .vtk).

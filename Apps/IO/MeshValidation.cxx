@@ -15,6 +15,7 @@
 #include <array>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace cli
 {
@@ -98,21 +99,48 @@ void RequireValidCells(
   }
 }
 
-void RequireTuplesPerItem(vtkFieldData* data, vtkIdType items, const char* itemName,
-  const char* where, const std::string& quotedFile)
+// An array without one tuple per point (point data) or per cell (cell data).
+struct MismatchedArray
 {
-  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+  vtkFieldData* Data;
+  int Index;
+  bool PointData;
+  std::string Name;
+  vtkIdType Values;
+  vtkIdType Items;
+
+  std::string Described() const
   {
-    vtkAbstractArray* array = data->GetAbstractArray(a);
-    if (array && array->GetNumberOfTuples() != items)
+    return std::string("the ") + (this->PointData ? "point" : "cell") + " data array '" +
+      this->Name + "'";
+  }
+  std::string Counts() const
+  {
+    return std::to_string(this->Values) + " values for " + std::to_string(this->Items) +
+      (this->PointData ? " points" : " cells");
+  }
+};
+
+// In the order of the arrays, point data first.
+std::vector<MismatchedArray> FindMismatchedArrays(vtkPolyData* mesh)
+{
+  std::vector<MismatchedArray> found;
+  for (const bool pointData : { true, false })
+  {
+    vtkFieldData* data = pointData ? static_cast<vtkFieldData*>(mesh->GetPointData())
+                                   : static_cast<vtkFieldData*>(mesh->GetCellData());
+    const vtkIdType items = pointData ? mesh->GetNumberOfPoints() : mesh->GetNumberOfCells();
+    for (int a = 0; a < data->GetNumberOfArrays(); ++a)
     {
-      const char* name = array->GetName() ? array->GetName() : "(unnamed)";
-      throw RuntimeError(Fail(quotedFile,
-        std::string("the ") + where + " array '" + name + "' has " +
-          std::to_string(array->GetNumberOfTuples()) + " values for " + std::to_string(items) +
-          " " + itemName));
+      vtkAbstractArray* array = data->GetAbstractArray(a);
+      if (array && array->GetNumberOfTuples() != items)
+      {
+        found.push_back({ data, a, pointData, array->GetName() ? array->GetName() : "(unnamed)",
+          array->GetNumberOfTuples(), items });
+      }
     }
   }
+  return found;
 }
 
 } // namespace
@@ -125,33 +153,23 @@ void RequireConsistentMesh(vtkPolyData* mesh, const std::string& quotedFile)
   {
     RequireValidCells((mesh->*kind.Cells)(), kind, pointCount, quotedFile);
   }
-  RequireTuplesPerItem(mesh->GetPointData(), pointCount, "points", "point data", quotedFile);
-  RequireTuplesPerItem(
-    mesh->GetCellData(), mesh->GetNumberOfCells(), "cells", "cell data", quotedFile);
+  const std::vector<MismatchedArray> mismatched = FindMismatchedArrays(mesh);
+  if (!mismatched.empty())
+  {
+    const MismatchedArray& first = mismatched.front();
+    throw RuntimeError(Fail(quotedFile, first.Described() + " has " + first.Counts()));
+  }
 }
 
 std::string RemoveMismatchedArrays(vtkPolyData* mesh)
 {
+  const std::vector<MismatchedArray> mismatched = FindMismatchedArrays(mesh);
   std::string what;
-  const std::array<std::pair<vtkFieldData*, vtkIdType>, 2> sets{ {
-    { mesh->GetPointData(), mesh->GetNumberOfPoints() },
-    { mesh->GetCellData(), mesh->GetNumberOfCells() },
-  } };
-  for (std::size_t s = 0; s < sets.size(); ++s)
+  // Last first, so that the indices of the others stay valid.
+  for (auto it = mismatched.rbegin(); it != mismatched.rend(); ++it)
   {
-    vtkFieldData* data = sets[s].first;
-    for (int a = data->GetNumberOfArrays() - 1; a >= 0; --a)
-    {
-      vtkAbstractArray* array = data->GetAbstractArray(a);
-      if (array && array->GetNumberOfTuples() != sets[s].second)
-      {
-        what += std::string(what.empty() ? "" : ", ") + "the " + (s == 0 ? "point" : "cell") +
-          " data array '" + (array->GetName() ? array->GetName() : "(unnamed)") + "' (" +
-          std::to_string(array->GetNumberOfTuples()) + " values for " +
-          std::to_string(sets[s].second) + (s == 0 ? " points)" : " cells)");
-        data->RemoveArray(a);
-      }
-    }
+    what += std::string(what.empty() ? "" : ", ") + it->Described() + " (" + it->Counts() + ")";
+    it->Data->RemoveArray(it->Index);
   }
   return what;
 }

@@ -6,6 +6,7 @@
 // reported apart. Times are medians over the frames, measured side by side in one run.
 //
 //   silhouette_benchmark [--frames N] [--max-level L] [--markdown]
+#include "BenchmarkTiming.h"
 #include "vtkCamera.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
@@ -23,22 +24,11 @@
 #include <functional>
 #include <vector>
 
+using benchmark_timing::Median;
+using benchmark_timing::Milliseconds;
+
 namespace
 {
-
-double Milliseconds(const std::function<void()>& work)
-{
-  const auto start = std::chrono::steady_clock::now();
-  work();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-    .count();
-}
-
-double Median(std::vector<double> values)
-{
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
 
 void Orbit(vtkCamera* camera, int frame)
 {

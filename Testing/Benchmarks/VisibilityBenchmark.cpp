@@ -8,6 +8,7 @@
 // hierarchy is built on the first hierarchical frame on top of it.
 //
 //   visibility_benchmark [--views N] [--max-triangles T] [--bunny file.ply] [--no-frame]
+#include "BenchmarkTiming.h"
 #include "SilhouetteSmoother.h"
 #include "VisibilityHierarchy.h"
 
@@ -32,20 +33,6 @@ using namespace silsmooth;
 
 namespace
 {
-
-double milliseconds(const std::function<void()>& work)
-{
-  const auto start = std::chrono::steady_clock::now();
-  work();
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-    .count();
-}
-
-double median(std::vector<double> values)
-{
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
-}
 
 struct Mesh
 {
@@ -288,11 +275,11 @@ int main(int argc, char* argv[])
   for (const Mesh& input : meshes)
   {
     std::unique_ptr<PreparedMesh> prepared;
-    const double prepare = milliseconds([&] {
+    const double prepare = benchmark_timing::Milliseconds([&] {
       prepared = std::make_unique<PreparedMesh>(input.Points, input.Triangles, input.Normals);
     });
     const PreparedMesh& mesh = *prepared;
-    const double build = milliseconds([&] { mesh.visibilityHierarchy(); });
+    const double build = benchmark_timing::Milliseconds([&] { mesh.visibilityHierarchy(); });
     std::mt19937_64 random(1);
     std::vector<double> plainMs, treeMs, framePlainMs, frameTreeMs;
     double decided = 0.0;
@@ -307,12 +294,12 @@ int main(int argc, char* argv[])
       {
         if ((k + v / 2) % 2 == 0)
         {
-          plainMs.push_back(
-            milliseconds([&] { a = vertexVisibility(mesh, view, VisibilityMethod::PerVertex); }));
+          plainMs.push_back(benchmark_timing::Milliseconds(
+            [&] { a = vertexVisibility(mesh, view, VisibilityMethod::PerVertex); }));
         }
         else
         {
-          treeMs.push_back(milliseconds(
+          treeMs.push_back(benchmark_timing::Milliseconds(
             [&] { b = vertexVisibility(mesh, view, VisibilityMethod::Hierarchical); }));
         }
       }
@@ -337,7 +324,7 @@ int main(int argc, char* argv[])
           parameters.Visibility =
             plainNow ? VisibilityMethod::PerVertex : VisibilityMethod::Hierarchical;
           double added = 0.0;
-          const double ms = milliseconds([&] {
+          const double ms = benchmark_timing::Milliseconds([&] {
             added = static_cast<double>(smoothSilhouettes(mesh, view, parameters).NewPoints.size());
           });
           (plainNow ? framePlainMs : frameTreeMs).push_back(ms);
@@ -350,14 +337,14 @@ int main(int argc, char* argv[])
       std::fprintf(stderr, "%s: the two passes added different points\n", input.Name.c_str());
       return 1;
     }
-    const double plain = median(plainMs);
-    const double tree = median(treeMs);
+    const double plain = benchmark_timing::Median(plainMs);
+    const double tree = benchmark_timing::Median(treeMs);
     std::printf("| %s | %zu | %.1f | %.1f | %.3f | %.3f | %.2f | %.1f |", input.Name.c_str(),
       input.Triangles.size(), prepare, build, plain, tree, tree / plain, 100.0 * decided / views);
     if (frame)
     {
-      const double fp = median(framePlainMs);
-      const double ft = median(frameTreeMs);
+      const double fp = benchmark_timing::Median(framePlainMs);
+      const double ft = benchmark_timing::Median(frameTreeMs);
       std::printf(" %.2f | %.2f | %.2f |\n", fp, ft, ft / fp);
     }
     else

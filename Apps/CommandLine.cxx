@@ -361,6 +361,7 @@ GenerateOptions ParseGenerate(ArgumentList& arguments)
 CompareOptions ParseCompare(ArgumentList& arguments, RenderBackend& backend)
 {
   CompareOptions options;
+  bool coarsePointsGiven = false;
   while (!arguments.AtEnd())
   {
     const std::string word = arguments.Take();
@@ -414,6 +415,17 @@ CompareOptions ParseCompare(ArgumentList& arguments, RenderBackend& backend)
       RejectInlineValue(option);
       options.Truth = true;
     }
+    else if (option.Name == "--coarse-points")
+    {
+      const std::string where = arguments.TakeValue(option);
+      if (where != "original" && where != "reference")
+      {
+        throw UsageError(
+          "option '--coarse-points' takes 'original' or 'reference', got '" + where + "'");
+      }
+      options.CoarsePointsOnReference = where == "reference";
+      coarsePointsGiven = true;
+    }
     else if (option.Name == "--backend")
     {
       backend = ParseRenderBackend(option.Name, arguments.TakeValue(option));
@@ -427,6 +439,10 @@ CompareOptions ParseCompare(ArgumentList& arguments, RenderBackend& backend)
   if (options.Inputs.empty())
   {
     throw UsageError("'compare' needs a model name, 'all' or a mesh file");
+  }
+  if (coarsePointsGiven && !options.Truth)
+  {
+    throw UsageError("option '--coarse-points' needs '--truth'");
   }
   if (options.Truth)
   {

@@ -402,6 +402,13 @@ Options:
                         original itself; for ours also the folds (turned-over
                         triangles / cutting pairs) and the chord fallbacks,
                         summed over the views (docs/fidelity.md)
+  --coarse-points original|reference
+                        with --truth: move the coarse points onto the
+                        original (default) or onto the reference; the
+                        original's facets lie inside the reference, so
+                        points on them sit inside the true shape, and
+                        with 'reference' the carried normals are the
+                        reference's
   --json                one JSON array, an object per model
   --markdown            the README's tables (the earlier methods and the
                         coherence in tables of their own)

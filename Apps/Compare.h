@@ -29,6 +29,9 @@ struct CompareOptions
   std::string DataDirectory; ///< where bunny.ply is; empty: the built-in default
   /// Measure against the truth instead (docs/fidelity.md): mesh files only.
   bool Truth = false;
+  /// With Truth: the coarse points on the reference instead of the original
+  /// (`--coarse-points reference`).
+  bool CoarsePointsOnReference = false;
 };
 
 /// `silhouette compare`: coarse, coarse + smoothing and the fine reference of

@@ -53,10 +53,16 @@ std::string Folds(const silhouette_eval::FidelityRow& row)
   return row.TurnedOver < 0 ? std::string("-") : Count(row.TurnedOver) + " / " + Count(row.Cutting);
 }
 
+const char* CoarsePointSurface(const silhouette_eval::FidelityResult& r)
+{
+  return r.CoarsePointsOnReference ? "reference" : "original";
+}
+
 void PrintText(const silhouette_eval::FidelityResult& r)
 {
   std::cout << "mesh " << r.Name << ": " << r.OriginalTriangles << " triangles, coarse "
-            << r.CoarseTriangles << ", reference (Butterfly) " << r.ReferenceTriangles << "\n";
+            << r.CoarseTriangles << " (points on the " << CoarsePointSurface(r)
+            << "), reference (Butterfly) " << r.ReferenceTriangles << "\n";
   std::printf("  %-31s %9s %9s %9s %11s %11s %8s %13s %7s\n", "method", "triangles", "mean", "max",
     "mean(orig)", "max(orig)", "/coarse", "turned/cutting", "chord");
   const double coarse = r.Rows.empty() ? 0.0 : r.Rows.front().Mean;
@@ -76,7 +82,8 @@ void PrintMarkdown(const std::vector<silhouette_eval::FidelityResult>& results)
     // The file's name alone: the tables go into documents.
     const std::string name = r.Name.substr(r.Name.find_last_of('/') + 1);
     std::cout << "**" << name << "** (" << r.OriginalTriangles << " triangles; coarse "
-              << r.CoarseTriangles << "; reference " << r.ReferenceTriangles << ")\n\n";
+              << r.CoarseTriangles << ", points on the " << CoarsePointSurface(r) << "; reference "
+              << r.ReferenceTriangles << ")\n\n";
     std::cout << "| method | triangles | mean px | max px | mean / coarse | mean px, original | "
                  "max px, original | folds: turned over / cutting | chord fallbacks |\n"
                  "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
@@ -102,6 +109,7 @@ void PrintJson(const std::vector<silhouette_eval::FidelityResult>& results)
     std::cout << (i ? ", " : "") << "{\"mesh\": " << Quoted(r.Name)
               << ", \"original_triangles\": " << r.OriginalTriangles
               << ", \"coarse_triangles\": " << r.CoarseTriangles
+              << ", \"coarse_points\": " << Quoted(CoarsePointSurface(r))
               << ", \"reference_triangles\": " << r.ReferenceTriangles << ", \"methods\": [";
     const double coarse = r.Rows.empty() ? 0.0 : r.Rows.front().Mean;
     for (std::size_t k = 0; k < r.Rows.size(); ++k)
@@ -131,6 +139,7 @@ void RunCompareTruth(const CompareOptions& options)
   fidelity.Views = options.Views;
   fidelity.Tolerance = options.Tolerance;
   fidelity.CoarseTriangles = options.CoarseTriangles > 0 ? options.CoarseTriangles : 500;
+  fidelity.CoarsePointsOnReference = options.CoarsePointsOnReference;
   fidelity.Progress = [](const std::string& line) {
     std::cerr << "compare: " << PrintableText(line) << std::endl;
   };

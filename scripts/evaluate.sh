@@ -36,21 +36,27 @@ done
 # against the original refined by Butterfly subdivision and the original.
 echo "evaluate: measuring the real meshes against the truth (progress below)"
 bash "$here/scripts/real-meshes.sh" "$build/real-meshes"
-fidelity_table="$build/fidelity_table.md"
-{
-  echo "Measured by \`bash scripts/evaluate.sh\` on $(nproc) cores, $(uname -m), Mesa llvmpipe under Xvfb,"
-  echo "$(date -u +%Y-%m-%d), at 1024x768 from 12 views."
-  echo
-  "${display[@]}" "$silhouette" compare --truth --markdown "$here/Data/bunny.ply" \
-    "$build/real-meshes/"{cow,elephant,elk,hand,homer,knot1}.ply
-} >"$fidelity_table"
+# Two protocols: the coarse points on the original (issue 13's), and on the
+# reference, each into docs/fidelity.md between its own markers.
 fidelity="$here/docs/fidelity.md"
-awk -v table="$fidelity_table" '
-  /<!-- fidelity:begin -->/ { print; while ((getline line < table) > 0) print line; skipping = 1; next }
-  /<!-- fidelity:end -->/ { skipping = 0 }
-  !skipping { print }
-' "$fidelity" >"$fidelity.new"
-mv "$fidelity.new" "$fidelity"
+for coarse_points in original reference; do
+  marker=fidelity
+  [ "$coarse_points" = reference ] && marker=fidelity-reference
+  table="$build/fidelity_table_$coarse_points.md"
+  {
+    echo "Measured by \`bash scripts/evaluate.sh\` on $(nproc) cores, $(uname -m), Mesa llvmpipe under Xvfb,"
+    echo "$(date -u +%Y-%m-%d), at 1024x768 from 12 views, coarse points on the $coarse_points."
+    echo
+    "${display[@]}" "$silhouette" compare --truth --markdown --coarse-points "$coarse_points" \
+      "$here/Data/bunny.ply" "$build/real-meshes/"{cow,elephant,elk,hand,homer,knot1}.ply
+  } >"$table"
+  awk -v table="$table" -v begin="<!-- $marker:begin -->" -v end="<!-- $marker:end -->" '
+    $0 == begin { print; while ((getline line < table) > 0) print line; skipping = 1; next }
+    $0 == end { skipping = 0 }
+    !skipping { print }
+  ' "$fidelity" >"$fidelity.new"
+  mv "$fidelity.new" "$fidelity"
+done
 
 readme="$here/README.md"
 awk -v table="$here/docs/evaluation.md" '

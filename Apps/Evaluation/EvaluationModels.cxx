@@ -131,9 +131,9 @@ void TrefoilTube(double u, double v, double p[3])
   }
 }
 
-// Moves every point of `coarse` to the closest point of `surface` and gives it
-// the surface's normal there (interpolated over the closest triangle):
-// silhouette smoothing assumes the coarse mesh samples the smooth surface,
+} // namespace
+
+// Silhouette smoothing assumes the coarse mesh samples the smooth surface,
 // which quadric decimation's optimal placement does not (on a convex shape it
 // puts the points outside, and the smoothing then overshoots).
 void ProjectOntoSurface(vtkPolyData* coarse, vtkPolyData* surface)
@@ -188,8 +188,6 @@ void ProjectOntoSurface(vtkPolyData* coarse, vtkPolyData* surface)
   coarse->SetPoints(onSurface);
   coarse->GetPointData()->SetNormals(coarseNormals);
 }
-
-} // namespace
 
 std::vector<std::string> ModelNames()
 {

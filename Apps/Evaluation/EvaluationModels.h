@@ -81,6 +81,11 @@ vtkSmartPointer<vtkPolyData> ExactSurface(const std::string& name, int finer = 0
 /// 0.58 px with the projection). Throws std::runtime_error when the result is
 /// not a closed manifold though the original was.
 vtkSmartPointer<vtkPolyData> Decimate(vtkPolyData* original, int triangles);
+/// Moves every point of `coarse` to the closest point of `surface` and gives
+/// it `surface`'s normal there, interpolated over the closest triangle (the
+/// surface's own normals, or vtkPolyDataNormals' when it has none).
+void ProjectOntoSurface(vtkPolyData* coarse, vtkPolyData* surface);
+
 /// The edges of `mesh`'s polygons not shared by exactly two of them (0: a
 /// closed manifold).
 long CountBoundaryOrNonManifoldEdges(vtkPolyData* mesh);

@@ -166,6 +166,12 @@ FidelityResult EvaluateFidelity(
   vtkSmartPointer<vtkPolyData> reference =
     InterpolatingRefinement(original, options.ReferenceLevels);
   result.ReferenceTriangles = static_cast<long>(reference->GetNumberOfPolys());
+  result.CoarsePointsOnReference = options.CoarsePointsOnReference;
+  if (options.CoarsePointsOnReference)
+  {
+    ProjectOntoSurface(carried, reference);
+    own = WithoutNormals(carried);
+  }
 
   MaskRenderer masks(options.Width, options.Height);
   vtkNew<vtkRenderer> framing;

@@ -6,7 +6,8 @@
 // (VTK's Butterfly subdivision, two levels), which passes through the
 // original's points and so does not shrink the shape as Loop's approximating
 // limit does; and the original itself. The coarse version: our link-condition
-// quadric decimation, every point moved onto the original surface. Methods,
+// quadric decimation, every point moved onto the original surface (or, as an
+// option, onto the reference). Methods,
 // all from that coarse version: the raw coarse mesh; coarse + silhouette
 // smoothing with its own normals, and with the original's normals carried to
 // the coarse points (a user may or may not have a fine mesh), and with the
@@ -36,6 +37,13 @@ struct FidelityOptions
   int CoarseTriangles = 500;
   int ReferenceLevels = 2; ///< Butterfly subdivision levels of the original
   int HighLevel = 3;       ///< the peers' fixed level
+  /// Where the coarse version's points are moved: onto the original (false,
+  /// the protocol of issue 13) or onto the reference (true). The original's
+  /// facets lie inside the reference, so points on them sit inside the true
+  /// shape, a bias every interpolating method inherits (docs/fidelity.md);
+  /// on the reference the coarse points sample the true shape itself, and
+  /// "carried normals" are the reference's.
+  bool CoarsePointsOnReference = false;
   std::function<void(const std::string&)> Progress;
 };
 
@@ -65,6 +73,7 @@ struct FidelityResult
   long OriginalTriangles = 0;
   long CoarseTriangles = 0;
   long ReferenceTriangles = 0;
+  bool CoarsePointsOnReference = false; ///< as FidelityOptions'
   /// coarse; ours with the coarse mesh's own normals estimated by angle,
   /// area, Max's weights and a quadric fit; ours with carried normals; ours
   /// (area) without the fold guard; then the peers.

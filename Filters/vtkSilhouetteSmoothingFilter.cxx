@@ -76,14 +76,44 @@ int OutputPointType(vtkPolyData* input, int precision)
 
 // Input points (ids kept), copies of input points for extra smooth groups,
 // then the added points; points lowered by the perturbation move in every
-// copy.
+// copy. With `only`, just those output points (ascending ids), in order.
 vtkSmartPointer<vtkPoints> BuildPoints(vtkPolyData* input, int pointType,
   const silsmooth::WeldedSurface& surface, const silsmooth::SmoothingResult& result,
-  const silsmooth::SurfaceFrame& frame)
+  const silsmooth::SurfaceFrame& frame, const std::vector<vtkIdType>* only = nullptr)
 {
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataType(pointType);
   vtkPoints* inPoints = input->GetPoints();
+  if (only)
+  {
+    const vtkIdType base = static_cast<vtkIdType>(surface.outputPointCount());
+    points->SetNumberOfPoints(static_cast<vtkIdType>(only->size()));
+    auto moved = frame.Moved.begin();
+    for (std::size_t i = 0; i < only->size(); ++i)
+    {
+      const vtkIdType o = (*only)[i];
+      const vtkIdType id = static_cast<vtkIdType>(i);
+      while (moved != frame.Moved.end() && moved->first < o)
+      {
+        ++moved;
+      }
+      if (moved != frame.Moved.end() && moved->first == o)
+      {
+        points->SetPoint(id, moved->second.x, moved->second.y, moved->second.z);
+      }
+      else if (o < base)
+      {
+        points->GetData()->SetTuple(id, surface.outputSource(o), inPoints->GetData());
+      }
+      else
+      {
+        const glm::dvec3& p =
+          result.NewPoints[frame.Added[static_cast<std::size_t>(o - base)].NewPoint].Position;
+        points->SetPoint(id, p.x, p.y, p.z);
+      }
+    }
+    return points;
+  }
   const vtkIdType numPoints = input->GetNumberOfPoints();
   const vtkIdType base = static_cast<vtkIdType>(surface.outputPointCount());
   points->SetNumberOfPoints(base + static_cast<vtkIdType>(frame.Added.size()));
@@ -150,38 +180,64 @@ void AddUncopiedArrays(vtkDataSetAttributes* in, vtkDataSetAttributes* out,
 // interpolate take the nearest source's value). The shading normals replace
 // the input's normals (if any) as the active normals, keeping the input's
 // array name. `OriginalPointId` gives every output point's input point (-1
-// for added points), composed with an input array of that name.
+// for added points), composed with an input array of that name. With
+// `only`, just those output points (ascending ids), in order.
 void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
   const silsmooth::WeldedSurface& surface, const silsmooth::SmoothingResult& result,
-  const silsmooth::SurfaceFrame& frame)
+  const silsmooth::SurfaceFrame& frame, const std::vector<vtkIdType>* only = nullptr)
 {
   const vtkIdType base = static_cast<vtkIdType>(surface.outputPointCount());
-  const vtkIdType total = base + static_cast<vtkIdType>(frame.Added.size());
+  const vtkIdType total =
+    only ? static_cast<vtkIdType>(only->size()) : base + static_cast<vtkIdType>(frame.Added.size());
+  auto outputOf = [only](vtkIdType i) {
+    return only ? (*only)[static_cast<std::size_t>(i)] : i;
+  };
   vtkDataArray* inNormals = in->GetNormals();
   vtkDataArray* inOriginal = in->GetArray("OriginalPointId");
   out->CopyAllOn();
   out->CopyNormalsOff();
   out->InterpolateAllocate(in, total);
-  if (numPoints > 0)
-  {
-    out->CopyData(in, 0, numPoints, 0);
-  }
-  for (vtkIdType id = numPoints; id < base; ++id)
-  {
-    out->CopyData(in, surface.outputSource(id), id);
-  }
   vtkNew<vtkIdList> sources;
   sources->SetNumberOfIds(3);
-  vtkIdType id = base;
-  for (const silsmooth::SurfaceFrame::AddedPoint& added : frame.Added)
-  {
+  auto interpolate = [&](const silsmooth::SurfaceFrame::AddedPoint& added, vtkIdType id) {
     for (int k = 0; k < 3; ++k)
     {
       sources->SetId(k, added.Sources[static_cast<std::size_t>(k)]);
     }
     const std::array<double, 3>& w = result.NewPoints[added.NewPoint].Weights;
     double weights[3] = { w[0], w[1], w[2] };
-    out->InterpolatePoint(in, id++, sources, weights);
+    out->InterpolatePoint(in, id, sources, weights);
+  };
+  if (only)
+  {
+    for (vtkIdType i = 0; i < total; ++i)
+    {
+      const vtkIdType o = outputOf(i);
+      if (o < base)
+      {
+        out->CopyData(in, surface.outputSource(o), i);
+      }
+      else
+      {
+        interpolate(frame.Added[static_cast<std::size_t>(o - base)], i);
+      }
+    }
+  }
+  else
+  {
+    if (numPoints > 0)
+    {
+      out->CopyData(in, 0, numPoints, 0);
+    }
+    for (vtkIdType id = numPoints; id < base; ++id)
+    {
+      out->CopyData(in, surface.outputSource(id), id);
+    }
+    vtkIdType id = base;
+    for (const silsmooth::SurfaceFrame::AddedPoint& added : frame.Added)
+    {
+      interpolate(added, id++);
+    }
   }
   if (inNormals && inNormals->GetName() && out->GetArray(inNormals->GetName()))
   {
@@ -189,23 +245,23 @@ void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
   }
 
   std::vector<vtkIdType> from(static_cast<std::size_t>(total));
-  for (vtkIdType o = 0; o < base; ++o)
+  for (vtkIdType i = 0; i < total; ++i)
   {
-    from[static_cast<std::size_t>(o)] = surface.outputSource(o);
-  }
-  for (std::size_t a = 0; a < frame.Added.size(); ++a)
-  {
-    from[static_cast<std::size_t>(base) + a] = NearestSource(frame.Added[a], result);
+    const vtkIdType o = outputOf(i);
+    from[static_cast<std::size_t>(i)] = o < base
+      ? surface.outputSource(o)
+      : NearestSource(frame.Added[static_cast<std::size_t>(o - base)], result);
   }
   AddUncopiedArrays(in, out, from, inNormals ? inNormals->GetName() : nullptr);
 
   vtkNew<vtkIdTypeArray> original;
   original->SetName("OriginalPointId");
   original->SetNumberOfValues(total);
-  for (vtkIdType o = 0; o < total; ++o)
+  for (vtkIdType i = 0; i < total; ++i)
   {
+    const vtkIdType o = outputOf(i);
     const vtkIdType source = o < base ? surface.outputSource(o) : -1;
-    original->SetValue(o,
+    original->SetValue(i,
       source >= 0 && inOriginal ? static_cast<vtkIdType>(inOriginal->GetTuple1(source)) : source);
   }
   if (out->GetAbstractArray("OriginalPointId"))
@@ -220,16 +276,12 @@ void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(total);
   float* n = normals->GetPointer(0);
-  for (vtkIdType o = 0; o < base; ++o)
+  for (vtkIdType i = 0; i < total; ++i)
   {
-    const glm::dvec3& normal = mesh.normals()[static_cast<std::size_t>(surface.outputPrepared(o))];
-    *n++ = static_cast<float>(normal.x);
-    *n++ = static_cast<float>(normal.y);
-    *n++ = static_cast<float>(normal.z);
-  }
-  for (const silsmooth::SurfaceFrame::AddedPoint& added : frame.Added)
-  {
-    const glm::dvec3& normal = result.NewPoints[added.NewPoint].Normal;
+    const vtkIdType o = outputOf(i);
+    const glm::dvec3& normal = o < base
+      ? mesh.normals()[static_cast<std::size_t>(surface.outputPrepared(o))]
+      : result.NewPoints[frame.Added[static_cast<std::size_t>(o - base)].NewPoint].Normal;
     *n++ = static_cast<float>(normal.x);
     *n++ = static_cast<float>(normal.y);
     *n++ = static_cast<float>(normal.z);
@@ -316,6 +368,79 @@ silsmooth::SurfaceFrame BuildCells(vtkPolyData* input, vtkPolyData* output,
   return frame;
 }
 
+// A frame's changes (WeldedSurface::assembleChanges) as a mesh of their own:
+// the triangles over the output points they use (`used`, ascending output
+// ids), each with its input cell's data, NewGeometry and OriginalCellId as
+// the whole output gives them.
+void BuildChangedCells(vtkPolyData* input, vtkPolyData* changes,
+  const std::vector<vtkIdType>& triangleCell, const silsmooth::SurfaceFrame& frame,
+  const std::vector<vtkIdType>& used)
+{
+  const vtkIdType count = static_cast<vtkIdType>(frame.Triangles.size());
+  vtkNew<vtkIdTypeArray> offsets;
+  vtkNew<vtkIdTypeArray> connectivity;
+  offsets->SetNumberOfValues(count + 1);
+  connectivity->SetNumberOfValues(count * 3);
+  vtkIdType* ids = connectivity->GetPointer(0);
+  for (const silsmooth::Triangle& t : frame.Triangles)
+  {
+    for (const silsmooth::Id v : t)
+    {
+      *ids++ = static_cast<vtkIdType>(
+        std::lower_bound(used.begin(), used.end(), static_cast<vtkIdType>(v)) - used.begin());
+    }
+  }
+  for (vtkIdType t = 0; t <= count; ++t)
+  {
+    offsets->SetValue(t, t * 3);
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+  changes->SetPolys(polys);
+
+  std::vector<vtkIdType> origin(static_cast<std::size_t>(count));
+  vtkNew<vtkUnsignedCharArray> newGeometry;
+  newGeometry->SetName("NewGeometry");
+  newGeometry->SetNumberOfValues(count);
+  for (vtkIdType c = 0; c < count; ++c)
+  {
+    origin[static_cast<std::size_t>(c)] =
+      triangleCell[static_cast<std::size_t>(frame.SourceTriangle[static_cast<std::size_t>(c)])];
+    newGeometry->SetValue(c, frame.Kind[static_cast<std::size_t>(c)]);
+  }
+  vtkCellData* in = input->GetCellData();
+  vtkCellData* out = changes->GetCellData();
+  if (in->GetNumberOfArrays() > 0)
+  {
+    vtkNew<vtkIdList> source;
+    source->SetNumberOfIds(count);
+    std::copy(origin.begin(), origin.end(), source->begin());
+    vtkNew<vtkIdList> destination;
+    destination->SetNumberOfIds(count);
+    std::iota(destination->begin(), destination->end(), vtkIdType{ 0 });
+    out->CopyAllOn();
+    out->CopyAllocate(in, count);
+    out->CopyData(in, source, destination);
+    AddUncopiedArrays(in, out, origin, "OriginalCellId");
+  }
+  vtkDataArray* inOriginal = in->GetArray("OriginalCellId");
+  vtkNew<vtkIdTypeArray> originalCellId;
+  originalCellId->SetName("OriginalCellId");
+  originalCellId->SetNumberOfValues(count);
+  for (vtkIdType c = 0; c < count; ++c)
+  {
+    const vtkIdType from = origin[static_cast<std::size_t>(c)];
+    originalCellId->SetValue(
+      c, inOriginal ? static_cast<vtkIdType>(inOriginal->GetTuple1(from)) : from);
+  }
+  if (out->GetAbstractArray("OriginalCellId"))
+  {
+    out->RemoveArray("OriginalCellId");
+  }
+  out->AddArray(newGeometry);
+  out->AddArray(originalCellId);
+}
+
 // Output port 1: the silhouette polylines over their own compact point set.
 void BuildSilhouetteLines(
   vtkPolyData* mesh, const silsmooth::SurfaceFrame& frame, vtkPolyData* lines)
@@ -366,6 +491,15 @@ struct vtkSilhouetteSmoothingFilter::Internals
 
   // Returns an empty string, or the error to report.
   std::string Rebuild(vtkPolyData* input, bool useLines, const silsmooth::SurfaceOptions& options);
+
+  // The cache for `input` and the filter's settings, rebuilt when either
+  // changed (`rebuilt` says so); the warnings about the input are given once
+  // per rebuild. False after reporting an error.
+  bool Prepare(vtkSilhouetteSmoothingFilter* self, vtkPolyData* input, bool& rebuilt);
+  // The frame for the view, with the filter's settings; warns when the new
+  // point budget lowered the sampling.
+  silsmooth::SmoothingResult Smooth(vtkSilhouetteSmoothingFilter* self, vtkPolyData* input,
+    const silsmooth::ViewGeometry& view, bool boundaryMayBeSeam);
 };
 
 std::string vtkSilhouetteSmoothingFilter::Internals::Rebuild(
@@ -409,6 +543,106 @@ std::string vtkSilhouetteSmoothingFilter::Internals::Rebuild(
   this->CachedInput = input;
   this->CachedInputTime = input->GetMTime();
   return std::string();
+}
+
+bool vtkSilhouetteSmoothingFilter::Internals::Prepare(
+  vtkSilhouetteSmoothingFilter* self, vtkPolyData* input, bool& rebuilt)
+{
+  silsmooth::SurfaceOptions options;
+  options.Weld = self->WeldCoincidentPoints;
+  options.WeldTolerance = self->WeldTolerance;
+  options.Orient = self->ConsistentOrientation;
+  options.NormalSeams = self->NormalSeamFeatures;
+  options.DetectFeatures = self->FeatureEdgeDetection;
+  options.FeatureAngleDegrees = self->FeatureAngle;
+  options.DetectFlatCreases = self->FlatCreaseDetection;
+  options.FlatCreaseAngleDegrees = self->FlatCreaseAngle;
+  options.Normals = static_cast<silsmooth::NormalWeighting>(self->NormalEstimation);
+  const std::array<double, 10> settings{ { self->FeatureLines ? 1.0 : 0.0,
+    options.DetectFeatures ? 1.0 : 0.0, options.FeatureAngleDegrees, options.Weld ? 1.0 : 0.0,
+    options.WeldTolerance, options.Orient ? 1.0 : 0.0, options.NormalSeams ? 1.0 : 0.0,
+    options.DetectFlatCreases ? 1.0 : 0.0, options.FlatCreaseAngleDegrees,
+    static_cast<double>(self->NormalEstimation) } };
+  rebuilt = !this->Surface || this->CachedInput != input ||
+    this->CachedInputTime != input->GetMTime() || !this->HaveSettings ||
+    this->CachedSettings != settings;
+  if (rebuilt)
+  {
+    this->HaveSettings = false;
+    const std::string error = this->Rebuild(input, self->FeatureLines, options);
+    if (!error.empty())
+    {
+      vtkErrorWithObjectMacro(self, << error);
+      return false;
+    }
+    this->CachedSettings = settings;
+    this->HaveSettings = this->Surface != nullptr;
+  }
+  if (this->NonFinitePoints > 0)
+  {
+    vtkErrorWithObjectMacro(self,
+      "Input has " << this->NonFinitePoints
+                   << " points with NaN or infinite coordinates (the first is point "
+                   << this->FirstNonFinitePoint << ").");
+    return false;
+  }
+  const silsmooth::SurfaceStatistics& statistics = this->Surface->statistics();
+  if (rebuilt && statistics.FlatShadedNormals)
+  {
+    vtkWarningWithObjectMacro(self,
+      "The input's point normals are its triangles' own normals (flat shading): "
+      "they say nothing about the smooth surface, so they are not used; shading "
+      "normals are computed, and creases come from FlatCreaseDetection and "
+      "FeatureEdgeDetection.");
+  }
+  if (rebuilt && statistics.InconsistentEdgeCount > 0)
+  {
+    vtkWarningWithObjectMacro(
+      self, << statistics.InconsistentEdgeCount
+            << " edges join triangles that cannot be oriented consistently (a "
+               "non-orientable surface, such as a Moebius strip): shading normals "
+               "and visibility are unreliable next to them.");
+  }
+  return true;
+}
+
+silsmooth::SmoothingResult vtkSilhouetteSmoothingFilter::Internals::Smooth(
+  vtkSilhouetteSmoothingFilter* self, vtkPolyData* input, const silsmooth::ViewGeometry& view,
+  bool boundaryMayBeSeam)
+{
+  silsmooth::SmoothingParameters parameters;
+  parameters.PerturbConcaveSilhouettes = self->PerturbVertices;
+  parameters.PreventFolds = self->FoldPrevention;
+  parameters.BoundaryMayBeSeam = boundaryMayBeSeam;
+  parameters.Visibility = self->VisibilityMethod == HIERARCHICAL
+    ? silsmooth::VisibilityMethod::Hierarchical
+    : silsmooth::VisibilityMethod::PerVertex;
+  silsmooth::SamplingParameters& sampling = parameters.Sampling;
+  sampling.TolerancePixels = self->Tolerance;
+  sampling.MinimumSamples = self->MinimumSamples;
+  sampling.MaximumSamples = self->MaximumSamples;
+  parameters.MaximumSampledPoints = static_cast<std::size_t>(std::max(
+    1e5, std::min(self->NewPointBudget * static_cast<double>(input->GetNumberOfPoints()), 1e15)));
+  sampling.Rule = self->SamplingRule == WANG_EQUATION_8 ? silsmooth::SamplingRule::WangEquation8
+                                                        : silsmooth::SamplingRule::SecondDifference;
+  const silsmooth::ParallelFor smpFor =
+    [](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
+      vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&body](vtkIdType begin, vtkIdType end) {
+        body(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
+      });
+    };
+  silsmooth::SmoothingResult result =
+    silsmooth::smoothSilhouettes(this->Surface->prepared(), view, parameters, smpFor);
+  if (result.SampleBudgetMaximum > 0)
+  {
+    vtkWarningWithObjectMacro(self,
+      "Sampled this frame's segments with at most "
+        << result.SampleBudgetMaximum << " points each (MaximumSamples " << self->MaximumSamples
+        << "), so that its " << result.SilhouetteTriangleCount
+        << " silhouette triangles stay within NewPointBudget's " << parameters.MaximumSampledPoints
+        << " new points.");
+  }
+  return result;
 }
 
 vtkSilhouetteSmoothingFilter::vtkSilhouetteSmoothingFilter()
@@ -460,90 +694,23 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   }
 
   Internals& internal = *this->Internal;
-  silsmooth::SurfaceOptions options;
-  options.Weld = this->WeldCoincidentPoints;
-  options.WeldTolerance = this->WeldTolerance;
-  options.Orient = this->ConsistentOrientation;
-  options.NormalSeams = this->NormalSeamFeatures;
-  options.DetectFeatures = this->FeatureEdgeDetection;
-  options.FeatureAngleDegrees = this->FeatureAngle;
-  options.DetectFlatCreases = this->FlatCreaseDetection;
-  options.FlatCreaseAngleDegrees = this->FlatCreaseAngle;
-  options.Normals = static_cast<silsmooth::NormalWeighting>(this->NormalEstimation);
-  const std::array<double, 10> settings{ { this->FeatureLines ? 1.0 : 0.0,
-    options.DetectFeatures ? 1.0 : 0.0, options.FeatureAngleDegrees, options.Weld ? 1.0 : 0.0,
-    options.WeldTolerance, options.Orient ? 1.0 : 0.0, options.NormalSeams ? 1.0 : 0.0,
-    options.DetectFlatCreases ? 1.0 : 0.0, options.FlatCreaseAngleDegrees,
-    static_cast<double>(this->NormalEstimation) } };
-  const bool rebuilt = !internal.Surface || internal.CachedInput != input ||
-    internal.CachedInputTime != input->GetMTime() || !internal.HaveSettings ||
-    internal.CachedSettings != settings;
-  if (rebuilt)
+  bool rebuilt = false;
+  if (!internal.Prepare(this, input, rebuilt))
   {
-    internal.HaveSettings = false;
-    const std::string error = internal.Rebuild(input, this->FeatureLines, options);
-    if (!error.empty())
-    {
-      vtkErrorMacro(<< error);
-      return 0;
-    }
-    internal.CachedSettings = settings;
-    internal.HaveSettings = internal.Surface != nullptr;
-  }
-  if (internal.NonFinitePoints > 0)
-  {
-    vtkErrorMacro("Input has " << internal.NonFinitePoints
-                               << " points with NaN or infinite coordinates (the first is point "
-                               << internal.FirstNonFinitePoint << ").");
-    return 0;
-  }
-  const silsmooth::SurfaceStatistics& statistics = internal.Surface->statistics();
-  if (rebuilt && statistics.FlatShadedNormals)
-  {
-    vtkWarningMacro("The input's point normals are its triangles' own normals (flat shading): "
-                    "they say nothing about the smooth surface, so they are not used; shading "
-                    "normals are computed, and creases come from FlatCreaseDetection and "
-                    "FeatureEdgeDetection.");
-  }
-  if (rebuilt && statistics.InconsistentEdgeCount > 0)
-  {
-    vtkWarningMacro(<< statistics.InconsistentEdgeCount
-                    << " edges join triangles that cannot be oriented consistently (a "
-                       "non-orientable surface, such as a Moebius strip): shading normals "
-                       "and visibility are unreliable next to them.");
+    return 0; // reported
   }
   this->UpdateProgress(0.2);
 
-  silsmooth::SmoothingParameters parameters;
-  parameters.PerturbConcaveSilhouettes = this->PerturbVertices;
-  parameters.PreventFolds = this->FoldPrevention;
   // A piece of a distributed mesh: its boundary may be a seam with another
   // piece, whose silhouette points there must stay the same as ours.
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  parameters.BoundaryMayBeSeam =
+  const bool boundaryMayBeSeam =
     outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) &&
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1;
-  parameters.Visibility = this->VisibilityMethod == HIERARCHICAL
-    ? silsmooth::VisibilityMethod::Hierarchical
-    : silsmooth::VisibilityMethod::PerVertex;
-  silsmooth::SamplingParameters& sampling = parameters.Sampling;
-  sampling.TolerancePixels = this->Tolerance;
-  sampling.MinimumSamples = this->MinimumSamples;
-  sampling.MaximumSamples = this->MaximumSamples;
-  parameters.MaximumSampledPoints = static_cast<std::size_t>(std::max(
-    1e5, std::min(this->NewPointBudget * static_cast<double>(input->GetNumberOfPoints()), 1e15)));
-  sampling.Rule = this->SamplingRule == WANG_EQUATION_8 ? silsmooth::SamplingRule::WangEquation8
-                                                        : silsmooth::SamplingRule::SecondDifference;
-  const silsmooth::ParallelFor smpFor =
-    [](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
-      vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&body](vtkIdType begin, vtkIdType end) {
-        body(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
-      });
-    };
-  const silsmooth::PreparedMesh& mesh = internal.Surface->prepared();
   const silsmooth::SmoothingResult result =
-    silsmooth::smoothSilhouettes(mesh, view.Geometry, parameters, smpFor);
-
+    internal.Smooth(this, input, view.Geometry, boundaryMayBeSeam);
+  const silsmooth::PreparedMesh& mesh = internal.Surface->prepared();
+  const silsmooth::SurfaceStatistics& statistics = internal.Surface->statistics();
   this->UpdateProgress(0.6);
   if (this->GetAbortExecute())
   {
@@ -569,14 +736,6 @@ int vtkSilhouetteSmoothingFilter::RequestData(
     vtkWarningMacro(<< droppedCells
                     << " vertex cells without points or lines with one point draw nothing and "
                        "were dropped.");
-  }
-  if (result.SampleBudgetMaximum > 0)
-  {
-    vtkWarningMacro("Sampled this frame's segments with at most "
-      << result.SampleBudgetMaximum << " points each (MaximumSamples " << this->MaximumSamples
-      << "), so that its " << result.SilhouetteTriangleCount
-      << " silhouette triangles stay within NewPointBudget's " << parameters.MaximumSampledPoints
-      << " new points.");
   }
 
   vtkFieldData* fd = output->GetFieldData();
@@ -612,6 +771,88 @@ int vtkSilhouetteSmoothingFilter::RequestData(
 
   BuildSilhouetteLines(output, frame, lines);
   this->UpdateProgress(1.0);
+  return 1;
+}
+
+int vtkSilhouetteSmoothingFilter::BuildBaseMesh(vtkPolyData* input, vtkPolyData* base)
+{
+  if (!input || !base)
+  {
+    vtkErrorMacro("BuildBaseMesh needs an input and a mesh to fill.");
+    return 0;
+  }
+  bool rebuilt = false;
+  if (!this->Internal->Prepare(this, input, rebuilt))
+  {
+    return 0;
+  }
+  Internals& internal = *this->Internal;
+  const silsmooth::SmoothingResult nothing;
+  base->Initialize();
+  vtkIdType droppedCells = 0;
+  const silsmooth::SurfaceFrame frame =
+    BuildCells(input, base, internal.TriangleCell, *internal.Surface, nothing, droppedCells);
+  base->SetPoints(BuildPoints(
+    input, OutputPointType(input, this->OutputPointsPrecision), *internal.Surface, nothing, frame));
+  BuildPointData(input->GetPointData(), base->GetPointData(), input->GetNumberOfPoints(),
+    *internal.Surface, nothing, frame);
+  base->GetFieldData()->PassData(input->GetFieldData());
+  return 1;
+}
+
+int vtkSilhouetteSmoothingFilter::BuildChanges(vtkPolyData* input, vtkCamera* camera,
+  const double modelMatrix[16], int width, int height, vtkPolyData* changes,
+  vtkIdTypeArray* replacedTriangles)
+{
+  if (!input || !camera || !changes || !replacedTriangles)
+  {
+    vtkErrorMacro("BuildChanges needs an input, a camera, a mesh and an array to fill.");
+    return 0;
+  }
+  if (this->MinimumSamples > this->MaximumSamples)
+  {
+    vtkErrorMacro("MinimumSamples (" << this->MinimumSamples << ") is more than MaximumSamples ("
+                                     << this->MaximumSamples << ").");
+    return 0;
+  }
+  silsmooth::ViewGeometry view;
+  const std::string viewError =
+    vtkSilhouetteFilterSupport::MakeViewGeometry(camera, modelMatrix, { { width, height } }, view);
+  if (!viewError.empty())
+  {
+    vtkErrorMacro(<< viewError);
+    return 0;
+  }
+  bool rebuilt = false;
+  if (!this->Internal->Prepare(this, input, rebuilt))
+  {
+    return 0;
+  }
+  Internals& internal = *this->Internal;
+  const silsmooth::SmoothingResult result = internal.Smooth(this, input, view, false);
+  const silsmooth::SurfaceFrame frame = internal.Surface->assembleChanges(result);
+  std::vector<vtkIdType> used;
+  used.reserve(frame.Triangles.size() * 3);
+  for (const silsmooth::Triangle& t : frame.Triangles)
+  {
+    used.insert(used.end(), t.begin(), t.end());
+  }
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  changes->Initialize();
+  BuildChangedCells(input, changes, internal.TriangleCell, frame, used);
+  changes->SetPoints(BuildPoints(input, OutputPointType(input, this->OutputPointsPrecision),
+    *internal.Surface, result, frame, &used));
+  BuildPointData(input->GetPointData(), changes->GetPointData(), input->GetNumberOfPoints(),
+    *internal.Surface, result, frame, &used);
+  replacedTriangles->SetNumberOfComponents(1);
+  replacedTriangles->SetNumberOfValues(static_cast<vtkIdType>(frame.ReplacedTriangles.size()));
+  std::copy(frame.ReplacedTriangles.begin(), frame.ReplacedTriangles.end(),
+    replacedTriangles->GetPointer(0));
+  vtkFieldData* fd = changes->GetFieldData();
+  AddCount(fd, "SilhouetteTriangleCount", static_cast<vtkIdType>(result.SilhouetteTriangleCount));
+  AddCount(fd, "ChordFallbackCount", static_cast<vtkIdType>(result.ChordFallbackTriangles));
+  AddCount(fd, "UnresolvedFoldCount", static_cast<vtkIdType>(result.UnresolvedFolds));
   return 1;
 }
 

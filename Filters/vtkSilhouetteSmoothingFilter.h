@@ -84,6 +84,9 @@
 
 #include <memory> // For the cached core mesh
 
+class vtkCamera;
+class vtkIdTypeArray;
+
 class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkSilhouetteSmoothingFilter
   : public vtkSilhouetteViewAlgorithm
 {
@@ -335,6 +338,35 @@ public:
    * The smoothed silhouette polylines (output port 1).
    */
   vtkPolyData* GetSilhouetteOutput();
+
+  ///@{
+  /**
+   * Render-time smoothing (vtkSilhouetteSmoothingMapper): the output split
+   * into what changes with the input only and what changes with the view,
+   * outside the pipeline, with this filter's settings. Both prepare `input`
+   * as RequestData does (once per input or settings change) and return 0
+   * after reporting an error.
+   *
+   * BuildBaseMesh fills `base` with what RequestData outputs for a view that
+   * re-meshes nothing: the input's vertices and lines, its points and the
+   * copies its smooth groups need, the shading normals, the point and cell
+   * data, `OriginalPointId`, `OriginalCellId` and `NewGeometry`, and one
+   * triangle per input triangle, in input order.
+   *
+   * BuildChanges smooths for the view (a camera, the prop's model matrix,
+   * row-major as vtkMatrix4x4, and the viewport in pixels) and fills
+   * `replacedTriangles` with the base mesh's triangles whose place changes
+   * (ascending indices among its polygons: the re-meshed ones and those the
+   * perturbation moved) and `changes` with what takes their place, over
+   * points of its own, with the arrays of the whole output. Invariant: the
+   * base mesh with those triangles replaced is RequestData's output for the
+   * same view, triangle for triangle, up to the points' numbering. The cost
+   * is in the silhouette, not the mesh.
+   */
+  int BuildBaseMesh(vtkPolyData* input, vtkPolyData* base);
+  int BuildChanges(vtkPolyData* input, vtkCamera* camera, const double modelMatrix[16], int width,
+    int height, vtkPolyData* changes, vtkIdTypeArray* replacedTriangles);
+  ///@}
 
 protected:
   vtkSilhouetteSmoothingFilter();

@@ -356,6 +356,13 @@ template<typename IdType>
 SurfaceFrame WeldedSurface::assemble(const SmoothingResult& result, IdType* triangles,
   IdType* sourceTriangle, unsigned char* kind) const
 {
+  return this->assembleSome(result, nullptr, triangles, sourceTriangle, kind);
+}
+
+template<typename IdType>
+SurfaceFrame WeldedSurface::assembleSome(const SmoothingResult& result, const std::vector<Id>* only,
+  IdType* triangles, IdType* sourceTriangle, unsigned char* kind) const
+{
   SurfaceFrame frame;
   const std::vector<Triangle>& prepared = this->Prepared->triangles();
   const Id preparedCount = static_cast<Id>(this->Prepared->points().size());
@@ -434,8 +441,15 @@ SurfaceFrame WeldedSurface::assemble(const SmoothingResult& result, IdType* tria
     kind[written] = k;
     ++written;
   };
-  for (std::size_t t = 0; t < prepared.size(); ++t)
+  const std::size_t visited = only ? only->size() : prepared.size();
+  for (std::size_t i = 0; i < visited; ++i)
   {
+    const std::size_t t = only ? static_cast<std::size_t>((*only)[i]) : i;
+    while (
+      next < result.RemeshedTriangles.size() && result.RemeshedTriangles[next] < static_cast<Id>(t))
+    {
+      ++next; // only when `only` skips a re-meshed triangle
+    }
     if (next < result.RemeshedTriangles.size() &&
       result.RemeshedTriangles[next] == static_cast<Id>(t))
     {
@@ -510,6 +524,66 @@ template SurfaceFrame WeldedSurface::assemble<Id>(
   const SmoothingResult&, Id*, Id*, unsigned char*) const;
 template SurfaceFrame WeldedSurface::assemble<long long>(
   const SmoothingResult&, long long*, long long*, unsigned char*) const;
+
+SurfaceFrame WeldedSurface::assembleChanges(const SmoothingResult& result) const
+{
+  const std::vector<Triangle>& prepared = this->Prepared->triangles();
+  std::vector<Id> replaced = result.RemeshedTriangles;
+  if (!result.MovedPoints.empty())
+  {
+    std::call_once(this->TrianglesOfBuilt, [&]() {
+      const std::size_t points = this->Prepared->points().size();
+      this->TrianglesOffsets.assign(points + 1, 0);
+      for (const Triangle& tri : prepared)
+      {
+        for (const Id v : tri)
+        {
+          ++this->TrianglesOffsets[static_cast<std::size_t>(v) + 1];
+        }
+      }
+      for (std::size_t p = 0; p < points; ++p)
+      {
+        this->TrianglesOffsets[p + 1] += this->TrianglesOffsets[p];
+      }
+      this->TrianglesOf.resize(static_cast<std::size_t>(this->TrianglesOffsets[points]));
+      std::vector<Id> fill(this->TrianglesOffsets.begin(), this->TrianglesOffsets.end() - 1);
+      for (std::size_t t = 0; t < prepared.size(); ++t)
+      {
+        for (const Id v : prepared[t])
+        {
+          this->TrianglesOf[static_cast<std::size_t>(fill[static_cast<std::size_t>(v)]++)] =
+            static_cast<Id>(t);
+        }
+      }
+    });
+    for (const auto& moved : result.MovedPoints)
+    {
+      const std::size_t p = static_cast<std::size_t>(moved.first);
+      replaced.insert(replaced.end(), this->TrianglesOf.begin() + this->TrianglesOffsets[p],
+        this->TrianglesOf.begin() + this->TrianglesOffsets[p + 1]);
+    }
+    std::sort(replaced.begin(), replaced.end());
+    replaced.erase(std::unique(replaced.begin(), replaced.end()), replaced.end());
+  }
+  // Replacements of the re-meshed ones, one triangle for each kept one.
+  const std::size_t count =
+    replaced.size() - result.RemeshedTriangles.size() + result.Replacements.size();
+  std::vector<Id> connectivity(count * 3);
+  std::vector<Id> source(count);
+  std::vector<unsigned char> kind(count);
+  SurfaceFrame frame =
+    this->assembleSome(result, &replaced, connectivity.data(), source.data(), kind.data());
+  frame.Triangles.resize(count);
+  for (std::size_t t = 0; t < count; ++t)
+  {
+    frame.Triangles[t] = { { connectivity[t * 3], connectivity[t * 3 + 1],
+      connectivity[t * 3 + 2] } };
+  }
+  frame.SourceTriangle = std::move(source);
+  frame.Kind = std::move(kind);
+  frame.ReplacedTriangles = std::move(replaced);
+  return frame;
+}
 
 SurfaceFrame WeldedSurface::assemble(const SmoothingResult& result) const
 {

@@ -33,6 +33,7 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <mutex>
 #include <utility>
 #include <vector>
 
@@ -100,6 +101,10 @@ struct SurfaceFrame
   std::vector<std::vector<Id>> Polylines;
   /// Output points (input points and copies) moved by the perturbation.
   std::vector<std::pair<Id, glm::dvec3>> Moved;
+  /// assembleChanges() only: the input triangles whose place in the output
+  /// changes, ascending (the re-meshed ones, and the kept ones with a corner
+  /// the perturbation moved).
+  std::vector<Id> ReplacedTriangles;
 };
 
 class WeldedSurface
@@ -140,9 +145,24 @@ public:
     unsigned char* kind) const;
   /// The same, into the frame's own vectors (for tests and tools).
   SurfaceFrame assemble(const SmoothingResult& result) const;
+  /// Only what the frame changes, for a renderer that keeps drawing the
+  /// base mesh (assemble() of an empty result: the kept triangles as they
+  /// are): ReplacedTriangles, and in Triangles, SourceTriangle and Kind what
+  /// takes their place, in their order (a kept triangle with a moved corner
+  /// as itself, kind 0). Added, Polylines and Moved are assemble()'s, with
+  /// the same ids. Invariant: replacing each ReplacedTriangles[i] of the
+  /// base mesh by the Triangles whose SourceTriangle is ReplacedTriangles[i]
+  /// gives assemble()'s triangles, in assemble()'s order. The cost is in
+  /// the re-meshed triangles, not the mesh.
+  SurfaceFrame assembleChanges(const SmoothingResult& result) const;
 
 private:
   Id outputOfPreparedCorner(std::size_t t, Id prepared) const;
+  /// assemble() over the prepared triangles `only` (ascending), or over all
+  /// of them when `only` is null.
+  template<typename IdType>
+  SurfaceFrame assembleSome(const SmoothingResult& result, const std::vector<Id>* only,
+    IdType* triangles, IdType* sourceTriangle, unsigned char* kind) const;
 
   std::size_t InputPointCount = 0;
   std::vector<Triangle> InputTriangles;
@@ -158,6 +178,12 @@ private:
   std::vector<Id> PreparedHome;
   std::vector<Id> OutputsOffsets;
   std::vector<Id> OutputsOf;
+  /// The prepared triangles around each prepared point (for the kept
+  /// triangles a moved point changes): TrianglesOf[TrianglesOffsets[p] ..
+  /// TrianglesOffsets[p + 1]), built on the first assembleChanges().
+  mutable std::once_flag TrianglesOfBuilt;
+  mutable std::vector<Id> TrianglesOffsets;
+  mutable std::vector<Id> TrianglesOf;
 };
 
 } // namespace silsmooth

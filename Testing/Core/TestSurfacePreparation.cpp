@@ -456,3 +456,95 @@ TEST(FlatSidedCreases, BoxEdgesYesCoarseSphereNo)
   coretest::torus(8, 4, 0.4, points, triangles);
   EXPECT_FALSE(flatSidedCreases(points, triangles, 65.0).empty());
 }
+
+namespace
+{
+
+// The base mesh (assemble() of an empty result) with each of the changes'
+// ReplacedTriangles replaced by its triangles: what assemble() gives.
+void ExpectChangesComposeToTheWholeFrame(
+  const WeldedSurface& surface, const SmoothingResult& result)
+{
+  const SurfaceFrame whole = surface.assemble(result);
+  const SurfaceFrame base = surface.assemble(SmoothingResult());
+  const SurfaceFrame changes = surface.assembleChanges(result);
+  ASSERT_TRUE(std::is_sorted(changes.ReplacedTriangles.begin(), changes.ReplacedTriangles.end()));
+  ASSERT_EQ(changes.Triangles.size(), changes.SourceTriangle.size());
+  std::vector<Triangle> composed;
+  std::vector<Id> composedSource;
+  std::size_t r = 0;
+  std::size_t c = 0;
+  for (std::size_t t = 0; t < base.Triangles.size(); ++t)
+  {
+    if (r < changes.ReplacedTriangles.size() && changes.ReplacedTriangles[r] == static_cast<Id>(t))
+    {
+      for (; c < changes.Triangles.size() && changes.SourceTriangle[c] == static_cast<Id>(t); ++c)
+      {
+        composed.push_back(changes.Triangles[c]);
+        composedSource.push_back(changes.SourceTriangle[c]);
+      }
+      ++r;
+      continue;
+    }
+    composed.push_back(base.Triangles[t]);
+    composedSource.push_back(static_cast<Id>(t));
+  }
+  EXPECT_EQ(r, changes.ReplacedTriangles.size());
+  EXPECT_EQ(c, changes.Triangles.size());
+  EXPECT_EQ(composed, whole.Triangles);
+  EXPECT_EQ(composedSource, whole.SourceTriangle);
+  ASSERT_EQ(changes.Added.size(), whole.Added.size());
+  for (std::size_t a = 0; a < whole.Added.size(); ++a)
+  {
+    EXPECT_EQ(changes.Added[a].NewPoint, whole.Added[a].NewPoint);
+    EXPECT_EQ(changes.Added[a].Sources, whole.Added[a].Sources);
+  }
+  EXPECT_EQ(changes.Moved, whole.Moved);
+  EXPECT_EQ(changes.Polylines, whole.Polylines);
+}
+
+} // namespace
+
+TEST(WeldedSurface, ChangesComposeToTheWholeFrame)
+{
+  // A torus seen obliquely has concave silhouette segments, so the
+  // perturbation moves points and kept triangles around them change too.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::torus(24, 12, 0.35, points, triangles);
+  const WeldedSurface torus(points, triangles, {}, {}, plainOptions());
+  std::size_t moved = 0;
+  std::size_t keptButChanged = 0;
+  for (const glm::dvec3 eye : { glm::dvec3(0, -3, 1.2), glm::dvec3(2.5, 0.4, 2.0) })
+  {
+    const SmoothingResult result =
+      smoothSilhouettes(torus.prepared(), coretest::perspectiveFrom(eye), SmoothingParameters());
+    moved += result.MovedPoints.size();
+    const SurfaceFrame changes = torus.assembleChanges(result);
+    keptButChanged += changes.ReplacedTriangles.size() - result.RemeshedTriangles.size();
+    ExpectChangesComposeToTheWholeFrame(torus, result);
+  }
+  // The case the test is for happened.
+  EXPECT_GT(moved, 0u);
+  EXPECT_GT(keptButChanged, 0u);
+
+  // A sphere of triangle-soup corners (every point copied per triangle),
+  // where added points exist once per side of every edge.
+  coretest::unitSphere(6, 10, points, triangles);
+  std::vector<glm::dvec3> soupPoints;
+  std::vector<Triangle> soupTriangles;
+  for (const Triangle& t : triangles)
+  {
+    Triangle own;
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      own[k] = static_cast<Id>(soupPoints.size());
+      soupPoints.push_back(points[static_cast<std::size_t>(t[k])]);
+    }
+    soupTriangles.push_back(own);
+  }
+  const WeldedSurface soup(soupPoints, soupTriangles, soupPoints, {}, plainOptions());
+  ExpectChangesComposeToTheWholeFrame(soup,
+    smoothSilhouettes(
+      soup.prepared(), coretest::perspectiveFrom({ 0, 0.3, 4 }), SmoothingParameters()));
+}

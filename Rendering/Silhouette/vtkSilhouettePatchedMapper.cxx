@@ -1,0 +1,466 @@
+#include "vtkSilhouettePatchedMapper.h"
+
+#include "vtkActor.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkHardwareSelector.h"
+#include "vtkIdTypeArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLCellToVTKCellMap.h"
+#include "vtkOpenGLHelper.h"
+#include "vtkOpenGLIndexBufferObject.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkProperty.h"
+#include "vtkRenderer.h"
+#include "vtkShader.h"
+#include "vtkShaderProgram.h"
+#include "vtkUnsignedIntArray.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <iterator>
+
+// The helper that draws the patch. It differs from its superclass in one
+// thing: in hardware-selection passes its cell ids start at CellIdOffset and
+// its point ids at PointIdOffset, so that the owner can tell its pixels
+// from the mesh's.
+class vtkSilhouettePatchedMapper::PatchMapper : public vtkOpenGLPolyDataMapper
+{
+public:
+  static PatchMapper* New();
+  vtkTypeMacro(PatchMapper, vtkOpenGLPolyDataMapper);
+  int CellIdOffset = 0;
+  int PointIdOffset = 0;
+
+protected:
+  PatchMapper() = default;
+  ~PatchMapper() override = default;
+
+  // The strings replaced are those of vtkOpenGLPolyDataMapper's picking
+  // shader code (VTK 9.1; the same in ParaView 5.11's VTK).
+  void ReplaceShaderPicking(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override
+  {
+    // Declarations first, while //VTK::Picking::Dec is still in the templates.
+    vtkShaderProgram::Substitute(shaders[vtkShader::Fragment], "//VTK::Picking::Dec",
+      "uniform int patchCellIdOffset;\n//VTK::Picking::Dec");
+    vtkShaderProgram::Substitute(shaders[vtkShader::Vertex], "//VTK::Picking::Dec",
+      "uniform int patchPointIdOffset;\n//VTK::Picking::Dec");
+    this->Superclass::ReplaceShaderPicking(shaders, ren, act);
+    vtkShaderProgram::Substitute(shaders[vtkShader::Fragment],
+      "int idx = gl_PrimitiveID + PrimitiveIDOffset;",
+      "int idx = gl_PrimitiveID + PrimitiveIDOffset + patchCellIdOffset;");
+    vtkShaderProgram::Substitute(shaders[vtkShader::Fragment],
+      "int idx = (gl_PrimitiveID + PrimitiveIDOffset);",
+      "int idx = (gl_PrimitiveID + PrimitiveIDOffset + patchCellIdOffset);");
+    vtkShaderProgram::Substitute(shaders[vtkShader::Vertex], "vertexIDVSOutput = gl_VertexID;",
+      "vertexIDVSOutput = gl_VertexID + patchPointIdOffset;");
+  }
+
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override
+  {
+    this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+    if (cellBO.Program->IsUniformUsed("patchCellIdOffset"))
+    {
+      cellBO.Program->SetUniformi("patchCellIdOffset", this->CellIdOffset);
+    }
+    if (cellBO.Program->IsUniformUsed("patchPointIdOffset"))
+    {
+      cellBO.Program->SetUniformi("patchPointIdOffset", this->PointIdOffset);
+    }
+  }
+
+private:
+  PatchMapper(const PatchMapper&) = delete;
+  void operator=(const PatchMapper&) = delete;
+};
+
+vtkStandardNewMacro(vtkSilhouettePatchedMapper::PatchMapper);
+vtkStandardNewMacro(vtkSilhouettePatchedMapper);
+
+namespace
+{
+
+// Two runs of changed triangles at most this many unchanged triangles apart
+// go into one glBufferSubData (the unchanged ones written as they are): the
+// call count, not the bytes, is what a frame's update costs (about 2,000
+// calls against 1,200 on a 1.3M-triangle orbit; research notes of issue 15).
+constexpr vtkIdType MergeGap = 16;
+
+vtkIdType RawId(vtkHardwareSelector* sel, int lowPass, int highPass, unsigned int pos)
+{
+  unsigned char* low = sel->GetRawPixelBuffer(lowPass);
+  unsigned char* high = sel->GetRawPixelBuffer(highPass);
+  if (!low)
+  {
+    return -1;
+  }
+  vtkIdType v = high ? high[pos] : 0;
+  v = (v << 8) | low[pos + 2];
+  v = (v << 8) | low[pos + 1];
+  v = (v << 8) | low[pos];
+  return v;
+}
+
+void Write24(unsigned char* buffer, unsigned int pos, vtkIdType value, bool high)
+{
+  if (high)
+  {
+    value >>= 24;
+  }
+  buffer[pos] = value & 0xff;
+  buffer[pos + 1] = (value >> 8) & 0xff;
+  buffer[pos + 2] = (value >> 16) & 0xff;
+}
+
+} // namespace
+
+vtkSilhouettePatchedMapper::vtkSilhouettePatchedMapper()
+  : Patch(vtkSmartPointer<PatchMapper>::New())
+{
+  this->Patch->SetStatic(1);
+  // This mapper reports the selection ids and their maximum; the helper
+  // must not begin or end a prop of its own.
+  this->Patch->SetPopulateSelectionSettings(0);
+  this->Patch->SetInputData(this->PatchData);
+}
+
+vtkSilhouettePatchedMapper::~vtkSilhouettePatchedMapper() = default;
+
+void vtkSilhouettePatchedMapper::ReleaseGraphicsResources(vtkWindow* win)
+{
+  this->Patch->ReleaseGraphicsResources(win);
+  this->Applied.clear();
+  this->LayoutKnown = false;
+  this->Superclass::ReleaseGraphicsResources(win);
+}
+
+void vtkSilhouettePatchedMapper::SetPatch(const std::vector<vtkIdType>& hidden, vtkPolyData* patch,
+  vtkIdTypeArray* patchCellIds, const std::vector<vtkIdType>& patchPointSources)
+{
+  this->Wanted = hidden;
+  if (patch)
+  {
+    this->PatchData->ShallowCopy(patch); // new time: the helper uploads its small buffers
+  }
+  else
+  {
+    this->PatchData->Initialize();
+  }
+  this->PatchCellIds = patchCellIds;
+  this->PatchPointSources = patchPointSources;
+}
+
+// Called when the superclass builds its buffers (an input or representation
+// change). When it really rebuilt the index buffer, every triangle is drawn
+// again: forget what was hidden and record the layout.
+void vtkSilhouettePatchedMapper::BuildIBO(vtkRenderer* ren, vtkActor* act, vtkPolyData* poly)
+{
+  vtkStateStorage before; // its copy constructor is deleted, its assignment is not
+  before = this->IBOBuildState;
+  this->Superclass::BuildIBO(ren, act, poly);
+  if (!(this->IBOBuildState != before) && this->LayoutKnown)
+  {
+    return;
+  }
+  this->Applied.clear();
+  this->LayoutKnown = false;
+  // Surface and surface with edges share the triangle layout; the others
+  // draw points or lines, and the input whole.
+  if (act->GetProperty()->GetRepresentation() == VTK_SURFACE)
+  {
+    this->RecordTriangleLayout(poly);
+  }
+}
+
+void vtkSilhouettePatchedMapper::RecordTriangleLayout(vtkPolyData* poly)
+{
+  this->Pristine.clear();
+  vtkCellArray* polys = poly->GetPolys();
+  vtkPoints* points = poly->GetPoints();
+  if (!points)
+  {
+    return;
+  }
+  vtkOpenGLIndexBufferObject::AppendTriangleIndexBuffer(
+    this->Pristine, polys, points, 0, nullptr, nullptr);
+  // The superclass's rule for triangles it leaves out: coincident corners
+  // (AppendTrianglesWorker in vtkOpenGLIndexBufferObject.cxx).
+  const vtkIdType cells = polys->GetNumberOfCells();
+  this->FirstTriangle.resize(static_cast<std::size_t>(cells));
+  this->TriangleCount.resize(static_cast<std::size_t>(cells));
+  auto same = [](const double* a, const double* b) {
+    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+  };
+  vtkIdType triangle = 0;
+  vtkIdType c = 0;
+  auto it = vtk::TakeSmartPointer(polys->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++c)
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    this->FirstTriangle[static_cast<std::size_t>(c)] = triangle;
+    int count = 0;
+    double p1[3], p2[3], p3[3];
+    if (n >= 3)
+    {
+      points->GetPoint(ids[0], p1);
+      for (vtkIdType i = 1; i + 1 < n; ++i)
+      {
+        points->GetPoint(ids[i], p2);
+        points->GetPoint(ids[i + 1], p3);
+        count += !same(p1, p2) && !same(p3, p2) && !same(p3, p1) ? 1 : 0;
+      }
+    }
+    this->TriangleCount[static_cast<std::size_t>(c)] = count;
+    triangle += count;
+  }
+  this->TriangleHidden.assign(static_cast<std::size_t>(triangle), 0);
+  vtkOpenGLIndexBufferObject* ibo = this->Primitives[PrimitiveTris].IBO;
+  this->LayoutKnown = static_cast<std::size_t>(triangle) * 3 == this->Pristine.size() &&
+    this->Pristine.size() == ibo->IndexCount;
+  if (!this->LayoutKnown)
+  {
+    vtkWarningMacro("The triangle index buffer is not laid out as expected; the mesh is drawn "
+                    "without its silhouette patch.");
+  }
+}
+
+bool vtkSilhouettePatchedMapper::PatchDrawn(vtkRenderer* ren, vtkActor* act)
+{
+  vtkHardwareSelector* sel = ren->GetSelector();
+  const bool pointPicking =
+    sel && sel->GetFieldAssociation() == vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  return this->LayoutKnown && !pointPicking &&
+    act->GetProperty()->GetRepresentation() == VTK_SURFACE;
+}
+
+// Makes the buffer's degenerate set the wanted one (or none, where the patch
+// is not drawn in this pass), writing only the triangles that change.
+void vtkSilhouettePatchedMapper::ApplyHidden(vtkRenderer* ren, vtkActor* act)
+{
+  this->LastPatchedTriangles = 0;
+  this->LastPatchCalls = 0;
+  if (!this->LayoutKnown)
+  {
+    return;
+  }
+  std::vector<vtkIdType> target;
+  if (this->PatchDrawn(ren, act))
+  {
+    target = this->Wanted;
+  }
+  const vtkIdType polygons = static_cast<vtkIdType>(this->FirstTriangle.size());
+  target.erase(std::remove_if(target.begin(), target.end(),
+                 [polygons](vtkIdType c) { return c < 0 || c >= polygons; }),
+    target.end());
+  if (target == this->Applied)
+  {
+    return;
+  }
+  std::vector<vtkIdType> restore, hide;
+  std::set_difference(this->Applied.begin(), this->Applied.end(), target.begin(), target.end(),
+    std::back_inserter(restore));
+  std::set_difference(target.begin(), target.end(), this->Applied.begin(), this->Applied.end(),
+    std::back_inserter(hide));
+  std::vector<std::pair<vtkIdType, bool>> changes; // polygon, hidden after
+  changes.reserve(restore.size() + hide.size());
+  for (const vtkIdType c : restore)
+  {
+    changes.emplace_back(c, false);
+  }
+  for (const vtkIdType c : hide)
+  {
+    changes.emplace_back(c, true);
+  }
+  std::sort(changes.begin(), changes.end());
+
+  // GL_COPY_WRITE_BUFFER, not GL_ELEMENT_ARRAY_BUFFER: binding the latter
+  // would change the element buffer of whatever vertex array is bound.
+  vtkOpenGLIndexBufferObject* ibo = this->Primitives[PrimitiveTris].IBO;
+  glBindBuffer(GL_COPY_WRITE_BUFFER, static_cast<GLuint>(ibo->GetHandle()));
+  std::vector<unsigned int> run;
+  vtkIdType runStart = -1; // first triangle of the run
+  vtkIdType runEnd = -1;   // one past its last
+  auto flush = [&]() {
+    if (!run.empty())
+    {
+      glBufferSubData(GL_COPY_WRITE_BUFFER,
+        static_cast<GLintptr>(runStart * 3 * static_cast<vtkIdType>(sizeof(unsigned int))),
+        static_cast<GLsizeiptr>(run.size() * sizeof(unsigned int)), run.data());
+      ++this->LastPatchCalls;
+      this->LastPatchedTriangles += static_cast<vtkIdType>(run.size() / 3);
+      run.clear();
+    }
+  };
+  auto write = [&](vtkIdType triangle, bool hidden) {
+    const unsigned int* t = &this->Pristine[static_cast<std::size_t>(3 * triangle)];
+    run.push_back(t[0]);
+    run.push_back(hidden ? t[0] : t[1]);
+    run.push_back(hidden ? t[0] : t[2]);
+  };
+  for (const auto& [polygon, hidden] : changes)
+  {
+    const vtkIdType first = this->FirstTriangle[static_cast<std::size_t>(polygon)];
+    const int count = this->TriangleCount[static_cast<std::size_t>(polygon)];
+    if (count == 0)
+    {
+      continue;
+    }
+    if (!run.empty() && first >= runEnd && first - runEnd <= MergeGap)
+    {
+      for (vtkIdType g = runEnd; g < first; ++g) // unchanged: as they are now
+      {
+        write(g, this->TriangleHidden[static_cast<std::size_t>(g)] != 0);
+      }
+    }
+    else
+    {
+      flush();
+      runStart = first;
+    }
+    for (int k = 0; k < count; ++k)
+    {
+      write(first + k, hidden);
+      this->TriangleHidden[static_cast<std::size_t>(first + k)] = hidden ? 1 : 0;
+    }
+    runEnd = first + count;
+  }
+  flush();
+  glBindBuffer(GL_COPY_WRITE_BUFFER, 0);
+  this->Applied = target;
+}
+
+void vtkSilhouettePatchedMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
+{
+  // Builds the buffers when the input changed (BuildIBO above), then the
+  // selection's maximum ids (UpdateMaximumPointCellIds below).
+  this->Superclass::RenderPieceStart(ren, act);
+  this->ApplyHidden(ren, act);
+}
+
+void vtkSilhouettePatchedMapper::UpdateMaximumPointCellIds(vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::UpdateMaximumPointCellIds(ren, act);
+  // The helper's ids start past every id the mesh can write.
+  this->PatchCellOffset = this->CellCellMap->GetFinalOffset();
+  this->PatchPointOffset = this->CurrentInput->GetNumberOfPoints();
+  if (this->PatchDrawn(ren, act) && this->PatchData->GetNumberOfCells() > 0)
+  {
+    vtkHardwareSelector* sel = ren->GetSelector();
+    sel->UpdateMaximumCellId(this->PatchCellOffset + this->PatchData->GetNumberOfCells());
+    sel->UpdateMaximumPointId(this->PatchPointOffset + this->PatchData->GetNumberOfPoints());
+  }
+}
+
+void vtkSilhouettePatchedMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::RenderPieceDraw(ren, act);
+  this->PatchDrawnThisPass = this->PatchDrawn(ren, act) && this->PatchData->GetNumberOfCells() > 0;
+  if (!this->PatchDrawnThisPass)
+  {
+    return;
+  }
+  // The same colouring (lookup table, scalar mode and range, colour mode,
+  // array, clipping planes, coincident-topology offsets): vtkMapper's
+  // settings only, not the input.
+  if (this->GetMTime() > this->PatchSettingsTime)
+  {
+    this->Patch->vtkMapper::ShallowCopy(this);
+    this->Patch->SetVBOShiftScaleMethod(this->GetVBOShiftScaleMethod());
+    this->PatchSettingsTime = this->GetMTime();
+  }
+  this->Patch->CellIdOffset = static_cast<int>(this->PatchCellOffset);
+  this->Patch->PointIdOffset = static_cast<int>(this->PatchPointOffset);
+  // Inside this mapper's BeginRenderProp/EndRenderProp, so the selector's
+  // prop id and composite index are this mapper's.
+  this->Patch->RenderPiece(ren, act);
+}
+
+// The patch's pixels are converted here (its cell ids to the ids given with
+// SetPatch); the others go to the superclass, which maps them through its
+// cell map and id arrays.
+void vtkSilhouettePatchedMapper::ProcessSelectorPixelBuffers(
+  vtkHardwareSelector* sel, std::vector<unsigned int>& pixeloffsets, vtkProp* prop)
+{
+  vtkPolyData* poly = this->CurrentInput;
+  if (!this->PopulateSelectionSettings || !poly || !this->PatchDrawnThisPass)
+  {
+    this->Superclass::ProcessSelectorPixelBuffers(sel, pixeloffsets, prop);
+    return;
+  }
+  const int pass = sel->GetCurrentPass();
+  const bool pointPass = pass == vtkHardwareSelector::POINT_ID_LOW24 ||
+    pass == vtkHardwareSelector::POINT_ID_HIGH24 || pass == vtkHardwareSelector::PROCESS_PASS;
+  const bool cellPass = pass == vtkHardwareSelector::CELL_ID_LOW24 ||
+    pass == vtkHardwareSelector::CELL_ID_HIGH24 ||
+    pass == vtkHardwareSelector::COMPOSITE_INDEX_PASS;
+  vtkUnsignedIntArray* processIds = this->ProcessIdArrayName && sel->GetUseProcessIdFromData()
+    ? vtkArrayDownCast<vtkUnsignedIntArray>(
+        poly->GetPointData()->GetArray(this->ProcessIdArrayName))
+    : nullptr;
+  vtkUnsignedIntArray* compositeIds = this->CompositeIdArrayName
+    ? vtkArrayDownCast<vtkUnsignedIntArray>(
+        poly->GetCellData()->GetArray(this->CompositeIdArrayName))
+    : nullptr;
+  std::vector<unsigned int> mesh;
+  mesh.reserve(pixeloffsets.size());
+  unsigned char* out = sel->GetPixelBuffer(pass);
+  const vtkIdType patchCells = this->PatchCellIds ? this->PatchCellIds->GetNumberOfValues() : 0;
+  const vtkIdType patchPoints = static_cast<vtkIdType>(this->PatchPointSources.size());
+  for (const unsigned int pos : pixeloffsets)
+  {
+    vtkIdType k = -1;
+    if (pointPass)
+    {
+      const vtkIdType raw =
+        RawId(sel, vtkHardwareSelector::POINT_ID_LOW24, vtkHardwareSelector::POINT_ID_HIGH24, pos);
+      k = raw >= this->PatchPointOffset ? raw - this->PatchPointOffset : -1;
+      k = k < patchPoints ? k : -1;
+    }
+    else if (cellPass)
+    {
+      const vtkIdType raw =
+        RawId(sel, vtkHardwareSelector::CELL_ID_LOW24, vtkHardwareSelector::CELL_ID_HIGH24, pos);
+      k = raw >= this->PatchCellOffset ? raw - this->PatchCellOffset : -1;
+      k = k < patchCells ? k : -1;
+    }
+    if (k < 0)
+    {
+      mesh.push_back(pos);
+      continue;
+    }
+    if (!out)
+    {
+      continue;
+    }
+    switch (pass)
+    {
+      case vtkHardwareSelector::CELL_ID_LOW24:
+      case vtkHardwareSelector::CELL_ID_HIGH24:
+        Write24(
+          out, pos, this->PatchCellIds->GetValue(k), pass == vtkHardwareSelector::CELL_ID_HIGH24);
+        break;
+      case vtkHardwareSelector::COMPOSITE_INDEX_PASS:
+        if (compositeIds)
+        {
+          Write24(out, pos, compositeIds->GetValue(0), false); // one block per mapper
+        }
+        break;
+      case vtkHardwareSelector::PROCESS_PASS:
+        if (processIds)
+        {
+          Write24(out, pos,
+            processIds->GetValue(this->PatchPointSources[static_cast<std::size_t>(k)]) + 1, false);
+        }
+        break;
+      default:
+        break; // point ids: the patch is not drawn in point selection
+    }
+  }
+  this->Superclass::ProcessSelectorPixelBuffers(sel, mesh, prop);
+}

@@ -1,0 +1,246 @@
+#include "vtkSilhouetteSmoothingMapper.h"
+
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkIdTypeArray.h"
+#include "vtkMatrix4x4.h"
+#include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkRenderer.h"
+#include "vtkSilhouettePatchedMapper.h"
+#include "vtkSilhouetteSmoothingFilter.h"
+
+#include <algorithm>
+#include <cstring>
+#include <vector>
+
+vtkStandardNewMacro(vtkSilhouetteSmoothingMapper);
+
+namespace
+{
+
+// What the smoothing of a view depends on, compared bitwise: the camera's
+// model-view matrix and projection parameters (not its clipping range,
+// which renderers reset every frame without changing the outline), the
+// actor's matrix and the viewport.
+using ViewKey = std::array<double, 16 + 7 + 16 + 3>;
+
+ViewKey KeyOf(vtkCamera* camera, const double model[16], int width, int height, double aspect)
+{
+  ViewKey key{};
+  vtkMatrix4x4* view = camera->GetModelViewTransformMatrix();
+  std::size_t k = 0;
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      key[k++] = view->GetElement(i, j);
+    }
+  }
+  const double* center = camera->GetWindowCenter();
+  key[k++] = camera->GetViewAngle();
+  key[k++] = camera->GetParallelScale();
+  key[k++] = camera->GetParallelProjection();
+  key[k++] = camera->GetUseHorizontalViewAngle();
+  key[k++] = center[0];
+  key[k++] = center[1];
+  key[k++] = camera->GetUseOffAxisProjection();
+  for (int i = 0; i < 16; ++i)
+  {
+    key[k++] = model[i];
+  }
+  key[k++] = width;
+  key[k++] = height;
+  key[k++] = aspect;
+  return key;
+}
+
+bool SameBits(const ViewKey& a, const ViewKey& b)
+{
+  return std::memcmp(a.data(), b.data(), sizeof(ViewKey)) == 0;
+}
+
+// For each point of the patch, an input point whose process id it shares:
+// its own input point, else one of a triangle it is on.
+std::vector<vtkIdType> PointSources(vtkPolyData* patch)
+{
+  const vtkIdType n = patch->GetNumberOfPoints();
+  std::vector<vtkIdType> sources(static_cast<std::size_t>(n), -1);
+  vtkDataArray* original = patch->GetPointData()->GetArray("OriginalPointId");
+  if (!original)
+  {
+    std::fill(sources.begin(), sources.end(), 0);
+    return sources;
+  }
+  for (vtkIdType p = 0; p < n; ++p)
+  {
+    sources[static_cast<std::size_t>(p)] = static_cast<vtkIdType>(original->GetTuple1(p));
+  }
+  auto it = vtk::TakeSmartPointer(patch->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType size = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(size, ids);
+    vtkIdType known = -1;
+    for (vtkIdType k = 0; k < size && known < 0; ++k)
+    {
+      known = sources[static_cast<std::size_t>(ids[k])];
+    }
+    for (vtkIdType k = 0; k < size && known >= 0; ++k)
+    {
+      vtkIdType& s = sources[static_cast<std::size_t>(ids[k])];
+      s = s >= 0 ? s : known;
+    }
+  }
+  std::replace(sources.begin(), sources.end(), vtkIdType{ -1 }, vtkIdType{ 0 });
+  return sources;
+}
+
+} // namespace
+
+struct vtkSilhouetteSmoothingMapper::Internals
+{
+  vtkNew<vtkSilhouetteSmoothingFilter> Smoother;
+  vtkNew<vtkSilhouettePatchedMapper> Drawn;
+  vtkNew<vtkPolyData> Base;
+  vtkNew<vtkPolyData> Changes;
+  vtkNew<vtkIdTypeArray> Replaced;
+
+  // The base mesh is of this input, at this time, with these settings.
+  vtkPolyData* BaseInput = nullptr;
+  vtkMTimeType BaseInputTime = 0;
+  vtkMTimeType BaseSettingsTime = 0;
+  bool BaseReady = false;
+  // The patch is for this view (and this base mesh, and Smoothing).
+  ViewKey LastView{};
+  bool HavePatch = false;
+  bool PatchSmoothed = false;
+  vtkMTimeType CopiedSettingsTime = 0;
+
+  void UpdateBase(vtkSilhouetteSmoothingMapper* self, vtkPolyData* input)
+  {
+    const vtkMTimeType settings = this->Smoother->GetMTime();
+    if (input == this->BaseInput && input->GetMTime() == this->BaseInputTime &&
+      settings == this->BaseSettingsTime)
+    {
+      return;
+    }
+    this->BaseInput = input;
+    this->BaseInputTime = input->GetMTime();
+    this->BaseSettingsTime = settings;
+    this->BaseReady = this->Smoother->BuildBaseMesh(input, this->Base) != 0;
+    if (!this->BaseReady)
+    {
+      vtkWarningWithObjectMacro(
+        self, "The input cannot be smoothed (see the error above): it is drawn as it is.");
+    }
+    this->Drawn->SetInputData(this->BaseReady ? this->Base.Get() : input);
+    this->Base->Modified(); // refilled in place: the buffers are built again
+    // Selection reports the input's cell ids for the base mesh's cells.
+    this->Drawn->SetCellIdArrayName(this->BaseReady ? "OriginalCellId" : nullptr);
+    this->HavePatch = false;
+  }
+
+  void UpdatePatch(
+    vtkSilhouetteSmoothingMapper* self, vtkPolyData* input, vtkRenderer* ren, vtkActor* act)
+  {
+    const bool smooth = self->Smoothing && this->BaseReady;
+    vtkCamera* camera = ren->GetActiveCamera();
+    double model[16];
+    vtkMatrix4x4::DeepCopy(model, act->GetMatrix());
+    int width = 0, height = 0, x = 0, y = 0;
+    ren->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+    const ViewKey key = KeyOf(camera, model, width, height, ren->GetTiledAspectRatio());
+    if (this->HavePatch && this->PatchSmoothed == smooth && SameBits(key, this->LastView))
+    {
+      return;
+    }
+    this->LastView = key;
+    this->HavePatch = true;
+    this->PatchSmoothed = smooth;
+    self->ReplacedTriangleCount = 0;
+    self->PatchTriangleCount = 0;
+    if (!smooth || width <= 0 || height <= 0 ||
+      !this->Smoother->BuildChanges(
+        input, camera, model, width, height, this->Changes, this->Replaced))
+    {
+      this->Drawn->SetPatch({}, nullptr, nullptr, {});
+      return;
+    }
+    const vtkIdType* replaced = this->Replaced->GetPointer(0);
+    const std::vector<vtkIdType> hidden(replaced, replaced + this->Replaced->GetNumberOfValues());
+    this->Drawn->SetPatch(hidden, this->Changes,
+      vtkIdTypeArray::SafeDownCast(this->Changes->GetCellData()->GetArray("OriginalCellId")),
+      PointSources(this->Changes));
+    self->ReplacedTriangleCount = static_cast<vtkIdType>(hidden.size());
+    self->PatchTriangleCount = this->Changes->GetNumberOfPolys();
+  }
+};
+
+vtkSilhouetteSmoothingMapper::vtkSilhouetteSmoothingMapper()
+  : Internal(new Internals)
+{
+}
+
+vtkSilhouetteSmoothingMapper::~vtkSilhouetteSmoothingMapper() = default;
+
+vtkSilhouetteSmoothingFilter* vtkSilhouetteSmoothingMapper::GetSmoothingFilter()
+{
+  return this->Internal->Smoother;
+}
+
+vtkMTimeType vtkSilhouetteSmoothingMapper::GetMTime()
+{
+  return std::max(this->Superclass::GetMTime(), this->Internal->Smoother->GetMTime());
+}
+
+void vtkSilhouetteSmoothingMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
+{
+  vtkPolyData* input = this->GetInput();
+  if (!input || input->GetNumberOfPoints() == 0 || !ren || !act)
+  {
+    return;
+  }
+  Internals& internal = *this->Internal;
+  internal.UpdateBase(this, input);
+  // Colouring and clipping as this mapper's (vtkMapper's settings, not the
+  // input).
+  const vtkMTimeType settings = this->Superclass::GetMTime();
+  if (settings != internal.CopiedSettingsTime)
+  {
+    internal.Drawn->vtkMapper::ShallowCopy(this);
+    internal.Drawn->SetStatic(1);
+    internal.CopiedSettingsTime = settings;
+  }
+  internal.UpdatePatch(this, input, ren, act);
+  internal.Drawn->RenderPiece(ren, act);
+}
+
+void vtkSilhouetteSmoothingMapper::ReleaseGraphicsResources(vtkWindow* win)
+{
+  this->Internal->Drawn->ReleaseGraphicsResources(win);
+  this->Internal->HavePatch = false;
+  this->Superclass::ReleaseGraphicsResources(win);
+}
+
+void vtkSilhouetteSmoothingMapper::ProcessSelectorPixelBuffers(
+  vtkHardwareSelector* sel, std::vector<unsigned int>& pixeloffsets, vtkProp* prop)
+{
+  this->Internal->Drawn->ProcessSelectorPixelBuffers(sel, pixeloffsets, prop);
+}
+
+void vtkSilhouetteSmoothingMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Smoothing: " << (this->Smoothing ? "On" : "Off") << "\n";
+  os << indent << "ReplacedTriangleCount: " << this->ReplacedTriangleCount << "\n";
+  os << indent << "PatchTriangleCount: " << this->PatchTriangleCount << "\n";
+  os << indent << "SmoothingFilter:\n";
+  this->Internal->Smoother->PrintSelf(os, indent.GetNextIndent());
+}

@@ -1,0 +1,103 @@
+/**
+ * @class   vtkSilhouetteSmoothingMapper
+ * @brief   draws a coarse triangle mesh with a smooth outline, smoothing its silhouette while it
+ * renders
+ *
+ * Set a coarse mesh as input and the actor's outline is smooth in every
+ * renderer it is added to: the mapper takes the camera, the viewport and
+ * the actor's matrix while rendering, and smooths the silhouette for them
+ * with vtkSilhouetteSmoothingFilter's method and settings
+ * (GetSmoothingFilter(): Tolerance, PerturbVertices, FoldPrevention, ...).
+ * No SetRenderer or SetProp3D wiring is needed.
+ *
+ * What a frame costs is the silhouette, not the mesh. The mesh as the
+ * smoothing sees it (the filter's BuildBaseMesh: the input's points and the
+ * copies its smooth groups need, shading normals, point and cell data) is
+ * uploaded once per change of the input or of the filter's settings. Per
+ * view, the filter's BuildChanges gives the triangles re-meshed for the
+ * view and what replaces them; the mapper hides those triangles in the
+ * uploaded index buffer (degenerate triangles written over the ones that
+ * changed since the last frame) and draws the replacements from a small
+ * buffer of their own. The image is the filter's output drawn by a
+ * vtkPolyDataMapper, but for rasterisation order (module test
+ * TestSmoothingMapper).
+ *
+ * It colours as vtkPolyDataMapper does (scalar visibility and mode, lookup
+ * table, colour mode, point and cell scalars, texture coordinates; the
+ * vtkProperty, lighting and textures of the actor). Hardware selection
+ * reports the input's cell ids, for the replacements too (the input cell
+ * each came from); point selection picks the input's points on the mesh as
+ * it is. Representations other than surface draw the mesh as it is.
+ *
+ * Smoothing off (SmoothingOff()) draws the base mesh alone: the coarse
+ * outline, with the same shading normals.
+ */
+#ifndef vtkSilhouetteSmoothingMapper_h
+#define vtkSilhouetteSmoothingMapper_h
+
+#include "SilhouetteSmoothingRenderingSilhouetteModule.h" // For export macro
+#include "vtkPolyDataMapper.h"
+
+#include <array>  // For the last view
+#include <memory> // For the internals
+
+class vtkSilhouetteSmoothingFilter;
+
+class SILHOUETTESMOOTHINGRENDERINGSILHOUETTE_EXPORT vtkSilhouetteSmoothingMapper
+  : public vtkPolyDataMapper
+{
+public:
+  static vtkSilhouetteSmoothingMapper* New();
+  vtkTypeMacro(vtkSilhouetteSmoothingMapper, vtkPolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The smoothing's settings live on this filter (it is never run as a
+   * pipeline here: the mapper calls its BuildBaseMesh and BuildChanges).
+   * Changing its settings changes the mapper's MTime.
+   */
+  vtkSilhouetteSmoothingFilter* GetSmoothingFilter();
+
+  ///@{
+  /**
+   * Smooth the silhouette (default on). Off: the mesh as it is, with the
+   * smoothing's shading normals.
+   */
+  vtkSetMacro(Smoothing, bool);
+  vtkGetMacro(Smoothing, bool);
+  vtkBooleanMacro(Smoothing, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Of the last rendered frame: the input triangles re-meshed or moved, and
+   * the triangles drawn in their place.
+   */
+  vtkIdType GetReplacedTriangleCount() const { return this->ReplacedTriangleCount; }
+  vtkIdType GetPatchTriangleCount() const { return this->PatchTriangleCount; }
+  ///@}
+
+  void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
+  void ReleaseGraphicsResources(vtkWindow* win) override;
+  bool GetSupportsSelection() override { return true; }
+  void ProcessSelectorPixelBuffers(
+    vtkHardwareSelector* sel, std::vector<unsigned int>& pixeloffsets, vtkProp* prop) override;
+  vtkMTimeType GetMTime() override;
+
+protected:
+  vtkSilhouetteSmoothingMapper();
+  ~vtkSilhouetteSmoothingMapper() override;
+
+  bool Smoothing = true;
+  vtkIdType ReplacedTriangleCount = 0;
+  vtkIdType PatchTriangleCount = 0;
+
+private:
+  vtkSilhouetteSmoothingMapper(const vtkSilhouetteSmoothingMapper&) = delete;
+  void operator=(const vtkSilhouetteSmoothingMapper&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

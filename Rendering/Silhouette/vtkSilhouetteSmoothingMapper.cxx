@@ -16,6 +16,7 @@
 #include "vtkSilhouetteSmoothingFilter.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <vector>
 
@@ -207,6 +208,7 @@ void vtkSilhouetteSmoothingMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   {
     return;
   }
+  const auto start = std::chrono::steady_clock::now();
   Internals& internal = *this->Internal;
   internal.UpdateBase(this, input);
   // Colouring and clipping as this mapper's (vtkMapper's settings, not the
@@ -219,6 +221,8 @@ void vtkSilhouetteSmoothingMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     internal.CopiedSettingsTime = settings;
   }
   internal.UpdatePatch(this, input, ren, act);
+  this->LastPrepareSeconds =
+    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   internal.Drawn->RenderPiece(ren, act);
 }
 

@@ -77,6 +77,14 @@ public:
   vtkIdType GetPatchTriangleCount() const { return this->PatchTriangleCount; }
   ///@}
 
+  /**
+   * Wall-clock seconds the last RenderPiece spent before drawing: the base
+   * mesh when it had to be built again, and the frame's smoothing and patch
+   * when the view changed (the patch's index-buffer update is part of the
+   * draw: a few glBufferSubData calls over the triangles that changed).
+   */
+  double GetLastPrepareSeconds() const { return this->LastPrepareSeconds; }
+
   void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
   void ReleaseGraphicsResources(vtkWindow* win) override;
   bool GetSupportsSelection() override { return true; }
@@ -91,6 +99,7 @@ protected:
   bool Smoothing = true;
   vtkIdType ReplacedTriangleCount = 0;
   vtkIdType PatchTriangleCount = 0;
+  double LastPrepareSeconds = 0.0;
 
 private:
   vtkSilhouetteSmoothingMapper(const vtkSilhouetteSmoothingMapper&) = delete;

@@ -1,0 +1,185 @@
+// Render-time smoothing against the alternatives (issue 15), measured side
+// by side in one run: over an orbit, each frame is rendered by three
+// windows in turn, with
+//   plain   the mesh drawn by vtkPolyDataMapper (no smoothing),
+//   mapper  vtkSilhouetteSmoothingMapper,
+//   filter  vtkSilhouetteSmoothingFilter + vtkPolyDataMapper,
+// on icospheres of about 80k, 330k and 1.3M triangles, offscreen, without
+// multisampling. For each it prints the median whole frame (camera move,
+// render, wait for completion) and its ratio to plain's, and the median
+// time of the smoothing's own work before drawing: the mapper's
+// GetLastPrepareSeconds, and the filter's Update. The per-frame upload of
+// the filter's output is part of its frame, not of this column.
+//
+// Usage: mapper_benchmark [--frames N] [--levels L1,L2,...] [--size WxH]
+#include "vtkActor.h"
+#include "vtkCamera.h"
+#include "vtkIcosphereSource.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#include "vtkSilhouetteSmoothingFilter.h"
+#include "vtkSilhouetteSmoothingMapper.h"
+
+#include "BenchmarkTiming.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+struct Variant
+{
+  const char* Name;
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkActor> Actor;
+  std::vector<double> FrameMs;
+  std::vector<double> PrepareMs;
+};
+
+void Usage()
+{
+  std::fprintf(stderr, "usage: mapper_benchmark [--frames N] [--levels 6,7,8] [--size WxH]\n");
+  std::exit(2);
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  int frames = 20;
+  std::vector<int> levels{ 6, 7, 8 };
+  int width = 1024;
+  int height = 768;
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string option = argv[i];
+    if (i + 1 >= argc)
+    {
+      Usage();
+    }
+    const std::string value = argv[++i];
+    if (option == "--frames")
+    {
+      frames = std::atoi(value.c_str());
+    }
+    else if (option == "--levels")
+    {
+      levels.clear();
+      std::stringstream list(value);
+      std::string item;
+      while (std::getline(list, item, ','))
+      {
+        levels.push_back(std::atoi(item.c_str()));
+      }
+    }
+    else if (option == "--size")
+    {
+      if (std::sscanf(value.c_str(), "%dx%d", &width, &height) != 2)
+      {
+        Usage();
+      }
+    }
+    else
+    {
+      Usage();
+    }
+  }
+  if (frames < 1 || levels.empty() || width < 16 || height < 16)
+  {
+    Usage();
+  }
+
+  std::printf(
+    "%d frames of a 2-degree orbit, %dx%d offscreen; medians in ms\n", frames, width, height);
+  std::printf(
+    "%10s  %-7s %10s %10s %12s\n", "triangles", "variant", "frame", "/ plain", "smoothing");
+  for (const int level : levels)
+  {
+    vtkNew<vtkIcosphereSource> sphere;
+    sphere->SetSubdivisionLevel(level);
+    sphere->Update();
+    vtkPolyData* mesh = sphere->GetOutput();
+
+    Variant plain{ "plain" };
+    Variant mapper{ "mapper" };
+    Variant filtered{ "filter" };
+    vtkNew<vtkPolyDataMapper> plainMapper;
+    plainMapper->SetInputData(mesh);
+    plainMapper->ScalarVisibilityOff();
+    plain.Actor->SetMapper(plainMapper);
+    vtkNew<vtkSilhouetteSmoothingMapper> smoothingMapper;
+    smoothingMapper->SetInputData(mesh);
+    smoothingMapper->ScalarVisibilityOff();
+    mapper.Actor->SetMapper(smoothingMapper);
+    vtkNew<vtkSilhouetteSmoothingFilter> filter;
+    filter->SetInputData(mesh);
+    filter->SetRenderer(filtered.Renderer);
+    filter->SetProp3D(filtered.Actor);
+    vtkNew<vtkPolyDataMapper> filterMapper;
+    filterMapper->SetInputConnection(filter->GetOutputPort());
+    filterMapper->ScalarVisibilityOff();
+    filtered.Actor->SetMapper(filterMapper);
+    Variant* variants[3] = { &plain, &mapper, &filtered };
+    for (Variant* v : variants)
+    {
+      v->Window->SetSize(width, height);
+      v->Window->SetMultiSamples(0);
+      v->Window->SetOffScreenRendering(1);
+      v->Window->AddRenderer(v->Renderer);
+      v->Renderer->AddActor(v->Actor);
+      v->Renderer->ResetCamera(mesh->GetBounds());
+      v->Renderer->GetActiveCamera()->Elevation(20.0);
+      v->Renderer->GetActiveCamera()->OrthogonalizeViewUp();
+      v->Window->Render(); // uploads, and the filter's first run
+      v->Window->WaitForCompletion();
+    }
+    for (int f = 0; f < frames; ++f)
+    {
+      for (Variant* v : variants)
+      {
+        double prepare = 0.0;
+        const double frame = benchmark_timing::Milliseconds([&]() {
+          v->Renderer->GetActiveCamera()->Azimuth(2.0);
+          if (v == &filtered)
+          {
+            prepare = benchmark_timing::Milliseconds([&]() { filter->Update(); });
+          }
+          v->Window->Render();
+          v->Window->WaitForCompletion();
+        });
+        if (v == &mapper)
+        {
+          prepare = 1000.0 * smoothingMapper->GetLastPrepareSeconds();
+        }
+        v->FrameMs.push_back(frame);
+        v->PrepareMs.push_back(prepare);
+      }
+    }
+    const double plainMs = benchmark_timing::Median(plain.FrameMs);
+    for (Variant* v : variants)
+    {
+      const double ms = benchmark_timing::Median(v->FrameMs);
+      char smoothing[32] = "-";
+      if (v != &plain)
+      {
+        std::snprintf(smoothing, sizeof(smoothing), "%.2f", benchmark_timing::Median(v->PrepareMs));
+      }
+      std::printf("%10lld  %-7s %10.1f %10.2f %12s\n",
+        static_cast<long long>(mesh->GetNumberOfPolys()), v->Name, ms, ms / plainMs, smoothing);
+    }
+    std::printf("%10s  mapper: %lld triangles replaced by %lld in the last frame\n", "",
+      static_cast<long long>(smoothingMapper->GetReplacedTriangleCount()),
+      static_cast<long long>(smoothingMapper->GetPatchTriangleCount()));
+    std::fflush(stdout);
+  }
+  return 0;
+}

@@ -613,6 +613,7 @@ silsmooth::SmoothingResult vtkSilhouetteSmoothingFilter::Internals::Smooth(
   silsmooth::SmoothingParameters parameters;
   parameters.PerturbConcaveSilhouettes = self->PerturbVertices;
   parameters.PreventFolds = self->FoldPrevention;
+  parameters.CullOutsideFrustum = self->FrustumCulling;
   parameters.BoundaryMayBeSeam = boundaryMayBeSeam;
   parameters.Visibility = self->VisibilityMethod == HIERARCHICAL
     ? silsmooth::VisibilityMethod::Hierarchical
@@ -766,6 +767,7 @@ int vtkSilhouetteSmoothingFilter::RequestData(
   AddCount(fd, "UnresolvedFoldCount", static_cast<vtkIdType>(result.UnresolvedFolds));
   AddCount(fd, "FoldGuardRoundCount", static_cast<vtkIdType>(result.FoldGuardRounds));
   AddCount(fd, "SampleBudgetMaximum", static_cast<vtkIdType>(result.SampleBudgetMaximum));
+  AddCount(fd, "CulledTriangleCount", static_cast<vtkIdType>(result.CulledTriangles));
   AddCount(fd, "InputTriangleCount", inputTriangles);
   AddCount(fd, "OutputTriangleCount", inputTriangles - remeshedTriangles + newTriangles);
 
@@ -853,6 +855,7 @@ int vtkSilhouetteSmoothingFilter::BuildChanges(vtkPolyData* input, vtkCamera* ca
   AddCount(fd, "SilhouetteTriangleCount", static_cast<vtkIdType>(result.SilhouetteTriangleCount));
   AddCount(fd, "ChordFallbackCount", static_cast<vtkIdType>(result.ChordFallbackTriangles));
   AddCount(fd, "UnresolvedFoldCount", static_cast<vtkIdType>(result.UnresolvedFolds));
+  AddCount(fd, "CulledTriangleCount", static_cast<vtkIdType>(result.CulledTriangles));
   return 1;
 }
 
@@ -865,6 +868,7 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NewPointBudget: " << this->NewPointBudget << "\n";
   os << indent << "PerturbVertices: " << (this->PerturbVertices ? "On" : "Off") << "\n";
   os << indent << "FoldPrevention: " << (this->FoldPrevention ? "On" : "Off") << "\n";
+  os << indent << "FrustumCulling: " << (this->FrustumCulling ? "On" : "Off") << "\n";
   os << indent << "FeatureLines: " << (this->FeatureLines ? "On" : "Off") << "\n";
   os << indent << "FeatureEdgeDetection: " << (this->FeatureEdgeDetection ? "On" : "Off") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";

@@ -181,6 +181,20 @@ public:
 
   ///@{
   /**
+   * Leave the silhouette triangles the camera cannot show as they are:
+   * those beyond a plane of the view frustum by more than their longest
+   * side, so that no smoothed curve of theirs could reach into the view
+   * (field data `CulledTriangleCount`). Default off: a mesh written out
+   * wants every silhouette smoothed. vtkSilhouetteSmoothingMapper turns it
+   * on.
+   */
+  vtkSetMacro(FrustumCulling, bool);
+  vtkGetMacro(FrustumCulling, bool);
+  vtkBooleanMacro(FrustumCulling, bool);
+  ///@}
+
+  ///@{
+  /**
    * Feature edges (creases) marked on the input: every segment of a line
    * cell that is an edge of the triangles. Default on (line cells that run
    * along the surface's edges are taken as a deliberate mark, as
@@ -381,6 +395,7 @@ protected:
   int SamplingRule = SECOND_DIFFERENCE;
   bool PerturbVertices = true;
   bool FoldPrevention = true;
+  bool FrustumCulling = false;
   bool FeatureLines = true;
   bool FeatureEdgeDetection = false;
   double FeatureAngle = 30.0;

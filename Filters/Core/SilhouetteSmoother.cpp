@@ -401,6 +401,7 @@ public:
       }
     }
     this->Result.PinnedPoints = this->Pinned.size();
+    this->Result.CulledTriangles = this->Culled;
     this->Result.StraightSilhouettePoints = this->StraightEdges.size();
     this->Result.StraightFeatureSegments = this->StraightFeatures.size();
     for (const auto& level : this->Levels)
@@ -682,6 +683,53 @@ private:
     {
       this->Silhouette.insert(this->Silhouette.end(), range.second.begin(), range.second.end());
     }
+    if (this->Parameters.CullOutsideFrustum)
+    {
+      this->cullOutsideFrustum();
+    }
+  }
+
+  // SmoothingParameters::CullOutsideFrustum: planes in model coordinates
+  // from the rows of ModelToClip (w + x >= 0, w - x >= 0, and so for y and
+  // z), scaled so that they give distances in model units.
+  void cullOutsideFrustum()
+  {
+    const glm::dmat4& m = this->View.ModelToClip;
+    auto row = [&m](int i) {
+      return glm::dvec4(m[0][i], m[1][i], m[2][i], m[3][i]);
+    };
+    std::array<glm::dvec4, 6> planes{ { row(3) + row(0), row(3) - row(0), row(3) + row(1),
+      row(3) - row(1), row(3) + row(2), row(3) - row(2) } };
+    for (glm::dvec4& plane : planes)
+    {
+      const double length = glm::length(glm::dvec3(plane));
+      plane = length > 0.0 && std::isfinite(length) ? plane / length : glm::dvec4(0.0);
+    }
+    const std::vector<Triangle>& triangles = this->Mesh.triangles();
+    const std::vector<glm::dvec3>& points = this->Mesh.points();
+    const std::size_t before = this->Silhouette.size();
+    this->Silhouette.erase(std::remove_if(this->Silhouette.begin(), this->Silhouette.end(),
+                             [&](Id t) {
+                               const Triangle& tri = triangles[static_cast<std::size_t>(t)];
+                               const glm::dvec3& a = points[static_cast<std::size_t>(tri[0])];
+                               const glm::dvec3& b = points[static_cast<std::size_t>(tri[1])];
+                               const glm::dvec3& c = points[static_cast<std::size_t>(tri[2])];
+                               const double margin = std::max(
+                                 { glm::length(b - a), glm::length(c - b), glm::length(a - c) });
+                               for (const glm::dvec4& plane : planes)
+                               {
+                                 auto beyond = [&](const glm::dvec3& p) {
+                                   return glm::dot(glm::dvec3(plane), p) + plane.w < -margin;
+                                 };
+                                 if (beyond(a) && beyond(b) && beyond(c))
+                                 {
+                                   return true;
+                                 }
+                               }
+                               return false;
+                             }),
+      this->Silhouette.end());
+    this->Culled = before - this->Silhouette.size();
   }
 
   // One silhouette point per mixed edge, in ascending edge order, so both
@@ -1249,6 +1297,7 @@ private:
   std::atomic<bool> SampleCapBit{ false };
   const ParallelFor& For;
   std::vector<double> G;
+  std::size_t Culled = 0; // silhouette triangles outside the frustum
   std::vector<Id> Silhouette;
   std::vector<EdgeSilhouettePoint> EdgePoints;
   std::vector<int> FeatureSampleCounts;

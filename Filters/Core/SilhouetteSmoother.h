@@ -196,6 +196,15 @@ struct SmoothingParameters
   /// depends only on the frame's counts, so the output stays the same for
   /// any thread count.
   std::size_t MaximumSampledPoints = 0;
+  /// Leave out the silhouette triangles the view cannot show: those whose
+  /// three corners lie beyond one plane of the view frustum (ModelToClip's
+  /// six) by more than the triangle's longest side. A triangle's smoothed
+  /// curves stay within half its longest side of it (the end tangents are
+  /// at most twice the chord, eq. 4), so nothing the view shows changes,
+  /// and a crack where a culled triangle meets a re-meshed one lies beyond
+  /// that plane too. For renderers (vtkSilhouetteSmoothingMapper); a mesh
+  /// written to a file wants every silhouette smoothed.
+  bool CullOutsideFrustum = false;
 };
 
 /// A point the pass adds. Its other attributes (texture coordinates, scalars)
@@ -226,6 +235,9 @@ struct SmoothingResult
   std::vector<RemeshKind> RemeshKinds;
   /// How many of RemeshedTriangles the silhouette crosses.
   std::size_t SilhouetteTriangleCount = 0;
+  /// Silhouette triangles left out as outside the view frustum
+  /// (SmoothingParameters::CullOutsideFrustum).
+  std::size_t CulledTriangles = 0;
   /// The triangles replacing RemeshedTriangles[i] are
   /// Replacements[ReplacementOffsets[i] .. ReplacementOffsets[i + 1]).
   std::vector<std::size_t> ReplacementOffsets{ 0 };

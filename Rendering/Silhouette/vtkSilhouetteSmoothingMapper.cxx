@@ -5,6 +5,8 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -167,6 +169,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
     this->PatchSmoothed = smooth;
     self->ReplacedTriangleCount = 0;
     self->PatchTriangleCount = 0;
+    self->CulledTriangleCount = 0;
     if (!smooth || width <= 0 || height <= 0 ||
       !this->Smoother->BuildChanges(
         input, camera, model, width, height, this->Changes, this->Replaced))
@@ -181,12 +184,18 @@ struct vtkSilhouetteSmoothingMapper::Internals
       PointSources(this->Changes));
     self->ReplacedTriangleCount = static_cast<vtkIdType>(hidden.size());
     self->PatchTriangleCount = this->Changes->GetNumberOfPolys();
+    if (vtkDataArray* culled = this->Changes->GetFieldData()->GetArray("CulledTriangleCount"))
+    {
+      self->CulledTriangleCount = static_cast<vtkIdType>(culled->GetTuple1(0));
+    }
   }
 };
 
 vtkSilhouetteSmoothingMapper::vtkSilhouetteSmoothingMapper()
   : Internal(new Internals)
 {
+  // What the view cannot show is not smoothed.
+  this->Internal->Smoother->FrustumCullingOn();
 }
 
 vtkSilhouetteSmoothingMapper::~vtkSilhouetteSmoothingMapper() = default;
@@ -245,6 +254,7 @@ void vtkSilhouetteSmoothingMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Smoothing: " << (this->Smoothing ? "On" : "Off") << "\n";
   os << indent << "ReplacedTriangleCount: " << this->ReplacedTriangleCount << "\n";
   os << indent << "PatchTriangleCount: " << this->PatchTriangleCount << "\n";
+  os << indent << "CulledTriangleCount: " << this->CulledTriangleCount << "\n";
   os << indent << "SmoothingFilter:\n";
   this->Internal->Smoother->PrintSelf(os, indent.GetNextIndent());
 }

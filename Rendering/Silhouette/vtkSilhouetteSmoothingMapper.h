@@ -7,8 +7,9 @@
  * renderer it is added to: the mapper takes the camera, the viewport and
  * the actor's matrix while rendering, and smooths the silhouette for them
  * with vtkSilhouetteSmoothingFilter's method and settings
- * (GetSmoothingFilter(): Tolerance, PerturbVertices, FoldPrevention, ...).
- * No SetRenderer or SetProp3D wiring is needed.
+ * (GetSmoothingFilter(): Tolerance, PerturbVertices, FoldPrevention, ...;
+ * FrustumCulling is on here, so silhouettes the view cannot show are not
+ * smoothed). No SetRenderer or SetProp3D wiring is needed.
  *
  * What a frame costs is the silhouette, not the mesh. The mesh as the
  * smoothing sees it (the filter's BuildBaseMesh: the input's points and the
@@ -70,11 +71,13 @@ public:
 
   ///@{
   /**
-   * Of the last rendered frame: the input triangles re-meshed or moved, and
-   * the triangles drawn in their place.
+   * Of the last rendered frame: the input triangles re-meshed or moved, the
+   * triangles drawn in their place, and the silhouette triangles left as
+   * they are because the view cannot show them (FrustumCulling).
    */
   vtkIdType GetReplacedTriangleCount() const { return this->ReplacedTriangleCount; }
   vtkIdType GetPatchTriangleCount() const { return this->PatchTriangleCount; }
+  vtkIdType GetCulledTriangleCount() const { return this->CulledTriangleCount; }
   ///@}
 
   /**
@@ -99,6 +102,7 @@ protected:
   bool Smoothing = true;
   vtkIdType ReplacedTriangleCount = 0;
   vtkIdType PatchTriangleCount = 0;
+  vtkIdType CulledTriangleCount = 0;
   double LastPrepareSeconds = 0.0;
 
 private:

@@ -5,12 +5,14 @@
 #include "SilhouetteSmoother.h"
 
 #include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <random>
 #include <thread>
@@ -549,4 +551,45 @@ TEST(SilhouetteSmoother, SampleBudgetCapsTheFrameAndChangesNothingWhereItDoesNot
   // silhouette triangle, shared with neighbours).
   EXPECT_LE(capped.NewPoints.size(), 200u + 2 * segments);
   EXPECT_LT(capped.NewPoints.size(), unbounded.NewPoints.size() / 2);
+}
+
+TEST(SilhouetteSmoother, FrustumCullingLeavesOutOnlyWhatTheViewCannotShow)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::unitSphere(24, 48, points, triangles);
+  const PreparedMesh mesh(points, triangles, points);
+  // A real perspective looking past the sphere's side: about half of its
+  // outline is outside the view.
+  ViewGeometry view;
+  view.Eye = glm::dvec3(0.0, 0.0, 3.0);
+  view.ViewportWidth = 400;
+  view.ViewportHeight = 300;
+  view.ModelToClip = glm::perspective(glm::radians(30.0), 400.0 / 300.0, 0.1, 10.0) *
+    glm::lookAt(view.Eye, glm::dvec3(0.9, 0.0, 0.0), glm::dvec3(0.0, 1.0, 0.0));
+  SmoothingParameters parameters;
+  const SmoothingResult full = smoothSilhouettes(mesh, view, parameters);
+  parameters.CullOutsideFrustum = true;
+  const SmoothingResult culled = smoothSilhouettes(mesh, view, parameters);
+  EXPECT_EQ(full.CulledTriangles, 0u);
+  ASSERT_GT(culled.CulledTriangles, 0u);
+  EXPECT_EQ(culled.SilhouetteTriangleCount + culled.CulledTriangles, full.SilhouetteTriangleCount);
+  // What is kept is re-meshed; what is left out lies wholly outside the
+  // viewport.
+  EXPECT_TRUE(std::includes(full.RemeshedTriangles.begin(), full.RemeshedTriangles.end(),
+    culled.RemeshedTriangles.begin(), culled.RemeshedTriangles.end()));
+  std::vector<Id> leftOut;
+  std::set_difference(full.RemeshedTriangles.begin(), full.RemeshedTriangles.end(),
+    culled.RemeshedTriangles.begin(), culled.RemeshedTriangles.end(), std::back_inserter(leftOut));
+  EXPECT_EQ(leftOut.size(), culled.CulledTriangles);
+  for (const Id t : leftOut)
+  {
+    for (const Id v : triangles[static_cast<std::size_t>(t)])
+    {
+      glm::dvec2 pixel;
+      const bool inFront = view.toPixels(points[static_cast<std::size_t>(v)], pixel);
+      EXPECT_TRUE(!inFront || pixel.x < 0.0 || pixel.x > 400.0 || pixel.y < 0.0 || pixel.y > 300.0)
+        << "triangle " << t << " is left out but its corner " << v << " is in view";
+    }
+  }
 }

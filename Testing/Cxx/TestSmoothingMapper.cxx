@@ -8,6 +8,9 @@
 // off (the chord-only outline) must differ in more than that, or the check
 // cannot fail. Hardware cell selection over every pixel reports the same
 // input cell as the filter's output does (through its OriginalCellId).
+// Zoomed in, part of the silhouette is outside the view: the mapper leaves
+// it as it is (FrustumCulling, on in the mapper, off in the filter), and
+// the images are still the same.
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellData.h"
@@ -73,6 +76,8 @@ struct Scene
     this->Renderer->AddActor(this->Actor);
   }
 
+  double Zoom = 1.3;
+
   void Look(vtkPolyData* mesh, int view)
   {
     vtkCamera* camera = this->Renderer->GetActiveCamera();
@@ -83,7 +88,7 @@ struct Scene
     camera->Azimuth(20.0 + 25.0 * view);
     camera->Elevation(15.0 + 5.0 * view);
     camera->OrthogonalizeViewUp();
-    camera->Zoom(1.3);
+    camera->Zoom(this->Zoom);
     this->Renderer->ResetCameraClippingRange(mesh->GetBounds());
   }
 
@@ -258,13 +263,15 @@ int TestSmoothingMapper(int argc, char* argv[])
     const char* Name;
     vtkPolyData* Mesh;
     Colouring How;
+    double Zoom = 1.3;
   };
   const Case cases[] = { { "sphere", sphere->GetOutput(), Colouring::Plain },
     { "torus", torus->GetOutput(), Colouring::Plain }, { "bunny", bunny, Colouring::Plain },
     { "bunny, point scalars", bunny, Colouring::PointScalars },
     { "torus, cell scalars", torus->GetOutput(), Colouring::CellScalars },
     { "sphere, texture", sphere->GetOutput(), Colouring::Texture },
-    { "bunny, texture", bunny, Colouring::Texture } };
+    { "bunny, texture", bunny, Colouring::Texture },
+    { "torus, zoomed in", torus->GetOutput(), Colouring::Plain, 3.0 } };
 
   bool ok = true;
   for (const Case& c : cases)
@@ -281,6 +288,7 @@ int TestSmoothingMapper(int argc, char* argv[])
     viaFilter.Actor->SetMapper(plain);
 
     Scene viaMapper;
+    viaFilter.Zoom = viaMapper.Zoom = c.Zoom;
     vtkNew<vtkSilhouetteSmoothingMapper> mapper;
     mapper->SetInputData(mesh);
     Configure(mapper, viaMapper.Actor, c.How, mapperTexture);
@@ -288,6 +296,7 @@ int TestSmoothingMapper(int argc, char* argv[])
 
     long worst = 0;
     long leastUnsmoothed = -1;
+    vtkIdType culled = 0;
     for (int view = 0; view < Views; ++view)
     {
       viaFilter.Look(mesh, view);
@@ -298,6 +307,7 @@ int TestSmoothingMapper(int argc, char* argv[])
       mapper->SmoothingOn();
       const long differing = Differing(viaMapper.Pixels(), expected);
       worst = std::max(worst, differing);
+      culled += mapper->GetCulledTriangleCount();
       leastUnsmoothed = leastUnsmoothed < 0 ? unsmoothed : std::min(leastUnsmoothed, unsmoothed);
       if (view == 0 && mapper->GetReplacedTriangleCount() == 0)
       {
@@ -308,6 +318,16 @@ int TestSmoothingMapper(int argc, char* argv[])
     std::printf("%s: at most %ld pixels differ from the filter's image over %d views "
                 "(limit %ld); with smoothing off at least %ld\n",
       c.Name, worst, Views, MaximumDifferingPixels, leastUnsmoothed);
+    if (c.Zoom > 2.0)
+    {
+      std::printf("%s: %lld silhouette triangles outside the view left as they are\n", c.Name,
+        static_cast<long long>(culled));
+      if (culled == 0)
+      {
+        std::printf("FAIL: %s: nothing was outside the view, the case is not tested\n", c.Name);
+        ok = false;
+      }
+    }
     if (worst > MaximumDifferingPixels)
     {
       std::printf("FAIL: %s: the mapper's image is not the filter's\n", c.Name);

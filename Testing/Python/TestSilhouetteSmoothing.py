@@ -1,6 +1,7 @@
 """The Python package (issue 7): every class of the module imports beside
 Debian's vtkmodules and works in a pipeline with VTK's own classes; errors
-reach Python as VTK errors; the README's example runs and draws the bunny.
+reach Python as VTK errors; the README's example runs and draws the bunny;
+the render-time mapper draws what the filter draws.
 
     PYTHONPATH=<build>/lib/python3.11/dist-packages python3 TestSilhouetteSmoothing.py DATA_DIR
 """
@@ -143,6 +144,56 @@ class SilhouetteSmoothingTest(unittest.TestCase):
         self.assertEqual(smoother.GetExecutive().Update(), 0)
         self.assertTrue(errors)
         self.assertEqual(smoother.GetOutput().GetNumberOfPoints(), 0)
+
+    def test_mapper_draws_what_the_filter_draws(self):
+        # vtkSilhouetteSmoothingMapper, with no wiring, against the filter
+        # wired to the renderer: the same pixels; with smoothing off (the
+        # chord outline) thousands differ, so the comparison can fail.
+        import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL back-end)
+        from vtkmodules.vtkRenderingCore import (vtkActor, vtkPolyDataMapper, vtkRenderer,
+                                                 vtkRenderWindow, vtkWindowToImageFilter)
+        from silhouette_smoothing import vtkSilhouetteSmoothingMapper
+        sphere = vtkIcosphereSource()
+        sphere.SetSubdivisionLevel(2)
+
+        def pixels(kind):
+            renderer = vtkRenderer()
+            window = vtkRenderWindow()
+            window.SetOffScreenRendering(1)
+            window.SetMultiSamples(0)
+            window.SetSize(300, 300)
+            window.AddRenderer(renderer)
+            actor = vtkActor()
+            if kind == "filter":
+                smoother = vtkSilhouetteSmoothingFilter()
+                smoother.SetInputConnection(sphere.GetOutputPort())
+                smoother.SetRenderer(renderer)
+                smoother.SetProp3D(actor)
+                mapper = vtkPolyDataMapper()
+                mapper.SetInputConnection(smoother.GetOutputPort())
+            else:
+                mapper = vtkSilhouetteSmoothingMapper()
+                mapper.SetInputConnection(sphere.GetOutputPort())
+                mapper.SetSmoothing(kind == "mapper")
+            actor.SetMapper(mapper)
+            renderer.AddActor(actor)
+            renderer.ResetCamera()
+            renderer.GetActiveCamera().Azimuth(25)
+            renderer.GetActiveCamera().Elevation(15)
+            window.Render()
+            grab = vtkWindowToImageFilter()
+            grab.SetInput(window)
+            grab.Update()
+            scalars = grab.GetOutput().GetPointData().GetScalars()
+            return [scalars.GetTuple(i) for i in range(scalars.GetNumberOfTuples())]
+
+        expected = pixels("filter")
+        differing = sum(a != b for a, b in zip(pixels("mapper"), expected))
+        unsmoothed = sum(a != b for a, b in zip(pixels("unsmoothed"), expected))
+        print("mapper: %d pixels differ from the filter's image, %d with smoothing off"
+              % (differing, unsmoothed))
+        self.assertLessEqual(differing, 10)
+        self.assertGreater(unsmoothed, 10)
 
     def test_readme_example_draws_the_bunny(self):
         with tempfile.TemporaryDirectory() as folder:

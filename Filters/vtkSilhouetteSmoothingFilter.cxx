@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <functional>
 #include <numeric>
@@ -475,6 +476,50 @@ void BuildSilhouetteLines(
 
 } // namespace
 
+namespace
+{
+
+// Feature edges marked by line cells (the core keeps those along triangle
+// edges).
+std::vector<silsmooth::FeatureEdge> MarkedFeatures(vtkPolyData* input, bool useLines)
+{
+  std::vector<silsmooth::FeatureEdge> marked;
+  if (!useLines)
+  {
+    return marked;
+  }
+  vtkIdType npts = 0;
+  const vtkIdType* pts = nullptr;
+  auto it = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    it->GetCurrentCell(npts, pts);
+    for (vtkIdType k = 0; k + 1 < npts; ++k)
+    {
+      marked.emplace_back(pts[k], pts[k + 1]);
+    }
+  }
+  return marked;
+}
+
+// The input's cell arrays (which objects, and their times) and its point
+// count: what must stay for a change to be one of the points only.
+std::array<vtkMTimeType, 9> CellsOf(vtkPolyData* input)
+{
+  vtkCellArray* cells[4] = { input->GetVerts(), input->GetLines(), input->GetPolys(),
+    input->GetStrips() };
+  std::array<vtkMTimeType, 9> key{};
+  for (int k = 0; k < 4; ++k)
+  {
+    key[2 * k] = static_cast<vtkMTimeType>(reinterpret_cast<std::uintptr_t>(cells[k]));
+    key[2 * k + 1] = cells[k] ? cells[k]->GetMTime() : 0;
+  }
+  key[8] = static_cast<vtkMTimeType>(input->GetNumberOfPoints());
+  return key;
+}
+
+} // namespace
+
 struct vtkSilhouetteSmoothingFilter::Internals
 {
   // The view-independent cache, keyed on the input object, its MTime and the
@@ -488,9 +533,22 @@ struct vtkSilhouetteSmoothingFilter::Internals
   vtkMTimeType CachedInputTime = 0;
   std::array<double, 10> CachedSettings{};
   bool HaveSettings = false;
+  // The input's cells (the objects and their times) and point count when
+  // the cache was built: when only the points change, the surface moves
+  // them (WeldedSurface::movePoints) instead of being built anew.
+  std::array<vtkMTimeType, 9> CachedCells{};
+  // Counts the builds of the surface (not its moves), and the build the
+  // base mesh BuildBaseMesh filled last was made for: while it is the same
+  // build, the base mesh keeps its cell arrays and takes the new points.
+  std::size_t Builds = 0;
+  vtkPolyData* LastBase = nullptr;
+  std::size_t LastBaseBuild = 0;
 
   // Returns an empty string, or the error to report.
   std::string Rebuild(vtkPolyData* input, bool useLines, const silsmooth::SurfaceOptions& options);
+  // True when the points of the cached input's unchanged cells moved and
+  // the surface took the move.
+  bool MovePoints(vtkPolyData* input, bool useLines, const silsmooth::SurfaceOptions& options);
 
   // The cache for `input` and the filter's settings, rebuilt when either
   // changed (`rebuilt` says so); the warnings about the input are given once
@@ -521,28 +579,35 @@ std::string vtkSilhouetteSmoothingFilter::Internals::Rebuild(
   {
     return std::string(); // reported by the caller, on every request
   }
-  // Feature edges marked by line cells (the core keeps those along triangle
-  // edges).
-  std::vector<silsmooth::FeatureEdge> marked;
-  if (useLines)
-  {
-    vtkIdType npts = 0;
-    const vtkIdType* pts = nullptr;
-    auto it = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
-    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-    {
-      it->GetCurrentCell(npts, pts);
-      for (vtkIdType k = 0; k + 1 < npts; ++k)
-      {
-        marked.emplace_back(pts[k], pts[k + 1]);
-      }
-    }
-  }
-  this->Surface = std::make_unique<silsmooth::WeldedSurface>(
-    std::move(mesh.Points), std::move(mesh.Cells), mesh.Normals, marked, options);
+  this->Surface = std::make_unique<silsmooth::WeldedSurface>(std::move(mesh.Points),
+    std::move(mesh.Cells), mesh.Normals, MarkedFeatures(input, useLines), options);
   this->CachedInput = input;
   this->CachedInputTime = input->GetMTime();
+  this->CachedCells = CellsOf(input);
+  ++this->Builds;
   return std::string();
+}
+
+bool vtkSilhouetteSmoothingFilter::Internals::MovePoints(
+  vtkPolyData* input, bool useLines, const silsmooth::SurfaceOptions& options)
+{
+  if (!this->Surface || this->CachedInput != input || this->CachedCells != CellsOf(input))
+  {
+    return false;
+  }
+  vtkSilhouetteFilterSupport::Triangles mesh;
+  if (!vtkSilhouetteFilterSupport::ReadTriangles(input, mesh).empty() || mesh.NonFinitePoints > 0 ||
+    mesh.CellIds != this->TriangleCell)
+  {
+    return false;
+  }
+  if (!this->Surface->movePoints(
+        std::move(mesh.Points), mesh.Normals, MarkedFeatures(input, useLines), options))
+  {
+    return false;
+  }
+  this->CachedInputTime = input->GetMTime();
+  return true;
 }
 
 bool vtkSilhouetteSmoothingFilter::Internals::Prepare(
@@ -566,6 +631,11 @@ bool vtkSilhouetteSmoothingFilter::Internals::Prepare(
   rebuilt = !this->Surface || this->CachedInput != input ||
     this->CachedInputTime != input->GetMTime() || !this->HaveSettings ||
     this->CachedSettings != settings;
+  if (rebuilt && this->HaveSettings && this->CachedSettings == settings &&
+    this->MovePoints(input, self->FeatureLines, options))
+  {
+    rebuilt = false; // a deforming mesh: the same topology, the points moved
+  }
   if (rebuilt)
   {
     this->HaveSettings = false;
@@ -790,15 +860,30 @@ int vtkSilhouetteSmoothingFilter::BuildBaseMesh(vtkPolyData* input, vtkPolyData*
   }
   Internals& internal = *this->Internal;
   const silsmooth::SmoothingResult nothing;
-  base->Initialize();
+  vtkNew<vtkPolyData> fresh;
   vtkIdType droppedCells = 0;
   const silsmooth::SurfaceFrame frame =
-    BuildCells(input, base, internal.TriangleCell, *internal.Surface, nothing, droppedCells);
-  base->SetPoints(BuildPoints(
+    BuildCells(input, fresh, internal.TriangleCell, *internal.Surface, nothing, droppedCells);
+  fresh->SetPoints(BuildPoints(
     input, OutputPointType(input, this->OutputPointsPrecision), *internal.Surface, nothing, frame));
-  BuildPointData(input->GetPointData(), base->GetPointData(), input->GetNumberOfPoints(),
+  BuildPointData(input->GetPointData(), fresh->GetPointData(), input->GetNumberOfPoints(),
     *internal.Surface, nothing, frame);
-  base->GetFieldData()->PassData(input->GetFieldData());
+  fresh->GetFieldData()->PassData(input->GetFieldData());
+  if (base == internal.LastBase && internal.LastBaseBuild == internal.Builds &&
+    base->GetNumberOfPoints() == fresh->GetNumberOfPoints())
+  {
+    // The same build of the surface (only points moved since): the same
+    // cells, so `base` keeps its cell arrays, and a renderer its index
+    // buffers; the points and every attribute are new.
+    base->SetPoints(fresh->GetPoints());
+    base->GetPointData()->ShallowCopy(fresh->GetPointData());
+    base->GetCellData()->ShallowCopy(fresh->GetCellData());
+    base->GetFieldData()->ShallowCopy(fresh->GetFieldData());
+    return 1;
+  }
+  base->ShallowCopy(fresh);
+  internal.LastBase = base;
+  internal.LastBaseBuild = internal.Builds;
   return 1;
 }
 

@@ -55,42 +55,29 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
   , InputTriangles(std::move(triangles))
 {
   const std::size_t n = this->InputPointCount;
-  std::vector<Id> vertex(n);
+  this->Vertex.resize(n);
   if (options.Weld)
   {
-    vertex = weldCoincidentPoints(points, options.WeldTolerance);
+    this->Vertex = weldCoincidentPoints(points, options.WeldTolerance);
   }
   else
   {
     for (std::size_t i = 0; i < n; ++i)
     {
-      vertex[i] = static_cast<Id>(i);
+      this->Vertex[i] = static_cast<Id>(i);
     }
   }
   for (std::size_t i = 0; i < n; ++i)
   {
-    this->Statistics.WeldedPointCount += vertex[i] != static_cast<Id>(i) ? 1 : 0;
+    this->Statistics.WeldedPointCount += this->Vertex[i] != static_cast<Id>(i) ? 1 : 0;
   }
-  std::vector<Triangle> welded = weldTriangles(this->InputTriangles, vertex);
+  std::vector<Triangle> welded = weldTriangles(this->InputTriangles, this->Vertex);
   // One edge table for the whole preparation: built for the welded
   // triangles, its sides turned with the triangles once they are oriented.
   EdgeTable table(welded);
-
-  // Normal seams exist only where points coincide. Flat shading: the normals
-  // split along most edges, each corner carrying its triangle's own normal
-  // (a fine smooth mesh has normals close to its faces' too, but no seams).
-  std::vector<FeatureEdge> seams;
-  if (normals.size() == n && this->Statistics.WeldedPointCount > 0)
-  {
-    std::size_t interior = 0;
-    seams = normalSeamEdges(
-      this->InputTriangles, vertex, normals, NormalSeamAngleDegrees, &interior, &welded, &table);
-    this->Statistics.FlatShadedNormals = seams.size() * 2 >= interior && !seams.empty() &&
-      hasFaceNormals(points, this->InputTriangles, normals);
-  }
-  const bool useNormals = normals.size() == n && !this->Statistics.FlatShadedNormals;
+  const GivenNormals given = this->examineNormals(points, normals, &welded, &table);
   std::vector<glm::dvec3> cornerNormals;
-  if (useNormals)
+  if (given.Use)
   {
     cornerNormals.resize(welded.size() * 3);
     for (std::size_t t = 0; t < welded.size(); ++t)
@@ -103,117 +90,31 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
   }
 
   this->Reversed.assign(welded.size(), 0);
-  std::vector<Id> components;
   if (options.Orient)
   {
     Orientation orientation = orientConsistently(points, welded, cornerNormals, &table);
     this->Reversed = std::move(orientation.Reversed);
-    components = std::move(orientation.Component);
+    this->Components = std::move(orientation.Component);
     this->Statistics.ReversedTriangleCount = orientation.ReversedCount;
     this->Statistics.ComponentCount = orientation.ComponentCount;
     this->Statistics.InconsistentEdgeCount = orientation.InconsistentEdgeCount;
   }
-  // Prepared corner k of triangle t is input corner cornerOrder(t, k).
-  auto inputCorner = [this](std::size_t t, std::size_t k) -> std::size_t {
-    return this->Reversed[t] && k != 0 ? 3 - k : k;
-  };
-  std::vector<glm::dvec3> preparedCornerNormals(cornerNormals.size());
   for (std::size_t t = 0; t < welded.size(); ++t)
   {
     welded[t] = oriented(welded[t], this->Reversed[t] != 0);
-    if (!cornerNormals.empty())
-    {
-      for (std::size_t k = 0; k < 3; ++k)
-      {
-        preparedCornerNormals[t * 3 + k] = cornerNormals[t * 3 + inputCorner(t, k)];
-      }
-    }
   }
   if (this->Statistics.ReversedTriangleCount > 0)
   {
     table = table.withSidesReversed(this->Reversed);
   }
-  bool normalsReversed = false;
-  if (options.Orient && !cornerNormals.empty() && !components.empty())
-  {
-    // A given normal is a direction to shade with, its sign the exporter's
-    // choice: where a component's given normals point into its oriented
-    // surface on the whole (summed against the area normals), reverse them
-    // all. Decided per component, not per point: a normal nearly in the
-    // plane of its triangles says little about the side.
-    std::vector<double> agreement(this->Statistics.ComponentCount, 0.0);
-    for (std::size_t t = 0; t < welded.size(); ++t)
-    {
-      if (components[t] < 0)
-      {
-        continue;
-      }
-      const glm::dvec3& a = points[static_cast<std::size_t>(welded[t][0])];
-      const glm::dvec3 areaNormal = glm::cross(points[static_cast<std::size_t>(welded[t][1])] - a,
-        points[static_cast<std::size_t>(welded[t][2])] - a);
-      for (std::size_t k = 0; k < 3; ++k)
-      {
-        const glm::dvec3& given = preparedCornerNormals[t * 3 + k];
-        if (std::isfinite(given.x) && std::isfinite(given.y) && std::isfinite(given.z))
-        {
-          agreement[static_cast<std::size_t>(components[t])] += glm::dot(areaNormal, given);
-        }
-      }
-    }
-    for (std::size_t t = 0; t < welded.size(); ++t)
-    {
-      if (components[t] >= 0 && agreement[static_cast<std::size_t>(components[t])] < 0.0)
-      {
-        for (std::size_t k = 0; k < 3; ++k)
-        {
-          preparedCornerNormals[t * 3 + k] = -preparedCornerNormals[t * 3 + k];
-        }
-        normalsReversed = true;
-      }
-    }
-  }
-
-  std::vector<FeatureEdge> features;
-  for (const FeatureEdge& f : markedFeatures)
-  {
-    features.emplace_back(
-      vertex[static_cast<std::size_t>(f.first)], vertex[static_cast<std::size_t>(f.second)]);
-  }
-  if (options.NormalSeams && useNormals)
-  {
-    this->Statistics.NormalSeamEdgeCount = seams.size();
-    features.insert(features.end(), seams.begin(), seams.end());
-  }
-  if (options.DetectFlatCreases)
-  {
-    const std::vector<FeatureEdge> creases =
-      flatSidedCreases(points, welded, options.FlatCreaseAngleDegrees, &table);
-    this->Statistics.FlatCreaseEdgeCount = creases.size();
-    features.insert(features.end(), creases.begin(), creases.end());
-  }
-  if (options.DetectFeatures)
-  {
-    const std::vector<FeatureEdge> sharp =
-      featureEdgesByAngle(points, welded, options.FeatureAngleDegrees, &table);
-    features.insert(features.end(), sharp.begin(), sharp.end());
-  }
-  const bool cornersMatter = !cornerNormals.empty() &&
-    (this->Statistics.WeldedPointCount > 0 || this->Statistics.ReversedTriangleCount > 0 ||
-      normalsReversed);
-  if (cornersMatter)
-  {
-    this->Prepared =
-      std::make_unique<PreparedMesh>(std::move(points), welded, std::vector<glm::dvec3>{},
-        std::move(features), preparedCornerNormals, &table, options.Normals);
-  }
-  else
-  {
-    // Nothing welded or reversed: the per-point normals are the corners'.
-    this->Prepared = std::make_unique<PreparedMesh>(std::move(points), welded,
-      useNormals ? normals : std::vector<glm::dvec3>{}, std::move(features),
-      std::vector<glm::dvec3>{}, &table, options.Normals);
-  }
-
+  this->Welded = std::move(welded);
+  this->Table = std::move(table);
+  this->Prepared = this->prepareGeometry(
+    std::move(points), normals, given, markedFeatures, options, this->Statistics);
+  auto inputCorner = [this](std::size_t t, std::size_t k) -> std::size_t {
+    return this->Reversed[t] && k != 0 ? 3 - k : k;
+  };
+  std::vector<Id>& vertex = this->Vertex;
   // Output points: each input point stands for the prepared point of its
   // first corner; a corner that falls in another prepared point (another
   // smooth group) gets a copy of its input point, one per such pair.
@@ -300,6 +201,168 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
         p < n ? static_cast<Id>(p) : this->Prepared->sourcePoint(static_cast<Id>(p));
     }
   }
+}
+
+WeldedSurface::GivenNormals WeldedSurface::examineNormals(const std::vector<glm::dvec3>& points,
+  const std::vector<glm::dvec3>& normals, const std::vector<Triangle>* welded,
+  const EdgeTable* table) const
+{
+  // Normal seams exist only where points coincide. Flat shading: the normals
+  // split along most edges, each corner carrying its triangle's own normal
+  // (a fine smooth mesh has normals close to its faces' too, but no seams).
+  GivenNormals given;
+  const std::size_t n = this->InputPointCount;
+  if (normals.size() == n && this->Statistics.WeldedPointCount > 0)
+  {
+    std::size_t interior = 0;
+    given.Seams = normalSeamEdges(this->InputTriangles, this->Vertex, normals,
+      NormalSeamAngleDegrees, &interior, welded, table);
+    given.FlatShaded = given.Seams.size() * 2 >= interior && !given.Seams.empty() &&
+      hasFaceNormals(points, this->InputTriangles, normals);
+  }
+  given.Use = normals.size() == n && !given.FlatShaded;
+  return given;
+}
+
+std::unique_ptr<PreparedMesh> WeldedSurface::prepareGeometry(std::vector<glm::dvec3> points,
+  const std::vector<glm::dvec3>& normals, const GivenNormals& given,
+  const std::vector<FeatureEdge>& markedFeatures, const SurfaceOptions& options,
+  SurfaceStatistics& statistics) const
+{
+  statistics.FlatShadedNormals = given.FlatShaded;
+  const std::vector<Triangle>& welded = this->Welded;
+  // Prepared corner k of triangle t is input corner inputCorner(t, k).
+  auto inputCorner = [this](std::size_t t, std::size_t k) -> std::size_t {
+    return this->Reversed[t] && k != 0 ? 3 - k : k;
+  };
+  std::vector<glm::dvec3> preparedCornerNormals;
+  if (given.Use)
+  {
+    preparedCornerNormals.resize(welded.size() * 3);
+    for (std::size_t t = 0; t < welded.size(); ++t)
+    {
+      for (std::size_t k = 0; k < 3; ++k)
+      {
+        preparedCornerNormals[t * 3 + k] =
+          normals[static_cast<std::size_t>(this->InputTriangles[t][inputCorner(t, k)])];
+      }
+    }
+  }
+  bool normalsReversed = false;
+  if (options.Orient && given.Use && !this->Components.empty())
+  {
+    // A given normal is a direction to shade with, its sign the exporter's
+    // choice: where a component's given normals point into its oriented
+    // surface on the whole (summed against the area normals), reverse them
+    // all. Decided per component, not per point: a normal nearly in the
+    // plane of its triangles says little about the side.
+    std::vector<double> agreement(statistics.ComponentCount, 0.0);
+    for (std::size_t t = 0; t < welded.size(); ++t)
+    {
+      if (this->Components[t] < 0)
+      {
+        continue;
+      }
+      const glm::dvec3& a = points[static_cast<std::size_t>(welded[t][0])];
+      const glm::dvec3 areaNormal = glm::cross(points[static_cast<std::size_t>(welded[t][1])] - a,
+        points[static_cast<std::size_t>(welded[t][2])] - a);
+      for (std::size_t k = 0; k < 3; ++k)
+      {
+        const glm::dvec3& normal = preparedCornerNormals[t * 3 + k];
+        if (std::isfinite(normal.x) && std::isfinite(normal.y) && std::isfinite(normal.z))
+        {
+          agreement[static_cast<std::size_t>(this->Components[t])] += glm::dot(areaNormal, normal);
+        }
+      }
+    }
+    for (std::size_t t = 0; t < welded.size(); ++t)
+    {
+      if (this->Components[t] >= 0 &&
+        agreement[static_cast<std::size_t>(this->Components[t])] < 0.0)
+      {
+        for (std::size_t k = 0; k < 3; ++k)
+        {
+          preparedCornerNormals[t * 3 + k] = -preparedCornerNormals[t * 3 + k];
+        }
+        normalsReversed = true;
+      }
+    }
+  }
+
+  std::vector<FeatureEdge> features;
+  for (const FeatureEdge& f : markedFeatures)
+  {
+    features.emplace_back(this->Vertex[static_cast<std::size_t>(f.first)],
+      this->Vertex[static_cast<std::size_t>(f.second)]);
+  }
+  statistics.NormalSeamEdgeCount = 0;
+  if (options.NormalSeams && given.Use)
+  {
+    statistics.NormalSeamEdgeCount = given.Seams.size();
+    features.insert(features.end(), given.Seams.begin(), given.Seams.end());
+  }
+  statistics.FlatCreaseEdgeCount = 0;
+  if (options.DetectFlatCreases)
+  {
+    const std::vector<FeatureEdge> creases =
+      flatSidedCreases(points, welded, options.FlatCreaseAngleDegrees, &this->Table);
+    statistics.FlatCreaseEdgeCount = creases.size();
+    features.insert(features.end(), creases.begin(), creases.end());
+  }
+  if (options.DetectFeatures)
+  {
+    const std::vector<FeatureEdge> sharp =
+      featureEdgesByAngle(points, welded, options.FeatureAngleDegrees, &this->Table);
+    features.insert(features.end(), sharp.begin(), sharp.end());
+  }
+  const bool cornersMatter = given.Use &&
+    (statistics.WeldedPointCount > 0 || statistics.ReversedTriangleCount > 0 || normalsReversed);
+  if (cornersMatter)
+  {
+    return std::make_unique<PreparedMesh>(std::move(points), welded, std::vector<glm::dvec3>{},
+      std::move(features), preparedCornerNormals, &this->Table, options.Normals);
+  }
+  // Nothing welded or reversed: the per-point normals are the corners'.
+  return std::make_unique<PreparedMesh>(std::move(points), welded,
+    given.Use ? normals : std::vector<glm::dvec3>{}, std::move(features), std::vector<glm::dvec3>{},
+    &this->Table, options.Normals);
+}
+
+bool WeldedSurface::movePoints(std::vector<glm::dvec3> points,
+  const std::vector<glm::dvec3>& normals, const std::vector<FeatureEdge>& markedFeatures,
+  const SurfaceOptions& options)
+{
+  const std::size_t n = this->InputPointCount;
+  if (points.size() != n || (!normals.empty() && normals.size() != n) ||
+    (options.Weld && options.WeldTolerance > 0.0))
+  {
+    return false;
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    // Welded points must still be one position (and the unwelded are
+    // assumed not to have come together).
+    if (points[i] != points[static_cast<std::size_t>(this->Vertex[i])])
+    {
+      return false;
+    }
+  }
+  // The seams' own edge table (this one's sides are turned for the
+  // orientation): only for meshes with welded points and normals.
+  const GivenNormals given = this->examineNormals(points, normals, nullptr, nullptr);
+  SurfaceStatistics statistics = this->Statistics;
+  std::unique_ptr<PreparedMesh> prepared =
+    this->prepareGeometry(std::move(points), normals, given, markedFeatures, options, statistics);
+  // The output's points and their copies follow from the prepared
+  // triangles; where the features moved, so did they: build anew.
+  if (prepared->triangles() != this->Prepared->triangles() ||
+    prepared->points().size() != this->Prepared->points().size())
+  {
+    return false;
+  }
+  this->Prepared = std::move(prepared);
+  this->Statistics = statistics;
+  return true;
 }
 
 Id WeldedSurface::outputOfPreparedCorner(std::size_t t, Id preparedPoint) const

@@ -116,6 +116,21 @@ public:
     const std::vector<glm::dvec3>& normals, const std::vector<FeatureEdge>& markedFeatures,
     const SurfaceOptions& options);
 
+  /// The same surface with its points moved, for a deforming mesh (a time
+  /// series: new points, the same cells): the welding, the orientation and
+  /// the edge table are kept; the normals, the normal seams, the features
+  /// found by angle and the prepared mesh are made again. Returns false,
+  /// and leaves the surface as it was, when the move changes what the kept
+  /// parts assume: a point welded to another no longer at its position, a
+  /// weld tolerance (welds by distance are not checked), another point
+  /// count, or features that come out different (the points split per
+  /// smooth group, and so the output's points, would change); the caller
+  /// then builds the surface anew. Invariant: after a true return the
+  /// surface is the one the constructor makes from the same arguments, as
+  /// long as the orientation it chose still holds (it is not checked).
+  bool movePoints(std::vector<glm::dvec3> points, const std::vector<glm::dvec3>& normals,
+    const std::vector<FeatureEdge>& markedFeatures, const SurfaceOptions& options);
+
   const PreparedMesh& prepared() const { return *this->Prepared; }
   const SurfaceStatistics& statistics() const { return this->Statistics; }
   std::size_t inputPointCount() const { return this->InputPointCount; }
@@ -157,6 +172,23 @@ public:
   SurfaceFrame assembleChanges(const SmoothingResult& result) const;
 
 private:
+  // What the given normals are: usable, flat shading (face normals, not
+  // used), and their seams.
+  struct GivenNormals
+  {
+    bool Use = false;
+    bool FlatShaded = false;
+    std::vector<FeatureEdge> Seams;
+  };
+  GivenNormals examineNormals(const std::vector<glm::dvec3>& points,
+    const std::vector<glm::dvec3>& normals, const std::vector<Triangle>* welded,
+    const EdgeTable* table) const;
+  // Everything that depends on the points' positions and the normals, on
+  // the kept welding, orientation and edge table.
+  std::unique_ptr<PreparedMesh> prepareGeometry(std::vector<glm::dvec3> points,
+    const std::vector<glm::dvec3>& normals, const GivenNormals& given,
+    const std::vector<FeatureEdge>& markedFeatures, const SurfaceOptions& options,
+    SurfaceStatistics& statistics) const;
   Id outputOfPreparedCorner(std::size_t t, Id prepared) const;
   /// assemble() over the prepared triangles `only` (ascending), or over all
   /// of them when `only` is null.
@@ -167,6 +199,13 @@ private:
   std::size_t InputPointCount = 0;
   std::vector<Triangle> InputTriangles;
   std::vector<unsigned char> Reversed;
+  /// The topology kept by movePoints: each point's surface vertex, the
+  /// welded and oriented triangles, their edge table, and each triangle's
+  /// component (or empty).
+  std::vector<Id> Vertex;
+  std::vector<Triangle> Welded;
+  EdgeTable Table;
+  std::vector<Id> Components;
   std::unique_ptr<PreparedMesh> Prepared;
   SurfaceStatistics Statistics;
   std::vector<Id> CopySources;

@@ -11,11 +11,19 @@
 // GetLastPrepareSeconds, and the filter's Update. The per-frame upload of
 // the filter's output is part of its frame, not of this column.
 //
+// Then a deforming mesh (new points every frame, the same cells, as a time
+// series gives), with the camera still: the plain mapper; the mapper, which
+// keeps the topology (WeldedSurface::movePoints) and its index buffers; and
+// the mapper made to build everything anew every frame (its cells touched
+// too), which is what every such frame cost before.
+//
 // Usage: mapper_benchmark [--frames N] [--levels L1,L2,...] [--size WxH]
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkIcosphereSource.h"
 #include "vtkNew.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkRenderWindow.h"
@@ -179,6 +187,76 @@ int main(int argc, char* argv[])
     std::printf("%10s  mapper: %lld triangles replaced by %lld in the last frame\n", "",
       static_cast<long long>(smoothingMapper->GetReplacedTriangleCount()),
       static_cast<long long>(smoothingMapper->GetPatchTriangleCount()));
+    std::fflush(stdout);
+
+    // The deforming mesh: each variant moves the points of its own copy.
+    struct Deforming
+    {
+      const char* Name;
+      bool Rebuild;
+      vtkNew<vtkPolyData> Mesh;
+      vtkNew<vtkRenderWindow> Window;
+      vtkNew<vtkRenderer> Renderer;
+      vtkNew<vtkActor> Actor;
+      std::vector<double> FrameMs;
+    };
+    Deforming still{ "plain", false };
+    Deforming moving{ "mapper", false };
+    Deforming anew{ "anew", true };
+    Deforming* deforming[3] = { &still, &moving, &anew };
+    vtkNew<vtkPolyDataMapper> stillMapper;
+    vtkNew<vtkSilhouetteSmoothingMapper> movingMapper;
+    vtkNew<vtkSilhouetteSmoothingMapper> anewMapper;
+    vtkPolyDataMapper* mappers[3] = { stillMapper, movingMapper, anewMapper };
+    for (int k = 0; k < 3; ++k)
+    {
+      Deforming* d = deforming[k];
+      d->Mesh->DeepCopy(mesh);
+      mappers[k]->SetInputData(d->Mesh);
+      mappers[k]->ScalarVisibilityOff();
+      d->Actor->SetMapper(mappers[k]);
+      d->Window->SetSize(width, height);
+      d->Window->SetMultiSamples(0);
+      d->Window->SetOffScreenRendering(1);
+      d->Window->AddRenderer(d->Renderer);
+      d->Renderer->AddActor(d->Actor);
+      d->Renderer->ResetCamera(mesh->GetBounds());
+      d->Renderer->GetActiveCamera()->Elevation(20.0);
+      d->Window->Render();
+      d->Window->WaitForCompletion();
+    }
+    const int deformFrames = std::max(3, frames / 2);
+    for (int f = 0; f < deformFrames; ++f)
+    {
+      const double scale = f % 2 == 0 ? 1.01 : 1.0 / 1.01;
+      for (Deforming* d : deforming)
+      {
+        d->FrameMs.push_back(benchmark_timing::Milliseconds([&]() {
+          vtkPoints* points = d->Mesh->GetPoints();
+          for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+          {
+            double x[3];
+            points->GetPoint(p, x);
+            points->SetPoint(p, x[0] * scale, x[1], x[2]);
+          }
+          points->Modified();
+          if (d->Rebuild)
+          {
+            d->Mesh->GetPolys()->Modified();
+          }
+          d->Window->Render();
+          d->Window->WaitForCompletion();
+        }));
+      }
+    }
+    const double anewMs = benchmark_timing::Median(anew.FrameMs);
+    const double stillMs = benchmark_timing::Median(still.FrameMs);
+    for (Deforming* d : deforming)
+    {
+      const double ms = benchmark_timing::Median(d->FrameMs);
+      std::printf("%10lld  %-7s %10.1f %10.2f   deforming; / anew %.2f\n",
+        static_cast<long long>(mesh->GetNumberOfPolys()), d->Name, ms, ms / stillMs, ms / anewMs);
+    }
     std::fflush(stdout);
   }
   return 0;

@@ -548,3 +548,89 @@ TEST(WeldedSurface, ChangesComposeToTheWholeFrame)
     smoothSilhouettes(
       soup.prepared(), coretest::perspectiveFrom({ 0, 0.3, 4 }), SmoothingParameters()));
 }
+
+TEST(WeldedSurface, MovedPointsGiveTheSurfaceBuiltAnew)
+{
+  // A triangle-soup torus (every corner its own point: welding matters),
+  // deformed smoothly: the moved surface smooths exactly as one built from
+  // the moved points.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::torus(24, 12, 0.35, points, triangles);
+  std::vector<glm::dvec3> soup;
+  std::vector<Triangle> soupTriangles;
+  for (const Triangle& t : triangles)
+  {
+    Triangle own;
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      own[k] = static_cast<Id>(soup.size());
+      soup.push_back(points[static_cast<std::size_t>(t[k])]);
+    }
+    soupTriangles.push_back(own);
+  }
+  WeldedSurface moved(soup, soupTriangles, {}, {}, plainOptions());
+  std::vector<glm::dvec3> deformed = soup;
+  for (glm::dvec3& p : deformed)
+  {
+    p = glm::dvec3(p.x * 1.2, p.y + 0.1 * std::sin(3.0 * p.x), p.z * 0.9);
+  }
+  ASSERT_TRUE(moved.movePoints(deformed, {}, {}, plainOptions()));
+  const WeldedSurface fresh(deformed, soupTriangles, {}, {}, plainOptions());
+  EXPECT_EQ(moved.prepared().points(), fresh.prepared().points());
+  EXPECT_EQ(moved.prepared().normals(), fresh.prepared().normals());
+  EXPECT_EQ(moved.prepared().triangles(), fresh.prepared().triangles());
+  for (const glm::dvec3 eye : { glm::dvec3(0, -3, 1.2), glm::dvec3(2.5, 0.4, 2.0) })
+  {
+    const ViewGeometry view = coretest::perspectiveFrom(eye);
+    const SurfaceFrame a = moved.assemble(smoothSilhouettes(moved.prepared(), view, {}));
+    const SurfaceFrame b = fresh.assemble(smoothSilhouettes(fresh.prepared(), view, {}));
+    EXPECT_EQ(a.Triangles, b.Triangles);
+    EXPECT_EQ(a.Moved, b.Moved);
+    ASSERT_EQ(a.Added.size(), b.Added.size());
+    EXPECT_GT(a.Added.size(), 0u);
+  }
+
+  // What the kept topology cannot take: a welded point torn from its
+  // partners; the surface stays as it was.
+  std::vector<glm::dvec3> torn = deformed;
+  torn[0].x += 0.01;
+  EXPECT_FALSE(moved.movePoints(torn, {}, {}, plainOptions()));
+  EXPECT_EQ(moved.prepared().points(), fresh.prepared().points());
+  // Another point count.
+  EXPECT_FALSE(moved.movePoints(std::vector<glm::dvec3>(3), {}, {}, plainOptions()));
+}
+
+TEST(WeldedSurface, MovedPointsThatMakeANewCreaseAskForARebuild)
+{
+  // A flat strip folded to a right angle: with flat creases detected, the
+  // fold is a feature, which changes the points per smooth group.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  for (int i = 0; i <= 4; ++i)
+  {
+    points.emplace_back(i, 0.0, 0.0);
+    points.emplace_back(i, 1.0, 0.0);
+  }
+  for (int i = 0; i < 4; ++i)
+  {
+    const Id a = 2 * i;
+    triangles.push_back({ a, a + 2, a + 3 });
+    triangles.push_back({ a, a + 3, a + 1 });
+  }
+  SurfaceOptions options; // flat creases detected (the default)
+  WeldedSurface strip(points, triangles, {}, {}, options);
+  EXPECT_EQ(strip.statistics().FlatCreaseEdgeCount, 0u);
+  std::vector<glm::dvec3> folded = points;
+  for (glm::dvec3& p : folded)
+  {
+    if (p.x > 2.0)
+    {
+      p = glm::dvec3(2.0, p.y, p.x - 2.0); // the right half stands up
+    }
+  }
+  const WeldedSurface fresh(folded, triangles, {}, {}, options);
+  ASSERT_GT(fresh.statistics().FlatCreaseEdgeCount, 0u); // the case happens
+  EXPECT_FALSE(strip.movePoints(folded, {}, {}, options));
+  EXPECT_EQ(strip.statistics().FlatCreaseEdgeCount, 0u); // left as it was
+}

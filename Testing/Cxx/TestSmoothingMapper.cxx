@@ -13,6 +13,7 @@
 // the images are still the same.
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkFloatArray.h"
@@ -23,6 +24,7 @@
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -244,6 +246,13 @@ vtkSmartPointer<vtkTexture> Checkers()
 
 int TestSmoothingMapper(int argc, char* argv[])
 {
+  // One window open for the whole test: each case closes its own, and an X
+  // server whose last client leaves resets, refusing the next connection
+  // while it does (xvfb-run starts Xvfb without -noreset).
+  vtkNew<vtkRenderWindow> keeper;
+  keeper->SetOffScreenRendering(1);
+  keeper->SetSize(8, 8);
+  keeper->Render();
   vtkNew<vtkIcosphereSource> sphere;
   sphere->Update();
   vtkNew<vtkTorusSurfaceSource> torus;
@@ -368,6 +377,57 @@ int TestSmoothingMapper(int argc, char* argv[])
         std::printf("FAIL: %s: selection does not report the input's cells\n", c.Name);
         ok = false;
       }
+    }
+  }
+  // A deforming mesh (new points, the same cells, as a time series gives):
+  // the filter keeps the base mesh's cell arrays (WeldedSurface::movePoints),
+  // and the mapper's image still equals the filter's, frame after frame.
+  {
+    vtkNew<vtkPolyData> deforming;
+    deforming->DeepCopy(bunny);
+    vtkNew<vtkSilhouetteSmoothingFilter> builder;
+    vtkNew<vtkPolyData> base;
+    builder->BuildBaseMesh(deforming, base);
+    vtkCellArray* cellsBefore = base->GetPolys();
+    Scene viaFilter;
+    vtkNew<vtkSilhouetteSmoothingFilter> filter;
+    filter->SetInputData(deforming);
+    filter->SetRenderer(viaFilter.Renderer);
+    filter->SetProp3D(viaFilter.Actor);
+    vtkNew<vtkPolyDataMapper> plain;
+    plain->SetInputConnection(filter->GetOutputPort());
+    Configure(plain, viaFilter.Actor, Colouring::Plain, filterTexture);
+    viaFilter.Actor->SetMapper(plain);
+    Scene viaMapper;
+    vtkNew<vtkSilhouetteSmoothingMapper> mapper;
+    mapper->SetInputData(deforming);
+    Configure(mapper, viaMapper.Actor, Colouring::Plain, mapperTexture);
+    viaMapper.Actor->SetMapper(mapper);
+    viaFilter.Look(deforming, 0);
+    viaMapper.Look(deforming, 0);
+    long worst = 0;
+    bool keptCells = true;
+    for (int step = 0; step < 3; ++step)
+    {
+      vtkPoints* points = deforming->GetPoints();
+      for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+      {
+        double x[3];
+        points->GetPoint(p, x);
+        points->SetPoint(p, x[0] * 1.03, x[1] + 0.02 * x[0], x[2]);
+      }
+      points->Modified();
+      builder->BuildBaseMesh(deforming, base);
+      keptCells = keptCells && base->GetPolys() == cellsBefore;
+      worst = std::max(worst, Differing(viaMapper.Pixels(), viaFilter.Pixels()));
+    }
+    std::printf("deforming bunny: at most %ld pixels differ over 3 moves; the base mesh %s its "
+                "cell arrays\n",
+      worst, keptCells ? "kept" : "did not keep");
+    if (worst > MaximumDifferingPixels || !keptCells)
+    {
+      std::printf("FAIL: deforming bunny\n");
+      ok = false;
     }
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -4,6 +4,7 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
@@ -543,6 +544,10 @@ struct vtkSilhouetteSmoothingFilter::Internals
   std::size_t Builds = 0;
   vtkPolyData* LastBase = nullptr;
   std::size_t LastBaseBuild = 0;
+  // Per triangle: a ghost cell (duplicate or hidden), never re-meshed; empty
+  // when the input has no ghost array. Read again whenever the input changed.
+  std::vector<unsigned char> Frozen;
+  vtkMTimeType FrozenTime = 0;
 
   // Returns an empty string, or the error to report.
   std::string Rebuild(vtkPolyData* input, bool useLines, const silsmooth::SurfaceOptions& options);
@@ -648,6 +653,25 @@ bool vtkSilhouetteSmoothingFilter::Internals::Prepare(
     this->CachedSettings = settings;
     this->HaveSettings = this->Surface != nullptr;
   }
+  if (this->FrozenTime != input->GetMTime() || rebuilt)
+  {
+    // Ghost cells (a piece's copies of its neighbours' cells) count for the
+    // normals and the adjacency but are the other piece's to re-mesh.
+    this->Frozen.clear();
+    vtkUnsignedCharArray* ghosts = vtkArrayDownCast<vtkUnsignedCharArray>(
+      input->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
+    if (ghosts && ghosts->GetNumberOfValues() == input->GetNumberOfCells())
+    {
+      const unsigned char skip =
+        vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL;
+      this->Frozen.resize(this->TriangleCell.size());
+      for (std::size_t t = 0; t < this->TriangleCell.size(); ++t)
+      {
+        this->Frozen[t] = (ghosts->GetValue(this->TriangleCell[t]) & skip) != 0 ? 1 : 0;
+      }
+    }
+    this->FrozenTime = input->GetMTime();
+  }
   if (this->NonFinitePoints > 0)
   {
     vtkErrorWithObjectMacro(self,
@@ -684,6 +708,7 @@ silsmooth::SmoothingResult vtkSilhouetteSmoothingFilter::Internals::Smooth(
   parameters.PerturbConcaveSilhouettes = self->PerturbVertices;
   parameters.PreventFolds = self->FoldPrevention;
   parameters.CullOutsideFrustum = self->FrustumCulling;
+  parameters.FrozenTriangles = this->Frozen.empty() ? nullptr : &this->Frozen;
   parameters.BoundaryMayBeSeam = boundaryMayBeSeam;
   parameters.Visibility = self->VisibilityMethod == HIERARCHICAL
     ? silsmooth::VisibilityMethod::Hierarchical

@@ -51,6 +51,12 @@
  * concave segments, as in the paper's section III-E. Only the output's copies
  * move: input points keep their ids, and their positions except for these.
  *
+ * Ghost cells (cell array `vtkGhostType` with DUPLICATECELL or HIDDENCELL,
+ * as a piece of a partitioned mesh has its neighbours' cells) are never
+ * re-meshed: they count for the shading normals, the adjacency and the
+ * silhouette points on their edges, so the piece that owns them computes
+ * the same points there; they pass through with their flags.
+ *
  * Output port 1: the smoothed silhouette as polylines chained across triangles
  * (closed loops repeat their first point at the end), with point `Normals`.
  *

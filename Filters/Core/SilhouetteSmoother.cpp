@@ -442,6 +442,10 @@ private:
       const bool feature = j < features.size() && features[j] == t;
       i += takeSilhouette ? 1 : 0;
       j += feature ? 1 : 0;
+      if (!silhouette && this->isFrozen(t))
+      {
+        continue; // a frozen feature triangle (frozen silhouette ones are not listed)
+      }
       this->Result.RemeshedTriangles.push_back(t);
       if (feature)
       {
@@ -687,6 +691,20 @@ private:
     {
       this->cullOutsideFrustum();
     }
+    if (this->Parameters.FrozenTriangles)
+    {
+      this->Silhouette.erase(std::remove_if(this->Silhouette.begin(), this->Silhouette.end(),
+                               [this](Id t) { return this->isFrozen(t); }),
+        this->Silhouette.end());
+    }
+  }
+
+  // SmoothingParameters::FrozenTriangles.
+  bool isFrozen(Id t) const
+  {
+    const std::vector<unsigned char>* frozen = this->Parameters.FrozenTriangles;
+    return frozen && static_cast<std::size_t>(t) < frozen->size() &&
+      (*frozen)[static_cast<std::size_t>(t)] != 0;
   }
 
   // SmoothingParameters::CullOutsideFrustum: planes in model coordinates

@@ -205,6 +205,13 @@ struct SmoothingParameters
   /// that plane too. For renderers (vtkSilhouetteSmoothingMapper); a mesh
   /// written to a file wants every silhouette smoothed.
   bool CullOutsideFrustum = false;
+  /// One entry per prepared triangle, or empty: a non-zero entry is a
+  /// triangle that is never re-meshed (a ghost cell of a partitioned
+  /// mesh's piece, which its own piece re-meshes). It still counts for the
+  /// normals, the adjacency and the silhouette points on its edges, so the
+  /// piece that owns it computes the same ones. Not owned: must outlive
+  /// the call.
+  const std::vector<unsigned char>* FrozenTriangles = nullptr;
 };
 
 /// A point the pass adds. Its other attributes (texture coordinates, scalars)

@@ -6,6 +6,7 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMatrix4x4.h"
@@ -16,10 +17,12 @@
 #include "vtkRenderer.h"
 #include "vtkSilhouettePatchedMapper.h"
 #include "vtkSilhouetteSmoothingFilter.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <iterator>
 #include <vector>
 
 vtkStandardNewMacro(vtkSilhouetteSmoothingMapper);
@@ -120,6 +123,9 @@ struct vtkSilhouetteSmoothingMapper::Internals
   vtkMTimeType BaseInputTime = 0;
   vtkMTimeType BaseSettingsTime = 0;
   bool BaseReady = false;
+  // The base mesh's ghost triangles (indices among its polygons): another
+  // piece's to draw, so hidden in every frame.
+  std::vector<vtkIdType> Ghosts;
   // The patch is for this view (and this base mesh, and Smoothing).
   ViewKey LastView{};
   bool HavePatch = false;
@@ -148,6 +154,23 @@ struct vtkSilhouetteSmoothingMapper::Internals
     // Selection reports the input's cell ids for the base mesh's cells.
     this->Drawn->SetCellIdArrayName(this->BaseReady ? "OriginalCellId" : nullptr);
     this->HavePatch = false;
+    this->Ghosts.clear();
+    vtkPolyData* drawn = this->BaseReady ? this->Base.Get() : input;
+    vtkUnsignedCharArray* ghosts = vtkArrayDownCast<vtkUnsignedCharArray>(
+      drawn->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
+    if (ghosts && ghosts->GetNumberOfValues() == drawn->GetNumberOfCells())
+    {
+      const unsigned char skip =
+        vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL;
+      const vtkIdType first = drawn->GetNumberOfVerts() + drawn->GetNumberOfLines();
+      for (vtkIdType p = 0; p < drawn->GetNumberOfPolys(); ++p)
+      {
+        if ((ghosts->GetValue(first + p) & skip) != 0)
+        {
+          this->Ghosts.push_back(p);
+        }
+      }
+    }
   }
 
   void UpdatePatch(
@@ -174,15 +197,17 @@ struct vtkSilhouetteSmoothingMapper::Internals
       !this->Smoother->BuildChanges(
         input, camera, model, width, height, this->Changes, this->Replaced))
     {
-      this->Drawn->SetPatch({}, nullptr, nullptr, {});
+      this->Drawn->SetPatch(this->Ghosts, nullptr, nullptr, {});
       return;
     }
     const vtkIdType* replaced = this->Replaced->GetPointer(0);
-    const std::vector<vtkIdType> hidden(replaced, replaced + this->Replaced->GetNumberOfValues());
+    std::vector<vtkIdType> hidden;
+    std::set_union(replaced, replaced + this->Replaced->GetNumberOfValues(), this->Ghosts.begin(),
+      this->Ghosts.end(), std::back_inserter(hidden));
     this->Drawn->SetPatch(hidden, this->Changes,
       vtkIdTypeArray::SafeDownCast(this->Changes->GetCellData()->GetArray("OriginalCellId")),
       PointSources(this->Changes));
-    self->ReplacedTriangleCount = static_cast<vtkIdType>(hidden.size());
+    self->ReplacedTriangleCount = this->Replaced->GetNumberOfValues();
     self->PatchTriangleCount = this->Changes->GetNumberOfPolys();
     if (vtkDataArray* culled = this->Changes->GetFieldData()->GetArray("CulledTriangleCount"))
     {

@@ -30,6 +30,10 @@
  * each came from); point selection picks the input's points on the mesh as
  * it is. Representations other than surface draw the mesh as it is.
  *
+ * Ghost cells (`vtkGhostType` with DUPLICATECELL or HIDDENCELL: another
+ * piece's cells) are never re-meshed and never drawn; they count for the
+ * normals and the adjacency.
+ *
  * Smoothing off (SmoothingOff()) draws the base mesh alone: the coarse
  * outline, with the same shading normals.
  */

@@ -10,7 +10,9 @@
 // input cell as the filter's output does (through its OriginalCellId).
 // Zoomed in, part of the silhouette is outside the view: the mapper leaves
 // it as it is (FrustumCulling, on in the mapper, off in the filter), and
-// the images are still the same.
+// the images are still the same. Ghost cells (another piece's) are never
+// re-meshed by the filter and never drawn by the mapper: its image is the
+// filter's output with the ghost cells left out.
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
@@ -19,6 +21,7 @@
 #include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
 #include "vtkIcosphereSource.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
 #include "vtkLookupTable.h"
@@ -137,6 +140,29 @@ struct Scene
     return cells;
   }
 };
+
+// The cells of `mesh` not flagged as ghosts, over its points, with the
+// cells' data.
+vtkSmartPointer<vtkPolyData> WithoutGhosts(vtkPolyData* mesh)
+{
+  auto kept = vtkSmartPointer<vtkPolyData>::New();
+  kept->SetPoints(mesh->GetPoints());
+  kept->GetPointData()->ShallowCopy(mesh->GetPointData());
+  vtkNew<vtkCellArray> polys;
+  vtkDataArray* ghosts = mesh->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName());
+  const vtkIdType first = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType p = 0; p < mesh->GetNumberOfPolys(); ++p)
+  {
+    if (!ghosts || ghosts->GetTuple1(first + p) == 0.0)
+    {
+      mesh->GetCellPoints(first + p, ids);
+      polys->InsertNextCell(ids);
+    }
+  }
+  kept->SetPolys(polys);
+  return kept;
+}
 
 long Differing(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b)
 {
@@ -379,6 +405,89 @@ int TestSmoothingMapper(int argc, char* argv[])
       }
     }
   }
+  // Ghost cells: the cells of one side of the sphere are another piece's.
+  {
+    vtkNew<vtkPolyData> piece;
+    piece->DeepCopy(sphere->GetOutput());
+    vtkNew<vtkUnsignedCharArray> ghosts;
+    ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+    ghosts->SetNumberOfValues(piece->GetNumberOfCells());
+    long ghostCells = 0;
+    for (vtkIdType c = 0; c < piece->GetNumberOfCells(); ++c)
+    {
+      double bounds[6];
+      piece->GetCellBounds(c, bounds);
+      const bool ghost = bounds[0] + bounds[1] > 0.3;
+      ghosts->SetValue(c, ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
+      ghostCells += ghost ? 1 : 0;
+    }
+    piece->GetCellData()->AddArray(ghosts);
+    Scene viaFilter;
+    Scene viaMapper;
+    viaFilter.Look(piece, 0);
+    viaMapper.Look(piece, 0);
+    // The filter: ghost cells pass through as they are.
+    auto count = [&](const char* ghostName) {
+      vtkNew<vtkPolyData> named;
+      named->DeepCopy(piece);
+      named->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName())->SetName(ghostName);
+      vtkNew<vtkSilhouetteSmoothingFilter> filter;
+      filter->SetInputData(named);
+      filter->SetRenderer(viaFilter.Renderer);
+      filter->Update();
+      vtkPolyData* out = filter->GetOutput();
+      vtkDataArray* made = out->GetCellData()->GetArray("NewGeometry");
+      vtkDataArray* from = out->GetCellData()->GetArray("OriginalCellId");
+      long remeshedGhosts = 0;
+      for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+      {
+        remeshedGhosts +=
+          made->GetTuple1(c) > 0 && ghosts->GetValue(static_cast<vtkIdType>(from->GetTuple1(c)))
+          ? 1
+          : 0;
+      }
+      return remeshedGhosts;
+    };
+    const long remeshed = count(vtkDataSetAttributes::GhostArrayName());
+    const long remeshedIfNotGhosts = count("NotGhosts");
+    std::printf("ghost cells: %ld of %lld; new triangles from them %ld (%ld were they not "
+                "ghosts)\n",
+      ghostCells, static_cast<long long>(piece->GetNumberOfCells()), remeshed, remeshedIfNotGhosts);
+    if (remeshed != 0 || remeshedIfNotGhosts == 0)
+    {
+      std::printf("FAIL: ghost cells are re-meshed, or the case has none to re-mesh\n");
+      ok = false;
+    }
+    // The mapper: the filter's output without its ghost cells, drawn.
+    vtkNew<vtkSilhouetteSmoothingFilter> filter;
+    filter->SetInputData(piece);
+    filter->SetRenderer(viaFilter.Renderer);
+    filter->Update();
+    vtkNew<vtkPolyDataMapper> plain;
+    plain->SetInputData(WithoutGhosts(filter->GetOutput()));
+    Configure(plain, viaFilter.Actor, Colouring::Plain, filterTexture);
+    viaFilter.Actor->SetMapper(plain);
+    vtkNew<vtkSilhouetteSmoothingMapper> mapper;
+    mapper->SetInputData(piece);
+    Configure(mapper, viaMapper.Actor, Colouring::Plain, mapperTexture);
+    viaMapper.Actor->SetMapper(mapper);
+    const std::vector<unsigned char> expected = viaFilter.Pixels();
+    const long differing = Differing(viaMapper.Pixels(), expected);
+    vtkNew<vtkPolyDataMapper> withGhosts;
+    withGhosts->SetInputData(filter->GetOutput());
+    Configure(withGhosts, viaFilter.Actor, Colouring::Plain, filterTexture);
+    viaFilter.Actor->SetMapper(withGhosts);
+    const long ghostsDrawn = Differing(viaFilter.Pixels(), expected);
+    std::printf("ghost cells: the mapper's image differs from the filter's without ghosts in "
+                "%ld pixels; drawing the ghosts too differs in %ld\n",
+      differing, ghostsDrawn);
+    if (differing > MaximumDifferingPixels || ghostsDrawn <= MaximumDifferingPixels)
+    {
+      std::printf("FAIL: ghost cells drawn, or the check cannot fail\n");
+      ok = false;
+    }
+  }
+
   // A deforming mesh (new points, the same cells, as a time series gives):
   // the filter keeps the base mesh's cell arrays (WeldedSurface::movePoints),
   // and the mapper's image still equals the filter's, frame after frame.

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# The ParaView stage (issue 7): builds the ParaView plugin in ParaView/ and runs
-# its pvbatch tests (an image test, and an MPI test on two ranks).
+# The ParaView stage (issues 7 and 15): builds the ParaView plugin in ParaView/
+# (the filter, and the Smooth Silhouette Surface representation on the
+# render-time mapper) and runs its pvbatch tests (for each, an image test and
+# an MPI test on two ranks).
 #
 # Debian's ParaView 5.11 cannot share a system with libvtk9-dev (installing
 # python3-paraview removes it), and the main suite needs libvtk9-dev. So this
@@ -33,6 +35,13 @@ packages=(
   # few components it needs (ParaView/CMakeLists.txt). Qt is not among them:
   # a plugin with no GUI part needs no Qt development packages.
   libopenmpi-dev libdouble-conversion-dev liblzma-dev liblz4-dev libutfcpp-dev zlib1g-dev libexpat1-dev
+  # The representation (ParaView::RemotingViews, VTK::RenderingOpenGL2):
+  # VTK's RenderingOpenGL2 package runs find_package(X11) and
+  # find_package(OpenGL), its glew module find_package(GLEW) (the mapper
+  # calls glBufferSubData through vtk_glew.h), and RemotingViews brings in
+  # VTK::freetype, whose link interface names Freetype::Freetype; these give
+  # their headers and link libraries.
+  libx11-dev libgl-dev libglew-dev libfreetype-dev
   # Our module: a compiler, GLM for the core, OpenSubdiv for vtkOpenSubdivRefiner.
   cmake make g++ libglm-dev libosd-dev
   # pvbatch renders through X: a virtual X server. Two ranks: Open MPI.
@@ -258,7 +267,7 @@ failed="$(sed -n 's/.*, \([0-9][0-9]*\) tests failed out of.*/\1/p' "$root/build
 total="${total:-0}"
 failed="${failed:-0}"
 # The tests' own figures (ctest shows a passing test's output only in its log).
-grep -hE '^(input triangles|output triangles|silhouette|image difference|ranks|PerturbVertices|  [a-z])' \
+grep -hE '^(input triangles|output triangles|silhouette|image difference|ranks|PerturbVertices|camera move|SilhouetteTolerance|interactive render|cells selected|piece [0-9]|the reader|pose [0-9]|  [a-z])' \
   "$root/build/paraview/Testing/Temporary/LastTest.log" 2>/dev/null | sed 's/^/paraview:   /' || true
 summary=""
 for timing in "${timings[@]}"; do summary+="${summary:+, }$timing"; done

@@ -36,6 +36,38 @@ def copy_camera(view, smoother):
     smoother.ViewportSize = list(view.ViewSize)
 
 
+def load_representation_plugin():
+    """Loads the plugin on every rank for its representation (Smooth
+    Silhouette Surface): nothing to return, the representation is a value of
+    a display's Representation property."""
+    names = {"__name__": __name__}
+    simple.LoadPlugin(setting("SILHOUETTE_PLUGIN"), remote=True, ns=names)
+
+
+def image_error(image, baseline):
+    """vtkImageDifference's thresholded error between two PNG files:
+    per-pixel threshold 16 (its default, 105, forgives too much here),
+    one-pixel shifts and averaging allowed, as the plugin's image tests
+    compare."""
+    from vtkmodules.vtkImagingCore import vtkImageDifference
+    from vtkmodules.vtkIOImage import vtkPNGReader
+
+    readers = []
+    for name in (image, baseline):
+        png = vtkPNGReader()
+        png.SetFileName(name)
+        png.Update()
+        readers.append(png)
+    difference = vtkImageDifference()
+    difference.SetInputConnection(readers[0].GetOutputPort())
+    difference.SetImageConnection(readers[1].GetOutputPort())
+    difference.SetThreshold(16)
+    difference.AllowShiftOn()
+    difference.AveragingOn()
+    difference.Update()
+    return difference.GetThresholdedError()
+
+
 def field_value(polydata, name):
     array = polydata.GetFieldData().GetArray(name)
     return int(array.GetTuple1(0)) if array is not None else None

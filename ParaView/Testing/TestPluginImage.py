@@ -6,10 +6,8 @@ import os
 import sys
 
 from paraview import simple, servermanager
-from vtkmodules.vtkImagingCore import vtkImageDifference
-from vtkmodules.vtkIOImage import vtkPNGReader
 
-from SilhouetteTestUtils import copy_camera, field_value, finish, load_plugin, setting, triangle_count
+from SilhouetteTestUtils import copy_camera, field_value, finish, image_error, load_plugin, setting, triangle_count
 
 SilhouetteSmoothing = load_plugin()
 simple._DisableFirstRenderCameraReset()
@@ -75,26 +73,12 @@ baseline = setting("SILHOUETTE_BASELINE")
 if not os.path.exists(baseline):
     failures.append("no baseline %s (look at %s and copy it there if it is right)" % (baseline, image))
 else:
-    readers = []
-    for name in (image, baseline):
-        png = vtkPNGReader()
-        png.SetFileName(name)
-        png.Update()
-        readers.append(png)
-    # Per-pixel threshold 16 (vtkImageDifference's default, 105, forgives
-    # too much here), one-pixel shifts and averaging allowed. Measured: a
-    # rerun scores 0 (llvmpipe under Xvfb renders this identically), the
-    # same scene with every silhouette segment drawn as its chord
-    # (MaximumSamples 2) 5.5, the 3,674-triangle bunny in place of the
-    # coarse one 164. The limit sits well below.
-    difference = vtkImageDifference()
-    difference.SetInputConnection(readers[0].GetOutputPort())
-    difference.SetImageConnection(readers[1].GetOutputPort())
-    difference.SetThreshold(16)
-    difference.AllowShiftOn()
-    difference.AveragingOn()
-    difference.Update()
-    error = difference.GetThresholdedError()
+    # Measured (image_error: per-pixel threshold 16, one-pixel shifts and
+    # averaging allowed): a rerun scores 0 (llvmpipe under Xvfb renders
+    # this identically), the same scene with every silhouette segment drawn
+    # as its chord (MaximumSamples 2) 5.5, the 3,674-triangle bunny in place
+    # of the coarse one 164. The limit sits well below.
+    error = image_error(image, baseline)
     limit = 1.0
     print("image difference: %.3f (limit %g)" % (error, limit))
     if error > limit:

@@ -291,6 +291,44 @@ void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
   out->SetNormals(normals);
 }
 
+// Output cell c takes the data of input cell origin[c] (the arrays VTK's
+// rules leave out as plain copies), with NewGeometry and `OriginalCellId`
+// (origin composed with an input array of that name).
+void CellDataFrom(vtkCellData* in, vtkCellData* out, const std::vector<vtkIdType>& origin,
+  vtkUnsignedCharArray* newGeometry)
+{
+  const vtkIdType count = static_cast<vtkIdType>(origin.size());
+  if (in->GetNumberOfArrays() > 0)
+  {
+    vtkNew<vtkIdList> source;
+    source->SetNumberOfIds(count);
+    std::copy(origin.begin(), origin.end(), source->begin());
+    vtkNew<vtkIdList> destination;
+    destination->SetNumberOfIds(count);
+    std::iota(destination->begin(), destination->end(), vtkIdType{ 0 });
+    out->CopyAllOn();
+    out->CopyAllocate(in, count);
+    out->CopyData(in, source, destination);
+    AddUncopiedArrays(in, out, origin, "OriginalCellId");
+  }
+  vtkDataArray* inOriginal = in->GetArray("OriginalCellId");
+  vtkNew<vtkIdTypeArray> originalCellId;
+  originalCellId->SetName("OriginalCellId");
+  originalCellId->SetNumberOfValues(count);
+  vtkIdType* originalIds = originalCellId->GetPointer(0);
+  for (vtkIdType c = 0; c < count; ++c)
+  {
+    const vtkIdType from = origin[static_cast<std::size_t>(c)];
+    originalIds[c] = inOriginal ? static_cast<vtkIdType>(inOriginal->GetTuple1(from)) : from;
+  }
+  if (out->GetAbstractArray("OriginalCellId"))
+  {
+    out->RemoveArray("OriginalCellId");
+  }
+  out->AddArray(newGeometry);
+  out->AddArray(originalCellId);
+}
+
 // Verts and lines pass through (PassVertsAndLines: `droppedCells` counts the
 // ones left out); polygons and strips become the frame's triangles, written
 // by the surface straight into the cell arrays. `OriginalCellId` is composed
@@ -335,38 +373,7 @@ silsmooth::SurfaceFrame BuildCells(vtkPolyData* input, vtkPolyData* output,
   polys->SetData(offsets, connectivity);
   output->SetPolys(polys);
 
-  vtkCellData* in = input->GetCellData();
-  vtkCellData* out = output->GetCellData();
-  // Each output cell takes its original cell's data.
-  if (in->GetNumberOfArrays() > 0)
-  {
-    vtkNew<vtkIdList> source;
-    source->SetNumberOfIds(outCells);
-    std::copy(origin.begin(), origin.end(), source->begin());
-    vtkNew<vtkIdList> destination;
-    destination->SetNumberOfIds(outCells);
-    std::iota(destination->begin(), destination->end(), vtkIdType{ 0 });
-    out->CopyAllOn();
-    out->CopyAllocate(in, outCells);
-    out->CopyData(in, source, destination);
-    AddUncopiedArrays(in, out, origin, "OriginalCellId");
-  }
-  vtkDataArray* inOriginal = in->GetArray("OriginalCellId");
-  vtkNew<vtkIdTypeArray> originalCellId;
-  originalCellId->SetName("OriginalCellId");
-  originalCellId->SetNumberOfValues(outCells);
-  vtkIdType* originalIds = originalCellId->GetPointer(0);
-  for (vtkIdType c = 0; c < outCells; ++c)
-  {
-    const vtkIdType from = origin[static_cast<std::size_t>(c)];
-    originalIds[c] = inOriginal ? static_cast<vtkIdType>(inOriginal->GetTuple1(from)) : from;
-  }
-  if (out->GetAbstractArray("OriginalCellId"))
-  {
-    out->RemoveArray("OriginalCellId");
-  }
-  out->AddArray(newGeometry);
-  out->AddArray(originalCellId);
+  CellDataFrom(input->GetCellData(), output->GetCellData(), origin, newGeometry);
   return frame;
 }
 
@@ -410,37 +417,7 @@ void BuildChangedCells(vtkPolyData* input, vtkPolyData* changes,
       triangleCell[static_cast<std::size_t>(frame.SourceTriangle[static_cast<std::size_t>(c)])];
     newGeometry->SetValue(c, frame.Kind[static_cast<std::size_t>(c)]);
   }
-  vtkCellData* in = input->GetCellData();
-  vtkCellData* out = changes->GetCellData();
-  if (in->GetNumberOfArrays() > 0)
-  {
-    vtkNew<vtkIdList> source;
-    source->SetNumberOfIds(count);
-    std::copy(origin.begin(), origin.end(), source->begin());
-    vtkNew<vtkIdList> destination;
-    destination->SetNumberOfIds(count);
-    std::iota(destination->begin(), destination->end(), vtkIdType{ 0 });
-    out->CopyAllOn();
-    out->CopyAllocate(in, count);
-    out->CopyData(in, source, destination);
-    AddUncopiedArrays(in, out, origin, "OriginalCellId");
-  }
-  vtkDataArray* inOriginal = in->GetArray("OriginalCellId");
-  vtkNew<vtkIdTypeArray> originalCellId;
-  originalCellId->SetName("OriginalCellId");
-  originalCellId->SetNumberOfValues(count);
-  for (vtkIdType c = 0; c < count; ++c)
-  {
-    const vtkIdType from = origin[static_cast<std::size_t>(c)];
-    originalCellId->SetValue(
-      c, inOriginal ? static_cast<vtkIdType>(inOriginal->GetTuple1(from)) : from);
-  }
-  if (out->GetAbstractArray("OriginalCellId"))
-  {
-    out->RemoveArray("OriginalCellId");
-  }
-  out->AddArray(newGeometry);
-  out->AddArray(originalCellId);
+  CellDataFrom(input->GetCellData(), changes->GetCellData(), origin, newGeometry);
 }
 
 // Output port 1: the silhouette polylines over their own compact point set.

@@ -631,30 +631,24 @@ SurfaceFrame WeldedSurface::assembleChanges(const SmoothingResult& result) const
   // Replacements of the re-meshed ones, one triangle for each kept one.
   const std::size_t count =
     replaced.size() - result.RemeshedTriangles.size() + result.Replacements.size();
-  std::vector<Id> connectivity(count * 3);
-  std::vector<Id> source(count);
-  std::vector<unsigned char> kind(count);
-  SurfaceFrame frame =
-    this->assembleSome(result, &replaced, connectivity.data(), source.data(), kind.data());
-  frame.Triangles.resize(count);
-  for (std::size_t t = 0; t < count; ++t)
-  {
-    frame.Triangles[t] = { { connectivity[t * 3], connectivity[t * 3 + 1],
-      connectivity[t * 3 + 2] } };
-  }
-  frame.SourceTriangle = std::move(source);
-  frame.Kind = std::move(kind);
+  SurfaceFrame frame = this->assembleInto(result, &replaced, count);
   frame.ReplacedTriangles = std::move(replaced);
   return frame;
 }
 
 SurfaceFrame WeldedSurface::assemble(const SmoothingResult& result) const
 {
-  const std::size_t count = this->outputTriangleCount(result);
+  return this->assembleInto(result, nullptr, this->outputTriangleCount(result));
+}
+
+SurfaceFrame WeldedSurface::assembleInto(
+  const SmoothingResult& result, const std::vector<Id>* only, std::size_t count) const
+{
   std::vector<Id> connectivity(count * 3);
   std::vector<Id> source(count);
   std::vector<unsigned char> kind(count);
-  SurfaceFrame frame = this->assemble(result, connectivity.data(), source.data(), kind.data());
+  SurfaceFrame frame =
+    this->assembleSome(result, only, connectivity.data(), source.data(), kind.data());
   frame.Triangles.resize(count);
   for (std::size_t t = 0; t < count; ++t)
   {

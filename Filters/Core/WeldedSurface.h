@@ -195,6 +195,9 @@ private:
   template<typename IdType>
   SurfaceFrame assembleSome(const SmoothingResult& result, const std::vector<Id>* only,
     IdType* triangles, IdType* sourceTriangle, unsigned char* kind) const;
+  /// assembleSome into the frame's own vectors (`count` triangles).
+  SurfaceFrame assembleInto(
+    const SmoothingResult& result, const std::vector<Id>* only, std::size_t count) const;
 
   std::size_t InputPointCount = 0;
   std::vector<Triangle> InputTriangles;

@@ -155,6 +155,12 @@ class SilhouetteSmoothingTest(unittest.TestCase):
         from silhouette_smoothing import vtkSilhouetteSmoothingMapper
         sphere = vtkIcosphereSource()
         sphere.SetSubdivisionLevel(2)
+        # One window open throughout: each image's window closes, and an X
+        # server whose last client leaves resets, refusing the next one.
+        keeper = vtkRenderWindow()
+        keeper.SetOffScreenRendering(1)
+        keeper.SetSize(8, 8)
+        keeper.Render()
 
         def pixels(kind):
             renderer = vtkRenderer()
@@ -194,6 +200,7 @@ class SilhouetteSmoothingTest(unittest.TestCase):
               % (differing, unsmoothed))
         self.assertLessEqual(differing, 10)
         self.assertGreater(unsmoothed, 10)
+        keeper.Finalize()
 
     def test_readme_example_draws_the_bunny(self):
         with tempfile.TemporaryDirectory() as folder:

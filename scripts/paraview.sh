@@ -256,7 +256,7 @@ free_display() {
 display="$(free_display)"
 step_start
 set +e
-in_root xvfb-run -n "$display" -s "-screen 0 1280x1024x24" ctest --test-dir /build/paraview --output-on-failure \
+in_root xvfb-run -n "$display" -s "-screen 0 1280x1024x24 -noreset" ctest --test-dir /build/paraview --output-on-failure \
   --repeat until-pass:2 2>&1 | tee "$root/build/paraview/ctest.log"
 status=${PIPESTATUS[0]}
 set -e

@@ -30,7 +30,7 @@ echo "sanitize: built in $((SECONDS - started)) s"
 cd "$build"
 display=()
 if [ -z "${DISPLAY:-}" ]; then
-  display=(xvfb-run -a -s "-screen 0 1280x1024x24")
+  display=(xvfb-run -a -s "-screen 0 1280x1024x24 -noreset")
 fi
 export UBSAN_OPTIONS=print_stacktrace=1
 started=$SECONDS

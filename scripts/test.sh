@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # Sets up and builds like demo.sh, then runs the whole ctest suite; rendering
-# tests get a private X server (xvfb-run) when there is no display.
+# tests get a private X server (xvfb-run) when there is no display. -noreset:
+# an X server resets when its last client leaves, and a test connecting
+# during the reset is refused (python.package was, twice in a row, in CI).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # shellcheck source=setup.sh
@@ -16,6 +18,6 @@ cd "$build"
 # output stays in the log.
 retry=(--repeat until-pass:2)
 if [ -z "${DISPLAY:-}" ]; then
-  exec xvfb-run -a -s "-screen 0 1280x1024x24" ctest --output-on-failure -j "$jobs" "${retry[@]}" "$@"
+  exec xvfb-run -a -s "-screen 0 1280x1024x24 -noreset" ctest --output-on-failure -j "$jobs" "${retry[@]}" "$@"
 fi
 exec ctest --output-on-failure -j "$jobs" "${retry[@]}" "$@"

@@ -4,6 +4,7 @@
 #include "CliErrors.h"
 #include "MeshIO.h"
 #include "RenderingBackend.h"
+#include "Smoothing.h"
 #include "VtkErrorLog.h"
 
 #include <vtkActor.h>
@@ -23,6 +24,7 @@
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSilhouetteSmoothingFilter.h>
+#include <vtkSilhouetteSmoothingMapper.h>
 #include <vtkStylizedStrokeFilter.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
@@ -130,6 +132,15 @@ void ShowEdges(vtkActor* actor, const double color[3])
   property->SetLineWidth(1.0);
 }
 
+void ShadeAsSurface(vtkActor* actor)
+{
+  vtkProperty* property = actor->GetProperty();
+  property->SetColor(LightGrey[0], LightGrey[1], LightGrey[2]);
+  property->SetInterpolationToPhong();
+  property->SetSpecular(0.2);
+  property->SetSpecularPower(20.0);
+}
+
 void WriteWindowPng(vtkRenderWindow* window, const std::string& path)
 {
   VtkErrorLog& errors = VtkErrorLog::Instance();
@@ -218,11 +229,7 @@ void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter,
       vtkSmartPointer<vtkActor> actor = smoothed
         ? MakeActor(filter->GetOutputPort(0))
         : MakeActor(InputWithShadingNormals(input, filter));
-      vtkProperty* property = actor->GetProperty();
-      property->SetColor(LightGrey[0], LightGrey[1], LightGrey[2]);
-      property->SetInterpolationToPhong();
-      property->SetSpecular(0.2);
-      property->SetSpecularPower(20.0);
+      ShadeAsSurface(actor);
       renderer->AddActor(actor);
       break;
     }
@@ -325,7 +332,25 @@ void RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
 {
   VtkErrorLog& errors = VtkErrorLog::Instance();
   errors.Clear();
-  AddStyleActors(view.Renderer, filter, input, options.Style, !options.NoSmoothing);
+  if (options.Style == RenderStyle::Shaded && !options.NoSmoothing)
+  {
+    // Smoothed while it renders, with the same settings (the filter's run
+    // gives the figures): the image is the filter's output's, pixel for
+    // pixel (module.TestSmoothingMapper).
+    vtkNew<vtkSilhouetteSmoothingMapper> mapper;
+    mapper->SetInputData(input);
+    mapper->ScalarVisibilityOff();
+    ApplySmoothingOptions(mapper->GetSmoothingFilter(), options.Camera);
+    errors.Watch(mapper->GetSmoothingFilter());
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    ShadeAsSurface(actor);
+    view.Renderer->AddActor(actor);
+  }
+  else
+  {
+    AddStyleActors(view.Renderer, filter, input, options.Style, !options.NoSmoothing);
+  }
   // Clip on what is drawn: the smoothed silhouette bulges past the input's bounds.
   view.Renderer->ResetCameraClippingRange();
 

@@ -45,6 +45,10 @@ inline constexpr double Red[3] = { 0.90, 0.0, 0.0 };
 /// edges behind the mesh without the z-fighting of a hidden-line pass.
 void ShowEdges(vtkActor* actor, const double color[3]);
 
+/// The shaded style's look: light grey, Phong interpolation, a little
+/// specular.
+void ShadeAsSurface(vtkActor* actor);
+
 /// Writes the window's last frame to a PNG file (re-rendering only an
 /// onscreen window); throws RuntimeError on failure.
 void WriteWindowPng(vtkRenderWindow* window, const std::string& path);

@@ -21,6 +21,7 @@ class vtkRenderWindow;
 class vtkRenderWindowInteractor;
 class vtkRenderer;
 class vtkSilhouetteSmoothingFilter;
+class vtkSilhouetteSmoothingMapper;
 class vtkSliderRepresentation2D;
 class vtkSliderWidget;
 class vtkTextActor;
@@ -59,8 +60,10 @@ struct ViewerFigures
   vtkIdType OutputTriangles = 0;     ///< the input's with smoothing off
   vtkIdType SilhouetteTriangles = 0; ///< 0 with smoothing off (the filter does not run)
   vtkIdType NewTriangles = 0;        ///< 0 with smoothing off
-  double FilterMilliseconds = 0.0;   ///< the filter's run for this frame; 0 if it did not run
-  double RenderMilliseconds = 0.0;   ///< vtkRenderer::GetLastRenderTimeInSeconds of the main view
+  /// The filter's run for this frame (0 if it did not run); in the shaded
+  /// style, the mapper's smoothing before it drew the frame.
+  double FilterMilliseconds = 0.0;
+  double RenderMilliseconds = 0.0; ///< vtkRenderer::GetLastRenderTimeInSeconds of the main view
 };
 
 /**
@@ -135,6 +138,10 @@ private:
   vtkIdType InputTriangles = 0;
 
   vtkSmartPointer<vtkSilhouetteSmoothingFilter> Filter;
+  /// The shaded style smoothed draws through the render-time mapper (the
+  /// other styles need the filter's geometry: the new triangles, the lines).
+  vtkSmartPointer<vtkSilhouetteSmoothingMapper> SmoothMapper;
+  bool UsesMapper() const;
   vtkSmartPointer<vtkSilhouetteSmoothingFilter> FineNormals; ///< the fine mesh's shading normals
   vtkSmartPointer<vtkRenderWindow> Window;
   vtkSmartPointer<vtkRenderer> MainRenderer;

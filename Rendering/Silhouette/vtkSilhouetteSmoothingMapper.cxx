@@ -193,6 +193,8 @@ struct vtkSilhouetteSmoothingMapper::Internals
     self->ReplacedTriangleCount = 0;
     self->PatchTriangleCount = 0;
     self->CulledTriangleCount = 0;
+    self->SilhouetteTriangleCount = 0;
+    self->NewTriangleCount = 0;
     if (!smooth || width <= 0 || height <= 0 ||
       !this->Smoother->BuildChanges(
         input, camera, model, width, height, this->Changes, this->Replaced))
@@ -209,9 +211,21 @@ struct vtkSilhouetteSmoothingMapper::Internals
       PointSources(this->Changes));
     self->ReplacedTriangleCount = this->Replaced->GetNumberOfValues();
     self->PatchTriangleCount = this->Changes->GetNumberOfPolys();
-    if (vtkDataArray* culled = this->Changes->GetFieldData()->GetArray("CulledTriangleCount"))
+    vtkFieldData* figures = this->Changes->GetFieldData();
+    if (vtkDataArray* culled = figures->GetArray("CulledTriangleCount"))
     {
       self->CulledTriangleCount = static_cast<vtkIdType>(culled->GetTuple1(0));
+    }
+    if (vtkDataArray* silhouette = figures->GetArray("SilhouetteTriangleCount"))
+    {
+      self->SilhouetteTriangleCount = static_cast<vtkIdType>(silhouette->GetTuple1(0));
+    }
+    if (vtkDataArray* made = this->Changes->GetCellData()->GetArray("NewGeometry"))
+    {
+      for (vtkIdType c = 0; c < made->GetNumberOfTuples(); ++c)
+      {
+        self->NewTriangleCount += made->GetTuple1(c) != 0.0 ? 1 : 0;
+      }
     }
   }
 };

@@ -82,6 +82,11 @@ public:
   vtkIdType GetReplacedTriangleCount() const { return this->ReplacedTriangleCount; }
   vtkIdType GetPatchTriangleCount() const { return this->PatchTriangleCount; }
   vtkIdType GetCulledTriangleCount() const { return this->CulledTriangleCount; }
+  /// The silhouette triangles re-meshed, and the triangles the re-meshing
+  /// made (the patch without the kept triangles the perturbation moved):
+  /// the filter's SilhouetteTriangleCount and NewTriangleCount.
+  vtkIdType GetSilhouetteTriangleCount() const { return this->SilhouetteTriangleCount; }
+  vtkIdType GetNewTriangleCount() const { return this->NewTriangleCount; }
   ///@}
 
   /**
@@ -107,6 +112,8 @@ protected:
   vtkIdType ReplacedTriangleCount = 0;
   vtkIdType PatchTriangleCount = 0;
   vtkIdType CulledTriangleCount = 0;
+  vtkIdType SilhouetteTriangleCount = 0;
+  vtkIdType NewTriangleCount = 0;
   double LastPrepareSeconds = 0.0;
 
 private:

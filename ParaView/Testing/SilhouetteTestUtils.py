@@ -68,6 +68,83 @@ def image_error(image, baseline):
     return difference.GetThresholdedError()
 
 
+def write_pieces(mesh, pieces, output_dir, name, ghosts=False):
+    """Writes each piece of `mesh` (a list of (cell id, ghost flag) pairs, in
+    the order the piece keeps them) as a .vtp of the points it uses, the whole
+    mesh as NAME_whole.vtp, and NAME_pieces.pvtp listing the pieces (rank i
+    reads piece i); returns the .pvtp's and the whole file's paths. With
+    `ghosts` the pieces carry the flags as vtkGhostType and the .pvtp says
+    GhostLevel 1. The data are inline, not appended: the expat of Debian
+    bookworm (2.5.0 with the reparse-deferral security fix) breaks how
+    ParaView 5.11's VTK reads appended data (and so RedistributeDataSet,
+    which sends pieces as appended XML, fails the same way)."""
+    from vtkmodules.vtkCommonCore import vtkIdList, vtkUnsignedCharArray
+    from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkDataSetAttributes, vtkPolyData
+    from vtkmodules.vtkFiltersCore import vtkCleanPolyData
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+    def write(file_name, data=None, port=None):
+        writer = vtkXMLPolyDataWriter()
+        writer.SetDataModeToBinary()
+        if port is not None:
+            writer.SetInputConnection(port)
+        else:
+            writer.SetInputData(data)
+        writer.SetFileName(os.path.join(output_dir, file_name))
+        writer.Write()
+
+    os.makedirs(output_dir, exist_ok=True)
+    ids = vtkIdList()
+    piece_files = []
+    for index, cells in enumerate(pieces):
+        polys = vtkCellArray()
+        ghost_type = vtkUnsignedCharArray()
+        ghost_type.SetName(vtkDataSetAttributes.GhostArrayName())
+        for cell, flag in cells:
+            mesh.GetCellPoints(cell, ids)
+            polys.InsertNextCell(ids)
+            ghost_type.InsertNextValue(flag)
+        piece = vtkPolyData()
+        piece.SetPoints(mesh.GetPoints())
+        piece.GetPointData().ShallowCopy(mesh.GetPointData())
+        piece.SetPolys(polys)
+        if ghosts:
+            piece.GetCellData().AddArray(ghost_type)
+        compact = vtkCleanPolyData()  # drops the unused points, merges none
+        compact.SetInputData(piece)
+        compact.PointMergingOff()
+        piece_files.append("%s_piece%d.vtp" % (name, index))
+        write(piece_files[-1], port=compact.GetOutputPort())
+    whole_file = os.path.join(output_dir, "%s_whole.vtp" % name)
+    write(os.path.basename(whole_file), data=mesh)
+    xml_types = {"float": "Float32", "double": "Float64"}
+    cell_data = ""
+    if ghosts:
+        cell_data = ("    <PCellData>\n"
+                     "      <PDataArray type=\"UInt8\" Name=\"%s\" NumberOfComponents=\"1\"/>\n"
+                     "    </PCellData>\n" % vtkDataSetAttributes.GhostArrayName())
+    parallel_file = os.path.join(output_dir, "%s_pieces.pvtp" % name)
+    with open(parallel_file, "w") as pvtp:
+        pvtp.write(
+            "<?xml version=\"1.0\"?>\n"
+            "<VTKFile type=\"PPolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+            "  <PPolyData GhostLevel=\"%d\">\n"
+            "    <PPointData Normals=\"Normals\">\n"
+            "      <PDataArray type=\"%s\" Name=\"Normals\" NumberOfComponents=\"3\"/>\n"
+            "    </PPointData>\n"
+            "%s"
+            "    <PPoints>\n"
+            "      <PDataArray type=\"%s\" NumberOfComponents=\"3\"/>\n"
+            "    </PPoints>\n"
+            "%s"
+            "  </PPolyData>\n"
+            "</VTKFile>\n"
+            % (1 if ghosts else 0, xml_types[mesh.GetPointData().GetNormals().GetDataTypeAsString()],
+               cell_data, xml_types[mesh.GetPoints().GetData().GetDataTypeAsString()],
+               "".join("    <Piece Source=\"%s\"/>\n" % file for file in piece_files)))
+    return parallel_file, whole_file
+
+
 def field_value(polydata, name):
     array = polydata.GetFieldData().GetArray(name)
     return int(array.GetTuple1(0)) if array is not None else None

@@ -8,20 +8,17 @@ must be equal: the same triangle count, the same triangles (compared by their
 corners' coordinates, exactly) and no crack where the pieces meet (once
 coincident points are merged with tolerance 0, no boundary edge, as on the
 closed whole). With it (the default), the same count and no crack."""
-import os
 import sys
 from collections import Counter
 from types import SimpleNamespace
 
 from paraview import servermanager, simple
 from vtkmodules.vtkCommonCore import vtkIdList
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkFiltersCore import vtkAppendPolyData, vtkCleanPolyData, vtkFeatureEdges, vtkPolyDataNormals
 from vtkmodules.vtkIOPLY import vtkPLYReader
-from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
-from SilhouetteTestUtils import copy_camera, field_value, finish, load_plugin, setting, triangle_count
+from SilhouetteTestUtils import copy_camera, field_value, finish, load_plugin, setting, triangle_count, write_pieces
 
 ranks = vtkMultiProcessController.GetGlobalController().GetNumberOfProcesses()
 print("ranks: %d" % ranks)
@@ -48,18 +45,6 @@ normals.ComputeCellNormalsOff()
 normals.Update()
 mesh = normals.GetOutput()
 
-
-
-def xml_writer():
-    """An XML writer whose data is inline, not appended: the expat of Debian
-    bookworm (2.5.0 with the reparse-deferral security fix) breaks how
-    ParaView 5.11's VTK reads appended data (and so RedistributeDataSet, which
-    sends pieces as appended XML, fails the same way)."""
-    writer = vtkXMLPolyDataWriter()
-    writer.SetDataModeToBinary()
-    return writer
-
-
 # The two halves: cells whose centroid lies left of the median x go to piece
 # 0, the others to piece 1. Each piece keeps the points it uses (same
 # coordinates and normals).
@@ -69,49 +54,9 @@ for cell in range(mesh.GetNumberOfCells()):
     mesh.GetCellPoints(cell, ids)
     centroids.append(sum(mesh.GetPoint(ids.GetId(i))[0] for i in range(ids.GetNumberOfIds())) / ids.GetNumberOfIds())
 median = sorted(centroids)[len(centroids) // 2]
-output_dir = setting("SILHOUETTE_OUTPUT_DIR")
-os.makedirs(output_dir, exist_ok=True)
-piece_files = []
-for piece in range(ranks):
-    polys = vtkCellArray()
-    for cell in range(mesh.GetNumberOfCells()):
-        if (centroids[cell] >= median) == (piece == 1):
-            mesh.GetCellPoints(cell, ids)
-            polys.InsertNextCell(ids)
-    half = vtkPolyData()
-    half.SetPoints(mesh.GetPoints())
-    half.GetPointData().ShallowCopy(mesh.GetPointData())
-    half.SetPolys(polys)
-    compact = vtkCleanPolyData()  # drops the unused points, merges none
-    compact.SetInputData(half)
-    compact.PointMergingOff()
-    writer = xml_writer()
-    writer.SetInputConnection(compact.GetOutputPort())
-    piece_files.append("TestPluginMPI_piece%d.vtp" % piece)
-    writer.SetFileName(os.path.join(output_dir, piece_files[-1]))
-    writer.Write()
-whole_file = os.path.join(output_dir, "TestPluginMPI_whole.vtp")
-writer = xml_writer()
-writer.SetInputData(mesh)
-writer.SetFileName(whole_file)
-writer.Write()
-xml_types = {"float": "Float32", "double": "Float64"}
-parallel_file = os.path.join(output_dir, "TestPluginMPI_pieces.pvtp")
-with open(parallel_file, "w") as pvtp:
-    pvtp.write('''<?xml version="1.0"?>
-<VTKFile type="PPolyData" version="0.1" byte_order="LittleEndian">
-  <PPolyData GhostLevel="0">
-    <PPointData Normals="Normals">
-      <PDataArray type="%s" Name="Normals" NumberOfComponents="3"/>
-    </PPointData>
-    <PPoints>
-      <PDataArray type="%s" NumberOfComponents="3"/>
-    </PPoints>
-%s  </PPolyData>
-</VTKFile>
-''' % (xml_types[mesh.GetPointData().GetNormals().GetDataTypeAsString()],
-        xml_types[mesh.GetPoints().GetData().GetDataTypeAsString()],
-        "".join('    <Piece Source="%s"/>\n' % name for name in piece_files)))
+pieces = [[(cell, 0) for cell in range(mesh.GetNumberOfCells()) if (centroids[cell] >= median) == (piece == 1)]
+          for piece in range(ranks)]
+parallel_file, whole_file = write_pieces(mesh, pieces, setting("SILHOUETTE_OUTPUT_DIR"), "TestPluginMPI")
 
 # Rank i reads piece i; the whole mesh, a one-piece file, is read by rank 0.
 surface = simple.XMLPartitionedPolydataReader(FileName=[parallel_file])

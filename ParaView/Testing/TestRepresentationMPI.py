@@ -15,14 +15,13 @@ import os
 import sys
 
 from paraview import servermanager, simple
-from vtkmodules.vtkCommonCore import vtkIdList, vtkUnsignedCharArray
-from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkDataSetAttributes, vtkPolyData
-from vtkmodules.vtkFiltersCore import vtkCleanPolyData, vtkPolyDataNormals
+from vtkmodules.vtkCommonCore import vtkIdList
+from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes
+from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 from vtkmodules.vtkIOPLY import vtkPLYReader
-from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
-from SilhouetteTestUtils import finish, image_error, load_representation_plugin, setting
+from SilhouetteTestUtils import finish, image_error, load_representation_plugin, setting, write_pieces
 
 ranks = vtkMultiProcessController.GetGlobalController().GetNumberOfProcesses()
 print("ranks: %d" % ranks)
@@ -47,14 +46,6 @@ mesh = normals.GetOutput()
 cell_count = mesh.GetNumberOfCells()
 
 
-def xml_writer():
-    """Inline binary data, not appended: the expat of Debian bookworm breaks
-    how ParaView 5.11's VTK reads appended data (see TestPluginMPI.py)."""
-    writer = vtkXMLPolyDataWriter()
-    writer.SetDataModeToBinary()
-    return writer
-
-
 ids = vtkIdList()
 cell_points = []
 centroids = []
@@ -64,9 +55,7 @@ for cell in range(cell_count):
     cell_points.append(points)
     centroids.append(sum(mesh.GetPoint(p)[0] for p in points) / len(points))
 median = sorted(centroids)[cell_count // 2]
-output_dir = setting("SILHOUETTE_OUTPUT_DIR")
-os.makedirs(output_dir, exist_ok=True)
-piece_files = []
+pieces = []
 owned_counts = []
 ghost_counts = []
 for piece in range(ranks):
@@ -75,53 +64,12 @@ for piece in range(ranks):
     owned_set = set(owned)
     ghosts = [cell for cell in range(cell_count)
         if cell not in owned_set and any(p in owned_points for p in cell_points[cell])]
-    polys = vtkCellArray()
-    ghost_type = vtkUnsignedCharArray()
-    ghost_type.SetName(vtkDataSetAttributes.GhostArrayName())
-    for cell, flag in [(c, 0) for c in owned] + [(c, vtkDataSetAttributes.DUPLICATECELL) for c in ghosts]:
-        polys.InsertNextCell(len(cell_points[cell]), cell_points[cell])
-        ghost_type.InsertNextValue(flag)
-    half = vtkPolyData()
-    half.SetPoints(mesh.GetPoints())
-    half.GetPointData().ShallowCopy(mesh.GetPointData())
-    half.SetPolys(polys)
-    half.GetCellData().AddArray(ghost_type)
-    compact = vtkCleanPolyData()  # drops the unused points, merges none
-    compact.SetInputData(half)
-    compact.PointMergingOff()
-    writer = xml_writer()
-    writer.SetInputConnection(compact.GetOutputPort())
-    piece_files.append("TestRepresentationMPI_piece%d.vtp" % piece)
-    writer.SetFileName(os.path.join(output_dir, piece_files[-1]))
-    writer.Write()
+    pieces.append([(c, 0) for c in owned] + [(c, vtkDataSetAttributes.DUPLICATECELL) for c in ghosts])
     owned_counts.append(len(owned))
     ghost_counts.append(len(ghosts))
     print("piece %d: %d cells and %d ghost cells" % (piece, len(owned), len(ghosts)))
-whole_file = os.path.join(output_dir, "TestRepresentationMPI_whole.vtp")
-writer = xml_writer()
-writer.SetInputData(mesh)
-writer.SetFileName(whole_file)
-writer.Write()
-xml_types = {"float": "Float32", "double": "Float64"}
-parallel_file = os.path.join(output_dir, "TestRepresentationMPI_pieces.pvtp")
-with open(parallel_file, "w") as pvtp:
-    pvtp.write('''<?xml version="1.0"?>
-<VTKFile type="PPolyData" version="0.1" byte_order="LittleEndian">
-  <PPolyData GhostLevel="1">
-    <PPointData Normals="Normals">
-      <PDataArray type="%s" Name="Normals" NumberOfComponents="3"/>
-    </PPointData>
-    <PCellData>
-      <PDataArray type="UInt8" Name="%s" NumberOfComponents="1"/>
-    </PCellData>
-    <PPoints>
-      <PDataArray type="%s" NumberOfComponents="3"/>
-    </PPoints>
-%s  </PPolyData>
-</VTKFile>
-''' % (xml_types[mesh.GetPointData().GetNormals().GetDataTypeAsString()], vtkDataSetAttributes.GhostArrayName(),
-        xml_types[mesh.GetPoints().GetData().GetDataTypeAsString()],
-        "".join('    <Piece Source="%s"/>\n' % name for name in piece_files)))
+output_dir = setting("SILHOUETTE_OUTPUT_DIR")
+parallel_file, whole_file = write_pieces(mesh, pieces, output_dir, "TestRepresentationMPI", ghosts=True)
 
 size = [640, 480]
 view = simple.CreateView("RenderView")

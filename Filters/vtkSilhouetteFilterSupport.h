@@ -8,6 +8,7 @@
 #ifndef vtkSilhouetteFilterSupport_h
 #define vtkSilhouetteFilterSupport_h
 
+#include "vtkSilhouetteViewTracker.h" // ViewTracker, part of this support
 #include "vtkSmartPointer.h"
 #include "vtkTimeStamp.h"
 #include "vtkType.h"
@@ -48,27 +49,6 @@ void ModelMatrixOf(vtkProp3D* prop, vtkMatrix4x4* matrix, double out[16]);
 
 /// The renderer's size when it has one, else the fallback.
 std::array<int, 2> ViewportOf(vtkRenderer* renderer, const int fallback[2]);
-
-/// Remembers the last view a filter saw, compared by value. The camera's own
-/// MTime is not enough: renderers reset its clipping range every frame, which
-/// would re-run the filter for nothing, while a prop's matrix or a window's
-/// size can change without touching the camera at all. So the view is the
-/// camera's model-view matrix (position, orientation, model and user-view
-/// transforms) and its projection parameters (not the clipping range), the
-/// model matrix and the viewport, compared bitwise (a NaN in the view compares
-/// equal to itself instead of re-running the filter on every update).
-class ViewTracker
-{
-public:
-  /// The time the view last changed (updated by this call).
-  vtkMTimeType Update(vtkCamera* camera, const double model[16], std::array<int, 2> viewport);
-
-private:
-  std::array<double, 16 + 16 + 17 + 16> Last{};
-  std::array<int, 2> LastViewport{};
-  bool Have = false;
-  vtkTimeStamp Time;
-};
 
 /// The view in the data's model coordinates for the core, and (optionally)
 /// the matrix that takes model normals to eye coordinates. Returns an empty

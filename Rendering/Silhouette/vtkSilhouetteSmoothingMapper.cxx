@@ -17,11 +17,11 @@
 #include "vtkRenderer.h"
 #include "vtkSilhouettePatchedMapper.h"
 #include "vtkSilhouetteSmoothingFilter.h"
+#include "vtkSilhouetteViewTracker.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <chrono>
-#include <cstring>
 #include <iterator>
 #include <vector>
 
@@ -29,47 +29,6 @@ vtkStandardNewMacro(vtkSilhouetteSmoothingMapper);
 
 namespace
 {
-
-// What the smoothing of a view depends on, compared bitwise: the camera's
-// model-view matrix and projection parameters (not its clipping range,
-// which renderers reset every frame without changing the outline), the
-// actor's matrix and the viewport.
-using ViewKey = std::array<double, 16 + 7 + 16 + 3>;
-
-ViewKey KeyOf(vtkCamera* camera, const double model[16], int width, int height, double aspect)
-{
-  ViewKey key{};
-  vtkMatrix4x4* view = camera->GetModelViewTransformMatrix();
-  std::size_t k = 0;
-  for (int i = 0; i < 4; ++i)
-  {
-    for (int j = 0; j < 4; ++j)
-    {
-      key[k++] = view->GetElement(i, j);
-    }
-  }
-  const double* center = camera->GetWindowCenter();
-  key[k++] = camera->GetViewAngle();
-  key[k++] = camera->GetParallelScale();
-  key[k++] = camera->GetParallelProjection();
-  key[k++] = camera->GetUseHorizontalViewAngle();
-  key[k++] = center[0];
-  key[k++] = center[1];
-  key[k++] = camera->GetUseOffAxisProjection();
-  for (int i = 0; i < 16; ++i)
-  {
-    key[k++] = model[i];
-  }
-  key[k++] = width;
-  key[k++] = height;
-  key[k++] = aspect;
-  return key;
-}
-
-bool SameBits(const ViewKey& a, const ViewKey& b)
-{
-  return std::memcmp(a.data(), b.data(), sizeof(ViewKey)) == 0;
-}
 
 // For each point of the patch, an input point whose process id it shares:
 // its own input point, else one of a triangle it is on.
@@ -126,8 +85,10 @@ struct vtkSilhouetteSmoothingMapper::Internals
   // The base mesh's ghost triangles (indices among its polygons): another
   // piece's to draw, so hidden in every frame.
   std::vector<vtkIdType> Ghosts;
-  // The patch is for this view (and this base mesh, and Smoothing).
-  ViewKey LastView{};
+  // The patch is for the view of this time (and this base mesh, and
+  // Smoothing); the view is compared by value, as the filters compare it.
+  vtkSilhouetteFilterSupport::ViewTracker View;
+  vtkMTimeType PatchViewTime = 0;
   bool HavePatch = false;
   bool PatchSmoothed = false;
   vtkMTimeType CopiedSettingsTime = 0;
@@ -182,12 +143,12 @@ struct vtkSilhouetteSmoothingMapper::Internals
     vtkMatrix4x4::DeepCopy(model, act->GetMatrix());
     int width = 0, height = 0, x = 0, y = 0;
     ren->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-    const ViewKey key = KeyOf(camera, model, width, height, ren->GetTiledAspectRatio());
-    if (this->HavePatch && this->PatchSmoothed == smooth && SameBits(key, this->LastView))
+    const vtkMTimeType viewTime = this->View.Update(camera, model, { { width, height } });
+    if (this->HavePatch && this->PatchSmoothed == smooth && viewTime == this->PatchViewTime)
     {
       return;
     }
-    this->LastView = key;
+    this->PatchViewTime = viewTime;
     this->HavePatch = true;
     this->PatchSmoothed = smooth;
     self->ReplacedTriangleCount = 0;

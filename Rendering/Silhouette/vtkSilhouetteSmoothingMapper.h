@@ -43,7 +43,6 @@
 #include "SilhouetteSmoothingRenderingSilhouetteModule.h" // For export macro
 #include "vtkPolyDataMapper.h"
 
-#include <array>  // For the last view
 #include <memory> // For the internals
 
 class vtkSilhouetteSmoothingFilter;

@@ -1,0 +1,41 @@
+// The view a view-dependent filter or mapper last smoothed for, compared by
+// value (part of vtkSilhouetteFilterSupport, in a header of its own with
+// VTK types only, so that the render-time mapper's module can use it too).
+// Private to the modules' build (not wrapped, not installed).
+#ifndef vtkSilhouetteViewTracker_h
+#define vtkSilhouetteViewTracker_h
+
+#include "vtkTimeStamp.h"
+#include "vtkType.h"
+
+#include <array>
+
+class vtkCamera;
+
+namespace vtkSilhouetteFilterSupport
+{
+
+/// Remembers the last view a filter saw, compared by value. The camera's own
+/// MTime is not enough: renderers reset its clipping range every frame, which
+/// would re-run the filter for nothing, while a prop's matrix or a window's
+/// size can change without touching the camera at all. So the view is the
+/// camera's model-view matrix (position, orientation, model and user-view
+/// transforms) and its projection parameters (not the clipping range), the
+/// model matrix and the viewport, compared bitwise (a NaN in the view compares
+/// equal to itself instead of re-running the filter on every update).
+class ViewTracker
+{
+public:
+  /// The time the view last changed (updated by this call).
+  vtkMTimeType Update(vtkCamera* camera, const double model[16], std::array<int, 2> viewport);
+
+private:
+  std::array<double, 16 + 16 + 17 + 16> Last{};
+  std::array<int, 2> LastViewport{};
+  bool Have = false;
+  vtkTimeStamp Time;
+};
+
+} // namespace vtkSilhouetteFilterSupport
+
+#endif

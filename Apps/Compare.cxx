@@ -401,7 +401,11 @@ Options:
                         limit it does not shrink the shape) and against the
                         original itself; for ours also the folds (turned-over
                         triangles / cutting pairs) and the chord fallbacks,
-                        summed over the views (docs/fidelity.md)
+                        summed over the views, and for every method where its
+                        largest distance is: the view, and whether its outline
+                        lies outside the reference's there or inside it (a
+                        part shrunk, or a gap seen through the mesh)
+                        (docs/fidelity.md)
   --coarse-points original|reference
                         with --truth: move the coarse points onto the
                         original (default) or onto the reference; the

@@ -53,6 +53,23 @@ std::string Folds(const silhouette_eval::FidelityRow& row)
   return row.TurnedOver < 0 ? std::string("-") : Count(row.TurnedOver) + " / " + Count(row.Cutting);
 }
 
+// Where the largest distance to the reference is: "view 5, outside".
+std::string WorstPlace(const silhouette_eval::FidelityRow& row)
+{
+  return row.WorstView < 0
+    ? std::string("-")
+    : "view " + std::to_string(row.WorstView) + ", " + (row.WorstOutside ? "outside" : "inside");
+}
+
+// "+0.0442 / -0.0079 of the diagonal": how far the reference strays.
+std::string ReferenceStray(const silhouette_eval::FidelityResult& r)
+{
+  char text[96];
+  std::snprintf(
+    text, sizeof(text), "%+.4f / %+.4f of the diagonal", r.ReferenceOutside, r.ReferenceInside);
+  return text;
+}
+
 const char* CoarsePointSurface(const silhouette_eval::FidelityResult& r)
 {
   return r.CoarsePointsOnReference ? "reference" : "original";
@@ -62,15 +79,17 @@ void PrintText(const silhouette_eval::FidelityResult& r)
 {
   std::cout << "mesh " << r.Name << ": " << r.OriginalTriangles << " triangles, coarse "
             << r.CoarseTriangles << " (points on the " << CoarsePointSurface(r)
-            << "), reference (Butterfly) " << r.ReferenceTriangles << "\n";
-  std::printf("  %-31s %9s %9s %9s %11s %11s %8s %13s %7s\n", "method", "triangles", "mean", "max",
-    "mean(orig)", "max(orig)", "/coarse", "turned/cutting", "chord");
+            << "), reference (Butterfly) " << r.ReferenceTriangles << ", off the original by "
+            << ReferenceStray(r) << "\n";
+  std::printf("  %-31s %9s %9s %9s %11s %11s %8s %13s %7s  %s\n", "method", "triangles", "mean",
+    "max", "mean(orig)", "max(orig)", "/coarse", "turned/cutting", "chord", "max at");
   const double coarse = r.Rows.empty() ? 0.0 : r.Rows.front().Mean;
   for (const silhouette_eval::FidelityRow& row : r.Rows)
   {
-    std::printf("  %-31s %9.0f %9.3f %9.3f %11.3f %11.3f %8.2f %14s %7s\n", row.Method.c_str(),
+    std::printf("  %-31s %9.0f %9.3f %9.3f %11.3f %11.3f %8.2f %14s %7s  %s\n", row.Method.c_str(),
       row.Triangles, row.Mean, row.Max, row.MeanToOriginal, row.MaxToOriginal,
-      coarse > 0 ? row.Mean / coarse : 0.0, Folds(row).c_str(), Count(row.ChordFallbacks).c_str());
+      coarse > 0 ? row.Mean / coarse : 0.0, Folds(row).c_str(), Count(row.ChordFallbacks).c_str(),
+      WorstPlace(row).c_str());
   }
   std::cout.flush();
 }
@@ -83,10 +102,10 @@ void PrintMarkdown(const std::vector<silhouette_eval::FidelityResult>& results)
     const std::string name = r.Name.substr(r.Name.find_last_of('/') + 1);
     std::cout << "**" << name << "** (" << r.OriginalTriangles << " triangles; coarse "
               << r.CoarseTriangles << ", points on the " << CoarsePointSurface(r) << "; reference "
-              << r.ReferenceTriangles << ")\n\n";
+              << r.ReferenceTriangles << ", off the original by " << ReferenceStray(r) << ")\n\n";
     std::cout << "| method | triangles | mean px | max px | mean / coarse | mean px, original | "
-                 "max px, original | folds: turned over / cutting | chord fallbacks |\n"
-                 "|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+                 "max px, original | folds: turned over / cutting | chord fallbacks | max at |\n"
+                 "|---|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
     const double coarse = r.Rows.empty() ? 0.0 : r.Rows.front().Mean;
     for (const silhouette_eval::FidelityRow& row : r.Rows)
     {
@@ -94,7 +113,8 @@ void PrintMarkdown(const std::vector<silhouette_eval::FidelityResult>& results)
                 << Number(row.Mean, 3) << " | " << Number(row.Max, 2) << " | "
                 << Number(coarse > 0 ? row.Mean / coarse : 0.0, 2) << " | "
                 << Number(row.MeanToOriginal, 3) << " | " << Number(row.MaxToOriginal, 2) << " | "
-                << Folds(row) << " | " << Count(row.ChordFallbacks) << " |\n";
+                << Folds(row) << " | " << Count(row.ChordFallbacks) << " | " << WorstPlace(row)
+                << " |\n";
     }
     std::cout << "\n";
   }
@@ -110,7 +130,9 @@ void PrintJson(const std::vector<silhouette_eval::FidelityResult>& results)
               << ", \"original_triangles\": " << r.OriginalTriangles
               << ", \"coarse_triangles\": " << r.CoarseTriangles
               << ", \"coarse_points\": " << Quoted(CoarsePointSurface(r))
-              << ", \"reference_triangles\": " << r.ReferenceTriangles << ", \"methods\": [";
+              << ", \"reference_triangles\": " << r.ReferenceTriangles
+              << ", \"reference_outside\": " << Number(r.ReferenceOutside, 5)
+              << ", \"reference_inside\": " << Number(r.ReferenceInside, 5) << ", \"methods\": [";
     const double coarse = r.Rows.empty() ? 0.0 : r.Rows.front().Mean;
     for (std::size_t k = 0; k < r.Rows.size(); ++k)
     {
@@ -122,7 +144,9 @@ void PrintJson(const std::vector<silhouette_eval::FidelityResult>& results)
                 << ", \"mean_to_original\": " << Number(row.MeanToOriginal, 4)
                 << ", \"max_to_original\": " << Number(row.MaxToOriginal, 4)
                 << ", \"turned_over\": " << row.TurnedOver << ", \"cutting\": " << row.Cutting
-                << ", \"chord_fallbacks\": " << row.ChordFallbacks << "}";
+                << ", \"chord_fallbacks\": " << row.ChordFallbacks
+                << ", \"max_view\": " << row.WorstView
+                << ", \"max_side\": " << Quoted(row.WorstOutside ? "outside" : "inside") << "}";
     }
     std::cout << "]}";
   }

@@ -15,6 +15,7 @@
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
+#include "vtkImplicitPolyDataDistance.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPNTriangleFilter.h"
@@ -32,6 +33,7 @@
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 namespace silhouette_eval
@@ -109,12 +111,38 @@ vtkSmartPointer<vtkPolyData> WithAreaNormals(vtkPolyData* mesh)
 }
 
 void Add(FidelityRow& row, const BoundaryDistance& toReference, const BoundaryDistance& toOriginal,
-  int views)
+  int view, int views)
 {
+  if (row.WorstView < 0 || toReference.Max > row.Max)
+  {
+    row.WorstView = view;
+    row.WorstOutside = toReference.FarthestOutside;
+  }
   row.Mean += toReference.Mean / views;
   row.Max = std::max(row.Max, toReference.Max);
   row.MeanToOriginal += toOriginal.Mean / views;
   row.MaxToOriginal = std::max(row.MaxToOriginal, toOriginal.Max);
+}
+
+// The signed distances of `mesh`'s points from `surface` (positive
+// outside), largest outside and inside, over `surface`'s bounding-box diagonal.
+std::pair<double, double> SignedDistanceRange(vtkPolyData* mesh, vtkPolyData* surface)
+{
+  vtkNew<vtkImplicitPolyDataDistance> distance;
+  distance->SetInput(surface);
+  double outside = 0.0;
+  double inside = 0.0;
+  for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    mesh->GetPoint(p, x);
+    const double d = distance->EvaluateFunction(x);
+    outside = std::max(outside, d);
+    inside = std::min(inside, d);
+  }
+  const double diagonal = surface->GetLength();
+  return diagonal > 0.0 ? std::make_pair(outside / diagonal, inside / diagonal)
+                        : std::make_pair(0.0, 0.0);
 }
 
 } // namespace
@@ -166,6 +194,8 @@ FidelityResult EvaluateFidelity(
   vtkSmartPointer<vtkPolyData> reference =
     InterpolatingRefinement(original, options.ReferenceLevels);
   result.ReferenceTriangles = static_cast<long>(reference->GetNumberOfPolys());
+  std::tie(result.ReferenceOutside, result.ReferenceInside) =
+    SignedDistanceRange(reference, original);
   result.CoarsePointsOnReference = options.CoarsePointsOnReference;
   if (options.CoarsePointsOnReference)
   {
@@ -226,7 +256,7 @@ FidelityResult EvaluateFidelity(
         mesh = smoothers[r - 1]->GetOutput();
       }
       const Mask mask = masks.Render(mesh, camera);
-      Add(rows[r], OutlineDeviation(mask, truth), OutlineDeviation(mask, originalMask),
+      Add(rows[r], OutlineDeviation(mask, truth), OutlineDeviation(mask, originalMask), view,
         options.Views);
       rows[r].Triangles += FieldCount(mesh, "OutputTriangleCount") / options.Views;
       if (r > 0)
@@ -276,7 +306,7 @@ FidelityResult EvaluateFidelity(
       vtkCamera* camera = framing->GetActiveCamera();
       const Mask mask = masks.Render(mesh, camera);
       Add(row, OutlineDeviation(mask, masks.Render(reference, camera)),
-        OutlineDeviation(mask, masks.Render(original, camera)), options.Views);
+        OutlineDeviation(mask, masks.Render(original, camera)), view, options.Views);
     }
     result.Rows.push_back(row);
   }

@@ -259,6 +259,14 @@ BoundaryDistance OutlineDeviation(const Mask& a, const Mask& b)
         {
           return BoundaryDistance{}; // one mask is empty: no outline to compare
         }
+        if (value > d.Result.Max || d.Result.FarthestX < 0)
+        {
+          d.Result.FarthestX = static_cast<int>(i % static_cast<std::size_t>(a.Width));
+          d.Result.FarthestY = static_cast<int>(i / static_cast<std::size_t>(a.Width));
+          // A pixel of a's outline that b does not cover, or of b's that a
+          // covers: a lies outside b there.
+          d.Result.FarthestOutside = from == &boundaryA ? !b.Covered[i] : a.Covered[i] != 0;
+        }
         d.add(value);
       }
     }

@@ -53,6 +53,15 @@ struct BoundaryDistance
   double Mean = 0.0;
   double Max = 0.0;
   long Samples = 0;
+  /// OutlineDeviation(a, b) only: the first boundary pixel (in row-major
+  /// order, row 0 at the bottom) at distance Max, -1 when there is none, and
+  /// which side of b's outline a's outline lies on there: true when the
+  /// pixel is covered by a and not by b (a bulges out of b), false when it is
+  /// covered by b and not by a (a lies inside b: a part of it shrank, or a
+  /// gap opened through it where b is solid).
+  int FarthestX = -1;
+  int FarthestY = -1;
+  bool FarthestOutside = false;
 };
 
 /// Sub-pixel outline samples: wherever two 4-neighbour pixels differ, the
@@ -76,7 +85,8 @@ std::vector<float> DistanceTransform(
 
 /// The distance between two masks' outlines: every boundary pixel of each
 /// mask measured to the other's boundary by a distance transform; mean and
-/// max over both sets (symmetric). Samples is 0 when either mask is empty.
+/// max over both sets (symmetric), and where the max is. Samples is 0 when
+/// either mask is empty.
 BoundaryDistance OutlineDeviation(const Mask& a, const Mask& b);
 
 } // namespace silhouette_eval

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # The ParaView stage (issues 7 and 15): builds the ParaView plugin in ParaView/
 # (the filter, and the Smooth Silhouette Surface representation on the
-# render-time mapper) and runs its pvbatch tests (for each, an image test and
-# an MPI test on two ranks).
+# render-time mapper) and runs its tests: pvbatch tests (for each, an image
+# test and an MPI test on two ranks) and a test of the representation in the
+# paraview GUI.
 #
 # Debian's ParaView 5.11 cannot share a system with libvtk9-dev (installing
 # python3-paraview removes it), and the main suite needs libvtk9-dev. So this
@@ -45,7 +46,11 @@ packages=(
   # Our module: a compiler, GLM for the core, OpenSubdiv for vtkOpenSubdivRefiner.
   cmake make g++ libglm-dev libosd-dev
   # pvbatch renders through X: a virtual X server. Two ranks: Open MPI.
-  xvfb xauth openmpi-bin)
+  xvfb xauth openmpi-bin
+  # The GUI test (paraview.RepresentationGUI): ImageMagick's import captures
+  # the screen; the GUI's text needs a font (paraview pulls this one in
+  # today; named so that it stays) and its icons, Qt's SVG plugin.
+  imagemagick fonts-dejavu-core libqt5svg5)
 
 log() { echo "paraview: $*"; }
 die() {
@@ -238,7 +243,8 @@ in_root cmake --build /build/paraview -j "$(nproc 2>/dev/null || echo 2)" >"$roo
   { grep -B2 -A8 -m5 'error' "$root/build/paraview/build.log" >&2 || tail -40 "$root/build/paraview/build.log" >&2; die "building the plugin failed"; }
 step_end "plugin build"
 
-# 5. The tests, under a private X server (pvbatch renders through X). Its
+# 5. The tests, under a private X server (pvbatch renders through X; the GUI
+# test's baseline is a capture of this 1280x1024 screen). Its
 # display number is chosen here, not by xvfb-run -a inside the root: the root
 # cannot see the host's X lock files, but shares its abstract X sockets, so
 # it would pick :99 where the host's own xvfb-run may already serve.
@@ -267,7 +273,7 @@ failed="$(sed -n 's/.*, \([0-9][0-9]*\) tests failed out of.*/\1/p' "$root/build
 total="${total:-0}"
 failed="${failed:-0}"
 # The tests' own figures (ctest shows a passing test's output only in its log).
-grep -hE '^(input triangles|output triangles|silhouette|image difference|ranks|PerturbVertices|camera move|SilhouetteTolerance|interactive render|cells selected|piece [0-9]|the reader|pose [0-9]|  [a-z])' \
+grep -hE '^(GUI |input triangles|output triangles|silhouette|image difference|ranks|PerturbVertices|camera move|SilhouetteTolerance|interactive render|cells selected|piece [0-9]|the reader|pose [0-9]|  [a-z])' \
   "$root/build/paraview/Testing/Temporary/LastTest.log" 2>/dev/null | sed 's/^/paraview:   /' || true
 summary=""
 for timing in "${timings[@]}"; do summary+="${summary:+, }$timing"; done

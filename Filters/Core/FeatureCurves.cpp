@@ -54,11 +54,18 @@ std::vector<double> dihedralCosines(const std::vector<glm::dvec3>& points,
       ++count[e];
     }
   }
-  auto faceNormal = [&](Id t) {
-    const Triangle& tri = triangles[static_cast<std::size_t>(t)];
+  // Each triangle's unit normal once (an edge's two triangles each have
+  // three edges): the same values as computing them per edge.
+  std::vector<glm::dvec3> faceNormals(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const Triangle& tri = triangles[t];
     const glm::dvec3& a = points[static_cast<std::size_t>(tri[0])];
-    return safeNormalize(glm::cross(
+    faceNormals[t] = safeNormalize(glm::cross(
       points[static_cast<std::size_t>(tri[1])] - a, points[static_cast<std::size_t>(tri[2])] - a));
+  }
+  auto faceNormal = [&](Id t) {
+    return faceNormals[static_cast<std::size_t>(t)];
   };
   std::vector<double> cosines(table.edgeCount(), std::nan(""));
   for (std::size_t e = 0; e < table.edgeCount(); ++e)

@@ -10,16 +10,6 @@
 namespace silsmooth
 {
 
-glm::dvec3 safeNormalize(const glm::dvec3& normal)
-{
-  const double length = glm::length(normal);
-  if (!(length > 1e-300) || !std::isfinite(length))
-  {
-    return glm::dvec3(0.0);
-  }
-  return normal / length;
-}
-
 namespace
 {
 

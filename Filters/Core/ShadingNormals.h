@@ -5,7 +5,10 @@
 
 #include "MeshTopology.h"
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
+
+#include <cmath>
 #include <vector>
 
 namespace silsmooth
@@ -41,7 +44,16 @@ std::vector<glm::dvec3> vertexNormals(const std::vector<glm::dvec3>& points,
   const std::vector<Triangle>& triangles, NormalWeighting weighting);
 
 /// Normalises `normal`, or returns the zero vector when it is too short to
-/// have a direction (zero, denormal, or not finite).
-glm::dvec3 safeNormalize(const glm::dvec3& normal);
+/// have a direction (zero, denormal, or not finite). Inline: the hot loops
+/// (face and vertex normals, dihedral angles) call it per triangle.
+inline glm::dvec3 safeNormalize(const glm::dvec3& normal)
+{
+  const double length = glm::length(normal);
+  if (!(length > 1e-300) || !std::isfinite(length))
+  {
+    return glm::dvec3(0.0);
+  }
+  return normal / length;
+}
 
 } // namespace silsmooth

@@ -102,78 +102,60 @@ void TriangleGrid::build()
   }
   this->Origin = low;
   this->CellSize = cell;
+  this->InverseCellSize = 1.0 / cell;
   for (int axis = 0; axis < 3; ++axis)
   {
     this->Cells[axis] = static_cast<int>(std::floor(size[axis] / cell)) + 1;
   }
   const std::size_t cellCount = static_cast<std::size_t>(this->Cells[0]) *
     static_cast<std::size_t>(this->Cells[1]) * static_cast<std::size_t>(this->Cells[2]);
+  // Two passes over the triangles: count per cell (and note each triangle's
+  // first cell), then fill (compressed rows, each cell's triangles in
+  // ascending order).
   this->FirstCell.assign(count, { { 0, 0, 0 } });
+  this->Offsets.assign(cellCount + 1, 0);
+  auto forEachCell = [this](std::size_t t, auto&& visit) {
+    const int i0 = this->cellIndex(this->Low[t].x, 0);
+    const int i1 = this->cellIndex(this->High[t].x, 0);
+    const int j0 = this->cellIndex(this->Low[t].y, 1);
+    const int j1 = this->cellIndex(this->High[t].y, 1);
+    const int k0 = this->cellIndex(this->Low[t].z, 2);
+    const int k1 = this->cellIndex(this->High[t].z, 2);
+    for (int k = k0; k <= k1; ++k)
+    {
+      for (int j = j0; j <= j1; ++j)
+      {
+        const std::size_t row =
+          (static_cast<std::size_t>(k) * this->Cells[1] + static_cast<std::size_t>(j)) *
+          this->Cells[0];
+        for (int i = i0; i <= i1; ++i)
+        {
+          visit(row + static_cast<std::size_t>(i));
+        }
+      }
+    }
+    return std::array<int, 3>{ { i0, j0, k0 } };
+  };
   for (std::size_t t = 0; t < count; ++t)
   {
     if (this->Low[t].x <= this->High[t].x)
     {
-      this->FirstCell[t] = { { this->cellIndex(this->Low[t].x, 0),
-        this->cellIndex(this->Low[t].y, 1), this->cellIndex(this->Low[t].z, 2) } };
+      this->FirstCell[t] = forEachCell(t, [this](std::size_t c) { ++this->Offsets[c + 1]; });
     }
   }
-  // Two passes: count per cell, then fill (compressed rows).
-  this->Offsets.assign(cellCount + 1, 0);
-  for (int pass = 0; pass < 2; ++pass)
+  for (std::size_t c = 1; c <= cellCount; ++c)
   {
-    std::vector<std::size_t> next;
-    if (pass == 1)
-    {
-      for (std::size_t c = 1; c <= cellCount; ++c)
-      {
-        this->Offsets[c] += this->Offsets[c - 1];
-      }
-      this->Entries.resize(this->Offsets[cellCount]);
-      next.assign(this->Offsets.begin(), this->Offsets.end() - 1);
-    }
-    for (std::size_t t = 0; t < count; ++t)
-    {
-      if (!(this->Low[t].x <= this->High[t].x))
-      {
-        continue;
-      }
-      const int i0 = this->cellIndex(this->Low[t].x, 0);
-      const int i1 = this->cellIndex(this->High[t].x, 0);
-      const int j0 = this->cellIndex(this->Low[t].y, 1);
-      const int j1 = this->cellIndex(this->High[t].y, 1);
-      const int k0 = this->cellIndex(this->Low[t].z, 2);
-      const int k1 = this->cellIndex(this->High[t].z, 2);
-      for (int k = k0; k <= k1; ++k)
-      {
-        for (int j = j0; j <= j1; ++j)
-        {
-          for (int i = i0; i <= i1; ++i)
-          {
-            const std::size_t c =
-              (static_cast<std::size_t>(k) * this->Cells[1] + j) * this->Cells[0] + i;
-            if (pass == 0)
-            {
-              ++this->Offsets[c + 1];
-            }
-            else
-            {
-              this->Entries[next[c]++] = static_cast<Id>(t);
-            }
-          }
-        }
-      }
-    }
+    this->Offsets[c] += this->Offsets[c - 1];
   }
-}
-
-int TriangleGrid::cellIndex(double x, int axis) const
-{
-  const double c = std::floor((x - this->Origin[axis]) / this->CellSize);
-  if (!(c >= 0.0))
+  this->Entries.resize(this->Offsets[cellCount]);
+  std::vector<std::size_t> next(this->Offsets.begin(), this->Offsets.end() - 1);
+  for (std::size_t t = 0; t < count; ++t)
   {
-    return 0;
+    if (this->Low[t].x <= this->High[t].x)
+    {
+      forEachCell(t, [&](std::size_t c) { this->Entries[next[c]++] = static_cast<Id>(t); });
+    }
   }
-  return static_cast<int>(std::min(c, static_cast<double>(this->Cells[axis] - 1)));
 }
 
 void TriangleGrid::query(const glm::dvec3& low, const glm::dvec3& high, std::vector<Id>& out) const

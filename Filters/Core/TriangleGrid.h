@@ -13,7 +13,9 @@
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace silsmooth
@@ -36,10 +38,23 @@ public:
 
 private:
   void build();
-  int cellIndex(double x, int axis) const;
+  /// The cell along `axis` that coordinate x falls in, clamped to the grid.
+  /// Monotonic in x (a product with a positive constant, then floor), which
+  /// is all that queries need: a box that meets another has a cell range
+  /// that meets the other's.
+  int cellIndex(double x, int axis) const
+  {
+    const double c = std::floor((x - this->Origin[axis]) * this->InverseCellSize);
+    if (!(c >= 0.0))
+    {
+      return 0;
+    }
+    return static_cast<int>(std::min(c, static_cast<double>(this->Cells[axis] - 1)));
+  }
 
   glm::dvec3 Origin{ 0.0 };
   double CellSize = 1.0;
+  double InverseCellSize = 1.0;
   int Cells[3] = { 0, 0, 0 };
   /// Triangles of cell c: Entries[Offsets[c] .. Offsets[c + 1]).
   std::vector<std::size_t> Offsets;

@@ -8,11 +8,6 @@
 namespace silsmooth
 {
 
-double ViewGeometry::visibility(const glm::dvec3& point, const glm::dvec3& normal) const
-{
-  return glm::dot(normal, this->towardViewerFrom(point));
-}
-
 bool ViewGeometry::toPixels(const glm::dvec3& point, glm::dvec2& pixel) const
 {
   const glm::dvec4 clip = this->ModelToClip * glm::dvec4(point, 1.0);

@@ -3,6 +3,7 @@
 // points map to viewport pixels (for the pixel tolerance of the sampling).
 #pragma once
 
+#include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -32,7 +33,11 @@ struct ViewGeometry
   }
 
   /// The visibility value g(V) = N_V . D_V; V is visible when g >= 0 (paper II).
-  double visibility(const glm::dvec3& point, const glm::dvec3& normal) const;
+  /// Inline: the visibility pass calls it for every vertex every frame.
+  double visibility(const glm::dvec3& point, const glm::dvec3& normal) const
+  {
+    return glm::dot(normal, this->towardViewerFrom(point));
+  }
 
   /// Projects a model point to viewport pixels. Returns false when the point
   /// is on or behind the eye plane (no finite pixel position).

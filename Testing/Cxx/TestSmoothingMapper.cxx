@@ -10,7 +10,9 @@
 // input cell as the filter's output does (through its OriginalCellId).
 // Zoomed in, part of the silhouette is outside the view: the mapper leaves
 // it as it is (FrustumCulling, on in the mapper, off in the filter), and
-// the images are still the same. Ghost cells (another piece's) are never
+// the images are still the same. So they are with a clipping plane across
+// the mesh, and with the actor translucent (each case also shows that the
+// mapper without the plane, or opaque, fails the check). Ghost cells (another piece's) are never
 // re-meshed by the filter and never drawn by the mapper: its image is the
 // filter's output with the ghost cells left out.
 #include "vtkActor.h"
@@ -26,6 +28,8 @@
 #include "vtkImageData.h"
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
+#include "vtkPlane.h"
+#include "vtkPlaneCollection.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -299,6 +303,10 @@ int TestSmoothingMapper(int argc, char* argv[])
     vtkPolyData* Mesh;
     Colouring How;
     double Zoom = 1.3;
+    /// A clipping plane through the mesh's centre, on both mappers.
+    bool Clipped = false;
+    /// The actors' opacity (below 1: the translucent pass).
+    double Opacity = 1.0;
   };
   const Case cases[] = { { "sphere", sphere->GetOutput(), Colouring::Plain },
     { "torus", torus->GetOutput(), Colouring::Plain }, { "bunny", bunny, Colouring::Plain },
@@ -306,7 +314,12 @@ int TestSmoothingMapper(int argc, char* argv[])
     { "torus, cell scalars", torus->GetOutput(), Colouring::CellScalars },
     { "sphere, texture", sphere->GetOutput(), Colouring::Texture },
     { "bunny, texture", bunny, Colouring::Texture },
-    { "torus, zoomed in", torus->GetOutput(), Colouring::Plain, 3.0 } };
+    { "torus, zoomed in", torus->GetOutput(), Colouring::Plain, 3.0 },
+    { "bunny, clipped", bunny, Colouring::Plain, 1.3, true },
+    { "torus, clipped", torus->GetOutput(), Colouring::Plain, 1.3, true },
+    { "bunny, translucent", bunny, Colouring::Plain, 1.3, false, 0.5 },
+    { "torus, translucent, point scalars", torus->GetOutput(), Colouring::PointScalars, 1.3, false,
+      0.5 } };
 
   bool ok = true;
   for (const Case& c : cases)
@@ -328,6 +341,22 @@ int TestSmoothingMapper(int argc, char* argv[])
     mapper->SetInputData(mesh);
     Configure(mapper, viaMapper.Actor, c.How, mapperTexture);
     viaMapper.Actor->SetMapper(mapper);
+    for (Scene* scene : { &viaFilter, &viaMapper })
+    {
+      scene->Actor->GetProperty()->SetOpacity(c.Opacity);
+    }
+    if (c.Clipped)
+    {
+      // Oblique, through the centre: it cuts across silhouette triangles.
+      const double* centre = mesh->GetCenter();
+      for (vtkMapper* m : { static_cast<vtkMapper*>(plain), static_cast<vtkMapper*>(mapper) })
+      {
+        vtkNew<vtkPlane> plane;
+        plane->SetOrigin(centre[0], centre[1], centre[2]);
+        plane->SetNormal(0.6, -0.3, 0.74);
+        m->AddClippingPlane(plane);
+      }
+    }
 
     long worst = 0;
     long leastUnsmoothed = -1;
@@ -348,6 +377,24 @@ int TestSmoothingMapper(int argc, char* argv[])
       {
         std::printf("FAIL: %s: the mapper replaced no triangle\n", c.Name);
         ok = false;
+      }
+      if (view == 0 && (c.Clipped || c.Opacity < 1.0))
+      {
+        // The wrong variant: the mapper without the plane, or opaque, must
+        // fail the check, or the case does not test what it names.
+        vtkSmartPointer<vtkPlaneCollection> planes = mapper->GetClippingPlanes();
+        mapper->SetClippingPlanes(static_cast<vtkPlaneCollection*>(nullptr));
+        viaMapper.Actor->GetProperty()->SetOpacity(1.0);
+        const long without = Differing(viaMapper.Pixels(), expected);
+        mapper->SetClippingPlanes(planes);
+        viaMapper.Actor->GetProperty()->SetOpacity(c.Opacity);
+        std::printf("%s: %s, %ld pixels differ\n", c.Name,
+          c.Clipped ? "without the clipping plane" : "opaque", without);
+        if (without <= MaximumDifferingPixels)
+        {
+          std::printf("FAIL: %s: the check cannot tell\n", c.Name);
+          ok = false;
+        }
       }
     }
     std::printf("%s: at most %ld pixels differ from the filter's image over %d views "

@@ -1271,10 +1271,19 @@ private:
   void keepOutputFacingOut()
   {
     const std::vector<std::pair<Id, glm::dvec3>>& moved = this->Result.MovedPoints;
-    auto isMoved = [&moved](Id v) {
-      const auto it = std::lower_bound(moved.begin(), moved.end(), v,
-        [](const std::pair<Id, glm::dvec3>& m, Id id) { return m.first < id; });
-      return it != moved.end() && it->first == v;
+    // A mark per mesh point (moved points are mesh points), set here and
+    // cleared below: the scan over every triangle reads a byte per corner
+    // instead of searching the moved list (at 1.3M triangles that search
+    // was a third of a frame).
+    std::vector<unsigned char>& mark = this->MovedMark;
+    mark.resize(this->Mesh.points().size(), 0);
+    for (const auto& m : moved)
+    {
+      mark[static_cast<std::size_t>(m.first)] = 1;
+    }
+    auto isMoved = [&mark](Id v) {
+      return v >= 0 && static_cast<std::size_t>(v) < mark.size() &&
+        mark[static_cast<std::size_t>(v)] != 0;
     };
     auto touchesMoved = [&isMoved](const Triangle& t) {
       return isMoved(t[0]) || isMoved(t[1]) || isMoved(t[2]);
@@ -1302,6 +1311,10 @@ private:
         around.push_back(t);
       }
     }
+    for (const auto& m : moved)
+    {
+      mark[static_cast<std::size_t>(m.first)] = 0;
+    }
     keepTrianglesFacingOut(
       this->Result.MovedPoints, around, [this](Id id) { return this->positionOf(id); },
       [this](Id id) { return this->normalOf(id); });
@@ -1317,6 +1330,7 @@ private:
   std::vector<double> G;
   std::size_t Culled = 0; // silhouette triangles outside the frustum
   std::vector<Id> Silhouette;
+  std::vector<unsigned char> MovedMark; // keepOutputFacingOut's, all 0 between calls
   std::vector<EdgeSilhouettePoint> EdgePoints;
   std::vector<int> FeatureSampleCounts;
   std::unordered_map<Id, std::vector<std::pair<double, Id>>> FeatureSamplePoints;

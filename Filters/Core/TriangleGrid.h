@@ -36,6 +36,9 @@ public:
 
   bool empty() const { return this->Offsets.empty(); }
 
+  /// The edge length of the grid's cubic cells.
+  double cellSize() const { return this->CellSize; }
+
 private:
   void build();
   /// The cell along `axis` that coordinate x falls in, clamped to the grid.

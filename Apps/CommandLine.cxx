@@ -25,8 +25,8 @@ Commands:
   smooth INPUT [-o OUTPUT] [--lines-output LINES.vtp] [--json] [camera options]
       smooth the silhouette of INPUT for one view, optionally write the
       result, and print figures about it
-  render INPUT -o IMAGE.png [--style STYLE] [--no-smoothing] [--json]
-         [camera options]
+  render INPUT -o IMAGE.png [--style STYLE] [--no-smoothing] [--hidden-lines]
+         [--json] [camera options]
       render INPUT offscreen to a PNG image and print the same figures
   generate sphere|torus -o OUTPUT [shape options]
       write an analytic test mesh with exact normals
@@ -102,7 +102,7 @@ Options:
 std::string RenderHelp()
 {
   return R"(Usage: silhouette render INPUT -o IMAGE.png [--style STYLE] [--no-smoothing]
-                        [--json] [camera options]
+                        [--hidden-lines] [--json] [camera options]
 
 Reads INPUT like 'silhouette smooth', smooths its silhouette for the view of
 the camera options, renders it offscreen at --size with that same camera
@@ -122,13 +122,15 @@ Options:
                                         triangles the smoothing made
                                         (NewGeometry > 0) in red and the
                                         others dark grey
-                          lines         the smoothed silhouette polylines
-                                        (the filter's second output) in
+                          lines         the visible parts of the smoothed
+                                        silhouette polylines (the filter's
+                                        second output, with the parts the
+                                        smoothed surface hides left out:
+                                        vtkSilhouetteLineVisibility) in
                                         black, 2 pixels wide, on white,
-                                        without the mesh (so hidden parts
-                                        of the silhouette show too)
+                                        without the mesh
                           charcoal, lazy, hand, rough
-                                        the same polylines drawn as
+                                        the same visible lines drawn as
                                         stylized strokes (Kim and Choe,
                                         vtkStylizedStrokeFilter), black,
                                         2 pixels wide: charcoal a fine
@@ -141,12 +143,16 @@ Options:
                                         the edges 'lines' draws then
   --no-smoothing          draw the unsmoothed input in the same style: shaded
                           still uses the filter's shading normals; lines draws
-                          the face-based silhouette (vtkFaceSilhouetteLines:
-                          in each silhouette triangle the straight segment
+                          the visible parts of the face-based silhouette
+                          (vtkFaceSilhouetteLines: in each silhouette
+                          triangle the straight segment
                           between the zero crossings of the linearly
                           interpolated N.(E-V) on its two mixed edges, with
                           the filter's normals) (default: smoothed). The
                           figures still describe the smoothing.
+  --hidden-lines          with --style lines, draw the parts of the lines the
+                          surface hides too, in light grey (default: left
+                          out)
   --lines-output FILE     also write the smoothed silhouette polylines to
                           FILE, a .vtp (default: nothing is written)
   --json                  print the figures as one JSON object instead of text
@@ -885,6 +891,11 @@ CommandLine ParseCommandLine(int argc, char* argv[])
       {
         RejectInlineValue(option);
         render.NoSmoothing = true;
+      }
+      else if (option.Name == "--hidden-lines")
+      {
+        RejectInlineValue(option);
+        render.HiddenLines = true;
       }
       else
       {

@@ -45,6 +45,7 @@ struct RenderOptions
   std::optional<std::string> LinesOutput; ///< the silhouette polylines (.vtp)
   RenderStyle Style = RenderStyle::Shaded;
   bool NoSmoothing = false;
+  bool HiddenLines = false; ///< lines style: the hidden parts too, in grey
   bool Json = false;
   CameraOptions Camera;
 };

@@ -15,6 +15,7 @@
 #include <vtkDataArray.h>
 #include <vtkFaceSilhouetteLines.h>
 #include <vtkFloatArray.h>
+#include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
@@ -23,6 +24,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkSilhouetteLineVisibility.h>
 #include <vtkSilhouetteSmoothingFilter.h>
 #include <vtkSilhouetteSmoothingMapper.h>
 #include <vtkStylizedStrokeFilter.h>
@@ -171,21 +173,38 @@ void WriteWindowPng(vtkRenderWindow* window, const std::string& path)
 namespace
 {
 
-vtkSmartPointer<vtkPolyDataAlgorithm> MakeStrokes(vtkRenderer* renderer,
-  vtkSilhouetteSmoothingFilter* filter, vtkPolyData* input, RenderStyle style, bool smoothed)
+// The visible pieces of the silhouette lines: the smoothed silhouette
+// against the smoothed surface, or (unsmoothed) the face-based silhouette
+// against the input (vtkSilhouetteLineVisibility).
+vtkSmartPointer<vtkSilhouetteLineVisibility> MakeVisibleLines(
+  vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter, vtkPolyData* input, bool smoothed)
 {
-  auto strokes = vtkSmartPointer<vtkStylizedStrokeFilter>::New();
-  VtkErrorLog::Instance().Watch(strokes);
+  auto visible = vtkSmartPointer<vtkSilhouetteLineVisibility>::New();
+  VtkErrorLog::Instance().Watch(visible);
   if (smoothed)
   {
-    strokes->SetInputConnection(filter->GetOutputPort(1));
+    visible->SetInputConnection(filter->GetOutputPort(1));
+    visible->SetSurfaceConnection(filter->GetOutputPort(0));
   }
   else
   {
     // The face-based silhouette lines, already chained into polylines, so
     // the brushes run along whole strokes.
-    strokes->SetInputConnection(MakeFaceSilhouette(input, renderer)->GetOutputPort());
+    visible->SetInputConnection(MakeFaceSilhouette(input, renderer)->GetOutputPort());
+    visible->SetSurfaceData(input);
   }
+  visible->SetRenderer(renderer);
+  visible->PassHiddenLinesOff();
+  return visible;
+}
+
+vtkSmartPointer<vtkPolyDataAlgorithm> MakeStrokes(vtkRenderer* renderer,
+  vtkSilhouetteSmoothingFilter* filter, vtkPolyData* input, RenderStyle style, bool smoothed)
+{
+  auto strokes = vtkSmartPointer<vtkStylizedStrokeFilter>::New();
+  VtkErrorLog::Instance().Watch(strokes);
+  // Brushes run along the visible pieces only.
+  strokes->SetInputConnection(MakeVisibleLines(renderer, filter, input, smoothed)->GetOutputPort());
   strokes->SetCamera(renderer->GetActiveCamera());
   // Per brush, as fractions of the silhouette's size: high frequency for
   // charcoal, low frequency for lazy, low magnitude for hand, high for rough
@@ -220,7 +239,7 @@ vtkSmartPointer<vtkPolyDataAlgorithm> MakeStrokes(vtkRenderer* renderer,
 } // namespace
 
 void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter, vtkPolyData* input,
-  RenderStyle style, bool smoothed)
+  RenderStyle style, bool smoothed, bool hiddenLines)
 {
   switch (style)
   {
@@ -263,9 +282,27 @@ void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter,
     }
     case RenderStyle::Lines:
     {
-      vtkSmartPointer<vtkActor> actor = smoothed
-        ? MakeActor(filter->GetOutputPort(1))
-        : MakeActor(MakeFaceSilhouette(input, renderer)->GetOutputPort());
+      vtkSmartPointer<vtkSilhouetteLineVisibility> lines =
+        MakeVisibleLines(renderer, filter, input, smoothed);
+      vtkSmartPointer<vtkActor> actor = MakeActor(lines->GetOutputPort());
+      if (hiddenLines)
+      {
+        // The hidden pieces too, light grey: colour by the cell array Visible.
+        lines->PassHiddenLinesOn();
+        vtkNew<vtkLookupTable> shades;
+        shades->SetNumberOfTableValues(2);
+        shades->SetTableRange(0.0, 1.0);
+        shades->SetTableValue(0, 0.7, 0.7, 0.7);
+        shades->SetTableValue(1, Black[0], Black[1], Black[2]);
+        shades->Build();
+        vtkMapper* mapper = actor->GetMapper();
+        mapper->SetLookupTable(shades);
+        mapper->UseLookupTableScalarRangeOn();
+        mapper->SetScalarModeToUseCellFieldData();
+        mapper->SelectColorArray("Visible");
+        mapper->SetColorModeToMapScalars();
+        mapper->ScalarVisibilityOn();
+      }
       vtkProperty* property = actor->GetProperty();
       property->SetColor(Black[0], Black[1], Black[2]);
       property->SetLineWidth(2.0);
@@ -349,7 +386,8 @@ void RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   }
   else
   {
-    AddStyleActors(view.Renderer, filter, input, options.Style, !options.NoSmoothing);
+    AddStyleActors(
+      view.Renderer, filter, input, options.Style, !options.NoSmoothing, options.HiddenLines);
   }
   // Clip on what is drawn: the smoothed silhouette bulges past the input's bounds.
   view.Renderer->ResetCameraClippingRange();

@@ -57,9 +57,11 @@ void WriteWindowPng(vtkRenderWindow* window, const std::string& path);
  * Adds to `renderer` the actors that draw `style`: of the filter's output, or
  * of `input` when `smoothed` is false (shaded then uses the filter's shading
  * normals, so the two differ in geometry only). The filter must be up to date.
+ * The line styles draw the visible parts of the lines; `hiddenLines` adds the
+ * hidden parts of the lines style in light grey.
  */
 void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter, vtkPolyData* input,
-  RenderStyle style, bool smoothed);
+  RenderStyle style, bool smoothed, bool hiddenLines = false);
 
 /**
  * Draws `options.Style` of the filter's output (or of `input` with

@@ -201,6 +201,7 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
   LinePiece current;
   current.Visible = visible(polyline.front());
   current.Points.push_back(polyline.front());
+  current.Along.push_back(0.0);
   for (std::size_t i = 1; i < polyline.size(); ++i)
   {
     const glm::dvec3& a = polyline[i - 1];
@@ -217,14 +218,19 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
         const double middle = 0.5 * (low + high);
         (visible(a + middle * (b - a)) == current.Visible ? low : high) = middle;
       }
-      const glm::dvec3 change = a + (0.5 * (low + high)) * (b - a);
+      const double fraction = 0.5 * (low + high);
+      const glm::dvec3 change = a + fraction * (b - a);
+      const double along = static_cast<double>(i - 1) + fraction;
       current.Points.push_back(change);
+      current.Along.push_back(along);
       pieces.push_back(std::move(current));
       current = LinePiece();
       current.Visible = state;
       current.Points.push_back(change);
+      current.Along.push_back(along);
     }
     current.Points.push_back(b);
+    current.Along.push_back(static_cast<double>(i));
   }
   pieces.push_back(std::move(current));
   return pieces;

@@ -69,6 +69,10 @@ private:
 struct LinePiece
 {
   std::vector<glm::dvec3> Points;
+  /// Where each point is along the input polyline: vertex i at exactly i, a
+  /// change point between vertices i and i + 1 at i + its fraction of the
+  /// segment (for interpolating the vertices' attributes).
+  std::vector<double> Along;
   bool Visible = true;
 };
 

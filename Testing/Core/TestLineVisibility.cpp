@@ -40,9 +40,23 @@ void expectWellFormed(const std::vector<LinePiece>& pieces, const std::vector<gl
 {
   ASSERT_FALSE(pieces.empty());
   std::vector<glm::dvec3> vertices;
+  double along = 0.0;
   for (std::size_t k = 0; k < pieces.size(); ++k)
   {
     ASSERT_GE(pieces[k].Points.size(), 2u);
+    ASSERT_EQ(pieces[k].Along.size(), pieces[k].Points.size());
+    for (std::size_t i = 0; i < pieces[k].Points.size(); ++i)
+    {
+      // Ascending, and a point's place along the line is where it is.
+      const double a = pieces[k].Along[i];
+      EXPECT_GE(a, along);
+      along = a;
+      const std::size_t i0 = std::min(static_cast<std::size_t>(a), line.size() - 1);
+      const glm::dvec3 expected = i0 + 1 < line.size()
+        ? line[i0] + (a - static_cast<double>(i0)) * (line[i0 + 1] - line[i0])
+        : line[i0];
+      EXPECT_LT(glm::length(pieces[k].Points[i] - expected), 1e-12);
+    }
     if (k > 0)
     {
       EXPECT_EQ(pieces[k].Points.front(), pieces[k - 1].Points.back());

@@ -1,0 +1,89 @@
+/**
+ * @class   vtkSilhouetteLineVisibility
+ * @brief   splits lines into the pieces a surface hides from the camera and the pieces it
+ * does not
+ *
+ * Input 0: lines (polylines or lines, such as vtkSilhouetteSmoothingFilter's
+ * second output, the smoothed silhouette); input 1 (SetSurfaceConnection):
+ * the surface that may hide them (such as the same filter's first output),
+ * in the same model coordinates. The view is given as for every
+ * view-dependent filter of the module (vtkSilhouetteViewAlgorithm: a camera
+ * or a renderer, and the prop's matrix).
+ *
+ * A point of a line is hidden when the ray from it towards the eye crosses
+ * the surface farther than Tolerance from it: lines on the surface
+ * (silhouettes graze it) are not hidden by the triangles they lie on.
+ * Each line is split where its visibility changes, the change located by
+ * bisection along the segment; the output holds every input vertex, in
+ * order, plus a point at each change, shared by the pieces on its two sides.
+ *
+ * Output: one polyline per piece; the point array `Visible` and the cell
+ * array `Visible` (unsigned char, 1 visible, 0 hidden); the input's point
+ * data (interpolated at change points) and cell data (copied to each piece
+ * of the cell); the cell array `OriginalCellId` (the input line); field data
+ * `VisiblePieceCount` and `HiddenPieceCount`. With PassHiddenLines off, the
+ * hidden pieces are left out.
+ *
+ * Vertex cells, polygons and strips of input 0 are ignored (with a warning).
+ * Without a surface (input 1 empty) every line is visible.
+ * @sa vtkSilhouetteSmoothingFilter vtkSilhouetteViewAlgorithm
+ */
+#ifndef vtkSilhouetteLineVisibility_h
+#define vtkSilhouetteLineVisibility_h
+
+#include "SilhouetteSmoothingFiltersLinesModule.h" // For export macro
+#include "vtkSilhouetteViewAlgorithm.h"
+
+class vtkAlgorithmOutput;
+
+class SILHOUETTESMOOTHINGFILTERSLINES_EXPORT vtkSilhouetteLineVisibility
+  : public vtkSilhouetteViewAlgorithm
+{
+public:
+  static vtkSilhouetteLineVisibility* New();
+  vtkTypeMacro(vtkSilhouetteLineVisibility, vtkSilhouetteViewAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * The surface that hides the lines (input 1).
+   */
+  void SetSurfaceConnection(vtkAlgorithmOutput* output);
+  void SetSurfaceData(vtkDataObject* surface);
+  ///@}
+
+  ///@{
+  /**
+   * Hits nearer a line's point than this, along its ray to the eye, do not
+   * hide it, in the data's units. 0 (the default): the surface's mean edge
+   * length. Negative or NaN values are refused.
+   */
+  vtkSetMacro(Tolerance, double);
+  vtkGetMacro(Tolerance, double);
+  ///@}
+
+  ///@{
+  /**
+   * Keep the hidden pieces in the output (flagged 0 in `Visible`). Default on.
+   */
+  vtkSetMacro(PassHiddenLines, vtkTypeBool);
+  vtkGetMacro(PassHiddenLines, vtkTypeBool);
+  vtkBooleanMacro(PassHiddenLines, vtkTypeBool);
+  ///@}
+
+protected:
+  vtkSilhouetteLineVisibility();
+  ~vtkSilhouetteLineVisibility() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double Tolerance = 0.0;
+  vtkTypeBool PassHiddenLines = 1;
+
+private:
+  vtkSilhouetteLineVisibility(const vtkSilhouetteLineVisibility&) = delete;
+  void operator=(const vtkSilhouetteLineVisibility&) = delete;
+};
+
+#endif

@@ -20,7 +20,7 @@ import traceback
 
 from paraview import simple
 
-from SilhouetteTestUtils import load_representation_plugin, setting
+from SilhouetteTestUtils import load_representation_plugin, setting, show_bunny_view
 
 size = [640, 480]
 status_file = setting("SILHOUETTE_GUI_STATUS")
@@ -72,14 +72,7 @@ def scene():
     # The view's size on screen: the layout's preview mode, as View >
     # Preview sets it (the rest of the window is the GUI's own).
     simple.GetLayout(view).PreviewMode = size
-    view.OrientationAxesVisibility = 0
-    view.UseColorPaletteForBackground = 0
-    view.Background = [1.0, 1.0, 1.0]
-    view.CameraPosition = [16.0, 11.0, 22.0]
-    view.CameraFocalPoint = [0.0, 4.8, 0.0]
-    view.CameraViewUp = [0.0, 1.0, 0.0]
-    view.CameraViewAngle = 30.0
-    view.CameraParallelProjection = 0
+    show_bunny_view(view)
 
     reader = simple.PLYReader(registrationName="bunny_coarse.ply", FileNames=[setting("SILHOUETTE_DATA")])
     display = simple.Show(reader, view)

@@ -24,6 +24,19 @@ def load_plugin():
     return names["SilhouetteSmoothing"]
 
 
+def show_bunny_view(view):
+    """The look every image test shares: no orientation axes, white, and the
+    camera on the coarse bunny (three-quarter view from above)."""
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [1.0, 1.0, 1.0]
+    view.CameraPosition = [16.0, 11.0, 22.0]
+    view.CameraFocalPoint = [0.0, 4.8, 0.0]
+    view.CameraViewUp = [0.0, 1.0, 0.0]
+    view.CameraViewAngle = 30.0
+    view.CameraParallelProjection = 0
+
+
 def copy_camera(view, smoother):
     """Copies the render view's camera and size into the filter's properties:
     ParaView does not hand the view's vtkCamera to a filter."""

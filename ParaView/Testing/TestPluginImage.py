@@ -7,7 +7,7 @@ import sys
 
 from paraview import simple, servermanager
 
-from SilhouetteTestUtils import copy_camera, field_value, finish, image_error, load_plugin, setting, triangle_count
+from SilhouetteTestUtils import copy_camera, field_value, finish, image_error, load_plugin, setting, show_bunny_view, triangle_count
 
 SilhouetteSmoothing = load_plugin()
 simple._DisableFirstRenderCameraReset()
@@ -15,14 +15,7 @@ simple._DisableFirstRenderCameraReset()
 size = [640, 480]
 view = simple.CreateView("RenderView")
 view.ViewSize = size
-view.OrientationAxesVisibility = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [1.0, 1.0, 1.0]
-view.CameraPosition = [16.0, 11.0, 22.0]
-view.CameraFocalPoint = [0.0, 4.8, 0.0]
-view.CameraViewUp = [0.0, 1.0, 0.0]
-view.CameraViewAngle = 30.0
-view.CameraParallelProjection = 0
+show_bunny_view(view)
 
 reader = simple.PLYReader(FileNames=[setting("SILHOUETTE_DATA")])
 smoother = SilhouetteSmoothing(Input=reader)

@@ -17,7 +17,7 @@ from paraview import servermanager, simple
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 
-from SilhouetteTestUtils import finish, image_error, load_representation_plugin, setting
+from SilhouetteTestUtils import finish, image_error, load_representation_plugin, setting, show_bunny_view
 
 load_representation_plugin()
 simple._DisableFirstRenderCameraReset()
@@ -25,14 +25,7 @@ simple._DisableFirstRenderCameraReset()
 size = [640, 480]
 view = simple.CreateView("RenderView")
 view.ViewSize = size
-view.OrientationAxesVisibility = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [1.0, 1.0, 1.0]
-view.CameraPosition = [16.0, 11.0, 22.0]
-view.CameraFocalPoint = [0.0, 4.8, 0.0]
-view.CameraViewUp = [0.0, 1.0, 0.0]
-view.CameraViewAngle = 30.0
-view.CameraParallelProjection = 0
+show_bunny_view(view)
 
 reader = simple.PLYReader(FileNames=[setting("SILHOUETTE_DATA")])
 display = simple.Show(reader, view)

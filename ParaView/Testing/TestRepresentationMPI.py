@@ -21,7 +21,7 @@ from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
 from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
-from SilhouetteTestUtils import finish, image_error, load_representation_plugin, setting, write_pieces
+from SilhouetteTestUtils import finish, image_error, load_representation_plugin, setting, show_bunny_view, write_pieces
 
 ranks = vtkMultiProcessController.GetGlobalController().GetNumberOfProcesses()
 print("ranks: %d" % ranks)
@@ -74,14 +74,7 @@ parallel_file, whole_file = write_pieces(mesh, pieces, output_dir, "TestRepresen
 size = [640, 480]
 view = simple.CreateView("RenderView")
 view.ViewSize = size
-view.OrientationAxesVisibility = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [1.0, 1.0, 1.0]
-view.CameraPosition = [16.0, 11.0, 22.0]
-view.CameraFocalPoint = [0.0, 4.8, 0.0]
-view.CameraViewUp = [0.0, 1.0, 0.0]
-view.CameraViewAngle = 30.0
-view.CameraParallelProjection = 0
+show_bunny_view(view)
 
 # Rank i reads piece i; the whole mesh, a one-piece file, is read by rank 0.
 pieces = simple.XMLPartitionedPolydataReader(FileName=[parallel_file])

@@ -2,6 +2,7 @@
 // are exact: a square in front of a line (parallel view), a line just under
 // a surface (the tolerance), and a sphere in front of a square's border
 // (perspective), each point checked against the exact sphere.
+#include "EdgeClassification.h"
 #include "LineVisibility.h"
 #include "SilhouetteSmoother.h"
 
@@ -278,4 +279,62 @@ TEST(LineVisibility, TorusContoursAgainstTheExactTorus)
   EXPECT_GT(hidden, 10);
   EXPECT_GT(visible, 100);
   EXPECT_GT(selfHidden, 0); // measured: 5 of 242
+}
+
+TEST(LineVisibility, CubeShowsItsNineVisibleEdges)
+{
+  // Kim and Choe's crease edges of a cube (EdgeClassification), each edge a
+  // line, seen in perspective from a generic direction: three faces face the
+  // eye, so 9 edges are visible and the 3 that meet at the far corner are
+  // hidden. A hidden edge is hidden right up to its ends, where the
+  // occluding face comes within the tolerance (1e-6 here): a visible stub no
+  // longer than 1e-4 may remain there, and is not counted.
+  const std::vector<glm::dvec3> points{ { -1, -1, -1 }, { 1, -1, -1 }, { 1, 1, -1 }, { -1, 1, -1 },
+    { -1, -1, 1 }, { 1, -1, 1 }, { 1, 1, 1 }, { -1, 1, 1 } };
+  const std::vector<Triangle> triangles{ { { 0, 2, 1 } }, { { 0, 3, 2 } }, { { 4, 5, 6 } },
+    { { 4, 6, 7 } }, { { 0, 1, 5 } }, { { 0, 5, 4 } }, { { 1, 2, 6 } }, { { 1, 6, 5 } },
+    { { 2, 3, 7 } }, { { 2, 7, 6 } }, { { 3, 0, 4 } }, { { 3, 4, 7 } } };
+  const glm::dvec3 eye(5.0, 3.7, 4.3);
+  EdgeView edgeView;
+  edgeView.eye = eye;
+  const std::vector<FlaggedEdge> edges = classifyEdges(points, triangles, edgeView, 60.0);
+  const OcclusionMesh surface(points, triangles);
+  const ViewGeometry view = coretest::perspectiveFrom(eye);
+  const LineVisibilityParameters parameters{ 1e-6, 1e-9 };
+  int creases = 0;
+  int visibleEdges = 0;
+  int hiddenEdges = 0;
+  for (const FlaggedEdge& edge : edges)
+  {
+    if (!(edge.flags & CreaseEdge))
+    {
+      continue;
+    }
+    ++creases;
+    const std::vector<glm::dvec3> line{ points[static_cast<std::size_t>(edge.a)],
+      points[static_cast<std::size_t>(edge.b)] };
+    double visibleLength = 0.0;
+    double hiddenLength = 0.0;
+    for (const LinePiece& piece : splitByVisibility(surface, view, line, parameters))
+    {
+      const double length = glm::length(piece.Points.back() - piece.Points.front());
+      (piece.Visible ? visibleLength : hiddenLength) += length;
+    }
+    // Every edge is 2 long: wholly visible, or hidden but for stubs.
+    if (hiddenLength == 0.0)
+    {
+      EXPECT_NEAR(visibleLength, 2.0, 1e-12);
+      ++visibleEdges;
+    }
+    else
+    {
+      EXPECT_LT(visibleLength, 1e-4) << edge.a << "-" << edge.b;
+      ++hiddenEdges;
+      // The far corner (-1, -1, -1) is an end of each hidden edge.
+      EXPECT_TRUE(edge.a == 0 || edge.b == 0) << edge.a << "-" << edge.b;
+    }
+  }
+  EXPECT_EQ(creases, 12);
+  EXPECT_EQ(visibleEdges, 9);
+  EXPECT_EQ(hiddenEdges, 3);
 }

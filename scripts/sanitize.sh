@@ -35,7 +35,7 @@ fi
 export UBSAN_OPTIONS=print_stacktrace=1
 started=$SECONDS
 ASAN_OPTIONS=detect_leaks=1 ctest --output-on-failure \
-  -R '^core\.|^module\.Test(TopologyInvariants|NoFolds|BadInput|HostileMeshes|VisibilityMethod|BoundaryCurveSmoothing|FaceSilhouetteLines|PNTriangleFilter|ProgressiveMeshFilter|StylizedStrokes)$'
+  -R '^core\.|^module\.Test(TopologyInvariants|NoFolds|BadInput|HostileMeshes|VisibilityMethod|BoundaryCurveSmoothing|FaceSilhouetteLines|PNTriangleFilter|ProgressiveMeshFilter|StylizedStrokes|LineVisibilityFilter|OutlineDeviation)$'
 ASAN_OPTIONS=detect_leaks=0 "${display[@]}" ctest --output-on-failure \
   -R '^module\.Test(OpenSubdivRefiner|FilterPipeline|SphereAccuracy|SmoothingImages|OrbitCoherence|FeatureCurves|AssetMeshes|AssetImages)$'
 echo "sanitize: core and module tests in $((SECONDS - started)) s"

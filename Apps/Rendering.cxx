@@ -8,10 +8,12 @@
 #include "VtkErrorLog.h"
 
 #include <vtkActor.h>
+#include <vtkAppendPolyData.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
+#include <vtkCreaseAndBorderLines.h>
 #include <vtkDataArray.h>
 #include <vtkFaceSilhouetteLines.h>
 #include <vtkFloatArray.h>
@@ -173,26 +175,39 @@ void WriteWindowPng(vtkRenderWindow* window, const std::string& path)
 namespace
 {
 
-// The visible pieces of the silhouette lines: the smoothed silhouette
-// against the smoothed surface, or (unsmoothed) the face-based silhouette
-// against the input (vtkSilhouetteLineVisibility).
+// The visible pieces of a line drawing's lines: the smoothed silhouette and
+// the creases and borders of the smoothed surface, against that surface; or
+// (unsmoothed) the face-based silhouette and the input's creases and
+// borders, against the input (vtkSilhouetteLineVisibility).
 vtkSmartPointer<vtkSilhouetteLineVisibility> MakeVisibleLines(
   vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter, vtkPolyData* input, bool smoothed)
 {
+  auto edges = vtkSmartPointer<vtkCreaseAndBorderLines>::New();
+  VtkErrorLog::Instance().Watch(edges);
+  auto drawing = vtkSmartPointer<vtkAppendPolyData>::New();
   auto visible = vtkSmartPointer<vtkSilhouetteLineVisibility>::New();
   VtkErrorLog::Instance().Watch(visible);
   if (smoothed)
   {
-    visible->SetInputConnection(filter->GetOutputPort(1));
+    // The smoothed surface marks its creases by a normal per side.
+    edges->SetInputConnection(filter->GetOutputPort(0));
+    drawing->AddInputConnection(filter->GetOutputPort(1));
     visible->SetSurfaceConnection(filter->GetOutputPort(0));
   }
   else
   {
+    // The input's creases: by its own point normals, or without them by the
+    // angle the filter finds creases at.
+    edges->SetInputData(input);
+    edges->SetFeatureAngle(
+      filter->GetFeatureEdgeDetection() ? filter->GetFeatureAngle() : filter->GetFlatCreaseAngle());
     // The face-based silhouette lines, already chained into polylines, so
     // the brushes run along whole strokes.
-    visible->SetInputConnection(MakeFaceSilhouette(input, renderer)->GetOutputPort());
+    drawing->AddInputConnection(MakeFaceSilhouette(input, renderer)->GetOutputPort());
     visible->SetSurfaceData(input);
   }
+  drawing->AddInputConnection(edges->GetOutputPort());
+  visible->SetInputConnection(drawing->GetOutputPort());
   visible->SetRenderer(renderer);
   visible->PassHiddenLinesOff();
   return visible;

@@ -1,6 +1,7 @@
 #include "vtkFaceSilhouetteLines.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
@@ -12,6 +13,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkUnsignedCharArray.h"
 
 #include "FaceSilhouetteLines.h"
 #include "WeldedSurface.h"
@@ -156,6 +158,8 @@ int vtkFaceSilhouetteLines::RequestData(
     }
   }
   output->SetLines(polylines);
+  output->GetCellData()->AddArray(vtkSilhouetteFilterSupport::LineKindArray(
+    polylines->GetNumberOfCells(), vtkSilhouetteFilterSupport::SilhouetteLine));
 
   vtkNew<vtkIdTypeArray> triangleCount;
   triangleCount->SetName("SilhouetteTriangleCount");

@@ -46,6 +46,8 @@
  * - `EdgeParameter` (double): t such that the point is (1 - t) * first end +
  *   t * second end;
  * - every other input point array, interpolated linearly along the edge.
+ * Cell array `LineKind` (unsigned char, 0 = silhouette, as vtkCreaseAndBorderLines
+ * numbers the kinds of a line drawing).
  * Field data `SilhouetteTriangleCount` (vtkIdType): how many triangles the
  * lines cross (one segment each).
  *

@@ -571,4 +571,13 @@ void WriteTessellation(vtkPolyData* input, vtkPolyData* output, const Triangles&
     originalCell, newGeometry);
 }
 
+vtkSmartPointer<vtkUnsignedCharArray> LineKindArray(vtkIdType count, LineKindValue kind)
+{
+  auto array = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  array->SetName("LineKind");
+  array->SetNumberOfTuples(count);
+  array->FillValue(kind);
+  return array;
+}
+
 } // namespace vtkSilhouetteFilterSupport

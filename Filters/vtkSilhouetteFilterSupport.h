@@ -35,6 +35,7 @@ class vtkMatrix4x4;
 class vtkPolyData;
 class vtkProp3D;
 class vtkRenderer;
+class vtkUnsignedCharArray;
 
 namespace vtkSilhouetteFilterSupport
 {
@@ -156,6 +157,16 @@ void WriteMesh(vtkPolyData* input, vtkPolyData* output, const std::vector<glm::d
 /// input cell, NewGeometry 1 for every patch triangle (0 when `level` is 0).
 void WriteTessellation(vtkPolyData* input, vtkPolyData* output, const Triangles& mesh,
   const silsmooth::TessellationResult& result, int level);
+
+/// The cell array `LineKind` of the line filters (0 silhouette, 1 crease,
+/// 2 border: the kinds of a line drawing), `count` tuples of `kind`.
+enum LineKindValue : unsigned char
+{
+  SilhouetteLine = 0,
+  CreaseLine = 1,
+  BorderLine = 2
+};
+vtkSmartPointer<vtkUnsignedCharArray> LineKindArray(vtkIdType count, LineKindValue kind);
 
 } // namespace vtkSilhouetteFilterSupport
 

@@ -450,6 +450,8 @@ void BuildSilhouetteLines(
   lines->SetPoints(points);
   lines->SetLines(cells);
   lines->GetPointData()->SetNormals(normals);
+  lines->GetCellData()->AddArray(vtkSilhouetteFilterSupport::LineKindArray(
+    cells->GetNumberOfCells(), vtkSilhouetteFilterSupport::SilhouetteLine));
 }
 
 } // namespace

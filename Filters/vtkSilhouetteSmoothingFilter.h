@@ -58,7 +58,9 @@
  * the same points there; they pass through with their flags.
  *
  * Output port 1: the smoothed silhouette as polylines chained across triangles
- * (closed loops repeat their first point at the end), with point `Normals`.
+ * (closed loops repeat their first point at the end), with point `Normals`
+ * and cell `LineKind` (unsigned char, 0 = silhouette, as
+ * vtkCreaseAndBorderLines numbers the kinds of a line drawing).
  *
  * Guarantees: crack-free (each silhouette point is computed once per undirected
  * edge, so both triangles of an edge split it at the identical point); a closed

@@ -4,6 +4,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -81,6 +82,12 @@ int vtkSilhouetteLineVisibility::RequestData(
     vtkErrorMacro("Tolerance must be 0 (automatic) or positive, not " << this->Tolerance << ".");
     return 0;
   }
+  if (!(this->EdgeTolerance >= 0.0))
+  {
+    vtkErrorMacro(
+      "EdgeTolerance must be 0 (automatic) or positive, not " << this->EdgeTolerance << ".");
+    return 0;
+  }
   vtkSilhouetteFilterSupport::View view;
   const ViewStatus viewStatus = this->RequestView(view);
   if (viewStatus == VIEW_NO_CAMERA_YET)
@@ -114,6 +121,23 @@ int vtkSilhouetteLineVisibility::RequestData(
   {
     parameters.Tolerance = this->Tolerance;
   }
+  silsmooth::LineVisibilityParameters edgeParameters = parameters;
+  edgeParameters.Tolerance =
+    this->EdgeTolerance > 0.0 ? this->EdgeTolerance : 10.0 * parameters.Precision;
+  vtkDataArray* kinds = lines->GetCellData()->GetArray("LineKind");
+  if (kinds && kinds->GetNumberOfComponents() != 1)
+  {
+    kinds = nullptr;
+  }
+  const auto isSurfaceEdge = [kinds](vtkIdType cell) {
+    if (!kinds)
+    {
+      return false;
+    }
+    const double kind = kinds->GetComponent(cell, 0);
+    return kind == vtkSilhouetteFilterSupport::CreaseLine ||
+      kind == vtkSilhouetteFilterSupport::BorderLine;
+  };
   const silsmooth::OcclusionMesh occluder(std::move(triangles.Points), std::move(triangles.Cells));
 
   vtkPointData* inPD = lines->GetPointData();
@@ -165,8 +189,8 @@ int vtkSilhouetteLineVisibility::RequestData(
       lines->GetPoint(ids[i], x);
       polyline[static_cast<std::size_t>(i)] = glm::dvec3(x[0], x[1], x[2]);
     }
-    const std::vector<silsmooth::LinePiece> pieces =
-      silsmooth::splitByVisibility(occluder, view.Geometry, polyline, parameters);
+    const std::vector<silsmooth::LinePiece> pieces = silsmooth::splitByVisibility(occluder,
+      view.Geometry, polyline, isSurfaceEdge(firstLineId + line) ? edgeParameters : parameters);
     for (const silsmooth::LinePiece& piece : pieces)
     {
       if (!piece.Visible && !this->PassHiddenLines)
@@ -219,5 +243,7 @@ void vtkSilhouetteLineVisibility::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Tolerance: " << this->Tolerance << (this->Tolerance > 0 ? "" : " (automatic)")
      << "\n";
+  os << indent << "EdgeTolerance: " << this->EdgeTolerance
+     << (this->EdgeTolerance > 0 ? "" : " (automatic)") << "\n";
   os << indent << "PassHiddenLines: " << (this->PassHiddenLines ? "On" : "Off") << "\n";
 }

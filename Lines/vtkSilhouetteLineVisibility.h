@@ -64,6 +64,21 @@ public:
 
   ///@{
   /**
+   * The tolerance, in the data's units, for the lines that are edges of the
+   * surface itself: cells whose `LineKind` is 1 (crease) or 2 (border), as
+   * vtkCreaseAndBorderLines makes them from the same surface. They lie on it
+   * exactly, so only the triangles they lie on must not hide them, and those
+   * meet the ray at the line's own point. 0 (the default): 1e-5 of the
+   * surface's bounding-box diagonal. (With the silhouette's Tolerance, a mean
+   * edge long, a box's hidden edges would show near the visible corners.)
+   * Negative or NaN values are refused.
+   */
+  vtkSetMacro(EdgeTolerance, double);
+  vtkGetMacro(EdgeTolerance, double);
+  ///@}
+
+  ///@{
+  /**
    * Keep the hidden pieces in the output (flagged 0 in `Visible`). Default on.
    */
   vtkSetMacro(PassHiddenLines, vtkTypeBool);
@@ -79,6 +94,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double Tolerance = 0.0;
+  double EdgeTolerance = 0.0;
   vtkTypeBool PassHiddenLines = 1;
 
 private:

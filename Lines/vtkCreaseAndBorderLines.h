@@ -1,0 +1,101 @@
+/**
+ * @class   vtkCreaseAndBorderLines
+ * @brief   the creases and open borders of a surface as polylines, for a line drawing
+ *
+ * Input: a surface (polygons and strips are read as triangles; vertex and
+ * line cells are ignored). Points at equal coordinates are one vertex, so
+ * the copies a surface keeps along its hard edges and texture seams do not
+ * open it. An edge is drawn as
+ * - a border (LineKind 2) when one triangle has it;
+ * - a crease (LineKind 1) when the surface has point normals and they jump
+ *   across the edge: the two sides use copies of an end whose normals
+ *   differ by more than NormalJumpAngle. This is how
+ *   vtkSilhouetteSmoothingFilter's output marks its feature edges (one
+ *   normal per side), with each smoothed feature curve sampled as the
+ *   surface is, and how vtkPolyDataNormals with splitting marks edges
+ *   sharper than its feature angle. A texture seam, whose copies share the
+ *   normal, is not a crease. Without point normals, a crease is an edge
+ *   whose faces meet at more than FeatureAngle degrees. Edges of more than
+ *   two triangles are creases too.
+ * Polylines stop where other than two lines of a kind meet (a box's
+ * corners); closed loops repeat their first point at the end.
+ *
+ * Output: polylines whose every segment is an edge of the surface (so
+ * vtkSilhouetteLineVisibility tests them against that surface without a
+ * tolerance: see its EdgeTolerance); the points they use, with the
+ * surface's point data; cell `LineKind` (unsigned char: 1 crease, 2 border;
+ * 0 is the silhouette, as in the smoothing filters' line outputs, so the
+ * three append into one drawing); field data `CreaseLineCount` and
+ * `BorderLineCount`. Points with NaN or infinite coordinates make the
+ * request fail with an error.
+ * @sa vtkSilhouetteLineVisibility vtkSilhouetteSmoothingFilter vtkFeatureEdges
+ */
+#ifndef vtkCreaseAndBorderLines_h
+#define vtkCreaseAndBorderLines_h
+
+#include "SilhouetteSmoothingFiltersLinesModule.h" // For export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class SILHOUETTESMOOTHINGFILTERSLINES_EXPORT vtkCreaseAndBorderLines : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkCreaseAndBorderLines* New();
+  vtkTypeMacro(vtkCreaseAndBorderLines, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /**
+   * The superclass's, except that no exception leaves it: std::bad_alloc or
+   * any other becomes an error, emptied outputs and a failed request.
+   */
+  vtkTypeBool ProcessRequest(
+    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
+
+  ///@{
+  /**
+   * Draw creases (default on) and open borders (default on).
+   */
+  vtkSetMacro(Creases, vtkTypeBool);
+  vtkGetMacro(Creases, vtkTypeBool);
+  vtkBooleanMacro(Creases, vtkTypeBool);
+  vtkSetMacro(Borders, vtkTypeBool);
+  vtkGetMacro(Borders, vtkTypeBool);
+  vtkBooleanMacro(Borders, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * With point normals: copies of a point whose normals differ by more than
+   * this many degrees make the edges between them creases. Default 1;
+   * clamped to [0, 180].
+   */
+  virtual void SetNormalJumpAngle(double degrees);
+  vtkGetMacro(NormalJumpAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * Without point normals: edges whose faces meet at more than this many
+   * degrees (the angle between their normals) are creases. Default 30;
+   * clamped to [0, 180].
+   */
+  virtual void SetFeatureAngle(double degrees);
+  vtkGetMacro(FeatureAngle, double);
+  ///@}
+
+protected:
+  vtkCreaseAndBorderLines();
+  ~vtkCreaseAndBorderLines() override;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  vtkTypeBool Creases = 1;
+  vtkTypeBool Borders = 1;
+  double NormalJumpAngle = 1.0;
+  double FeatureAngle = 30.0;
+
+private:
+  vtkCreaseAndBorderLines(const vtkCreaseAndBorderLines&) = delete;
+  void operator=(const vtkCreaseAndBorderLines&) = delete;
+};
+
+#endif

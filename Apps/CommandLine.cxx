@@ -25,9 +25,10 @@ Commands:
   smooth INPUT [-o OUTPUT] [--lines-output LINES.vtp] [--json] [camera options]
       smooth the silhouette of INPUT for one view, optionally write the
       result, and print figures about it
-  render INPUT -o IMAGE.png [--style STYLE] [--no-smoothing] [--hidden-lines]
-         [--json] [camera options]
-      render INPUT offscreen to a PNG image and print the same figures
+  render INPUT -o IMAGE.png|DRAWING.svg [--style STYLE] [--no-smoothing]
+         [--hidden none|dashed] [--width-by-depth] [--json] [camera options]
+      render INPUT offscreen to a PNG image (or a line style to an SVG
+      drawing) and print the same figures
   generate sphere|torus -o OUTPUT [shape options]
       write an analytic test mesh with exact normals
   simplify INPUT -o OUTPUT --triangles N [options] [camera options]
@@ -101,17 +102,23 @@ Options:
 
 std::string RenderHelp()
 {
-  return R"(Usage: silhouette render INPUT -o IMAGE.png [--style STYLE] [--no-smoothing]
-                        [--hidden-lines] [--json] [camera options]
+  return R"(Usage: silhouette render INPUT -o IMAGE.png|DRAWING.svg [--style STYLE]
+                        [--no-smoothing] [--hidden none|dashed]
+                        [--width-by-depth] [--json] [camera options]
 
 Reads INPUT like 'silhouette smooth', smooths its silhouette for the view of
 the camera options, renders it offscreen at --size with that same camera
 (no multisampling, so images are repeatable), writes a PNG image and prints
 the same figures as 'silhouette smooth'. Where there is no X display it
-renders through OSMesa (--backend).
+renders through OSMesa (--backend). The line styles can also be written as
+an SVG drawing: the same visible lines as paths in image coordinates
+(pixels from the top-left corner, one path per visible piece), projected
+with the same camera and nothing rendered, so no display is needed.
 
 Options:
-  -o, --output IMAGE.png  the image to write; required, must end in .png
+  -o, --output FILE       the image to write; required: a .png, or an .svg
+                          with a line style (lines, charcoal, lazy, hand,
+                          rough)
   --style STYLE           what to draw (default: shaded):
                           shaded        the smoothed mesh in light grey on
                                         white, Phong shading with the
@@ -122,13 +129,18 @@ Options:
                                         triangles the smoothing made
                                         (NewGeometry > 0) in red and the
                                         others dark grey
-                          lines         the visible parts of the smoothed
-                                        silhouette polylines (the filter's
-                                        second output, with the parts the
-                                        smoothed surface hides left out:
-                                        vtkSilhouetteLineVisibility) in
-                                        black, 2 pixels wide, on white,
-                                        without the mesh
+                          lines         the visible parts of the lines of
+                                        a drawing, in black, 2 pixels wide,
+                                        on white, without the mesh: the
+                                        smoothed silhouette polylines (the
+                                        filter's second output) and the
+                                        smoothed surface's creases and open
+                                        borders (vtkCreaseAndBorderLines:
+                                        creases are where its normals jump,
+                                        at the feature edges the filter
+                                        found), with the parts that surface
+                                        hides left out
+                                        (vtkSilhouetteLineVisibility)
                           charcoal, lazy, hand, rough
                                         the same visible lines drawn as
                                         stylized strokes (Kim and Choe,
@@ -148,11 +160,22 @@ Options:
                           triangle the straight segment
                           between the zero crossings of the linearly
                           interpolated N.(E-V) on its two mixed edges, with
-                          the filter's normals) (default: smoothed). The
-                          figures still describe the smoothing.
-  --hidden-lines          with --style lines, draw the parts of the lines the
-                          surface hides too, in light grey (default: left
-                          out)
+                          the filter's normals), and the input's creases
+                          (where its point normals jump; without normals,
+                          edges sharper than --feature-angle, else than
+                          --flat-crease-angle) and open borders (default:
+                          smoothed). The figures still describe the
+                          smoothing.
+  --hidden none|dashed    the parts of the lines the surface hides: left out
+                          (none), or drawn in grey (dashed): dashed and
+                          thinner in an SVG drawing, with any line style;
+                          solid light grey in a PNG image, with --style
+                          lines only (default: none)
+  --width-by-depth        in an SVG drawing, each visible line's width
+                          follows its distance from the eye: 2 pixels at the
+                          focal point's distance, times that distance over
+                          the point's, within 0.5 to 8 pixels (default: 2
+                          pixels everywhere)
   --lines-output FILE     also write the smoothed silhouette polylines to
                           FILE, a .vtp (default: nothing is written)
   --json                  print the figures as one JSON object instead of text
@@ -892,10 +915,19 @@ CommandLine ParseCommandLine(int argc, char* argv[])
         RejectInlineValue(option);
         render.NoSmoothing = true;
       }
-      else if (option.Name == "--hidden-lines")
+      else if (option.Name == "--hidden")
+      {
+        const std::string value = args.TakeValue(option);
+        if (value != "none" && value != "dashed")
+        {
+          throw UsageError("option '--hidden' needs none or dashed, got '" + value + "'");
+        }
+        render.HiddenLines = value == "dashed";
+      }
+      else if (option.Name == "--width-by-depth")
       {
         RejectInlineValue(option);
-        render.HiddenLines = true;
+        render.WidthByDepth = true;
       }
       else
       {
@@ -905,7 +937,7 @@ CommandLine ParseCommandLine(int argc, char* argv[])
     });
     if (render.Output.empty())
     {
-      throw UsageError("'render' needs '-o IMAGE.png'");
+      throw UsageError("'render' needs '-o IMAGE.png' or '-o DRAWING.svg'");
     }
   }
   return result;

@@ -45,7 +45,8 @@ struct RenderOptions
   std::optional<std::string> LinesOutput; ///< the silhouette polylines (.vtp)
   RenderStyle Style = RenderStyle::Shaded;
   bool NoSmoothing = false;
-  bool HiddenLines = false; ///< lines style: the hidden parts too, in grey
+  bool HiddenLines = false;  ///< --hidden dashed: the hidden parts too (grey; dashed in SVG)
+  bool WidthByDepth = false; ///< SVG: lines thinner away from the eye
   bool Json = false;
   CameraOptions Camera;
 };

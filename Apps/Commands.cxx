@@ -103,12 +103,16 @@ void RunSmooth(const SmoothOptions& options)
 
 void RunRender(const RenderOptions& options)
 {
-  CheckImageOutputPath(options.Output);
+  CheckRenderOutputPath(options);
   if (options.LinesOutput)
   {
     CheckLinesOutputPath(*options.LinesOutput);
   }
-  RequireDisplay();
+  const bool svg = IsSvgPath(options.Output);
+  if (!svg)
+  {
+    RequireDisplay(); // an SVG drawing is projected, not rendered
+  }
   vtkSmartPointer<vtkPolyData> mesh = ReadMeshWithTriangles(options.Input);
   const OffscreenView view = MakeOffscreenView(options.Camera.ViewportSize);
   SetUpCamera(view.Renderer, mesh->GetBounds(), options.Camera);
@@ -116,7 +120,14 @@ void RunRender(const RenderOptions& options)
 
   const SmoothingRun run = SmoothSilhouette(mesh, camera, options.Camera);
   PrintWarnings(run);
-  RenderToPng(view, run.Filter, mesh, options);
+  if (svg)
+  {
+    RenderToSvg(view, run.Filter, mesh, options);
+  }
+  else
+  {
+    RenderToPng(view, run.Filter, mesh, options);
+  }
   if (options.LinesOutput)
   {
     WriteLines(run.Filter->GetSilhouetteOutput(), *options.LinesOutput);

@@ -5,6 +5,7 @@
 #include "MeshIO.h"
 #include "RenderingBackend.h"
 #include "Smoothing.h"
+#include "SvgDrawing.h"
 #include "VtkErrorLog.h"
 
 #include <vtkActor.h>
@@ -365,6 +366,37 @@ void CheckImageOutputPath(const std::string& path)
   RequireOutputDirectory(path);
 }
 
+bool IsSvgPath(const std::string& path)
+{
+  return LowercaseExtension(path) == ".svg";
+}
+
+void CheckRenderOutputPath(const RenderOptions& options)
+{
+  if (!IsSvgPath(options.Output))
+  {
+    if (LowercaseExtension(options.Output) != ".png")
+    {
+      throw RuntimeError("cannot write '" + options.Output +
+        "': the image must be a .png file, or an .svg file with a line style");
+    }
+    if (options.WidthByDepth)
+    {
+      throw RuntimeError("--width-by-depth needs an .svg output; '" + options.Output +
+        "' is a PNG image, whose lines have one width");
+    }
+  }
+  else if (options.Style == RenderStyle::Shaded || options.Style == RenderStyle::Wireframe ||
+    options.Style == RenderStyle::NewGeometry)
+  {
+    throw RuntimeError("cannot write '" + options.Output +
+      "': an .svg drawing needs a line style "
+      "(lines, charcoal, lazy, hand or rough), not '" +
+      NameOf(options.Style) + "'");
+  }
+  RequireOutputDirectory(options.Output);
+}
+
 void RequireDisplay()
 {
   if (ActiveRenderBackend() != RenderBackend::X)
@@ -411,6 +443,46 @@ void RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   errors.ThrowIfErrors("rendering failed");
 
   WriteWindowPng(view.Window, options.Output);
+}
+
+void RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
+  vtkPolyData* input, const RenderOptions& options)
+{
+  VtkErrorLog& errors = VtkErrorLog::Instance();
+  errors.Clear();
+  vtkRenderer* renderer = view.Renderer;
+  const bool smoothed = !options.NoSmoothing;
+  vtkSmartPointer<vtkPolyDataAlgorithm> drawn;
+  if (options.Style == RenderStyle::Lines)
+  {
+    drawn = MakeVisibleLines(renderer, filter, input, smoothed);
+  }
+  else
+  {
+    drawn = MakeStrokes(renderer, filter, input, options.Style, smoothed);
+  }
+  drawn->Update();
+  errors.ThrowIfErrors("drawing failed");
+  std::vector<DrawnLine> lines = ProjectLines(drawn->GetOutput(), renderer, false);
+  if (options.HiddenLines)
+  {
+    vtkSmartPointer<vtkSilhouetteLineVisibility> all =
+      MakeVisibleLines(renderer, filter, input, smoothed);
+    all->PassHiddenLinesOn();
+    all->Update();
+    errors.ThrowIfErrors("drawing failed");
+    for (DrawnLine& line : ProjectLines(all->GetOutput(), renderer, true))
+    {
+      lines.push_back(std::move(line));
+    }
+  }
+  SvgStyle style;
+  style.Width = options.Camera.ViewportSize[0];
+  style.Height = options.Camera.ViewportSize[1];
+  style.WidthByDepth = options.WidthByDepth;
+  style.ReferenceDepth = renderer->GetActiveCamera()->GetDistance();
+  style.Title = "silhouette render " + options.Input + " --style " + NameOf(options.Style);
+  WriteFileAtomically(options.Output, SvgDocument(lines, style));
 }
 
 } // namespace cli

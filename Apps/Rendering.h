@@ -30,6 +30,13 @@ OffscreenView MakeOffscreenView(const std::array<int, 2>& size);
 /// Throws RuntimeError unless `path` ends in .png (any letter case).
 void CheckImageOutputPath(const std::string& path);
 
+/// Whether `path` ends in .svg (any letter case).
+bool IsSvgPath(const std::string& path);
+
+/// `render`'s output: a .png, or an .svg with a line style; throws
+/// RuntimeError otherwise, and for --width-by-depth without an .svg.
+void CheckRenderOutputPath(const RenderOptions& options);
+
 /// Throws RuntimeError when the program renders through X and there is no
 /// X display (VTK would abort the program); does nothing with OSMesa.
 void RequireDisplay();
@@ -69,6 +76,16 @@ void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter,
  * the PNG image. Throws RuntimeError on any VTK error.
  */
 void RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
+  vtkPolyData* input, const RenderOptions& options);
+
+/**
+ * Writes the line style `options.Style` as an SVG drawing (SvgDrawing.h):
+ * the visible lines (or, for the brushes, their strokes) projected with the
+ * view's camera, and with `options.HiddenLines` the hidden pieces, dashed.
+ * Nothing is rendered: no display is needed. Throws RuntimeError on any VTK
+ * error or a failed write.
+ */
+void RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
   vtkPolyData* input, const RenderOptions& options);
 
 } // namespace cli

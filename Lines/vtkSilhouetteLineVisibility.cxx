@@ -124,6 +124,8 @@ int vtkSilhouetteLineVisibility::RequestData(
   silsmooth::LineVisibilityParameters edgeParameters = parameters;
   edgeParameters.Tolerance =
     this->EdgeTolerance > 0.0 ? this->EdgeTolerance : 10.0 * parameters.Precision;
+  // The stubs a tolerance leaves where an occluder meets the line.
+  edgeParameters.MinimumPieceLength = 10.0 * edgeParameters.Tolerance;
   vtkDataArray* kinds = lines->GetCellData()->GetArray("LineKind");
   if (kinds && kinds->GetNumberOfComponents() != 1)
   {

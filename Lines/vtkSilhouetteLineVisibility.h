@@ -71,6 +71,8 @@ public:
    * meet the ray at the line's own point. 0 (the default): 1e-5 of the
    * surface's bounding-box diagonal. (With the silhouette's Tolerance, a mean
    * edge long, a box's hidden edges would show near the visible corners.)
+   * Pieces of these lines shorter than ten times this tolerance join their
+   * neighbours (the stubs an occluder leaves where it meets the line).
    * Negative or NaN values are refused.
    */
   vtkSetMacro(EdgeTolerance, double);

@@ -187,6 +187,69 @@ bool OcclusionMesh::hides(const ViewGeometry& view, const glm::dvec3& point, dou
   return false;
 }
 
+namespace
+{
+
+double pieceLength(const LinePiece& piece)
+{
+  double length = 0.0;
+  for (std::size_t k = 1; k < piece.Points.size(); ++k)
+  {
+    length += glm::length(piece.Points[k] - piece.Points[k - 1]);
+  }
+  return length;
+}
+
+// Appends `next` to `piece` (they share the change point at the joint).
+void appendPiece(LinePiece& piece, const LinePiece& next)
+{
+  piece.Points.insert(piece.Points.end(), next.Points.begin() + 1, next.Points.end());
+  piece.Along.insert(piece.Along.end(), next.Along.begin() + 1, next.Along.end());
+}
+
+} // namespace
+
+std::vector<LinePiece> mergeShortPieces(std::vector<LinePiece> pieces, double minimumLength)
+{
+  if (!(minimumLength > 0.0))
+  {
+    return pieces;
+  }
+  // The shortest piece below the limit takes its neighbours' state and
+  // joins them, until none is left or one piece remains; alternation keeps
+  // both neighbours of a piece in the other state.
+  while (pieces.size() > 1)
+  {
+    std::size_t shortest = pieces.size();
+    double shortestLength = minimumLength;
+    for (std::size_t i = 0; i < pieces.size(); ++i)
+    {
+      const double length = pieceLength(pieces[i]);
+      if (length < shortestLength)
+      {
+        shortest = i;
+        shortestLength = length;
+      }
+    }
+    if (shortest == pieces.size())
+    {
+      break;
+    }
+    const std::size_t first = shortest > 0 ? shortest - 1 : 0;
+    const std::size_t last = std::min(shortest + 1, pieces.size() - 1);
+    LinePiece merged = std::move(pieces[first]);
+    merged.Visible = !pieces[shortest].Visible;
+    for (std::size_t i = first + 1; i <= last; ++i)
+    {
+      appendPiece(merged, pieces[i]);
+    }
+    pieces.erase(pieces.begin() + static_cast<std::ptrdiff_t>(first) + 1,
+      pieces.begin() + static_cast<std::ptrdiff_t>(last) + 1);
+    pieces[first] = std::move(merged);
+  }
+  return pieces;
+}
+
 std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const ViewGeometry& view,
   const std::vector<glm::dvec3>& polyline, const LineVisibilityParameters& parameters)
 {
@@ -233,7 +296,7 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
     current.Along.push_back(static_cast<double>(i));
   }
   pieces.push_back(std::move(current));
-  return pieces;
+  return mergeShortPieces(std::move(pieces), parameters.MinimumPieceLength);
 }
 
 } // namespace silsmooth

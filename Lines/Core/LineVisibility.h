@@ -41,6 +41,12 @@ struct LineVisibilityParameters
   double Tolerance = 0.0;
   /// Visibility changes are located to within this distance along the line.
   double Precision = 0.0;
+  /// Pieces shorter than this (along the line) join their neighbours, taking
+  /// their state (mergeShortPieces); 0 keeps every piece. For lines that lie
+  /// on the surface exactly, a visible stub as long as the tolerance remains
+  /// where an occluding face meets the line (a box's hidden edge at its
+  /// visible corner): a few tolerances remove it.
+  double MinimumPieceLength = 0.0;
 
   /// Tolerance: the mesh's mean edge length; Precision: 1e-6 of its bounding
   /// box's diagonal.
@@ -75,6 +81,10 @@ struct LinePiece
   std::vector<double> Along;
   bool Visible = true;
 };
+
+/// Joins each piece shorter than `minimumLength` with its neighbours, in
+/// their state, shortest first; keeps the invariants above.
+std::vector<LinePiece> mergeShortPieces(std::vector<LinePiece> pieces, double minimumLength);
 
 /// Splits `polyline` into visible and hidden pieces for the view.
 std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const ViewGeometry& view,

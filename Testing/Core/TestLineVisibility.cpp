@@ -338,3 +338,36 @@ TEST(LineVisibility, CubeShowsItsNineVisibleEdges)
   EXPECT_EQ(visibleEdges, 9);
   EXPECT_EQ(hiddenEdges, 3);
 }
+
+TEST(LineVisibility, ShortPiecesJoinTheirNeighbours)
+{
+  // Pieces of lengths 1, 0.01 (hidden), 1, then 0.02 (hidden) at the end.
+  auto piece = [](double from, double to, bool visible) {
+    LinePiece p;
+    p.Points = { glm::dvec3(from, 0, 0), glm::dvec3(to, 0, 0) };
+    p.Along = { from, to };
+    p.Visible = visible;
+    return p;
+  };
+  const std::vector<LinePiece> pieces{ piece(0, 1, true), piece(1, 1.01, false),
+    piece(1.01, 2.01, true), piece(2.01, 2.03, false) };
+  EXPECT_EQ(mergeShortPieces(pieces, 0.0).size(), 4u); // 0 keeps every piece
+  EXPECT_EQ(mergeShortPieces(pieces, 0.015).size(), 2u);
+  const std::vector<LinePiece> merged = mergeShortPieces(pieces, 0.05);
+  ASSERT_EQ(merged.size(), 1u);
+  EXPECT_TRUE(merged[0].Visible);
+  // Every point in order, each joint once.
+  const std::vector<double> along{ 0, 1, 1.01, 2.01, 2.03 };
+  ASSERT_EQ(merged[0].Along.size(), along.size());
+  for (std::size_t i = 0; i < along.size(); ++i)
+  {
+    EXPECT_EQ(merged[0].Along[i], along[i]);
+    EXPECT_EQ(merged[0].Points[i].x, along[i]);
+  }
+  // A short piece between two long ones of the other state: one piece of
+  // their state, not three.
+  const std::vector<LinePiece> middle =
+    mergeShortPieces({ piece(0, 1, false), piece(1, 1.001, true), piece(1.001, 2, false) }, 0.01);
+  ASSERT_EQ(middle.size(), 1u);
+  EXPECT_FALSE(middle[0].Visible);
+}

@@ -1,0 +1,282 @@
+#include "SvgDrawing.h"
+
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkMath.h>
+#include <vtkPolyData.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace cli
+{
+namespace
+{
+
+const char* KindName(double kind)
+{
+  if (kind == 1.0)
+  {
+    return "crease";
+  }
+  if (kind == 2.0)
+  {
+    return "border";
+  }
+  return "silhouette";
+}
+
+std::string EscapeXml(const std::string& text)
+{
+  std::string escaped;
+  for (const char c : text)
+  {
+    switch (c)
+    {
+      case '&':
+        escaped += "&amp;";
+        break;
+      case '<':
+        escaped += "&lt;";
+        break;
+      case '>':
+        escaped += "&gt;";
+        break;
+      case '"':
+        escaped += "&quot;";
+        break;
+      default:
+        // Control characters are not allowed in XML 1.0 text.
+        escaped += (static_cast<unsigned char>(c) < 0x20 && c != '\t') ? '?' : c;
+    }
+  }
+  return escaped;
+}
+
+// A coordinate with two decimals (a hundredth of a pixel), "C" locale.
+void AppendNumber(std::string& out, double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f", value);
+  out += text;
+}
+
+void AppendPoint(std::string& out, char command, const std::array<double, 2>& p)
+{
+  out += command;
+  AppendNumber(out, p[0]);
+  out += ' ';
+  AppendNumber(out, p[1]);
+}
+
+// The points with consecutive repeats removed (they have no direction).
+DrawnLine WithoutRepeats(const DrawnLine& line)
+{
+  DrawnLine kept = line;
+  kept.Points.clear();
+  kept.Depths.clear();
+  for (std::size_t i = 0; i < line.Points.size(); ++i)
+  {
+    if (kept.Points.empty() ||
+      std::hypot(line.Points[i][0] - kept.Points.back()[0],
+        line.Points[i][1] - kept.Points.back()[1]) > 1e-6)
+    {
+      kept.Points.push_back(line.Points[i]);
+      kept.Depths.push_back(line.Depths[i]);
+    }
+  }
+  return kept;
+}
+
+// The outline of a line whose width varies along it: the left side forward,
+// the right side back. Each point is offset along the bisector of its two
+// segments' normals, lengthened to keep the width across a turn (at most
+// twice, so a sharp turn does not shoot a spike).
+std::string OutlinePath(const DrawnLine& line, const std::vector<double>& halfWidths)
+{
+  const std::size_t n = line.Points.size();
+  std::vector<std::array<double, 2>> left(n);
+  std::vector<std::array<double, 2>> right(n);
+  auto normalOf = [&](std::size_t a, std::size_t b) {
+    const double dx = line.Points[b][0] - line.Points[a][0];
+    const double dy = line.Points[b][1] - line.Points[a][1];
+    const double length = std::hypot(dx, dy);
+    return std::array<double, 2>{ -dy / length, dx / length };
+  };
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const std::array<double, 2> before = normalOf(i == 0 ? 0 : i - 1, i == 0 ? 1 : i);
+    const std::array<double, 2> after = normalOf(i + 1 < n ? i : n - 2, i + 1 < n ? i + 1 : n - 1);
+    std::array<double, 2> m{ before[0] + after[0], before[1] + after[1] };
+    const double length = std::hypot(m[0], m[1]);
+    double scale = halfWidths[i];
+    if (length > 1e-9)
+    {
+      m = { m[0] / length, m[1] / length };
+      const double cosine = m[0] * after[0] + m[1] * after[1];
+      scale /= std::max(cosine, 0.5);
+    }
+    else
+    {
+      m = after; // a full turn back: offset across the segment
+    }
+    left[i] = { line.Points[i][0] + scale * m[0], line.Points[i][1] + scale * m[1] };
+    right[i] = { line.Points[i][0] - scale * m[0], line.Points[i][1] - scale * m[1] };
+  }
+  std::string d;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    AppendPoint(d, i == 0 ? 'M' : 'L', left[i]);
+  }
+  for (std::size_t i = n; i-- > 0;)
+  {
+    AppendPoint(d, 'L', right[i]);
+  }
+  d += 'Z';
+  return d;
+}
+
+std::string PolylinePath(const DrawnLine& line)
+{
+  std::string d;
+  for (std::size_t i = 0; i < line.Points.size(); ++i)
+  {
+    AppendPoint(d, i == 0 ? 'M' : 'L', line.Points[i]);
+  }
+  return d;
+}
+
+} // namespace
+
+std::vector<DrawnLine> ProjectLines(vtkPolyData* lines, vtkRenderer* renderer, bool hiddenOnly)
+{
+  std::vector<DrawnLine> drawn;
+  if (!lines || !lines->GetLines() || lines->GetNumberOfLines() == 0)
+  {
+    return drawn;
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  double eye[3];
+  double direction[3];
+  camera->GetPosition(eye);
+  camera->GetDirectionOfProjection(direction);
+  const bool parallel = camera->GetParallelProjection() != 0;
+  const int* size = renderer->GetSize();
+  vtkDataArray* visible = lines->GetCellData()->GetArray("Visible");
+  vtkDataArray* kinds = lines->GetCellData()->GetArray("LineKind");
+
+  auto it = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
+  vtkIdType cell = lines->GetNumberOfVerts(); // cell ids count vertices first
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
+  {
+    DrawnLine line;
+    line.Hidden = visible && visible->GetComponent(cell, 0) == 0.0;
+    if (hiddenOnly && !line.Hidden)
+    {
+      continue;
+    }
+    line.Kind = kinds ? KindName(kinds->GetComponent(cell, 0)) : "stroke";
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      double p[3];
+      lines->GetPoint(ids[i], p);
+      const double toPoint[3] = { p[0] - eye[0], p[1] - eye[1], p[2] - eye[2] };
+      const double ahead = vtkMath::Dot(toPoint, direction);
+      if (!parallel && !(ahead > 0.0))
+      {
+        // Behind the eye: end the part drawn so far.
+        if (line.Points.size() >= 2)
+        {
+          drawn.push_back(line);
+        }
+        line.Points.clear();
+        line.Depths.clear();
+        continue;
+      }
+      renderer->SetWorldPoint(p[0], p[1], p[2], 1.0);
+      renderer->WorldToDisplay();
+      const double* display = renderer->GetDisplayPoint();
+      line.Points.push_back({ display[0], static_cast<double>(size[1]) - display[1] });
+      line.Depths.push_back(parallel ? ahead : vtkMath::Norm(toPoint));
+    }
+    if (line.Points.size() >= 2)
+    {
+      drawn.push_back(std::move(line));
+    }
+  }
+  return drawn;
+}
+
+std::string SvgDocument(const std::vector<DrawnLine>& lines, const SvgStyle& style)
+{
+  std::string svg;
+  svg += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
+    std::to_string(style.Width) + "\" height=\"" + std::to_string(style.Height) +
+    "\" viewBox=\"0 0 " + std::to_string(style.Width) + " " + std::to_string(style.Height) +
+    "\">\n";
+  if (!style.Title.empty())
+  {
+    svg += "<title>" + EscapeXml(style.Title) + "</title>\n";
+  }
+  svg += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+
+  std::string width;
+  AppendNumber(width, style.LineWidth);
+  std::string hiddenWidth;
+  AppendNumber(hiddenWidth, 0.75 * style.LineWidth);
+  std::string dash;
+  AppendNumber(dash, 3.0 * style.LineWidth);
+  svg += style.WidthByDepth ? "<g id=\"visible\" fill=\"black\" stroke=\"none\">\n"
+                            : "<g id=\"visible\" fill=\"none\" stroke=\"black\" stroke-width=\"" +
+      width + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+  for (const DrawnLine& raw : lines)
+  {
+    const DrawnLine line = WithoutRepeats(raw);
+    if (line.Hidden || line.Points.size() < 2)
+    {
+      continue;
+    }
+    std::string d;
+    if (style.WidthByDepth)
+    {
+      std::vector<double> halfWidths(line.Points.size());
+      for (std::size_t i = 0; i < halfWidths.size(); ++i)
+      {
+        const double ratio = line.Depths[i] > 0.0 ? style.ReferenceDepth / line.Depths[i] : 4.0;
+        halfWidths[i] = 0.5 * style.LineWidth * std::clamp(ratio, 0.25, 4.0);
+      }
+      d = OutlinePath(line, halfWidths);
+    }
+    else
+    {
+      d = PolylinePath(line);
+    }
+    svg += "<path class=\"" + line.Kind + "\" d=\"" + d + "\"/>\n";
+  }
+  svg += "</g>\n";
+  svg += "<g id=\"hidden\" fill=\"none\" stroke=\"#999999\" stroke-width=\"" + hiddenWidth +
+    "\" stroke-dasharray=\"" + dash + " " + width + "\" stroke-linecap=\"butt\">\n";
+  for (const DrawnLine& raw : lines)
+  {
+    const DrawnLine line = WithoutRepeats(raw);
+    if (line.Hidden && line.Points.size() >= 2)
+    {
+      svg += "<path class=\"hidden " + line.Kind + "\" d=\"" + PolylinePath(line) + "\"/>\n";
+    }
+  }
+  svg += "</g>\n</svg>\n";
+  return svg;
+}
+
+} // namespace cli

@@ -1,0 +1,57 @@
+#ifndef SvgDrawing_h
+#define SvgDrawing_h
+
+#include <array>
+#include <string>
+#include <vector>
+
+class vtkPolyData;
+class vtkRenderer;
+
+namespace cli
+{
+
+/// One polyline of a drawing in image coordinates: x to the right, y down,
+/// in pixels from the image's top-left corner, with each point's distance
+/// from the eye (along the direction of projection in parallel projection).
+struct DrawnLine
+{
+  std::vector<std::array<double, 2>> Points;
+  std::vector<double> Depths;
+  std::string Kind; ///< silhouette, crease, border (LineKind 0, 1, 2), or stroke
+  bool Hidden = false;
+};
+
+/// The line cells of `lines` (model coordinates, as the renderer's actors
+/// would draw them with an identity matrix) projected through the
+/// renderer's active camera and viewport. The cell array `Visible` (0:
+/// hidden) and `LineKind` give Hidden and Kind when present. Points behind
+/// the eye cannot be drawn: a polyline is cut where it passes behind it.
+/// With `hiddenOnly`, only the cells whose Visible is 0 are taken.
+std::vector<DrawnLine> ProjectLines(vtkPolyData* lines, vtkRenderer* renderer, bool hiddenOnly);
+
+struct SvgStyle
+{
+  int Width = 0; ///< the image's size in pixels
+  int Height = 0;
+  double LineWidth = 2.0; ///< pixels
+  /// Each visible line drawn as a filled outline whose width at a point is
+  /// LineWidth * ReferenceDepth / depth, within [1/4, 4] times LineWidth
+  /// (Kim and Choe 3.3: lines thin out away from the eye).
+  bool WidthByDepth = false;
+  double ReferenceDepth = 1.0;
+  std::string Title;
+};
+
+/**
+ * The SVG document of a line drawing: a white background, then one path per
+ * visible line (black, round caps and joins; with WidthByDepth a filled
+ * outline instead of a stroke), then one per hidden line (grey, dashed,
+ * three quarters of the width). Each path's class is its kind, `hidden` added for the
+ * hidden ones. Lines of fewer than two distinct points are left out.
+ */
+std::string SvgDocument(const std::vector<DrawnLine>& lines, const SvgStyle& style);
+
+} // namespace cli
+
+#endif

@@ -2,7 +2,7 @@
 # the 24 x 12 torus from 60 degrees up, where the inner contour ends in
 # cusps whose tails the near side of the tube hides, matches its baseline
 # (Testing/Data/Baseline/RenderTorusLines.png) within MAXIMUM pixels; the
-# same render with --hidden-lines (the hidden tails drawn in grey, the
+# same render with --hidden dashed (the hidden tails drawn in grey, the
 # deliberately wrong variant) must not (measured: 0 and 68 pixels). Counted
 # pixel for pixel: VTK's image difference forgives lines a pixel wide.
 # Variables (-D): PROGRAM, WRAPPER, PYTHON, DATA (Data/), BASELINE,
@@ -12,7 +12,7 @@ set(common "${DATA}/torus_24x12.vtp" --style lines --size 500x400 --elevation 60
 foreach (variant visible hidden)
   set(extra "")
   if (variant STREQUAL "hidden")
-    set(extra --hidden-lines)
+    set(extra --hidden dashed)
   endif ()
   execute_process(
     COMMAND "${WRAPPER}" "${PROGRAM}" render ${common} ${extra}

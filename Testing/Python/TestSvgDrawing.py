@@ -1,0 +1,209 @@
+"""`silhouette render --style lines -o DRAWING.svg` (issue 16).
+
+Checks, on the bundled torus seen from 60 degrees up (whose inner contour
+the tube partly hides) and on a cube:
+- the SVG parses as XML, has the --size, and one path per visible piece:
+  the count equals VisiblePieceCount of the same pipeline run here through
+  the Python package with the camera the program reports (--json);
+- rasterised with rsvg-convert, it draws what the PNG of the same view
+  draws: of the dark pixels of each image, at most 0.4% lie farther than
+  2 pixels from the other's (the PNG's lines are aliased, the SVG's
+  anti-aliased; measured 0 on the torus and the cube). The deliberately
+  wrong variant, the SVG with the hidden lines drawn (--hidden dashed),
+  must exceed that (measured: 0.8% on the torus, whose hidden parts are the
+  inner contour's short tails, and 10% on the cube);
+- a cube from a generic direction is exactly its 9 visible edges (creases),
+  and with --hidden dashed its 3 hidden ones come out as hidden paths;
+- --width-by-depth draws filled outlines, thicker near the eye;
+- errors: an .svg with the shaded style, --width-by-depth with a PNG.
+Usage: TestSvgDrawing.py SILHOUETTE_PROGRAM DATA_DIR WORK_DIR
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import xml.etree.ElementTree as ElementTree
+
+from vtkmodules.vtkFiltersCore import vtkAppendPolyData
+from vtkmodules.vtkFiltersSources import vtkCubeSource
+from vtkmodules.vtkIOImage import vtkPNGReader
+from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
+from vtkmodules.vtkRenderingCore import vtkCamera
+
+from silhouette_smoothing import (vtkCreaseAndBorderLines, vtkSilhouetteLineVisibility,
+                                  vtkSilhouetteSmoothingFilter)
+
+program, data, work = sys.argv[1], sys.argv[2], sys.argv[3]
+os.makedirs(work, exist_ok=True)
+failures = []
+SVG = "{http://www.w3.org/2000/svg}"
+MAXIMUM_STRAY = 0.004
+RADIUS = 2
+
+
+def check(condition, message):
+    print(("ok: " if condition else "FAILED: ") + message)
+    if not condition:
+        failures.append(message)
+
+
+def run(*args):
+    done = subprocess.run([program, *args], capture_output=True, text=True, timeout=300)
+    return done.returncode, done.stdout, done.stderr
+
+
+def paths(svg_file):
+    root = ElementTree.parse(svg_file).getroot()
+    return root, [p for p in root.iter(SVG + "path")]
+
+
+def ink(png_file):
+    """The pixels darker than light grey in any channel, as a set of (x, y)."""
+    reader = vtkPNGReader()
+    reader.SetFileName(png_file)
+    reader.Update()
+    image = reader.GetOutput()
+    width, height, _ = image.GetDimensions()
+    scalars = image.GetPointData().GetScalars()
+    components = min(3, scalars.GetNumberOfComponents())
+    dark = set()
+    for i in range(width * height):
+        if min(scalars.GetComponent(i, c) for c in range(components)) < 200:
+            dark.add((i % width, i // width))
+    return dark
+
+
+def stray(a, b):
+    """The share of a's pixels farther than RADIUS (in x and y) from any of b's."""
+    if not a:
+        return 1.0
+    near = {(x + dx, y + dy) for (x, y) in b
+            for dx in range(-RADIUS, RADIUS + 1) for dy in range(-RADIUS, RADIUS + 1)}
+    return sum(1 for p in a if p not in near) / len(a)
+
+
+def visible_pieces(mesh_file, camera_json, size):
+    """VisiblePieceCount of the drawing's pipeline, run here."""
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(mesh_file)
+    camera = vtkCamera()
+    camera.SetPosition(camera_json["position"])
+    camera.SetFocalPoint(camera_json["focal_point"])
+    camera.SetViewUp(camera_json["view_up"])
+    camera.SetViewAngle(camera_json["view_angle"])
+    smoothing = vtkSilhouetteSmoothingFilter()
+    smoothing.SetInputConnection(reader.GetOutputPort())
+    smoothing.SetCamera(camera)
+    smoothing.SetViewportSize(size)
+    edges = vtkCreaseAndBorderLines()
+    edges.SetInputConnection(smoothing.GetOutputPort(0))
+    drawing = vtkAppendPolyData()
+    drawing.AddInputConnection(smoothing.GetOutputPort(1))
+    drawing.AddInputConnection(edges.GetOutputPort())
+    visibility = vtkSilhouetteLineVisibility()
+    visibility.SetInputConnection(drawing.GetOutputPort())
+    visibility.SetSurfaceConnection(smoothing.GetOutputPort(0))
+    visibility.SetCamera(camera)
+    visibility.Update()
+    return int(visibility.GetOutput().GetFieldData().GetArray("VisiblePieceCount").GetValue(0))
+
+
+def compare_raster(name, svg_file, hidden_file, png_file):
+    """The rasterised SVG against the PNG, and the wrong variant's."""
+    raster, raster_hidden = (os.path.join(work, name + suffix)
+                             for suffix in ("_svg.png", "_hidden_svg.png"))
+    for source, target in ((svg_file, raster), (hidden_file, raster_hidden)):
+        subprocess.run([rsvg, "-b", "white", source, "-o", target], check=True, timeout=120)
+    reference = ink(png_file)
+    drawn_ink = ink(raster)
+    wrong_ink = ink(raster_hidden)
+    right = max(stray(drawn_ink, reference), stray(reference, drawn_ink))
+    wrong = max(stray(wrong_ink, reference), stray(reference, wrong_ink))
+    print("%s: stray dark pixels %.4f for the SVG, %.4f with the hidden lines (limit %.3f)"
+          % (name, right, wrong, MAXIMUM_STRAY))
+    check(right <= MAXIMUM_STRAY, name + ": the rasterised SVG draws what the PNG draws")
+    check(wrong > MAXIMUM_STRAY, name + ": the check fails with the hidden lines drawn")
+
+
+rsvg = shutil.which("rsvg-convert")
+check(rsvg is not None, "rsvg-convert is installed (scripts/setup.sh installs librsvg2-bin)")
+
+# --- The torus: paths against pieces, raster against the PNG -----------------
+torus = os.path.join(data, "torus_24x12.vtp")
+view = ["--style", "lines", "--size", "500x400", "--elevation", "60"]
+svg_file, png_file = os.path.join(work, "torus.svg"), os.path.join(work, "torus.png")
+hidden_file = os.path.join(work, "torus_hidden.svg")
+code, out, err = run("render", torus, *view, "-o", svg_file, "--json")
+check(code == 0, "render -o .svg succeeds (%s)" % err.strip())
+code, _, err = run("render", torus, *view, "-o", png_file)
+check(code == 0, "render -o .png succeeds (%s)" % err.strip())
+code, _, err = run("render", torus, *view, "-o", hidden_file, "--hidden", "dashed")
+check(code == 0, "render -o .svg --hidden dashed succeeds (%s)" % err.strip())
+if not failures:
+    figures = json.loads(out)
+    root, drawn = paths(svg_file)
+    check(root.tag == SVG + "svg" and root.get("width") == "500" and root.get("height") == "400",
+          "an <svg> of the --size")
+    visible = [p for p in drawn if "hidden" not in p.get("class", "")]
+    expected = visible_pieces(torus, figures["camera"], [500, 400])
+    print("torus: %d paths, %d visible pieces in the pipeline" % (len(visible), expected))
+    check(len(visible) == len(drawn) == expected > 2, "one path per visible piece")
+    check(all(p.get("class") == "silhouette" for p in visible),
+          "a torus's lines are silhouettes")
+    _, with_hidden = paths(hidden_file)
+    hidden = [p for p in with_hidden if "hidden" in p.get("class", "")]
+    check(len(hidden) > 0, "--hidden dashed adds hidden paths (%d)" % len(hidden))
+    if rsvg:
+        compare_raster("torus", svg_file, hidden_file, png_file)
+
+# --- The cube: its 9 visible edges ---------------------------------------------
+cube_file = os.path.join(work, "cube.vtp")
+cube = vtkCubeSource()
+writer = vtkXMLPolyDataWriter()
+writer.SetInputConnection(cube.GetOutputPort())
+writer.SetFileName(cube_file)
+writer.Write()
+cube_view = ["--style", "lines", "--size", "400x400", "--camera-position", "2.5", "1.85", "2.15"]
+cube_svg, cube_hidden, cube_png = (os.path.join(work, name)
+                                   for name in ("cube.svg", "cube_hidden.svg", "cube.png"))
+code, _, err = run("render", cube_file, *cube_view, "-o", cube_hidden, "--hidden", "dashed")
+check(code == 0, "render the cube (%s)" % err.strip())
+for target in (cube_svg, cube_png):
+    check(run("render", cube_file, *cube_view, "-o", target)[0] == 0, "render the cube to " + target)
+if rsvg and not failures:
+    compare_raster("cube", cube_svg, cube_hidden, cube_png)
+if code == 0:
+    _, drawn = paths(cube_hidden)
+    classes = sorted(p.get("class") for p in drawn)
+    print("cube paths:", classes)
+    check(classes == ["crease"] * 9 + ["hidden crease"] * 3,
+          "a cube is its 9 visible edges, and its 3 hidden ones dashed")
+
+# --- Width by depth ------------------------------------------------------------
+depth_svg = os.path.join(work, "cube_depth.svg")
+code, _, err = run("render", cube_file, *cube_view, "-o", depth_svg, "--width-by-depth")
+check(code == 0, "render --width-by-depth (%s)" % err.strip())
+if code == 0:
+    root, drawn = paths(depth_svg)
+    group = root.find(SVG + "g")
+    check(group is not None and group.get("fill") == "black" and group.get("stroke") == "none",
+          "--width-by-depth draws filled outlines")
+    check(len(drawn) == 9 and all(p.get("d").endswith("Z") for p in drawn),
+          "one closed outline per visible edge")
+
+# --- Errors --------------------------------------------------------------------
+code, _, err = run("render", torus, "-o", os.path.join(work, "shaded.svg"))
+check(code == 1 and "an .svg drawing needs a line style" in err and err.count("\n") == 1,
+      "an .svg with the shaded style is refused in one line")
+code, _, err = run("render", torus, "--style", "lines", "--width-by-depth",
+                   "-o", os.path.join(work, "depth.png"))
+check(code == 1 and "--width-by-depth needs an .svg output" in err,
+      "--width-by-depth with a PNG is refused")
+code, _, err = run("render", torus, "--style", "lines", "--hidden", "dotted",
+                   "-o", os.path.join(work, "dotted.svg"))
+check(code == 2 and "--hidden' needs none or dashed" in err, "--hidden dotted is a usage error")
+
+if failures:
+    print("FAILED: %d check(s)" % len(failures))
+    sys.exit(1)

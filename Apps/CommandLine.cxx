@@ -27,8 +27,10 @@ Commands:
       result, and print figures about it
   render INPUT -o IMAGE.png|DRAWING.svg [--style STYLE] [--no-smoothing]
          [--hidden none|dashed] [--width-by-depth] [--json] [camera options]
+  render INPUT --style STYLE --progressive N [--svg] -o DIR [options]
       render INPUT offscreen to a PNG image (or a line style to an SVG
-      drawing) and print the same figures
+      drawing, or N drawings along its progressive mesh) and print the
+      same figures
   generate sphere|torus -o OUTPUT [shape options]
       write an analytic test mesh with exact normals
   simplify INPUT -o OUTPUT --triangles N [options] [camera options]
@@ -105,6 +107,8 @@ std::string RenderHelp()
   return R"(Usage: silhouette render INPUT -o IMAGE.png|DRAWING.svg [--style STYLE]
                         [--no-smoothing] [--hidden none|dashed]
                         [--width-by-depth] [--json] [camera options]
+       silhouette render INPUT --style STYLE --progressive N [--svg] -o DIR
+                        [the same options]
 
 Reads INPUT like 'silhouette smooth', smooths its silhouette for the view of
 the camera options, renders it offscreen at --size with that same camera
@@ -176,6 +180,18 @@ Options:
                           focal point's distance, times that distance over
                           the point's, within 0.5 to 8 pixels (default: 2
                           pixels everywhere)
+  --progressive N         Kim and Choe's progressive sketch: N drawings (2 to
+                          64) of a line style along INPUT's progressive mesh
+                          (vtkProgressiveMeshFilter), from its base mesh to
+                          INPUT itself at triangle counts spaced
+                          geometrically, each smoothed and its hidden lines
+                          removed, all from the camera that frames INPUT;
+                          -o names a directory (made if missing, not its
+                          parents) that gets sketch-01.png ... sketch-NN.png,
+                          and one line of figures per drawing (a JSON array
+                          with --json) (default: one drawing)
+  --svg                   with --progressive, write sketch-NN.svg drawings
+                          (default: PNG images)
   --lines-output FILE     also write the smoothed silhouette polylines to
                           FILE, a .vtp (default: nothing is written)
   --json                  print the figures as one JSON object instead of text
@@ -929,6 +945,15 @@ CommandLine ParseCommandLine(int argc, char* argv[])
         RejectInlineValue(option);
         render.WidthByDepth = true;
       }
+      else if (option.Name == "--progressive")
+      {
+        render.ProgressiveLevels = ParseCount(option, args.TakeValue(option), 2, 64);
+      }
+      else if (option.Name == "--svg")
+      {
+        RejectInlineValue(option);
+        render.ProgressiveSvg = true;
+      }
       else
       {
         return false;
@@ -937,7 +962,14 @@ CommandLine ParseCommandLine(int argc, char* argv[])
     });
     if (render.Output.empty())
     {
-      throw UsageError("'render' needs '-o IMAGE.png' or '-o DRAWING.svg'");
+      throw UsageError(render.ProgressiveLevels > 0
+          ? "'render --progressive' needs '-o DIR'"
+          : "'render' needs '-o IMAGE.png' or '-o DRAWING.svg'");
+    }
+    if (render.ProgressiveSvg && render.ProgressiveLevels == 0)
+    {
+      throw UsageError("option '--svg' goes with '--progressive'; for one drawing write "
+                       "'-o DRAWING.svg'");
     }
   }
   return result;

@@ -6,12 +6,23 @@
 #include "PrintableText.h"
 #include "Rendering.h"
 #include "Smoothing.h"
+#include "VtkErrorLog.h"
 
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
 #include <vtkPolyData.h>
+#include <vtkProgressiveMeshFilter.h>
 #include <vtkRenderer.h>
 #include <vtkSilhouetteSmoothingFilter.h>
+#include <vtkTriangleFilter.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <sstream>
 
 namespace cli
 {
@@ -101,8 +112,137 @@ void RunSmooth(const SmoothOptions& options)
     options.Json);
 }
 
+bool IsLineStyle(RenderStyle style)
+{
+  return style != RenderStyle::Shaded && style != RenderStyle::Wireframe &&
+    style != RenderStyle::NewGeometry;
+}
+
+// The folder of a progressive sketch: made when missing (not its parents).
+void PrepareSketchFolder(const std::string& folder)
+{
+  std::error_code error;
+  const std::filesystem::path path(folder);
+  if (std::filesystem::exists(path, error))
+  {
+    if (!std::filesystem::is_directory(path, error))
+    {
+      throw RuntimeError("cannot write the sketch into '" + folder + "': it is not a directory");
+    }
+    return;
+  }
+  if (!std::filesystem::create_directory(path, error))
+  {
+    throw RuntimeError("cannot make the sketch's directory '" + folder + "': " + error.message());
+  }
+}
+
+// Kim and Choe's progressive sketch (Fig. 3): the drawing of the progressive
+// mesh at `levels` triangle counts from its base mesh to the input,
+// spaced geometrically, all from the camera that frames the input.
+void RunProgressiveSketch(const RenderOptions& options)
+{
+  if (!IsLineStyle(options.Style))
+  {
+    throw RuntimeError(std::string("--progressive draws a line style (lines, charcoal, lazy, "
+                                   "hand or rough), not '") +
+      NameOf(options.Style) + "'");
+  }
+  if (!options.ProgressiveSvg)
+  {
+    RequireDisplay();
+  }
+  PrepareSketchFolder(options.Output);
+  vtkSmartPointer<vtkPolyData> mesh = ReadMeshWithTriangles(options.Input);
+  vtkNew<vtkTriangleFilter> triangles; // the progressive mesh takes triangles only
+  triangles->SetInputData(mesh);
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  vtkNew<vtkProgressiveMeshFilter> progressive;
+  VtkErrorLog& errors = VtkErrorLog::Instance();
+  errors.Clear();
+  errors.Watch(progressive);
+  progressive->SetInputConnection(triangles->GetOutputPort());
+  progressive->SetTriangleCount(0); // the base mesh
+  progressive->Update();
+  errors.ThrowIfErrors("the progressive mesh failed");
+  auto field = [&](const char* name) {
+    vtkDataArray* array = progressive->GetOutput()->GetFieldData()->GetArray(name);
+    return array ? static_cast<double>(array->GetTuple1(0)) : 0.0;
+  };
+  const double base = std::max(1.0, field("BaseTriangleCount"));
+  const double full = std::max(base, field("FullTriangleCount"));
+
+  std::string json = "[";
+  for (int level = 0; level < options.ProgressiveLevels; ++level)
+  {
+    const double fraction =
+      static_cast<double>(level) / static_cast<double>(options.ProgressiveLevels - 1);
+    const auto count = static_cast<vtkIdType>(std::llround(base * std::pow(full / base, fraction)));
+    progressive->SetTriangleCount(count);
+    progressive->Update();
+    errors.ThrowIfErrors("the progressive mesh failed");
+    auto levelMesh = vtkSmartPointer<vtkPolyData>::New();
+    levelMesh->DeepCopy(progressive->GetOutput());
+
+    RenderOptions levelOptions = options;
+    char name[32];
+    std::snprintf(
+      name, sizeof name, "sketch-%02d.%s", level + 1, options.ProgressiveSvg ? "svg" : "png");
+    levelOptions.Output = (std::filesystem::path(options.Output) / name).string();
+    levelOptions.Input = options.Input;
+    // Every level from the camera that frames the input (the finest level).
+    const OffscreenView view = MakeOffscreenView(options.Camera.ViewportSize);
+    SetUpCamera(view.Renderer, mesh->GetBounds(), options.Camera);
+    vtkCamera* camera = view.Renderer->GetActiveCamera();
+    const SmoothingRun run = SmoothSilhouette(levelMesh, camera, options.Camera);
+    if (level == 0)
+    {
+      PrintWarnings(run);
+    }
+    if (options.ProgressiveSvg)
+    {
+      RenderToSvg(view, run.Filter, levelMesh, levelOptions);
+    }
+    else
+    {
+      RenderToPng(view, run.Filter, levelMesh, levelOptions);
+    }
+    const Figures figures =
+      CollectFigures(options.Input, levelOptions.Output, run.Filter->GetOutput(),
+        run.PrepareMilliseconds, run.MedianMilliseconds, options.Camera, camera);
+    if (options.Json)
+    {
+      std::ostringstream object;
+      PrintFiguresAsJson(object, figures);
+      std::string text = object.str();
+      while (!text.empty() && text.back() == '\n')
+      {
+        text.pop_back();
+      }
+      json += (level > 0 ? ",\n" : "") + text;
+    }
+    else
+    {
+      std::cout << levelOptions.Output << ": " << figures.InputTriangles << " triangles"
+                << (level == 0 ? " (the base mesh)" : "")
+                << (level + 1 == options.ProgressiveLevels ? " (the input)" : "") << ", "
+                << figures.SilhouetteTriangles << " silhouette triangles smoothed\n";
+    }
+  }
+  if (options.Json)
+  {
+    std::cout << json << "]\n";
+  }
+}
+
 void RunRender(const RenderOptions& options)
 {
+  if (options.ProgressiveLevels > 0)
+  {
+    RunProgressiveSketch(options);
+    return;
+  }
   CheckRenderOutputPath(options);
   if (options.LinesOutput)
   {

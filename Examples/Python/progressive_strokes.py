@@ -1,6 +1,6 @@
 """Progressive stylized silhouettes (Kim and Choe, Fig. 3 and 10): the bunny's
-progressive mesh at a few triangle counts, each level's silhouette smoothed
-and drawn with a brush, side by side.
+progressive mesh at a few triangle counts, each level's silhouette smoothed,
+its hidden parts left out, and drawn with a brush, side by side.
 
     /usr/bin/python3 Examples/Python/progressive_strokes.py Data/bunny.ply out.png [brush]
 
@@ -14,8 +14,8 @@ from vtkmodules.vtkRenderingCore import (vtkActor, vtkCamera, vtkPolyDataMapper,
                                          vtkRenderWindow, vtkTextActor, vtkWindowToImageFilter)
 import vtkmodules.vtkRenderingFreeType  # noqa: F401 (text)
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401
-from silhouette_smoothing import (vtkProgressiveMeshFilter, vtkSilhouetteSmoothingFilter,
-                                  vtkStylizedStrokeFilter)
+from silhouette_smoothing import (vtkProgressiveMeshFilter, vtkSilhouetteLineVisibility,
+                                  vtkSilhouetteSmoothingFilter, vtkStylizedStrokeFilter)
 
 source, output = sys.argv[1], sys.argv[2]
 brush = sys.argv[3] if len(sys.argv) > 3 else "charcoal"
@@ -58,8 +58,15 @@ for i, count in enumerate(counts):
     smoother.SetInputConnection(pm.GetOutputPort())
     smoother.SetCamera(camera)
     smoother.SetViewportSize(width, height)
+    # The visible pieces only (Kim and Choe 3.3, step 2): the smoothed
+    # silhouette against the smoothed surface.
+    visible = vtkSilhouetteLineVisibility()
+    visible.SetInputConnection(smoother.GetOutputPort(1))
+    visible.SetSurfaceConnection(smoother.GetOutputPort(0))
+    visible.SetCamera(camera)
+    visible.PassHiddenLinesOff()
     strokes = vtkStylizedStrokeFilter()
-    strokes.SetInputConnection(smoother.GetOutputPort(1))
+    strokes.SetInputConnection(visible.GetOutputPort())
     strokes.SetCamera(camera)
     strokes.SetBrush(brushes[brush])
     strokes.SetAmplitude(0.004)
@@ -79,7 +86,7 @@ for i, count in enumerate(counts):
     label.GetTextProperty().SetFontSize(16)
     label.SetPosition(10, 10)
     renderer.AddViewProp(label)
-    keep += [renderer, pm, smoother, strokes, mapper, actor, label]
+    keep += [renderer, pm, smoother, visible, strokes, mapper, actor, label]
 
 window.Render()
 capture = vtkWindowToImageFilter()

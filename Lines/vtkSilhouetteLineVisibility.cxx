@@ -140,7 +140,8 @@ int vtkSilhouetteLineVisibility::RequestData(
     return kind == vtkSilhouetteFilterSupport::CreaseLine ||
       kind == vtkSilhouetteFilterSupport::BorderLine;
   };
-  const silsmooth::OcclusionMesh occluder(std::move(triangles.Points), std::move(triangles.Cells));
+  const silsmooth::OcclusionMesh occluder(
+    std::move(triangles.Points), std::move(triangles.Cells), triangles.Normals);
 
   vtkPointData* inPD = lines->GetPointData();
   vtkCellData* inCD = lines->GetCellData();

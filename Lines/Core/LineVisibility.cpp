@@ -5,7 +5,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
+#include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 namespace silsmooth
@@ -48,6 +52,82 @@ double rayHit(const glm::dvec3& origin, const glm::dvec3& dir, const glm::dvec3&
     return -1.0;
   }
   return glm::dot(e2, q) * inverse;
+}
+
+struct PositionHash
+{
+  std::size_t operator()(const glm::dvec3& p) const
+  {
+    std::size_t seed = 0;
+    for (int k = 0; k < 3; ++k)
+    {
+      std::uint64_t bits = 0;
+      const double value = p[k];
+      std::memcpy(&bits, &value, sizeof bits);
+      seed ^= std::hash<std::uint64_t>()(bits) + 0x9e3779b97f4a7c15ULL + (seed << 6) + (seed >> 2);
+    }
+    return seed;
+  }
+};
+
+// Normals within about a degree of each other (zero or broken ones match).
+bool sameNormal(const glm::dvec3& m, const glm::dvec3& n)
+{
+  const double scale = glm::length(m) * glm::length(n);
+  return !(scale > 0.0) || !std::isfinite(scale) || glm::dot(m, n) >= 0.99985 * scale;
+}
+
+// The point of triangle (a, b, c) nearest p (Ericson, Real-Time Collision
+// Detection, 5.1.5: the Voronoi regions of the vertices, edges and face).
+glm::dvec3 closestPointOnTriangle(
+  const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
+{
+  const glm::dvec3 ab = b - a;
+  const glm::dvec3 ac = c - a;
+  const glm::dvec3 ap = p - a;
+  const double d1 = glm::dot(ab, ap);
+  const double d2 = glm::dot(ac, ap);
+  if (d1 <= 0.0 && d2 <= 0.0)
+  {
+    return a;
+  }
+  const glm::dvec3 bp = p - b;
+  const double d3 = glm::dot(ab, bp);
+  const double d4 = glm::dot(ac, bp);
+  if (d3 >= 0.0 && d4 <= d3)
+  {
+    return b;
+  }
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
+  {
+    return a + (d1 / (d1 - d3)) * ab;
+  }
+  const glm::dvec3 cp = p - c;
+  const double d5 = glm::dot(ab, cp);
+  const double d6 = glm::dot(ac, cp);
+  if (d6 >= 0.0 && d5 <= d6)
+  {
+    return c;
+  }
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
+  {
+    return a + (d2 / (d2 - d6)) * ac;
+  }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
+  {
+    return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
+  }
+  const double denominator = va + vb + vc;
+  if (!(std::abs(denominator) > 0.0))
+  {
+    return a; // a degenerate triangle: its first corner
+  }
+  const double v = vb / denominator;
+  const double w = vc / denominator;
+  return a + v * ab + w * ac;
 }
 
 // The range [enter, leave] of t where origin + t dir lies in the box.
@@ -109,17 +189,22 @@ LineVisibilityParameters LineVisibilityParameters::forMesh(
   }
   if (sides > 0)
   {
+    const double diagonal = glm::length(high - low);
     parameters.Tolerance = sum / static_cast<double>(sides);
-    parameters.Precision = 1e-6 * glm::length(high - low);
+    parameters.Precision = 1e-6 * diagonal;
+    parameters.SampleSpacing = diagonal / 400.0;
+    parameters.Contact = 1e-5 * diagonal;
   }
   return parameters;
 }
 
-OcclusionMesh::OcclusionMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles)
+OcclusionMesh::OcclusionMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
+  const std::vector<glm::dvec3>& normals)
   : Points(std::move(points))
   , Triangles(std::move(triangles))
   , Grid(this->Points, this->Triangles)
 {
+  this->weldVertices(normals);
   this->Low = glm::dvec3(std::numeric_limits<double>::infinity());
   this->High = glm::dvec3(-std::numeric_limits<double>::infinity());
   for (const Triangle& t : this->Triangles)
@@ -135,9 +220,109 @@ OcclusionMesh::OcclusionMesh(std::vector<glm::dvec3> points, std::vector<Triangl
     }
   }
   this->Step = this->Grid.cellSize();
+  this->Pad = glm::dvec3(1e-9 * glm::length(this->High - this->Low));
 }
 
-bool OcclusionMesh::hides(const ViewGeometry& view, const glm::dvec3& point, double tolerance) const
+void OcclusionMesh::weldVertices(const std::vector<glm::dvec3>& normals)
+{
+  const bool withNormals = normals.size() == this->Points.size();
+  // Points at one position (and with one normal) are one vertex: the first.
+  std::unordered_map<glm::dvec3, std::vector<Id>, PositionHash> atPosition;
+  atPosition.reserve(this->Points.size());
+  this->VertexOf.resize(this->Points.size());
+  for (std::size_t i = 0; i < this->Points.size(); ++i)
+  {
+    std::vector<Id>& here = atPosition[this->Points[i] + glm::dvec3(0.0)];
+    Id vertex = static_cast<Id>(i);
+    for (const Id other : here)
+    {
+      if (!withNormals || sameNormal(normals[static_cast<std::size_t>(other)], normals[i]))
+      {
+        vertex = other;
+        break;
+      }
+    }
+    if (vertex == static_cast<Id>(i))
+    {
+      here.push_back(vertex);
+    }
+    this->VertexOf[i] = vertex;
+  }
+  // The triangles around each vertex, in compressed rows.
+  this->VertexTriangleOffsets.assign(this->Points.size() + 1, 0);
+  for (const Triangle& t : this->Triangles)
+  {
+    for (const Id corner : t)
+    {
+      ++this->VertexTriangleOffsets[static_cast<std::size_t>(
+                                      this->VertexOf[static_cast<std::size_t>(corner)]) +
+        1];
+    }
+  }
+  for (std::size_t v = 0; v < this->Points.size(); ++v)
+  {
+    this->VertexTriangleOffsets[v + 1] += this->VertexTriangleOffsets[v];
+  }
+  this->VertexTriangles.resize(this->VertexTriangleOffsets.back());
+  std::vector<std::size_t> fill(
+    this->VertexTriangleOffsets.begin(), this->VertexTriangleOffsets.end() - 1);
+  for (std::size_t t = 0; t < this->Triangles.size(); ++t)
+  {
+    for (const Id corner : this->Triangles[t])
+    {
+      const auto v = static_cast<std::size_t>(this->VertexOf[static_cast<std::size_t>(corner)]);
+      this->VertexTriangles[fill[v]++] = static_cast<Id>(t);
+    }
+  }
+}
+
+double OcclusionMesh::distanceTo(const glm::dvec3& point, Id triangle) const
+{
+  const Triangle& t = this->Triangles[static_cast<std::size_t>(triangle)];
+  return glm::length(point -
+    closestPointOnTriangle(point, this->Points[static_cast<std::size_t>(t[0])],
+      this->Points[static_cast<std::size_t>(t[1])], this->Points[static_cast<std::size_t>(t[2])]));
+}
+
+std::vector<Id> OcclusionMesh::localSheet(
+  const glm::dvec3& point, double contact, double radius) const
+{
+  std::vector<Id> sheet;
+  std::vector<Id> candidates;
+  this->Grid.query(point - glm::dvec3(contact), point + glm::dvec3(contact), candidates);
+  for (const Id c : candidates)
+  {
+    if (this->distanceTo(point, c) <= contact)
+    {
+      sheet.push_back(c);
+    }
+  }
+  // Breadth first through shared vertices, within the ball.
+  std::unordered_set<Id> seen(sheet.begin(), sheet.end());
+  for (std::size_t next = 0; next < sheet.size(); ++next)
+  {
+    const Triangle& t = this->Triangles[static_cast<std::size_t>(sheet[next])];
+    for (const Id corner : t)
+    {
+      const auto v = static_cast<std::size_t>(this->VertexOf[static_cast<std::size_t>(corner)]);
+      for (std::size_t k = this->VertexTriangleOffsets[v]; k < this->VertexTriangleOffsets[v + 1];
+           ++k)
+      {
+        const Id around = this->VertexTriangles[k];
+        if (seen.insert(around).second && this->distanceTo(point, around) <= radius)
+        {
+          sheet.push_back(around);
+        }
+      }
+    }
+  }
+  std::sort(sheet.begin(), sheet.end());
+  return sheet;
+}
+
+template<typename Counts>
+bool OcclusionMesh::anyHit(
+  const ViewGeometry& view, const glm::dvec3& point, double from, Counts counts) const
 {
   if (this->Grid.empty() || !finite(point) || !(this->Step > 0.0))
   {
@@ -153,7 +338,7 @@ bool OcclusionMesh::hides(const ViewGeometry& view, const glm::dvec3& point, dou
   const double end = view.Parallel ? std::numeric_limits<double>::infinity() : reach;
   // Only where the ray is inside the surface's box can it meet a triangle.
   const auto [enter, leave] = rayInBox(point, dir, this->Low, this->High);
-  const double first = std::max(enter, tolerance);
+  const double first = std::max(enter, from);
   const double last = std::min(leave, end);
   if (!(first <= last))
   {
@@ -167,14 +352,16 @@ bool OcclusionMesh::hides(const ViewGeometry& view, const glm::dvec3& point, dou
     const double next = std::min(t + this->Step, last);
     const glm::dvec3 a = point + t * dir;
     const glm::dvec3 b = point + next * dir;
-    this->Grid.query(glm::min(a, b), glm::max(a, b), candidates);
+    // Padded: a flat face on the box's side (a cube's) must not be missed
+    // when rounding ends the last piece a hair short of it.
+    this->Grid.query(glm::min(a, b) - this->Pad, glm::max(a, b) + this->Pad, candidates);
     for (const Id c : candidates)
     {
       const Triangle& tri = this->Triangles[static_cast<std::size_t>(c)];
       const double hit = rayHit(point, dir, this->Points[static_cast<std::size_t>(tri[0])],
         this->Points[static_cast<std::size_t>(tri[1])],
         this->Points[static_cast<std::size_t>(tri[2])]);
-      if (hit > tolerance && hit <= end)
+      if (hit > from && hit <= end && counts(c, hit))
       {
         return true;
       }
@@ -185,6 +372,28 @@ bool OcclusionMesh::hides(const ViewGeometry& view, const glm::dvec3& point, dou
     }
   }
   return false;
+}
+
+bool OcclusionMesh::hides(const ViewGeometry& view, const glm::dvec3& point, double tolerance) const
+{
+  return this->anyHit(view, point, tolerance, [](Id, double) { return true; });
+}
+
+bool OcclusionMesh::hides(
+  const ViewGeometry& view, const glm::dvec3& point, const LineVisibilityParameters& rule) const
+{
+  if (!(rule.Contact > 0.0) || !(rule.Contact < rule.Tolerance) || !finite(point))
+  {
+    return this->hides(view, point, rule.Tolerance);
+  }
+  const std::vector<Id> sheet = this->localSheet(point, rule.Contact, rule.Tolerance);
+  if (sheet.empty())
+  {
+    return this->hides(view, point, rule.Tolerance); // not on the surface
+  }
+  return this->anyHit(view, point, rule.Contact, [&](Id triangle, double distance) {
+    return distance > rule.Tolerance || !std::binary_search(sheet.begin(), sheet.end(), triangle);
+  });
 }
 
 namespace
@@ -259,7 +468,7 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
     return pieces;
   }
   auto visible = [&](const glm::dvec3& p) {
-    return !surface.hides(view, p, parameters.Tolerance);
+    return !surface.hides(view, p, parameters);
   };
   LinePiece current;
   current.Visible = visible(polyline.front());
@@ -269,28 +478,39 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
   {
     const glm::dvec3& a = polyline[i - 1];
     const glm::dvec3& b = polyline[i];
-    const bool state = visible(b);
-    if (state != current.Visible)
+    const double length = glm::length(b - a);
+    // Probes at fractions k / probes of the segment; the last is b.
+    const double wanted = parameters.SampleSpacing > 0.0 && std::isfinite(length)
+      ? std::ceil(length / parameters.SampleSpacing)
+      : 1.0;
+    const int probes = static_cast<int>(std::clamp(wanted, 1.0, 100000.0));
+    double before = 0.0; // the fraction of the last probe, in the current state
+    for (int k = 1; k <= probes; ++k)
     {
-      // Bisection on the segment: a keeps the current state, b the new one.
-      const double length = glm::length(b - a);
-      double low = 0.0;
-      double high = 1.0;
-      for (int step = 0; step < 64 && (high - low) * length > parameters.Precision; ++step)
+      const double at = k == probes ? 1.0 : static_cast<double>(k) / probes;
+      const bool state = visible(k == probes ? b : a + at * (b - a));
+      if (state != current.Visible)
       {
-        const double middle = 0.5 * (low + high);
-        (visible(a + middle * (b - a)) == current.Visible ? low : high) = middle;
+        // Bisection between the probes: `low` keeps the current state.
+        double low = before;
+        double high = at;
+        for (int step = 0; step < 64 && (high - low) * length > parameters.Precision; ++step)
+        {
+          const double middle = 0.5 * (low + high);
+          (visible(a + middle * (b - a)) == current.Visible ? low : high) = middle;
+        }
+        const double fraction = 0.5 * (low + high);
+        const glm::dvec3 change = a + fraction * (b - a);
+        const double along = static_cast<double>(i - 1) + fraction;
+        current.Points.push_back(change);
+        current.Along.push_back(along);
+        pieces.push_back(std::move(current));
+        current = LinePiece();
+        current.Visible = state;
+        current.Points.push_back(change);
+        current.Along.push_back(along);
       }
-      const double fraction = 0.5 * (low + high);
-      const glm::dvec3 change = a + fraction * (b - a);
-      const double along = static_cast<double>(i - 1) + fraction;
-      current.Points.push_back(change);
-      current.Along.push_back(along);
-      pieces.push_back(std::move(current));
-      current = LinePiece();
-      current.Visible = state;
-      current.Points.push_back(change);
-      current.Along.push_back(along);
+      before = at;
     }
     current.Points.push_back(b);
     current.Along.push_back(static_cast<double>(i));

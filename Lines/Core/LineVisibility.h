@@ -3,20 +3,30 @@
 //
 // A point of a line is hidden when the ray from it towards the eye (or, for
 // parallel projection, towards the viewer) crosses a triangle of the surface
-// farther than `Tolerance` from the point. The tolerance is what makes the
-// test robust for the lines a drawing has: silhouettes, creases and borders
-// lie on the surface, and a silhouette grazes it, so the triangles the line
-// lies on (and their neighbours, which a grazing ray may clip at a short
-// distance) must not hide it. It is a length in the mesh's units; scale it
-// to the mesh (LineVisibilityParameters::forMesh: the mean edge length). An
-// occluder nearer the line than that is missed: the price of the rule.
+// that may hide it. The lines a drawing has lie on the surface: silhouettes,
+// creases and borders. A silhouette grazes it, so the triangles around the
+// point (the sheet it lies on) meet its ray at short distances without
+// hiding it. The rule:
+//   - a hit farther than `Tolerance` (a length in the mesh's units, scaled to
+//     the mesh: forMesh takes the mean edge length) always hides the point;
+//   - a hit nearer than that hides it unless the triangle belongs to the
+//     point's local sheet: the triangles connected to the ones the point lies
+//     on (within `Contact`) through shared vertices, without leaving the ball
+//     of radius Tolerance around the point. Vertices are shared where points
+//     have one position and, when the surface has point normals, one normal:
+//     a crease (one normal per side) bounds a sheet, so a plate's face hides
+//     the silhouette of a bore that runs into it, however near;
+//   - a point that lies on no triangle (a line off the surface) keeps the
+//     plain rule: no hit nearer than Tolerance hides it.
+// The price: an occluder of the same sheet nearer than Tolerance (a fold of
+// the surface over itself) is missed.
 //
 // Each polyline is split into pieces that are wholly visible or wholly
-// hidden: every vertex is classified, and along a segment whose ends differ
-// the change is found by bisection to within `Precision` (model units),
-// where a point of the piece is inserted. A change between two vertices
-// that agree (a short occluder seen through a gap) is not found: sample the
-// lines as finely as the smallest occluder that matters.
+// hidden: every vertex is classified, and so are probes every `SampleSpacing`
+// along each segment (a long straight crease can pass behind an occluder
+// between its ends); where consecutive probes differ, the change is found by
+// bisection to within `Precision` (model units), where a point of the piece
+// is inserted. An occluder narrower than the spacing can be missed.
 //
 // Invariants: pieces alternate visible and hidden along a polyline, join end
 // to start (a change point ends one and starts the next, bit for bit), and
@@ -41,6 +51,12 @@ struct LineVisibilityParameters
   double Tolerance = 0.0;
   /// Visibility changes are located to within this distance along the line.
   double Precision = 0.0;
+  /// Probes at most this far apart along each segment are classified too; 0
+  /// classifies the vertices only.
+  double SampleSpacing = 0.0;
+  /// Points within this distance of a triangle lie on it (the seeds of their
+  /// local sheet); 0 turns the local-sheet rule off.
+  double Contact = 0.0;
   /// Pieces shorter than this (along the line) join their neighbours, taking
   /// their state (mergeShortPieces); 0 keeps every piece. For lines that lie
   /// on the surface exactly, a visible stub as long as the tolerance remains
@@ -49,7 +65,7 @@ struct LineVisibilityParameters
   double MinimumPieceLength = 0.0;
 
   /// Tolerance: the mesh's mean edge length; Precision: 1e-6 of its bounding
-  /// box's diagonal.
+  /// box's diagonal; SampleSpacing: 1/400 of it; Contact: 1e-5 of it.
   static LineVisibilityParameters forMesh(
     const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles);
 };
@@ -58,18 +74,41 @@ struct LineVisibilityParameters
 class OcclusionMesh
 {
 public:
-  OcclusionMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles);
+  /// `normals`: empty, or one per point (copies of a point with different
+  /// normals are not one vertex: see the header's rule).
+  OcclusionMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
+    const std::vector<glm::dvec3>& normals = {});
 
-  /// Whether the surface hides `point` from the view (see the header's rule).
+  /// Whether the surface hides `point` from the view by the header's rule.
+  bool hides(
+    const ViewGeometry& view, const glm::dvec3& point, const LineVisibilityParameters& rule) const;
+
+  /// The plain rule alone: whether a triangle farther than `tolerance` from
+  /// `point` along its ray hides it.
   bool hides(const ViewGeometry& view, const glm::dvec3& point, double tolerance) const;
 
 private:
+  /// Whether the ray from `point` towards the viewer meets, farther than
+  /// `from`, a triangle for which counts(triangle id, distance) is true.
+  template<typename Counts>
+  bool anyHit(const ViewGeometry& view, const glm::dvec3& point, double from, Counts counts) const;
+  /// The point's local sheet (sorted triangle ids), or empty when the point
+  /// lies on no triangle.
+  std::vector<Id> localSheet(const glm::dvec3& point, double contact, double radius) const;
+  double distanceTo(const glm::dvec3& point, Id triangle) const;
+  void weldVertices(const std::vector<glm::dvec3>& normals);
+
   std::vector<glm::dvec3> Points;
   std::vector<Triangle> Triangles;
+  /// Triangles around each vertex (points welded by position and normal).
+  std::vector<Id> VertexOf;
+  std::vector<std::size_t> VertexTriangleOffsets;
+  std::vector<Id> VertexTriangles;
   TriangleGrid Grid;
   glm::dvec3 Low{ 0.0 };
   glm::dvec3 High{ 0.0 };
-  double Step = 0.0; ///< length of the ray pieces whose boxes are queried
+  double Step = 0.0;     ///< length of the ray pieces whose boxes are queried
+  glm::dvec3 Pad{ 0.0 }; ///< added around each piece's box
 };
 
 struct LinePiece

@@ -322,7 +322,7 @@ std::vector<Id> OcclusionMesh::localSheet(
 
 template<typename Counts>
 bool OcclusionMesh::anyHit(
-  const ViewGeometry& view, const glm::dvec3& point, double from, Counts counts) const
+  const ViewGeometry& view, const glm::dvec3& point, double from, double to, Counts counts) const
 {
   if (this->Grid.empty() || !finite(point) || !(this->Step > 0.0))
   {
@@ -335,7 +335,7 @@ bool OcclusionMesh::anyHit(
     return false;
   }
   const glm::dvec3 dir = toward / reach;
-  const double end = view.Parallel ? std::numeric_limits<double>::infinity() : reach;
+  const double end = std::min(to, view.Parallel ? std::numeric_limits<double>::infinity() : reach);
   // Only where the ray is inside the surface's box can it meet a triangle.
   const auto [enter, leave] = rayInBox(point, dir, this->Low, this->High);
   const double first = std::max(enter, from);
@@ -376,24 +376,39 @@ bool OcclusionMesh::anyHit(
 
 bool OcclusionMesh::hides(const ViewGeometry& view, const glm::dvec3& point, double tolerance) const
 {
-  return this->anyHit(view, point, tolerance, [](Id, double) { return true; });
+  return this->anyHit(view, point, tolerance, std::numeric_limits<double>::infinity(),
+    [](Id, double) { return true; });
 }
 
 bool OcclusionMesh::hides(
   const ViewGeometry& view, const glm::dvec3& point, const LineVisibilityParameters& rule) const
 {
+  // A hit beyond the tolerance hides the point whatever the triangle.
+  if (this->hides(view, point, rule.Tolerance))
+  {
+    return true;
+  }
   if (!(rule.Contact > 0.0) || !(rule.Contact < rule.Tolerance) || !finite(point))
   {
-    return this->hides(view, point, rule.Tolerance);
+    return false;
+  }
+  // The nearer hits; the sheet is worked out only when there are some.
+  std::vector<Id> near;
+  this->anyHit(view, point, rule.Contact, rule.Tolerance, [&](Id triangle, double) {
+    near.push_back(triangle);
+    return false;
+  });
+  if (near.empty())
+  {
+    return false;
   }
   const std::vector<Id> sheet = this->localSheet(point, rule.Contact, rule.Tolerance);
   if (sheet.empty())
   {
-    return this->hides(view, point, rule.Tolerance); // not on the surface
+    return false; // not on the surface: the plain rule's answer
   }
-  return this->anyHit(view, point, rule.Contact, [&](Id triangle, double distance) {
-    return distance > rule.Tolerance || !std::binary_search(sheet.begin(), sheet.end(), triangle);
-  });
+  return std::any_of(near.begin(), near.end(),
+    [&](Id triangle) { return !std::binary_search(sheet.begin(), sheet.end(), triangle); });
 }
 
 namespace

@@ -89,9 +89,11 @@ public:
 
 private:
   /// Whether the ray from `point` towards the viewer meets, farther than
-  /// `from`, a triangle for which counts(triangle id, distance) is true.
+  /// `from` and not beyond `to`, a triangle for which counts(triangle id,
+  /// distance) is true.
   template<typename Counts>
-  bool anyHit(const ViewGeometry& view, const glm::dvec3& point, double from, Counts counts) const;
+  bool anyHit(
+    const ViewGeometry& view, const glm::dvec3& point, double from, double to, Counts counts) const;
   /// The point's local sheet (sorted triangle ids), or empty when the point
   /// lies on no triangle.
   std::vector<Id> localSheet(const glm::dvec3& point, double contact, double radius) const;

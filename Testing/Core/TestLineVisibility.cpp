@@ -371,3 +371,81 @@ TEST(LineVisibility, ShortPiecesJoinTheirNeighbours)
   ASSERT_EQ(middle.size(), 1u);
   EXPECT_FALSE(middle[0].Visible);
 }
+
+TEST(LineVisibility, ProbesFindAnOccluderBetweenTwoVisibleEnds)
+{
+  // One long segment from x = -3 to 3 under a square of side 2: both ends
+  // are visible, the middle hidden. Vertices alone find nothing (the wrong
+  // variant); probes every 0.1 find both changes.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  square(1.0, points, triangles);
+  const OcclusionMesh surface(points, triangles);
+  const std::vector<glm::dvec3> line{ { -3, 0.3, 0 }, { 3, 0.3, 0 } };
+  LineVisibilityParameters parameters{ 1e-6, 1e-10 };
+  EXPECT_EQ(splitByVisibility(surface, fromAbove(), line, parameters).size(), 1u);
+  parameters.SampleSpacing = 0.1;
+  const std::vector<LinePiece> pieces = splitByVisibility(surface, fromAbove(), line, parameters);
+  ASSERT_EQ(pieces.size(), 3u);
+  EXPECT_FALSE(pieces[1].Visible);
+  EXPECT_NEAR(pieces[1].Points.front().x, -1.0, 1e-9);
+  EXPECT_NEAR(pieces[1].Points.back().x, 1.0, 1e-9);
+  expectWellFormed(pieces, line);
+}
+
+TEST(LineVisibility, AFaceOnTheBoundingBoxIsNotMissed)
+{
+  // Every point of a cube's hidden edge is hidden by its front faces, which
+  // lie on the sides of the surface's bounding box. Unpadded grid queries
+  // missed them where rounding ended the ray's last piece a hair short (204
+  // of 1,999 points tested visible).
+  const std::vector<glm::dvec3> points{ { -1, -1, -1 }, { 1, -1, -1 }, { 1, 1, -1 }, { -1, 1, -1 },
+    { -1, -1, 1 }, { 1, -1, 1 }, { 1, 1, 1 }, { -1, 1, 1 } };
+  const std::vector<Triangle> triangles{ { { 0, 2, 1 } }, { { 0, 3, 2 } }, { { 4, 5, 6 } },
+    { { 4, 6, 7 } }, { { 0, 1, 5 } }, { { 0, 5, 4 } }, { { 1, 2, 6 } }, { { 1, 6, 5 } },
+    { { 2, 3, 7 } }, { { 2, 7, 6 } }, { { 3, 0, 4 } }, { { 3, 4, 7 } } };
+  const OcclusionMesh surface(points, triangles);
+  const ViewGeometry view = coretest::perspectiveFrom(glm::dvec3(5.0, 3.7, 4.3));
+  int visible = 0;
+  for (int i = 1; i < 2000; ++i)
+  {
+    visible += surface.hides(view, glm::dvec3(-1, -1, -1 + 2.0 * i / 2000), 1e-5) ? 0 : 1;
+  }
+  EXPECT_EQ(visible, 0);
+}
+
+TEST(LineVisibility, ACreaseBoundsTheLocalSheet)
+{
+  // An L: a floor (z = 0, x in [0, 2]) and a wall (x = 0, z in [0, 2]) meeting
+  // at a crease along y, each side with its own copies of the crease's
+  // points and its own normal, seen from below the floor, beyond the wall.
+  // The floor hides a point on the wall just above the crease from 0.07
+  // away along its ray, inside the tolerance of 0.5. The floor is another
+  // sheet (its copies of the crease have another normal), so the point is
+  // hidden; without normals floor and wall are one sheet and the point stays
+  // visible (the wrong variant), as a bore's silhouette running into a
+  // plate did.
+  const std::vector<glm::dvec3> points{ { 0, -1, 0 }, { 2, -1, 0 }, { 2, 1, 0 }, { 0, 1, 0 },
+    { 0, -1, 0 }, { 0, 1, 0 }, { 0, 1, 2 }, { 0, -1, 2 } };
+  const std::vector<Triangle> triangles{ { { 0, 1, 2 } }, { { 0, 2, 3 } }, { { 4, 5, 6 } },
+    { { 4, 6, 7 } } };
+  std::vector<glm::dvec3> normals(4, glm::dvec3(0, 0, 1));
+  normals.insert(normals.end(), 4, glm::dvec3(1, 0, 0));
+  ViewGeometry view;
+  view.Parallel = true;
+  view.TowardViewer = glm::normalize(glm::dvec3(1, 0, -1)); // from below, beyond the wall
+  LineVisibilityParameters rule;
+  rule.Tolerance = 0.5;
+  rule.Precision = 1e-9;
+  rule.Contact = 1e-7;
+  const glm::dvec3 onWall(0, 0.2, 0.05); // its ray meets the floor 0.07 away
+  const glm::dvec3 high(0, 0.2, 1.5);    // its ray meets the floor 2.1 away
+  const OcclusionMesh creased(points, triangles, normals);
+  EXPECT_TRUE(creased.hides(view, onWall, rule));
+  EXPECT_TRUE(creased.hides(view, high, rule));
+  const OcclusionMesh oneSheet(points, triangles);
+  EXPECT_FALSE(oneSheet.hides(view, onWall, rule));
+  EXPECT_TRUE(oneSheet.hides(view, high, rule)); // beyond the tolerance: any triangle
+  // A point on no triangle keeps the plain rule.
+  EXPECT_FALSE(creased.hides(view, glm::dvec3(-0.01, 0.2, 0.05), rule));
+}

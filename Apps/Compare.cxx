@@ -380,8 +380,8 @@ Options:
                         (default 3)
   --views N             camera positions for the deviations (default 12)
   --frames N            timed orbit frames per variant, at least 30 for the
-                        README's figures, and the number of 1-degree steps
-                        of the coherence orbit (default 30)
+                        figures of docs/comparison.md, and the number of
+                        1-degree steps of the coherence orbit (default 30)
   --size WxH            image size (default 1024x768)
   --tolerance PX        the filters' Tolerance, ours and Wang 2003's
                         (default 0.5)
@@ -414,7 +414,7 @@ Options:
                         with 'reference' the carried normals are the
                         reference's
   --json                one JSON array, an object per model
-  --markdown            the README's tables (the earlier methods and the
+  --markdown            docs/comparison.md's tables (the earlier methods and the
                         coherence in tables of their own)
 )" + RenderBackendHelp(24) +
     R"(  -h, --help            show this help and exit

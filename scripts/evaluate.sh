@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# Regenerates the README's evaluation (issue 3) from scratch: builds, measures
+# Regenerates the evaluation (issue 3) from scratch: builds, measures
 # every model of the set with `silhouette compare all` (1024x768, 12 views, 30
 # timed orbit frames per variant), draws the figures and the time plot into
-# docs/figures/, writes docs/evaluation.md and puts it into README.md between
-# the evaluation markers; then measures the real meshes against the truth
+# docs/figures/, writes docs/evaluation.md and puts it into docs/comparison.md
+# between the evaluation markers; then measures the real meshes against the truth
 # (`silhouette compare --truth`, meshes fetched by scripts/real-meshes.sh) into
 # docs/fidelity.md between its markers. Takes a few minutes on two cores.
 set -euo pipefail
@@ -58,11 +58,11 @@ for coarse_points in original reference; do
   mv "$fidelity.new" "$fidelity"
 done
 
-readme="$here/README.md"
+comparison="$here/docs/comparison.md"
 awk -v table="$here/docs/evaluation.md" '
   /<!-- evaluation:begin -->/ { print; while ((getline line < table) > 0) print line; skipping = 1; next }
   /<!-- evaluation:end -->/ { skipping = 0 }
   !skipping { print }
-' "$readme" >"$readme.new"
-mv "$readme.new" "$readme"
-echo "evaluate: wrote docs/evaluation.md, docs/fidelity.md, docs/figures/*.png and the README's evaluation section"
+' "$comparison" >"$comparison.new"
+mv "$comparison.new" "$comparison"
+echo "evaluate: wrote docs/evaluation.md, docs/fidelity.md, docs/figures/*.png and docs/comparison.md's evaluation section"

@@ -1,5 +1,5 @@
 // Silhouette masks and the distances between their outlines: how the
-// project measures silhouette accuracy (README, "What the tests show"). Meshes are rendered flat
+// project measures silhouette accuracy (docs/testing.md, "What the tests show"). Meshes are rendered flat
 // and unlit, without multisampling, and read back as coverage masks; outlines
 // are compared by a Euclidean distance transform, or against an exact circle.
 #ifndef SilhouetteMasks_h

@@ -1,5 +1,5 @@
 // Local re-meshing of one silhouette triangle (Wang et al. 2008, III-E, Fig. 11;
-// README, "How the open choices were closed": crack-free, re-meshing).
+// docs/methods.md, "How the open choices were closed": crack-free, re-meshing).
 //
 // A silhouette triangle (A, B, C) has one vertex A whose visibility differs from
 // B's and C's. Its sides AB and AC carry the silhouette points P and Q, and the

@@ -1,5 +1,5 @@
 // The sample count must keep the sampled silhouette within the pixel
-// tolerance (README, "How the open choices were closed": sampling). Measured here on circular arcs
+// tolerance (docs/methods.md, "How the open choices were closed": sampling). Measured here on circular arcs
 // seen head-on in an orthographic view where one model unit is one pixel.
 #include "AdaptiveSampling.h"
 

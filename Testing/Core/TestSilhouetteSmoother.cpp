@@ -1,5 +1,5 @@
 // The whole per-frame pass on small exact meshes: the crack-free and
-// closed-manifold invariants (README, "How the open choices were closed").
+// closed-manifold invariants (docs/methods.md, "How the open choices were closed").
 #include "CoreTestMeshes.h"
 #include "FoldGuard.h"
 #include "SilhouetteSmoother.h"

@@ -1,4 +1,4 @@
-// Exact accuracy (issue 2; README, "What the tests show"): an 80-triangle icosphere with its points
+// Exact accuracy (issue 2; docs/testing.md, "What the tests show"): an 80-triangle icosphere with its points
 // on the unit sphere and exact normals, seen in perspective from 24 directions
 // at 1024 x 1024. The true outline is the projection of the sphere's contour
 // circle: a circle about the image centre of radius

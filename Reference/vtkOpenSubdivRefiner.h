@@ -79,10 +79,10 @@
 #ifndef vtkOpenSubdivRefiner_h
 #define vtkOpenSubdivRefiner_h
 
-#include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
+#include "SilhouetteSmoothingFiltersReferenceModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkOpenSubdivRefiner : public vtkPolyDataAlgorithm
+class SILHOUETTESMOOTHINGFILTERSREFERENCE_EXPORT vtkOpenSubdivRefiner : public vtkPolyDataAlgorithm
 {
 public:
   static vtkOpenSubdivRefiner* New();

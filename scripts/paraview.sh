@@ -43,8 +43,9 @@ packages=(
   # VTK::freetype, whose link interface names Freetype::Freetype; these give
   # their headers and link libraries.
   libx11-dev libgl-dev libglew-dev libfreetype-dev
-  # Our module: a compiler, GLM for the core, OpenSubdiv for vtkOpenSubdivRefiner.
-  cmake make g++ libglm-dev libosd-dev
+  # Our module: a compiler and GLM for the core (the plugin's modules need no
+  # OpenSubdiv: vtkOpenSubdivRefiner is in a module of its own).
+  cmake make g++ libglm-dev
   # pvbatch renders through X: a virtual X server. Two ranks: Open MPI.
   xvfb xauth openmpi-bin
   # The GUI test (paraview.RepresentationGUI): ImageMagick's import captures

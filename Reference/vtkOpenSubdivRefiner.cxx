@@ -25,8 +25,10 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -152,32 +154,34 @@ bool IsIntegerType(int dataType)
 
 } // namespace
 
-int vtkOpenSubdivRefiner::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+namespace
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  output->Initialize();
-  if (!input)
-  {
-    return 1;
-  }
-  const vtkIdType numPoints = input->GetNumberOfPoints();
 
-  // 1. Triangles, with the input cell each came from.
-  std::vector<Triangle> triangles;
-  std::vector<vtkIdType> triangleCell;
-  vtkIdType droppedCells = 0;
+// Step 1: the input's polygons and strips as triangles, with the input cell
+// each came from; cells naming missing points are an error (lines too, as
+// they mark creases).
+struct TriangleCells
+{
+  std::vector<Triangle> Triangles;
+  std::vector<vtkIdType> Cells;
+  vtkIdType Dropped = 0; ///< degenerate triangles, polygons of fewer than 3 points
+  std::string Error;
+};
+
+TriangleCells ReadTriangleCells(vtkPolyData* input)
+{
+  TriangleCells read;
+  const vtkIdType numPoints = input->GetNumberOfPoints();
   vtkIdType badCell = -1;
   vtkIdType badPoint = -1;
   auto addTriangle = [&](vtkIdType a, vtkIdType b, vtkIdType c, vtkIdType cellId) {
     if (a == b || b == c || c == a)
     {
-      ++droppedCells;
+      ++read.Dropped;
       return;
     }
-    triangles.push_back({ a, b, c });
-    triangleCell.push_back(cellId);
+    read.Triangles.push_back({ a, b, c });
+    read.Cells.push_back(cellId);
   };
   auto validIds = [&](vtkIdType npts, const vtkIdType* pts, vtkIdType cellId) {
     for (vtkIdType i = 0; i < npts; ++i)
@@ -191,155 +195,134 @@ int vtkOpenSubdivRefiner::RequestData(
     }
     return true;
   };
-  const vtkIdType numVerts = input->GetNumberOfVerts();
-  const vtkIdType numLines = input->GetNumberOfLines();
-  const vtkIdType numPolys = input->GetNumberOfPolys();
-  {
-    vtkIdType cellId = numVerts + numLines;
-    auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-    for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell(), ++cellId)
+  // Walks one cell array, cell ids from `firstId`, until a bad cell.
+  auto walk = [&](vtkCellArray* cells, vtkIdType firstId, auto&& triangulate) {
+    vtkIdType cellId = firstId;
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cellId)
     {
       vtkIdType npts;
       const vtkIdType* pts;
-      polys->GetCurrentCell(npts, pts);
+      it->GetCurrentCell(npts, pts);
       if (!validIds(npts, pts, cellId))
       {
-        break;
+        return;
       }
-      if (npts < 3)
-      {
-        ++droppedCells;
-      }
+      triangulate(npts, pts, cellId);
+    }
+  };
+  const vtkIdType numVerts = input->GetNumberOfVerts();
+  const vtkIdType numLines = input->GetNumberOfLines();
+  const vtkIdType numPolys = input->GetNumberOfPolys();
+  walk(input->GetPolys(), numVerts + numLines,
+    [&](vtkIdType npts, const vtkIdType* pts, vtkIdType cellId) {
+      read.Dropped += npts < 3 ? 1 : 0;
       for (vtkIdType i = 1; i + 1 < npts; ++i)
       {
         addTriangle(pts[0], pts[i], pts[i + 1], cellId);
       }
-    }
+    });
+  if (badCell < 0)
+  {
+    walk(input->GetStrips(), numVerts + numLines + numPolys,
+      [&](vtkIdType npts, const vtkIdType* pts, vtkIdType cellId) {
+        read.Dropped += npts < 3 ? 1 : 0;
+        for (vtkIdType i = 0; i + 2 < npts; ++i)
+        {
+          if (i % 2 == 0)
+          {
+            addTriangle(pts[i], pts[i + 1], pts[i + 2], cellId);
+          }
+          else
+          {
+            addTriangle(pts[i + 1], pts[i], pts[i + 2], cellId);
+          }
+        }
+      });
   }
   if (badCell < 0)
   {
-    vtkIdType cellId = numVerts + numLines + numPolys;
-    auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
-    for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell(), ++cellId)
-    {
-      vtkIdType npts;
-      const vtkIdType* pts;
-      strips->GetCurrentCell(npts, pts);
-      if (!validIds(npts, pts, cellId))
-      {
-        break;
-      }
-      if (npts < 3)
-      {
-        ++droppedCells;
-      }
-      for (vtkIdType i = 0; i + 2 < npts; ++i)
-      {
-        if (i % 2 == 0)
-        {
-          addTriangle(pts[i], pts[i + 1], pts[i + 2], cellId);
-        }
-        else
-        {
-          addTriangle(pts[i + 1], pts[i], pts[i + 2], cellId);
-        }
-      }
-    }
-  }
-  if (badCell < 0)
-  {
-    vtkIdType cellId = numVerts;
-    auto lines = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
-    for (lines->GoToFirstCell(); !lines->IsDoneWithTraversal(); lines->GoToNextCell(), ++cellId)
-    {
-      vtkIdType npts;
-      const vtkIdType* pts;
-      lines->GetCurrentCell(npts, pts);
-      if (!validIds(npts, pts, cellId))
-      {
-        break;
-      }
-    }
+    walk(input->GetLines(), numVerts, [](vtkIdType, const vtkIdType*, vtkIdType) {});
   }
   if (badCell >= 0)
   {
-    vtkErrorMacro("Cell " << badCell << " refers to point " << badPoint << ", but the input has "
-                          << numPoints << " points.");
-    return 0;
+    std::ostringstream message;
+    message << "Cell " << badCell << " refers to point " << badPoint << ", but the input has "
+            << numPoints << " points.";
+    read.Error = message.str();
   }
-  if (droppedCells > 0)
-  {
-    vtkWarningMacro("Dropped " << droppedCells
-                               << " degenerate triangle(s) or polygon(s) (repeated point ids or "
-                                  "fewer than 3 points).");
-  }
-  if (triangles.empty())
-  {
-    return 1; // empty in, empty out
-  }
+  return read;
+}
 
-  // 2. OpenSubdiv indexes with int: the refined mesh must fit.
-  const double lastLevelFaceVertices =
-    3.0 * static_cast<double>(triangles.size()) * std::pow(4.0, this->Level);
-  if (lastLevelFaceVertices >= static_cast<double>(std::numeric_limits<int>::max()))
-  {
-    vtkErrorMacro("The refined mesh (" << triangles.size() << " triangles times 4^" << this->Level
-                                       << ") is too large for OpenSubdiv's 32-bit indices.");
-    return 0;
-  }
+// Step 3: the points used by triangles become OpenSubdiv's base vertices, in
+// order of first use; their coordinates must be finite.
+struct BaseMesh
+{
+  std::vector<int> BaseIndex;       ///< per input point, its base vertex or -1
+  std::vector<vtkIdType> BasePoint; ///< per base vertex, its input point
+  std::vector<int> FaceVertices;    ///< three base vertices per triangle
+  std::vector<double> Positions;    ///< three coordinates per base vertex
+  int numBase() const { return static_cast<int>(this->BasePoint.size()); }
+  int numTriangles() const { return static_cast<int>(this->FaceVertices.size() / 3); }
+};
 
-  // 3. The points used by triangles become OpenSubdiv's base vertices, in order
-  // of first use; their coordinates must be finite.
+std::string MakeBaseMesh(vtkPolyData* input, const std::vector<Triangle>& triangles, BaseMesh& base)
+{
   vtkPoints* inPoints = input->GetPoints();
-  std::vector<int> baseIndex(static_cast<std::size_t>(numPoints), -1);
-  std::vector<vtkIdType> basePoint;
-  std::vector<int> faceVertices;
-  faceVertices.reserve(3 * triangles.size());
+  base.BaseIndex.assign(static_cast<std::size_t>(input->GetNumberOfPoints()), -1);
+  base.FaceVertices.reserve(3 * triangles.size());
   for (const Triangle& t : triangles)
   {
     for (vtkIdType id : t)
     {
-      int& index = baseIndex[static_cast<std::size_t>(id)];
+      int& index = base.BaseIndex[static_cast<std::size_t>(id)];
       if (index < 0)
       {
         double p[3];
         inPoints->GetPoint(id, p);
         if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
         {
-          vtkErrorMacro("Point " << id << " has a NaN or infinite coordinate.");
-          return 0;
+          return "Point " + std::to_string(id) + " has a NaN or infinite coordinate.";
         }
-        index = static_cast<int>(basePoint.size());
-        basePoint.push_back(id);
+        index = static_cast<int>(base.BasePoint.size());
+        base.BasePoint.push_back(id);
       }
-      faceVertices.push_back(index);
+      base.FaceVertices.push_back(index);
     }
   }
-  const int numBase = static_cast<int>(basePoint.size());
-  const int numTriangles = static_cast<int>(triangles.size());
-  std::vector<double> basePositions(3 * static_cast<std::size_t>(numBase));
-  for (int v = 0; v < numBase; ++v)
+  base.Positions.resize(3 * base.BasePoint.size());
+  for (int v = 0; v < base.numBase(); ++v)
   {
-    inPoints->GetPoint(basePoint[static_cast<std::size_t>(v)], &basePositions[3 * v]);
+    inPoints->GetPoint(base.BasePoint[static_cast<std::size_t>(v)], &base.Positions[3 * v]);
   }
+  return "";
+}
 
-  // 4. Edges: each in one or two triangles, used in opposite directions.
+// Step 4: the edges, each in one or two triangles used in opposite
+// directions (a manifold, consistently oriented surface).
+struct EdgeList
+{
+  std::vector<std::uint64_t> Keys;           ///< ascending (EdgeKey)
+  std::vector<std::array<int, 2>> Triangles; ///< the second -1 on a border
+};
+
+std::string CollectEdges(
+  const BaseMesh& base, const std::vector<vtkIdType>& triangleCell, EdgeList& edges)
+{
   std::vector<EdgeUse> uses;
-  uses.reserve(faceVertices.size());
-  for (int t = 0; t < numTriangles; ++t)
+  uses.reserve(base.FaceVertices.size());
+  for (int t = 0; t < base.numTriangles(); ++t)
   {
     for (int k = 0; k < 3; ++k)
     {
-      const int a = faceVertices[3 * t + k];
-      const int b = faceVertices[3 * t + (k + 1) % 3];
+      const int a = base.FaceVertices[3 * t + k];
+      const int b = base.FaceVertices[3 * t + (k + 1) % 3];
       uses.push_back({ EdgeKey(a, b), t, a < b });
     }
   }
   std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
     return x.Key < y.Key || (x.Key == y.Key && x.Triangle < y.Triangle);
   });
-  std::vector<std::uint64_t> edgeKeys;
-  std::vector<std::array<int, 2>> edgeTriangles;
   for (std::size_t i = 0; i < uses.size();)
   {
     std::size_t j = i + 1;
@@ -347,48 +330,62 @@ int vtkOpenSubdivRefiner::RequestData(
     {
       ++j;
     }
-    const vtkIdType pointA = basePoint[static_cast<std::size_t>(uses[i].Key >> 32)];
-    const vtkIdType pointB = basePoint[static_cast<std::size_t>(uses[i].Key & 0xffffffffu)];
+    const vtkIdType pointA = base.BasePoint[static_cast<std::size_t>(uses[i].Key >> 32)];
+    const vtkIdType pointB = base.BasePoint[static_cast<std::size_t>(uses[i].Key & 0xffffffffu)];
+    std::ostringstream message;
     if (j - i > 2)
     {
-      vtkErrorMacro("Non-manifold input: the edge between points "
-        << pointA << " and " << pointB << " is shared by " << (j - i) << " triangles.");
-      return 0;
+      message << "Non-manifold input: the edge between points " << pointA << " and " << pointB
+              << " is shared by " << (j - i) << " triangles.";
+      return message.str();
     }
     if (j - i == 2 && uses[i].Forward == uses[i + 1].Forward)
     {
-      vtkErrorMacro("Inconsistent orientation: cells "
-        << triangleCell[static_cast<std::size_t>(uses[i].Triangle)] << " and "
-        << triangleCell[static_cast<std::size_t>(uses[i + 1].Triangle)]
-        << " run through the edge between points " << pointA << " and " << pointB
-        << " in the same direction.");
-      return 0;
+      message << "Inconsistent orientation: cells "
+              << triangleCell[static_cast<std::size_t>(uses[i].Triangle)] << " and "
+              << triangleCell[static_cast<std::size_t>(uses[i + 1].Triangle)]
+              << " run through the edge between points " << pointA << " and " << pointB
+              << " in the same direction.";
+      return message.str();
     }
-    edgeKeys.push_back(uses[i].Key);
-    edgeTriangles.push_back({ uses[i].Triangle, j - i == 2 ? uses[i + 1].Triangle : -1 });
+    edges.Keys.push_back(uses[i].Key);
+    edges.Triangles.push_back({ uses[i].Triangle, j - i == 2 ? uses[i + 1].Triangle : -1 });
     i = j;
   }
-  uses = std::vector<EdgeUse>();
+  return "";
+}
 
-  // 5. Creases: edges marked by the input lines, and edges sharper than FeatureAngle.
-  std::vector<char> isCrease(edgeKeys.size(), 0);
-  if (this->FeatureAngle > 0.0)
+// Step 5: the crease edges, as pairs of base vertices: the edges sharper
+// than `featureAngle` (when above 0) and the segments of the input's lines
+// that are edges of the triangles (the others are counted in Ignored).
+struct CreaseEdges
+{
+  std::vector<int> Pairs;
+  vtkIdType Ignored = 0;
+  int count() const { return static_cast<int>(this->Pairs.size() / 2); }
+};
+
+CreaseEdges FindCreases(
+  vtkPolyData* input, const BaseMesh& base, const EdgeList& edges, double featureAngle)
+{
+  std::vector<char> isCrease(edges.Keys.size(), 0);
+  if (featureAngle > 0.0)
   {
-    std::vector<Vector> normals(static_cast<std::size_t>(numTriangles));
-    for (int t = 0; t < numTriangles; ++t)
+    std::vector<Vector> normals(static_cast<std::size_t>(base.numTriangles()));
+    for (int t = 0; t < base.numTriangles(); ++t)
     {
-      const double* p0 = &basePositions[3 * faceVertices[3 * t]];
-      const double* p1 = &basePositions[3 * faceVertices[3 * t + 1]];
-      const double* p2 = &basePositions[3 * faceVertices[3 * t + 2]];
+      const double* p0 = &base.Positions[3 * base.FaceVertices[3 * t]];
+      const double* p1 = &base.Positions[3 * base.FaceVertices[3 * t + 1]];
+      const double* p2 = &base.Positions[3 * base.FaceVertices[3 * t + 2]];
       Vector n = Cross(Sub(p1, p0), Sub(p2, p0));
       const double length = Norm(n);
       normals[t] = length > 0.0 ? Vector{ n[0] / length, n[1] / length, n[2] / length }
                                 : Vector{ 0.0, 0.0, 0.0 };
     }
-    const double cosLimit = std::cos(vtkMath::RadiansFromDegrees(this->FeatureAngle));
-    for (std::size_t e = 0; e < edgeKeys.size(); ++e)
+    const double cosLimit = std::cos(vtkMath::RadiansFromDegrees(featureAngle));
+    for (std::size_t e = 0; e < edges.Keys.size(); ++e)
     {
-      const std::array<int, 2>& pair = edgeTriangles[e];
+      const std::array<int, 2>& pair = edges.Triangles[e];
       if (pair[1] < 0)
       {
         continue;
@@ -401,63 +398,58 @@ int vtkOpenSubdivRefiner::RequestData(
       }
     }
   }
-  vtkIdType ignoredSegments = 0;
+  CreaseEdges creases;
+  auto lines = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
+  for (lines->GoToFirstCell(); !lines->IsDoneWithTraversal(); lines->GoToNextCell())
   {
-    auto lines = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
-    for (lines->GoToFirstCell(); !lines->IsDoneWithTraversal(); lines->GoToNextCell())
+    vtkIdType npts;
+    const vtkIdType* pts;
+    lines->GetCurrentCell(npts, pts);
+    for (vtkIdType i = 0; i + 1 < npts; ++i)
     {
-      vtkIdType npts;
-      const vtkIdType* pts;
-      lines->GetCurrentCell(npts, pts);
-      for (vtkIdType i = 0; i + 1 < npts; ++i)
+      if (pts[i] == pts[i + 1])
       {
-        if (pts[i] == pts[i + 1])
-        {
-          continue;
-        }
-        const int a = baseIndex[static_cast<std::size_t>(pts[i])];
-        const int b = baseIndex[static_cast<std::size_t>(pts[i + 1])];
-        const std::uint64_t key = a >= 0 && b >= 0 ? EdgeKey(a, b) : 0;
-        const auto found = std::lower_bound(edgeKeys.begin(), edgeKeys.end(), key);
-        if (a < 0 || b < 0 || found == edgeKeys.end() || *found != key)
-        {
-          ++ignoredSegments;
-          continue;
-        }
-        isCrease[static_cast<std::size_t>(found - edgeKeys.begin())] = 1;
+        continue;
       }
+      const int a = base.BaseIndex[static_cast<std::size_t>(pts[i])];
+      const int b = base.BaseIndex[static_cast<std::size_t>(pts[i + 1])];
+      const std::uint64_t key = a >= 0 && b >= 0 ? EdgeKey(a, b) : 0;
+      const auto found = std::lower_bound(edges.Keys.begin(), edges.Keys.end(), key);
+      if (a < 0 || b < 0 || found == edges.Keys.end() || *found != key)
+      {
+        ++creases.Ignored;
+        continue;
+      }
+      isCrease[static_cast<std::size_t>(found - edges.Keys.begin())] = 1;
     }
   }
-  if (ignoredSegments > 0)
-  {
-    vtkWarningMacro("Ignored " << ignoredSegments
-                               << " crease segment(s) of the input lines that are not edges of "
-                                  "the triangle mesh.");
-  }
-  std::vector<int> creasePairs;
-  for (std::size_t e = 0; e < edgeKeys.size(); ++e)
+  for (std::size_t e = 0; e < edges.Keys.size(); ++e)
   {
     if (isCrease[e])
     {
-      creasePairs.push_back(static_cast<int>(edgeKeys[e] >> 32));
-      creasePairs.push_back(static_cast<int>(edgeKeys[e] & 0xffffffffu));
+      creases.Pairs.push_back(static_cast<int>(edges.Keys[e] >> 32));
+      creases.Pairs.push_back(static_cast<int>(edges.Keys[e] & 0xffffffffu));
     }
   }
-  const int numCreases = static_cast<int>(creasePairs.size() / 2);
-  const std::vector<float> creaseWeights(
-    static_cast<std::size_t>(numCreases), Sdc::Crease::SHARPNESS_INFINITE);
-  edgeTriangles = std::vector<std::array<int, 2>>();
-  vtkDebugMacro(<< numCreases << " crease edges.");
+  return creases;
+}
 
-  // 6. OpenSubdiv's topology, refined uniformly.
-  std::vector<int> vertsPerFace(static_cast<std::size_t>(numTriangles), 3);
+// Step 6: OpenSubdiv's topology with infinitely sharp creases, refined
+// uniformly to `level` (the last level's full topology for the limit);
+// null when OpenSubdiv refuses the mesh.
+std::unique_ptr<Far::TopologyRefiner> MakeRefiner(
+  const BaseMesh& base, const CreaseEdges& creases, int level, bool limit)
+{
+  std::vector<int> vertsPerFace(static_cast<std::size_t>(base.numTriangles()), 3);
+  const std::vector<float> creaseWeights(
+    static_cast<std::size_t>(creases.count()), Sdc::Crease::SHARPNESS_INFINITE);
   Far::TopologyDescriptor descriptor;
-  descriptor.numVertices = numBase;
-  descriptor.numFaces = numTriangles;
+  descriptor.numVertices = base.numBase();
+  descriptor.numFaces = base.numTriangles();
   descriptor.numVertsPerFace = vertsPerFace.data();
-  descriptor.vertIndicesPerFace = faceVertices.data();
-  descriptor.numCreases = numCreases;
-  descriptor.creaseVertexIndexPairs = creasePairs.data();
+  descriptor.vertIndicesPerFace = base.FaceVertices.data();
+  descriptor.numCreases = creases.count();
+  descriptor.creaseVertexIndexPairs = creases.Pairs.data();
   descriptor.creaseWeights = creaseWeights.data();
 
   Sdc::Options schemeOptions;
@@ -465,87 +457,102 @@ int vtkOpenSubdivRefiner::RequestData(
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   std::unique_ptr<Far::TopologyRefiner> refiner(
     Factory::Create(descriptor, Factory::Options(Sdc::SCHEME_LOOP, schemeOptions)));
-  if (!refiner)
-  {
-    vtkErrorMacro("OpenSubdiv could not build the topology of the input mesh.");
-    return 0;
-  }
-  const int level = this->Level;
-  if (level > 0)
+  if (refiner && level > 0)
   {
     Far::TopologyRefiner::UniformOptions uniform(level);
-    uniform.fullTopologyInLastLevel = this->ProjectToLimit;
+    uniform.fullTopologyInLastLevel = limit;
     refiner->RefineUniform(uniform);
   }
-  this->UpdateProgress(0.1);
+  return refiner;
+}
 
-  // 7. The primvars: positions and the carried point arrays, interleaved.
-  vtkPointData* inPD = input->GetPointData();
+// Step 7: the primvars, positions and the carried point arrays interleaved
+// (Stride doubles per vertex), at the base vertices; then refined.
+struct Primvars
+{
+  std::vector<CarriedArray> Carried;
+  int Stride = 3;
+  std::vector<double> Values;
+  std::vector<double> Tangents; ///< the limit's two tangents per vertex, after Refine
+};
+
+Primvars BasePrimvars(vtkPointData* inPD, const BaseMesh& base)
+{
+  Primvars primvars;
   vtkDataArray* inNormals = inPD->GetNormals();
-  std::vector<CarriedArray> carried;
-  int stride = 3;
   for (int i = 0; i < inPD->GetNumberOfArrays(); ++i)
   {
     vtkDataArray* array = inPD->GetArray(i);
     if (!array || array == inNormals ||
       (array->GetName() && std::string(array->GetName()) == "Normals"))
     {
-      continue;
+      continue; // normals are made anew, from the limit
     }
-    carried.push_back({ array, stride, inPD->IsArrayAnAttribute(i) });
-    stride += array->GetNumberOfComponents();
+    primvars.Carried.push_back({ array, primvars.Stride, inPD->IsArrayAnAttribute(i) });
+    primvars.Stride += array->GetNumberOfComponents();
   }
-  std::vector<double> current(static_cast<std::size_t>(numBase) * stride);
-  for (int v = 0; v < numBase; ++v)
+  const int stride = primvars.Stride;
+  primvars.Values.resize(static_cast<std::size_t>(base.numBase()) * stride);
+  for (int v = 0; v < base.numBase(); ++v)
   {
-    double* vertex = &current[static_cast<std::size_t>(v) * stride];
-    std::copy_n(&basePositions[3 * v], 3, vertex);
-    for (const CarriedArray& c : carried)
+    double* vertex = &primvars.Values[static_cast<std::size_t>(v) * stride];
+    std::copy_n(&base.Positions[3 * v], 3, vertex);
+    for (const CarriedArray& c : primvars.Carried)
     {
-      c.Input->GetTuple(basePoint[static_cast<std::size_t>(v)], vertex + c.Offset);
+      c.Input->GetTuple(base.BasePoint[static_cast<std::size_t>(v)], vertex + c.Offset);
     }
   }
-  basePositions = std::vector<double>();
+  return primvars;
+}
 
-  Far::PrimvarRefinerReal<double> primvarRefiner(*refiner);
+// Interpolates the primvars level by level, then (with `limit`) projects
+// them and takes the limit tangents. `proceed(level)` reports progress and
+// returns false to stop (an abort); so does this function then.
+bool RefinePrimvars(const Far::TopologyRefiner& refiner, int level, bool limit, Primvars& primvars,
+  const std::function<bool(int)>& proceed)
+{
+  Far::PrimvarRefinerReal<double> primvarRefiner(refiner);
+  const int stride = primvars.Stride;
   std::vector<double> next;
   for (int l = 1; l <= level; ++l)
   {
-    if (this->GetAbortExecute())
+    if (!proceed(l - 1))
     {
-      return 1;
+      return false;
     }
-    next.assign(static_cast<std::size_t>(refiner->GetLevel(l).GetNumVertices()) * stride, 0.0);
-    const VertexBuffer source{ current.data(), stride };
+    next.assign(static_cast<std::size_t>(refiner.GetLevel(l).GetNumVertices()) * stride, 0.0);
+    const VertexBuffer source{ primvars.Values.data(), stride };
     VertexBuffer destination{ next.data(), stride };
     primvarRefiner.Interpolate(l, source, destination);
-    current.swap(next);
-    this->UpdateProgress(0.1 + 0.7 * l / level);
+    primvars.Values.swap(next);
   }
-
-  const Far::TopologyLevel& last = refiner->GetLevel(level);
-  const int numVertices = last.GetNumVertices();
-  std::vector<double> tangents;
-  if (this->ProjectToLimit)
+  proceed(level);
+  if (limit)
   {
-    next.assign(current.size(), 0.0);
-    tangents.assign(6 * static_cast<std::size_t>(numVertices), 0.0);
-    const VertexBuffer source{ current.data(), stride };
+    const int numVertices = refiner.GetLevel(level).GetNumVertices();
+    next.assign(primvars.Values.size(), 0.0);
+    primvars.Tangents.assign(6 * static_cast<std::size_t>(numVertices), 0.0);
+    const VertexBuffer source{ primvars.Values.data(), stride };
     VertexBuffer destination{ next.data(), stride };
-    TangentBuffer tangent1{ tangents.data() };
-    TangentBuffer tangent2{ tangents.data() + 3 * static_cast<std::size_t>(numVertices) };
+    TangentBuffer tangent1{ primvars.Tangents.data() };
+    TangentBuffer tangent2{ primvars.Tangents.data() + 3 * static_cast<std::size_t>(numVertices) };
     primvarRefiner.Limit(source, destination, tangent1, tangent2);
-    current.swap(next);
+    primvars.Values.swap(next);
   }
-  next = std::vector<double>();
+  return true;
+}
 
-  // 8. The triangles of the last level, each with its base face.
+// Step 8: the last level's triangles, and per triangle the input cell of its
+// base face (`OriginalCellId`). Empty string, or the error.
+std::string WriteTriangles(const Far::TopologyRefiner& refiner, int level,
+  const std::vector<vtkIdType>& triangleCell, vtkPolyData* output, vtkIdTypeArray* originalCellIds)
+{
+  const Far::TopologyLevel& last = refiner.GetLevel(level);
   const int numFaces = last.GetNumFaces();
   vtkNew<vtkIdTypeArray> offsets;
   offsets->SetNumberOfValues(numFaces + 1);
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfValues(3 * static_cast<vtkIdType>(numFaces));
-  vtkNew<vtkIdTypeArray> originalCellIds;
   originalCellIds->SetName("OriginalCellId");
   originalCellIds->SetNumberOfValues(numFaces);
   for (int f = 0; f < numFaces; ++f)
@@ -553,8 +560,8 @@ int vtkOpenSubdivRefiner::RequestData(
     const Far::ConstIndexArray vertices = last.GetFaceVertices(f);
     if (vertices.size() != 3)
     {
-      vtkErrorMacro("OpenSubdiv returned a refined face with " << vertices.size() << " vertices.");
-      return 0;
+      return "OpenSubdiv returned a refined face with " + std::to_string(vertices.size()) +
+        " vertices.";
     }
     offsets->SetValue(f, 3 * static_cast<vtkIdType>(f));
     for (int k = 0; k < 3; ++k)
@@ -564,85 +571,95 @@ int vtkOpenSubdivRefiner::RequestData(
     int parent = f;
     for (int l = level; l > 0; --l)
     {
-      parent = refiner->GetLevel(l).GetFaceParentFace(parent);
+      parent = refiner.GetLevel(l).GetFaceParentFace(parent);
     }
     originalCellIds->SetValue(f, triangleCell[static_cast<std::size_t>(parent)]);
   }
   offsets->SetValue(numFaces, 3 * static_cast<vtkIdType>(numFaces));
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+  output->SetPolys(polys);
+  return "";
+}
 
-  // 9. Points, and the limit normals oriented like the refined triangles.
-  int pointsType = VTK_DOUBLE;
-  if (this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION ||
-    (this->OutputPointsPrecision == vtkAlgorithm::DEFAULT_PRECISION &&
-      inPoints->GetDataType() == VTK_FLOAT))
-  {
-    pointsType = VTK_FLOAT;
-  }
+// Step 9: the points, of `pointsType`.
+void WritePoints(const Primvars& primvars, int numVertices, int pointsType, vtkPolyData* output)
+{
   vtkNew<vtkPoints> points;
   points->SetDataType(pointsType);
   points->SetNumberOfPoints(numVertices);
   for (int v = 0; v < numVertices; ++v)
   {
-    points->SetPoint(v, &current[static_cast<std::size_t>(v) * stride]);
+    points->SetPoint(v, &primvars.Values[static_cast<std::size_t>(v) * primvars.Stride]);
   }
+  output->SetPoints(points);
+}
 
-  vtkPointData* outPD = output->GetPointData();
-  if (this->ProjectToLimit)
+// The limit normals (the cross product of the limit tangents), oriented like
+// the refined triangles around each vertex, whose area-weighted normal
+// stands in where the tangents are parallel. Returns the counts of flipped
+// normals and of such stand-ins.
+std::pair<vtkIdType, vtkIdType> WriteLimitNormals(
+  const Far::TopologyLevel& last, const Primvars& primvars, int pointsType, vtkPointData* outPD)
+{
+  const int numVertices = last.GetNumVertices();
+  const int stride = primvars.Stride;
+  std::vector<Vector> meshNormals(static_cast<std::size_t>(numVertices), Vector{ 0, 0, 0 });
+  for (int f = 0; f < last.GetNumFaces(); ++f)
   {
-    std::vector<Vector> meshNormals(static_cast<std::size_t>(numVertices), Vector{ 0, 0, 0 });
-    for (int f = 0; f < numFaces; ++f)
+    const Far::ConstIndexArray vertices = last.GetFaceVertices(f);
+    const double* p0 = &primvars.Values[static_cast<std::size_t>(vertices[0]) * stride];
+    const double* p1 = &primvars.Values[static_cast<std::size_t>(vertices[1]) * stride];
+    const double* p2 = &primvars.Values[static_cast<std::size_t>(vertices[2]) * stride];
+    const Vector n = Cross(Sub(p1, p0), Sub(p2, p0));
+    for (int k = 0; k < 3; ++k)
     {
-      const Far::ConstIndexArray vertices = last.GetFaceVertices(f);
-      const double* p0 = &current[static_cast<std::size_t>(vertices[0]) * stride];
-      const double* p1 = &current[static_cast<std::size_t>(vertices[1]) * stride];
-      const double* p2 = &current[static_cast<std::size_t>(vertices[2]) * stride];
-      const Vector n = Cross(Sub(p1, p0), Sub(p2, p0));
-      for (int k = 0; k < 3; ++k)
-      {
-        Vector& m = meshNormals[static_cast<std::size_t>(vertices[k])];
-        m = { m[0] + n[0], m[1] + n[1], m[2] + n[2] };
-      }
+      Vector& m = meshNormals[static_cast<std::size_t>(vertices[k])];
+      m = { m[0] + n[0], m[1] + n[1], m[2] + n[2] };
     }
-    auto normals = vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(pointsType));
-    normals->SetName("Normals");
-    normals->SetNumberOfComponents(3);
-    normals->SetNumberOfTuples(numVertices);
-    vtkIdType flipped = 0;
-    vtkIdType fallbacks = 0;
-    for (int v = 0; v < numVertices; ++v)
-    {
-      const double* t1 = &tangents[3 * static_cast<std::size_t>(v)];
-      const double* t2 = &tangents[3 * (static_cast<std::size_t>(numVertices) + v)];
-      const Vector tangent1{ t1[0], t1[1], t1[2] };
-      const Vector tangent2{ t2[0], t2[1], t2[2] };
-      const Vector& meshNormal = meshNormals[static_cast<std::size_t>(v)];
-      Vector n = Cross(tangent1, tangent2);
-      double length = Norm(n);
-      if (!(length > 1e-12 * Norm(tangent1) * Norm(tangent2)))
-      {
-        n = meshNormal;
-        length = Norm(n);
-        ++fallbacks;
-      }
-      else if (Dot(n, meshNormal) < 0.0)
-      {
-        n = { -n[0], -n[1], -n[2] };
-        ++flipped;
-      }
-      if (length > 0.0)
-      {
-        n = { n[0] / length, n[1] / length, n[2] / length };
-      }
-      normals->SetTuple(v, n.data());
-    }
-    vtkDebugMacro(<< flipped << " limit normals flipped to the triangles' side, " << fallbacks
-                  << " taken from the triangles.");
-    outPD->SetNormals(normals);
   }
+  auto normals = vtk::TakeSmartPointer(vtkDataArray::CreateDataArray(pointsType));
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(numVertices);
+  vtkIdType flipped = 0;
+  vtkIdType fallbacks = 0;
+  for (int v = 0; v < numVertices; ++v)
+  {
+    const double* t1 = &primvars.Tangents[3 * static_cast<std::size_t>(v)];
+    const double* t2 = &primvars.Tangents[3 * (static_cast<std::size_t>(numVertices) + v)];
+    const Vector tangent1{ t1[0], t1[1], t1[2] };
+    const Vector tangent2{ t2[0], t2[1], t2[2] };
+    const Vector& meshNormal = meshNormals[static_cast<std::size_t>(v)];
+    Vector n = Cross(tangent1, tangent2);
+    double length = Norm(n);
+    if (!(length > 1e-12 * Norm(tangent1) * Norm(tangent2)))
+    {
+      n = meshNormal;
+      length = Norm(n);
+      ++fallbacks;
+    }
+    else if (Dot(n, meshNormal) < 0.0)
+    {
+      n = { -n[0], -n[1], -n[2] };
+      ++flipped;
+    }
+    if (length > 0.0)
+    {
+      n = { n[0] / length, n[1] / length, n[2] / length };
+    }
+    normals->SetTuple(v, n.data());
+  }
+  outPD->SetNormals(normals);
+  return { flipped, fallbacks };
+}
 
-  // 10. The carried point arrays, back in their own types.
+// Step 10: the carried point arrays, back in their own types (integers
+// rounded and clamped to their type's range), attributes kept.
+void WriteCarriedArrays(const Primvars& primvars, int numVertices, vtkPointData* outPD)
+{
   std::vector<double> tuple;
-  for (const CarriedArray& c : carried)
+  for (const CarriedArray& c : primvars.Carried)
   {
     const int components = c.Input->GetNumberOfComponents();
     auto array = vtk::TakeSmartPointer(c.Input->NewInstance());
@@ -656,7 +673,8 @@ int vtkOpenSubdivRefiner::RequestData(
     tuple.resize(static_cast<std::size_t>(components));
     for (int v = 0; v < numVertices; ++v)
     {
-      const double* values = &current[static_cast<std::size_t>(v) * stride + c.Offset];
+      const double* values =
+        &primvars.Values[static_cast<std::size_t>(v) * primvars.Stride + c.Offset];
       if (integer)
       {
         for (int k = 0; k < components; ++k)
@@ -676,10 +694,13 @@ int vtkOpenSubdivRefiner::RequestData(
       outPD->SetActiveAttribute(index, c.Attribute);
     }
   }
+}
 
-  // 11. Cell data: the original cell id, and the input's cell arrays.
-  vtkCellData* inCD = input->GetCellData();
-  vtkCellData* outCD = output->GetCellData();
+// Step 11: the cell data, each refined triangle with its input cell's
+// values, and `OriginalCellId`.
+void WriteCellData(vtkCellData* inCD, vtkIdTypeArray* originalCellIds, vtkCellData* outCD)
+{
+  const vtkIdType numFaces = originalCellIds->GetNumberOfValues();
   outCD->CopyNormalsOff();
   outCD->CopyFieldOff("OriginalCellId");
   outCD->CopyAllocate(inCD, numFaces);
@@ -689,7 +710,7 @@ int vtkOpenSubdivRefiner::RequestData(
     fromIds->SetNumberOfIds(numFaces);
     vtkNew<vtkIdList> toIds;
     toIds->SetNumberOfIds(numFaces);
-    for (int f = 0; f < numFaces; ++f)
+    for (vtkIdType f = 0; f < numFaces; ++f)
     {
       fromIds->SetId(f, originalCellIds->GetValue(f));
       toIds->SetId(f, f);
@@ -697,11 +718,118 @@ int vtkOpenSubdivRefiner::RequestData(
     outCD->CopyData(inCD, fromIds, toIds);
   }
   outCD->AddArray(originalCellIds);
+}
 
-  vtkNew<vtkCellArray> polys;
-  polys->SetData(offsets, connectivity);
-  output->SetPoints(points);
-  output->SetPolys(polys);
+} // namespace
+
+int vtkOpenSubdivRefiner::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  output->Initialize();
+  if (!input)
+  {
+    return 1;
+  }
+
+  TriangleCells read = ReadTriangleCells(input);
+  if (!read.Error.empty())
+  {
+    vtkErrorMacro(<< read.Error);
+    return 0;
+  }
+  if (read.Dropped > 0)
+  {
+    vtkWarningMacro("Dropped " << read.Dropped
+                               << " degenerate triangle(s) or polygon(s) (repeated point ids or "
+                                  "fewer than 3 points).");
+  }
+  if (read.Triangles.empty())
+  {
+    return 1; // empty in, empty out
+  }
+  // 2. OpenSubdiv indexes with int: the refined mesh must fit.
+  const double lastLevelFaceVertices =
+    3.0 * static_cast<double>(read.Triangles.size()) * std::pow(4.0, this->Level);
+  if (lastLevelFaceVertices >= static_cast<double>(std::numeric_limits<int>::max()))
+  {
+    vtkErrorMacro("The refined mesh (" << read.Triangles.size() << " triangles times 4^"
+                                       << this->Level
+                                       << ") is too large for OpenSubdiv's 32-bit indices.");
+    return 0;
+  }
+
+  BaseMesh base;
+  EdgeList edges;
+  std::string error = MakeBaseMesh(input, read.Triangles, base);
+  if (error.empty())
+  {
+    error = CollectEdges(base, read.Cells, edges);
+  }
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  const CreaseEdges creases = FindCreases(input, base, edges, this->FeatureAngle);
+  if (creases.Ignored > 0)
+  {
+    vtkWarningMacro("Ignored " << creases.Ignored
+                               << " crease segment(s) of the input lines that are not edges of "
+                                  "the triangle mesh.");
+  }
+  vtkDebugMacro(<< creases.count() << " crease edges.");
+
+  const int level = this->Level;
+  const std::unique_ptr<Far::TopologyRefiner> refiner =
+    MakeRefiner(base, creases, level, this->ProjectToLimit);
+  if (!refiner)
+  {
+    vtkErrorMacro("OpenSubdiv could not build the topology of the input mesh.");
+    return 0;
+  }
+  this->UpdateProgress(0.1);
+
+  Primvars primvars = BasePrimvars(input->GetPointData(), base);
+  const bool finished = RefinePrimvars(*refiner, level, this->ProjectToLimit, primvars, [&](int l) {
+    if (l > 0)
+    {
+      this->UpdateProgress(0.1 + 0.7 * l / level);
+    }
+    return !this->GetAbortExecute();
+  });
+  if (!finished)
+  {
+    return 1; // aborted: the output stays empty
+  }
+
+  vtkNew<vtkIdTypeArray> originalCellIds;
+  error = WriteTriangles(*refiner, level, read.Cells, output, originalCellIds);
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+    output->Initialize();
+    return 0;
+  }
+  int pointsType = VTK_DOUBLE;
+  if (this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION ||
+    (this->OutputPointsPrecision == vtkAlgorithm::DEFAULT_PRECISION &&
+      input->GetPoints()->GetDataType() == VTK_FLOAT))
+  {
+    pointsType = VTK_FLOAT;
+  }
+  const Far::TopologyLevel& last = refiner->GetLevel(level);
+  WritePoints(primvars, last.GetNumVertices(), pointsType, output);
+  if (this->ProjectToLimit)
+  {
+    const auto [flipped, fallbacks] =
+      WriteLimitNormals(last, primvars, pointsType, output->GetPointData());
+    vtkDebugMacro(<< flipped << " limit normals flipped to the triangles' side, " << fallbacks
+                  << " taken from the triangles.");
+  }
+  WriteCarriedArrays(primvars, last.GetNumVertices(), output->GetPointData());
+  WriteCellData(input->GetCellData(), originalCellIds, output->GetCellData());
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -47,7 +47,9 @@ vtkPolyData* vtkBoundaryCurveSmoothingFilter::GetSilhouetteOutput()
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
 }
 
-int vtkBoundaryCurveSmoothingFilter::RequestData(
+// The renderer asks for the bounds before it creates its camera: give the
+// input, and run for real once the camera exists.
+int vtkBoundaryCurveSmoothingFilter::RequestDataWithoutCamera(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
@@ -58,17 +60,22 @@ int vtkBoundaryCurveSmoothingFilter::RequestData(
     vtkErrorMacro("Missing input or output polydata.");
     return 0;
   }
-  support::View view;
-  const ViewStatus viewStatus = this->RequestView(view);
-  if (viewStatus == VIEW_NO_CAMERA_YET)
+  output->ShallowCopy(input);
+  lines->Initialize();
+  return 1;
+}
+
+int vtkBoundaryCurveSmoothingFilter::RequestViewData(vtkInformation*,
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector,
+  const vtkSilhouetteFilterSupport::View& view)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* lines = vtkPolyData::GetData(outputVector, 1);
+  if (!input || !output || !lines)
   {
-    output->ShallowCopy(input); // the renderer asks for bounds before it makes its camera
-    lines->Initialize();
-    return 1;
-  }
-  if (viewStatus != VIEW_READY)
-  {
-    return 0; // reported
+    vtkErrorMacro("Missing input or output polydata.");
+    return 0;
   }
 
   Internals& internal = *this->Internal;

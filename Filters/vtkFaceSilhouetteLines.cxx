@@ -42,8 +42,8 @@ vtkFaceSilhouetteLines::vtkFaceSilhouetteLines()
 
 vtkFaceSilhouetteLines::~vtkFaceSilhouetteLines() = default;
 
-int vtkFaceSilhouetteLines::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkFaceSilhouetteLines::RequestViewData(vtkInformation*, vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector, const vtkSilhouetteFilterSupport::View& view)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
@@ -51,16 +51,6 @@ int vtkFaceSilhouetteLines::RequestData(
   {
     vtkErrorMacro("Missing input or output polydata.");
     return 0;
-  }
-  vtkSilhouetteFilterSupport::View view;
-  const ViewStatus viewStatus = this->RequestView(view);
-  if (viewStatus == VIEW_NO_CAMERA_YET)
-  {
-    return 1; // the renderer has no camera yet: nothing to draw until it has
-  }
-  if (viewStatus != VIEW_READY)
-  {
-    return 0; // reported
   }
 
   Internals& internal = *this->Internal;

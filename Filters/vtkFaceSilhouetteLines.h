@@ -78,7 +78,8 @@ protected:
   vtkFaceSilhouetteLines();
   ~vtkFaceSilhouetteLines() override;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestViewData(vtkInformation*, vtkInformationVector**, vtkInformationVector*,
+    const vtkSilhouetteFilterSupport::View& view) override;
 
 private:
   vtkFaceSilhouetteLines(const vtkFaceSilhouetteLines&) = delete;

@@ -18,12 +18,16 @@
 
 vtkStandardNewMacro(vtkSilhouetteProximity);
 
-vtkSilhouetteProximity::vtkSilhouetteProximity() = default;
+vtkSilhouetteProximity::vtkSilhouetteProximity()
+{
+  // A renderer without its camera yet fails too: a missing camera is an error.
+  this->WaitForRenderer = false;
+}
 
 vtkSilhouetteProximity::~vtkSilhouetteProximity() = default;
 
-int vtkSilhouetteProximity::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkSilhouetteProximity::RequestViewData(vtkInformation*, vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector, const vtkSilhouetteFilterSupport::View& view)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
@@ -31,12 +35,6 @@ int vtkSilhouetteProximity::RequestData(
   {
     vtkErrorMacro("Missing input or output polydata.");
     return 0;
-  }
-  // A renderer without its camera yet fails too: a missing camera is an error.
-  vtkSilhouetteFilterSupport::View view;
-  if (this->RequestView(view, /*waitForRenderer=*/false) != VIEW_READY)
-  {
-    return 0; // reported
   }
   vtkSilhouetteFilterSupport::Triangles mesh;
   const std::string readError = vtkSilhouetteFilterSupport::ReadFiniteTriangles(input, mesh);

@@ -62,7 +62,8 @@ protected:
   vtkSilhouetteProximity();
   ~vtkSilhouetteProximity() override;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestViewData(vtkInformation*, vtkInformationVector**, vtkInformationVector*,
+    const vtkSilhouetteFilterSupport::View& view) override;
 
   int Resolution = 128;
 

@@ -733,8 +733,27 @@ vtkPolyData* vtkSilhouetteSmoothingFilter::GetSilhouetteOutput()
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
 }
 
-int vtkSilhouetteSmoothingFilter::RequestData(
+// The renderer asks for the bounds before it creates its camera (to reset
+// it): give the input, and run for real once the camera exists.
+int vtkSilhouetteSmoothingFilter::RequestDataWithoutCamera(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  vtkPolyData* lines = vtkPolyData::GetData(outputVector, 1);
+  if (!input || !output || !lines)
+  {
+    vtkErrorMacro("Missing input or output polydata.");
+    return 0;
+  }
+  output->ShallowCopy(input);
+  lines->Initialize();
+  return 1;
+}
+
+int vtkSilhouetteSmoothingFilter::RequestViewData(vtkInformation*,
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector,
+  const vtkSilhouetteFilterSupport::View& view)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
@@ -752,21 +771,6 @@ int vtkSilhouetteSmoothingFilter::RequestData(
     return 0;
   }
   // (Arrays of the wrong length were refused before: GuardRequest.)
-
-  vtkSilhouetteFilterSupport::View view;
-  const ViewStatus viewStatus = this->RequestView(view);
-  if (viewStatus == VIEW_NO_CAMERA_YET)
-  {
-    // The renderer asks for the bounds before it creates its camera (to reset
-    // it): give the input, and run for real once the camera exists.
-    output->ShallowCopy(input);
-    lines->Initialize();
-    return 1;
-  }
-  if (viewStatus != VIEW_READY)
-  {
-    return 0; // reported
-  }
 
   Internals& internal = *this->Internal;
   bool rebuilt = false;

@@ -85,6 +85,28 @@ vtkMTimeType vtkSilhouetteViewAlgorithm::GetMTime()
       camera, model, Viewport(this->ViewportDependent, this->Renderer, this->ViewportSize)));
 }
 
+int vtkSilhouetteViewAlgorithm::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkSilhouetteFilterSupport::View view;
+  switch (this->RequestView(view, this->WaitForRenderer))
+  {
+    case VIEW_READY:
+      return this->RequestViewData(request, inputVector, outputVector, view);
+    case VIEW_NO_CAMERA_YET:
+      return this->RequestDataWithoutCamera(request, inputVector, outputVector);
+    case VIEW_FAILED:
+    default:
+      return 0; // reported
+  }
+}
+
+int vtkSilhouetteViewAlgorithm::RequestDataWithoutCamera(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector*)
+{
+  return 1; // nothing to draw until the camera exists
+}
+
 vtkSilhouetteViewAlgorithm::ViewStatus vtkSilhouetteViewAlgorithm::RequestView(
   support::View& view, bool waitForRenderer)
 {

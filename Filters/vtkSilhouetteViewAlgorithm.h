@@ -27,9 +27,10 @@
  * value: a mapper fed by such a filter re-runs it when the view moves, and not
  * when a renderer only resets the clipping range before each frame.
  *
- * Subclasses call RequestView() from RequestData() to get the view in the
- * data's model coordinates, and decide themselves what to output while a
- * renderer has not created its camera yet.
+ * Subclasses implement RequestViewData(), which gets the view in the data's
+ * model coordinates, and may say what to output while a renderer has not
+ * created its camera yet (RequestDataWithoutCamera(): empty outputs by
+ * default).
  *
  * @sa vtkSilhouetteSmoothingFilter vtkBoundaryCurveSmoothingFilter vtkFaceSilhouetteLines
  * vtkSilhouetteProximity
@@ -121,7 +122,29 @@ protected:
   vtkSilhouetteViewAlgorithm();
   ~vtkSilhouetteViewAlgorithm() override;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override = 0;
+  /**
+   * Requests the view (RequestView) and runs RequestViewData with it. While a
+   * renderer has not created its camera (it asks for its props' bounds before
+   * it makes one, to reset it), runs RequestDataWithoutCamera instead, if
+   * WaitForRenderer is on; else that is an error like a missing camera. A
+   * view that cannot be made (no camera, a degenerate view or viewport) is
+   * reported and fails the request.
+   */
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /// The subclass's work for `view`, the view in the data's model coordinates.
+  virtual int RequestViewData(vtkInformation*, vtkInformationVector**, vtkInformationVector*,
+    const vtkSilhouetteFilterSupport::View& view) = 0;
+
+  /// What to output before a renderer has created its camera. The default
+  /// leaves the outputs empty and succeeds.
+  virtual int RequestDataWithoutCamera(
+    vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+
+  /// Whether a renderer without its camera yet means "wait"
+  /// (RequestDataWithoutCamera), the default, or an error. Set in the
+  /// subclass's constructor.
+  bool WaitForRenderer = true;
 
   /// What RequestView() found.
   enum ViewStatus

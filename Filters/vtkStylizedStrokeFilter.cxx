@@ -32,24 +32,14 @@ vtkStylizedStrokeFilter::vtkStylizedStrokeFilter()
 
 vtkStylizedStrokeFilter::~vtkStylizedStrokeFilter() = default;
 
-int vtkStylizedStrokeFilter::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkStylizedStrokeFilter::RequestViewData(vtkInformation*, vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector, const vtkSilhouetteFilterSupport::View& modelView)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   if (!input || !output)
   {
     return 0;
-  }
-  vtkSilhouetteFilterSupport::View modelView;
-  const ViewStatus viewStatus = this->RequestView(modelView);
-  if (viewStatus == VIEW_NO_CAMERA_YET)
-  {
-    return 1; // the renderer has no camera yet: nothing to draw until it has
-  }
-  if (viewStatus != VIEW_READY)
-  {
-    return 0; // reported
   }
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();

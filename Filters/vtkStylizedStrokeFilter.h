@@ -102,7 +102,8 @@ protected:
   vtkStylizedStrokeFilter();
   ~vtkStylizedStrokeFilter() override;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestViewData(vtkInformation*, vtkInformationVector**, vtkInformationVector*,
+    const vtkSilhouetteFilterSupport::View& view) override;
 
   int Brush = CHARCOAL;
   double Amplitude = 0.006;

@@ -66,8 +66,9 @@ int vtkSilhouetteLineVisibility::FillInputPortInformation(int port, vtkInformati
   return 1;
 }
 
-int vtkSilhouetteLineVisibility::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+int vtkSilhouetteLineVisibility::RequestViewData(vtkInformation*,
+  vtkInformationVector** inputVector, vtkInformationVector* outputVector,
+  const vtkSilhouetteFilterSupport::View& view)
 {
   vtkPolyData* lines = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* surface = vtkPolyData::GetData(inputVector[1]);
@@ -87,16 +88,6 @@ int vtkSilhouetteLineVisibility::RequestData(
     vtkErrorMacro(
       "EdgeTolerance must be 0 (automatic) or positive, not " << this->EdgeTolerance << ".");
     return 0;
-  }
-  vtkSilhouetteFilterSupport::View view;
-  const ViewStatus viewStatus = this->RequestView(view);
-  if (viewStatus == VIEW_NO_CAMERA_YET)
-  {
-    return 1; // the renderer has no camera yet: nothing to draw until it has
-  }
-  if (viewStatus != VIEW_READY)
-  {
-    return 0; // reported
   }
   if (lines->GetNumberOfVerts() + lines->GetNumberOfPolys() + lines->GetNumberOfStrips() > 0)
   {

@@ -93,7 +93,8 @@ protected:
   ~vtkSilhouetteLineVisibility() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestViewData(vtkInformation*, vtkInformationVector**, vtkInformationVector*,
+    const vtkSilhouetteFilterSupport::View& view) override;
 
   double Tolerance = 0.0;
   double EdgeTolerance = 0.0;

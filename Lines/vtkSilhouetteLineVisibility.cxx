@@ -19,6 +19,8 @@
 #include "vtkSilhouetteFilterSupport.h"
 
 #include <cmath>
+#include <sstream>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkSilhouetteLineVisibility);
@@ -66,6 +68,144 @@ int vtkSilhouetteLineVisibility::FillInputPortInformation(int port, vtkInformati
   return 1;
 }
 
+namespace
+{
+
+// The output: one polyline per piece, with the input's point data
+// (interpolated at change points) and cell data, `Visible` and
+// `OriginalCellId`, and the piece counts.
+class PieceWriter
+{
+public:
+  PieceWriter(vtkPolyData* lines, vtkPolyData* output, bool passHidden)
+    : InPD(lines->GetPointData())
+    , InCD(lines->GetCellData())
+    , Output(output)
+    , PassHidden(passHidden)
+  {
+    this->Points->SetDataTypeToDouble();
+    output->GetPointData()->InterpolateAllocate(this->InPD, lines->GetNumberOfPoints());
+    output->GetCellData()->CopyAllocate(this->InCD, lines->GetNumberOfLines());
+    this->PointVisible->SetName("Visible");
+    this->CellVisible->SetName("Visible");
+    this->Original->SetName("OriginalCellId");
+  }
+
+  /// The pieces of input cell `cell`, whose point ids are `ids`.
+  void append(const std::vector<silsmooth::LinePiece>& pieces, const std::vector<vtkIdType>& ids,
+    vtkIdType cell)
+  {
+    for (const silsmooth::LinePiece& piece : pieces)
+    {
+      ++(piece.Visible ? this->VisiblePieces : this->HiddenPieces);
+      if (piece.Visible || this->PassHidden)
+      {
+        this->appendPiece(piece, ids, cell);
+      }
+    }
+  }
+
+  void finish()
+  {
+    this->Output->SetPoints(this->Points);
+    this->Output->SetLines(this->Cells);
+    this->Output->GetPointData()->AddArray(this->PointVisible);
+    this->Output->GetCellData()->AddArray(this->CellVisible);
+    this->Output->GetCellData()->AddArray(this->Original);
+    FieldValue(this->VisiblePieces, "VisiblePieceCount", this->Output->GetFieldData());
+    FieldValue(this->HiddenPieces, "HiddenPieceCount", this->Output->GetFieldData());
+  }
+
+private:
+  void appendPiece(
+    const silsmooth::LinePiece& piece, const std::vector<vtkIdType>& ids, vtkIdType cell)
+  {
+    vtkPointData* outPD = this->Output->GetPointData();
+    const auto n = static_cast<vtkIdType>(ids.size());
+    this->Cells->InsertNextCell(static_cast<vtkIdType>(piece.Points.size()));
+    for (std::size_t k = 0; k < piece.Points.size(); ++k)
+    {
+      const glm::dvec3& p = piece.Points[k];
+      const vtkIdType id = this->Points->InsertNextPoint(p.x, p.y, p.z);
+      this->Cells->InsertCellPoint(id);
+      // Vertex i keeps its data; a change point interpolates its segment's.
+      const double along = piece.Along[k];
+      const vtkIdType i0 = std::min(static_cast<vtkIdType>(along), n - 1);
+      const double fraction = along - static_cast<double>(i0);
+      if (fraction > 0.0 && i0 + 1 < n)
+      {
+        outPD->InterpolateEdge(this->InPD, id, ids[static_cast<std::size_t>(i0)],
+          ids[static_cast<std::size_t>(i0 + 1)], fraction);
+      }
+      else
+      {
+        outPD->CopyData(this->InPD, ids[static_cast<std::size_t>(i0)], id);
+      }
+      this->PointVisible->InsertNextValue(piece.Visible ? 1 : 0);
+    }
+    this->Output->GetCellData()->CopyData(this->InCD, cell, this->Cells->GetNumberOfCells() - 1);
+    this->CellVisible->InsertNextValue(piece.Visible ? 1 : 0);
+    this->Original->InsertNextValue(cell);
+  }
+
+  vtkPointData* InPD;
+  vtkCellData* InCD;
+  vtkPolyData* Output;
+  bool PassHidden;
+  vtkNew<vtkPoints> Points;
+  vtkNew<vtkCellArray> Cells;
+  vtkNew<vtkUnsignedCharArray> PointVisible;
+  vtkNew<vtkUnsignedCharArray> CellVisible;
+  vtkNew<vtkIdTypeArray> Original;
+  vtkIdType VisiblePieces = 0;
+  vtkIdType HiddenPieces = 0;
+};
+
+// Whether input cell `cell` is an edge of the surface (LineKind crease or
+// border, as vtkCreaseAndBorderLines marks them).
+class SurfaceEdgeCells
+{
+public:
+  explicit SurfaceEdgeCells(vtkPolyData* lines)
+    : Kinds(lines->GetCellData()->GetArray("LineKind"))
+  {
+    if (this->Kinds && this->Kinds->GetNumberOfComponents() != 1)
+    {
+      this->Kinds = nullptr;
+    }
+  }
+  bool operator()(vtkIdType cell) const
+  {
+    if (!this->Kinds)
+    {
+      return false;
+    }
+    const double kind = this->Kinds->GetComponent(cell, 0);
+    return kind == vtkSilhouetteFilterSupport::CreaseLine ||
+      kind == vtkSilhouetteFilterSupport::BorderLine;
+  }
+
+private:
+  vtkDataArray* Kinds;
+};
+
+} // namespace
+
+std::string vtkSilhouetteLineVisibility::CheckSettings() const
+{
+  std::ostringstream message;
+  if (!(this->Tolerance >= 0.0))
+  {
+    message << "Tolerance must be 0 (automatic) or positive, not " << this->Tolerance << ".";
+  }
+  else if (!(this->EdgeTolerance >= 0.0))
+  {
+    message << "EdgeTolerance must be 0 (automatic) or positive, not " << this->EdgeTolerance
+            << ".";
+  }
+  return message.str();
+}
+
 int vtkSilhouetteLineVisibility::RequestViewData(vtkInformation*,
   vtkInformationVector** inputVector, vtkInformationVector* outputVector,
   const vtkSilhouetteFilterSupport::View& view)
@@ -78,15 +218,10 @@ int vtkSilhouetteLineVisibility::RequestViewData(vtkInformation*,
     vtkErrorMacro("Missing input or output polydata.");
     return 0;
   }
-  if (!(this->Tolerance >= 0.0))
+  const std::string settingsError = this->CheckSettings();
+  if (!settingsError.empty())
   {
-    vtkErrorMacro("Tolerance must be 0 (automatic) or positive, not " << this->Tolerance << ".");
-    return 0;
-  }
-  if (!(this->EdgeTolerance >= 0.0))
-  {
-    vtkErrorMacro(
-      "EdgeTolerance must be 0 (automatic) or positive, not " << this->EdgeTolerance << ".");
+    vtkErrorMacro(<< settingsError);
     return 0;
   }
   if (lines->GetNumberOfVerts() + lines->GetNumberOfPolys() + lines->GetNumberOfStrips() > 0)
@@ -106,6 +241,7 @@ int vtkSilhouetteLineVisibility::RequestViewData(vtkInformation*,
       return 0;
     }
   }
+  // The silhouette's rule, and the one for the surface's own edges.
   silsmooth::LineVisibilityParameters parameters =
     silsmooth::LineVisibilityParameters::forMesh(triangles.Points, triangles.Cells);
   if (this->Tolerance > 0.0)
@@ -117,43 +253,13 @@ int vtkSilhouetteLineVisibility::RequestViewData(vtkInformation*,
     this->EdgeTolerance > 0.0 ? this->EdgeTolerance : 10.0 * parameters.Precision;
   // The stubs a tolerance leaves where an occluder meets the line.
   edgeParameters.MinimumPieceLength = 10.0 * edgeParameters.Tolerance;
-  vtkDataArray* kinds = lines->GetCellData()->GetArray("LineKind");
-  if (kinds && kinds->GetNumberOfComponents() != 1)
-  {
-    kinds = nullptr;
-  }
-  const auto isSurfaceEdge = [kinds](vtkIdType cell) {
-    if (!kinds)
-    {
-      return false;
-    }
-    const double kind = kinds->GetComponent(cell, 0);
-    return kind == vtkSilhouetteFilterSupport::CreaseLine ||
-      kind == vtkSilhouetteFilterSupport::BorderLine;
-  };
+  const SurfaceEdgeCells isSurfaceEdge(lines);
   const silsmooth::OcclusionMesh occluder(
     std::move(triangles.Points), std::move(triangles.Cells), triangles.Normals);
 
-  vtkPointData* inPD = lines->GetPointData();
-  vtkCellData* inCD = lines->GetCellData();
-  vtkPointData* outPD = output->GetPointData();
-  vtkCellData* outCD = output->GetCellData();
+  PieceWriter writer(lines, output, this->PassHiddenLines != 0);
   const vtkIdType lineCount = lines->GetNumberOfLines();
   const vtkIdType firstLineId = lines->GetNumberOfVerts(); // cells: verts, then lines
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> cells;
-  outPD->InterpolateAllocate(inPD, lines->GetNumberOfPoints());
-  outCD->CopyAllocate(inCD, lineCount);
-  vtkNew<vtkUnsignedCharArray> pointVisible;
-  pointVisible->SetName("Visible");
-  vtkNew<vtkUnsignedCharArray> cellVisible;
-  cellVisible->SetName("Visible");
-  vtkNew<vtkIdTypeArray> original;
-  original->SetName("OriginalCellId");
-  vtkIdType visiblePieces = 0;
-  vtkIdType hiddenPieces = 0;
-
   std::vector<glm::dvec3> polyline;
   std::vector<vtkIdType> polylineIds;
   auto it = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
@@ -175,60 +281,21 @@ int vtkSilhouetteLineVisibility::RequestViewData(vtkInformation*,
     {
       continue;
     }
-    polyline.resize(static_cast<std::size_t>(n));
     polylineIds.assign(ids, ids + n);
+    polyline.resize(static_cast<std::size_t>(n));
     for (vtkIdType i = 0; i < n; ++i)
     {
       double x[3];
       lines->GetPoint(ids[i], x);
       polyline[static_cast<std::size_t>(i)] = glm::dvec3(x[0], x[1], x[2]);
     }
-    const std::vector<silsmooth::LinePiece> pieces = silsmooth::splitByVisibility(occluder,
-      view.Geometry, polyline, isSurfaceEdge(firstLineId + line) ? edgeParameters : parameters);
-    for (const silsmooth::LinePiece& piece : pieces)
-    {
-      if (!piece.Visible && !this->PassHiddenLines)
-      {
-        ++hiddenPieces;
-        continue;
-      }
-      ++(piece.Visible ? visiblePieces : hiddenPieces);
-      cells->InsertNextCell(static_cast<vtkIdType>(piece.Points.size()));
-      for (std::size_t k = 0; k < piece.Points.size(); ++k)
-      {
-        const glm::dvec3& p = piece.Points[k];
-        const vtkIdType id = points->InsertNextPoint(p.x, p.y, p.z);
-        cells->InsertCellPoint(id);
-        // Vertex i keeps its data; a change point interpolates its segment's.
-        const double along = piece.Along[k];
-        const vtkIdType i0 = std::min(static_cast<vtkIdType>(along), n - 1);
-        const double fraction = along - static_cast<double>(i0);
-        if (fraction > 0.0 && i0 + 1 < n)
-        {
-          outPD->InterpolateEdge(inPD, id, polylineIds[static_cast<std::size_t>(i0)],
-            polylineIds[static_cast<std::size_t>(i0 + 1)], fraction);
-        }
-        else
-        {
-          outPD->CopyData(inPD, polylineIds[static_cast<std::size_t>(i0)], id);
-        }
-        pointVisible->InsertNextValue(piece.Visible ? 1 : 0);
-      }
-      const vtkIdType cell = cells->GetNumberOfCells() - 1;
-      outCD->CopyData(inCD, firstLineId + line, cell);
-      cellVisible->InsertNextValue(piece.Visible ? 1 : 0);
-      original->InsertNextValue(firstLineId + line);
-    }
+    const vtkIdType cell = firstLineId + line;
+    writer.append(silsmooth::splitByVisibility(occluder, view.Geometry, polyline,
+                    isSurfaceEdge(cell) ? edgeParameters : parameters),
+      polylineIds, cell);
   }
   this->UpdateProgress(1.0);
-
-  output->SetPoints(points);
-  output->SetLines(cells);
-  outPD->AddArray(pointVisible);
-  outCD->AddArray(cellVisible);
-  outCD->AddArray(original);
-  FieldValue(visiblePieces, "VisiblePieceCount", output->GetFieldData());
-  FieldValue(hiddenPieces, "HiddenPieceCount", output->GetFieldData());
+  writer.finish();
   return 1;
 }
 

@@ -34,6 +34,8 @@
 #include "SilhouetteSmoothingFiltersLinesModule.h" // For export macro
 #include "vtkSilhouetteViewAlgorithm.h"
 
+#include <string> // For CheckSettings
+
 class vtkAlgorithmOutput;
 
 class SILHOUETTESMOOTHINGFILTERSLINES_EXPORT vtkSilhouetteLineVisibility
@@ -95,6 +97,9 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestViewData(vtkInformation*, vtkInformationVector**, vtkInformationVector*,
     const vtkSilhouetteFilterSupport::View& view) override;
+
+  /// The error for settings out of range, else "".
+  std::string CheckSettings() const;
 
   double Tolerance = 0.0;
   double EdgeTolerance = 0.0;

@@ -107,7 +107,15 @@ int vtkProgressiveMeshFilter::RequestData(
       }
     }
     this->UpdateProgress(0.1);
-    cache.Mesh.emplace(std::move(points), std::move(triangles));
+    cache.Mesh.emplace(std::move(points), std::move(triangles), 0, [this](double done) {
+      this->UpdateProgress(0.1 + 0.8 * done);
+      return !this->GetAbortExecute();
+    });
+    if (cache.Mesh->aborted())
+    {
+      cache.Mesh.reset();
+      return 1; // the output stays empty
+    }
     cache.Input = input;
     cache.InputTime = input->GetMTime();
     this->UpdateProgress(0.9);

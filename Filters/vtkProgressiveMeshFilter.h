@@ -21,6 +21,9 @@
  * active triangles in input order with cell data copied; point
  * `OriginalPointId` and cell `OriginalCellId` (vtkIdType, the input's ids);
  * field `BaseTriangleCount`, `FullTriangleCount`, `SplitCount`, `Level`.
+ *
+ * Progress is reported while the sequence is built (every 256 collapses);
+ * AbortExecute stops the build there and leaves the output empty.
  */
 #ifndef vtkProgressiveMeshFilter_h
 #define vtkProgressiveMeshFilter_h

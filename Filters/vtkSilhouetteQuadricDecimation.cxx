@@ -82,8 +82,16 @@ int vtkSilhouetteQuadricDecimation::RequestData(
         d >= 0.0 && d >= this->NearMinimum && d <= this->NearMaximum ? 1 : 0;
     }
   }
+  parameters.Progress = [this](double done) {
+    this->UpdateProgress(0.1 + 0.8 * done);
+    return !this->GetAbortExecute();
+  };
   const silsmooth::SimplificationResult result =
     silsmooth::simplifyQuadric(points, triangles, parameters);
+  if (result.Aborted)
+  {
+    return 1; // the output stays empty
+  }
   if (!result.ReachedTarget)
   {
     vtkWarningMacro("Stopped at " << result.Triangles.size() << " triangles, above the target "

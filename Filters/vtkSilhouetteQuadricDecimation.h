@@ -31,6 +31,9 @@
  * When the budget cannot be met (NearFactor 0 forbids collapses near the
  * contour) the filter warns and outputs the mesh it got to.
  *
+ * Progress is reported during the collapses (every 256); AbortExecute stops
+ * them there and leaves the output empty.
+ *
  * @sa vtkSilhouetteProximity vtkQuadricDecimation
  */
 #ifndef vtkSilhouetteQuadricDecimation_h

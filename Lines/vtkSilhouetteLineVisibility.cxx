@@ -294,8 +294,11 @@ int vtkSilhouetteLineVisibility::RequestViewData(vtkInformation*,
                     isSurfaceEdge(cell) ? edgeParameters : parameters),
       polylineIds, cell);
   }
-  this->UpdateProgress(1.0);
-  writer.finish();
+  if (!this->GetAbortExecute())
+  {
+    this->UpdateProgress(1.0);
+  }
+  writer.finish(); // aborted: the lines done so far
   return 1;
 }
 

@@ -26,6 +26,10 @@
  *
  * Vertex cells, polygons and strips of input 0 are ignored (with a warning).
  * Without a surface (input 1 empty) every line is visible.
+ *
+ * Progress is reported every 256 lines; AbortExecute stops there, and the
+ * output holds the lines done.
+ *
  * @sa vtkSilhouetteSmoothingFilter vtkSilhouetteViewAlgorithm
  */
 #ifndef vtkSilhouetteLineVisibility_h

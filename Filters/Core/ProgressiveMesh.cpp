@@ -332,8 +332,12 @@ public:
   }
 
   // Collapses cheapest-first until `minimumTriangles`; returns the collapses.
-  std::vector<VertexSplit> run(std::size_t activeTriangles, std::size_t minimumTriangles)
+  /// The collapses, in order; empty with `aborted` set when `progress`
+  /// stopped them.
+  std::vector<VertexSplit> run(std::size_t activeTriangles, std::size_t minimumTriangles,
+    const ProgressCallback& progress, bool& aborted)
   {
+    const std::size_t start = activeTriangles;
     for (std::size_t v = 0; v < P.size(); ++v)
     {
       for (Id w : this->neighbours(static_cast<Id>(v)))
@@ -345,8 +349,21 @@ public:
       }
     }
     std::vector<VertexSplit> collapses;
+    aborted = false;
+    std::size_t nextReport = 0; // in collapses
     while (!this->Queue.empty() && activeTriangles > minimumTriangles)
     {
+      if (collapses.size() >= nextReport)
+      {
+        nextReport = collapses.size() + 256;
+        if (!reportProgress(progress,
+              static_cast<double>(start - activeTriangles) /
+                static_cast<double>(start - minimumTriangles)))
+        {
+          aborted = true;
+          return {};
+        }
+      }
       const Candidate c = this->Queue.top();
       this->Queue.pop();
       if (this->Stamp[c.a] != c.stampA || this->Stamp[c.b] != c.stampB)
@@ -416,8 +433,8 @@ private:
 
 } // namespace
 
-ProgressiveMesh::ProgressiveMesh(
-  std::vector<glm::dvec3> points, std::vector<Triangle> triangles, std::size_t minimumTriangles)
+ProgressiveMesh::ProgressiveMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
+  std::size_t minimumTriangles, const ProgressCallback& progress)
   : Points(std::move(points))
   , Triangles(std::move(triangles))
 {
@@ -448,7 +465,11 @@ ProgressiveMesh::ProgressiveMesh(
   std::vector<VertexSplit> collapses;
   {
     Simplifier simplifier(this->Points, this->Triangles, this->TriangleActive);
-    collapses = simplifier.run(this->ActiveTriangles, minimumTriangles);
+    collapses = simplifier.run(this->ActiveTriangles, minimumTriangles, progress, this->Aborted);
+  }
+  if (this->Aborted)
+  {
+    return; // the caller throws this mesh away
   }
   for (const VertexSplit& c : collapses)
   {

@@ -44,6 +44,7 @@
 #pragma once
 
 #include "MeshTopology.h"
+#include "Progress.h"
 
 #include <glm/vec3.hpp>
 
@@ -72,8 +73,13 @@ public:
 
   /// Builds the sequence down to as few triangles as the rules allow (or to
   /// `minimumTriangles`), then leaves the mesh at its full (input) level.
+  /// `progress` gets the share of the triangles removed so far, every 256
+  /// collapses; when it returns false the build stops and aborted() is true
+  /// (the mesh is then unusable).
   ProgressiveMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
-    std::size_t minimumTriangles = 0);
+    std::size_t minimumTriangles = 0, const ProgressCallback& progress = {});
+
+  bool aborted() const { return this->Aborted; }
 
   std::size_t splitCount() const { return this->Splits.size(); }
   /// The splits, from the base mesh up: split i undoes collapse (count-1-i).
@@ -118,6 +124,7 @@ private:
   std::size_t ActiveVertices = 0;
   std::size_t BaseTriangles = 0;
   std::vector<char> VertexActive;
+  bool Aborted = false;
 };
 
 } // namespace silsmooth

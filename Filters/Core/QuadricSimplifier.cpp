@@ -141,8 +141,21 @@ public:
   {
     SimplificationResult result;
     const std::size_t target = std::max<std::size_t>(this->Parameters.TargetTriangles, 4);
+    const std::size_t start = this->FaceCount;
+    std::size_t nextReport = 0; // in collapses
     while (this->FaceCount > target && !this->Heap.empty())
     {
+      if (result.Collapses >= nextReport)
+      {
+        nextReport = result.Collapses + 256;
+        if (!reportProgress(this->Parameters.Progress,
+              static_cast<double>(start - this->FaceCount) / static_cast<double>(start - target)))
+        {
+          result = SimplificationResult();
+          result.Aborted = true;
+          return result;
+        }
+      }
       const Candidate c = this->Heap.top();
       this->Heap.pop();
       if (!std::isfinite(c.Rank))

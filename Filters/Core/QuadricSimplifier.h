@@ -28,6 +28,7 @@
 #pragma once
 
 #include "MeshTopology.h"
+#include "Progress.h"
 
 #include <glm/vec3.hpp>
 
@@ -44,6 +45,9 @@ struct SimplificationParameters
   std::vector<unsigned char> Near;
   /// f of the paper: near points may have f times the error of the others.
   double NearFactor = 1.0;
+  /// Called with the share of the collapses to the target done, every 256
+  /// collapses; false stops the simplification (SimplificationResult::Aborted).
+  ProgressCallback Progress;
 };
 
 struct SimplificationResult
@@ -59,6 +63,8 @@ struct SimplificationResult
   double Threshold = 0.0;
   std::size_t Collapses = 0;
   bool ReachedTarget = false;
+  /// Stopped by the progress callback: the result is empty.
+  bool Aborted = false;
 };
 
 /// Triangles that name a point twice are dropped first.

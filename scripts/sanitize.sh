@@ -35,9 +35,9 @@ fi
 export UBSAN_OPTIONS=print_stacktrace=1
 started=$SECONDS
 ASAN_OPTIONS=detect_leaks=1 ctest --output-on-failure \
-  -R '^core\.|^module\.Test(TopologyInvariants|NoFolds|BadInput|HostileMeshes|VisibilityMethod|BoundaryCurveSmoothing|FaceSilhouetteLines|PNTriangleFilter|ProgressiveMeshFilter|StylizedStrokes|LineVisibilityFilter|OutlineDeviation)$'
+  -R '^core\.|^module\.Test(TopologyInvariants|NoFolds|BadInput|HostileMeshes|VisibilityMethod|BoundaryCurveSmoothing|FaceSilhouetteLines|PNTriangleFilter|ProgressiveMeshFilter|StylizedStrokes|LineVisibilityFilter|OutlineDeviation|CreaseAndBorderLines|AbortAtHalf)$'
 ASAN_OPTIONS=detect_leaks=0 "${display[@]}" ctest --output-on-failure \
-  -R '^module\.Test(OpenSubdivRefiner|FilterPipeline|SphereAccuracy|SmoothingImages|OrbitCoherence|FeatureCurves|AssetMeshes|AssetImages)$'
+  -R '^module\.Test(OpenSubdivRefiner|FilterPipeline|SphereAccuracy|SmoothingImages|OrbitCoherence|FeatureCurves|AssetMeshes|AssetImages|LineDrawingAccuracy)$'
 echo "sanitize: core and module tests in $((SECONDS - started)) s"
 started=$SECONDS
 # The program reads files in a child process (Apps/IO/SandboxedReading.h),

@@ -8,10 +8,12 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIcosphereSource.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
@@ -34,6 +36,8 @@
 
 #include "SilhouetteTestSupport.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <set>
@@ -418,24 +422,59 @@ bool IndependentOfThreadCount()
     smoother->SetInputConnection(sphere->GetOutputPort());
     smoother->SetCamera(camera);
     smoother->Update();
-    auto copy = vtkSmartPointer<vtkPolyData>::New();
-    copy->DeepCopy(smoother->GetOutput());
-    return copy;
+    std::array<vtkSmartPointer<vtkPolyData>, 2> copies;
+    for (int port = 0; port < 2; ++port)
+    {
+      copies[port] = vtkSmartPointer<vtkPolyData>::New();
+      copies[port]->DeepCopy(smoother->GetOutput(port));
+    }
+    return copies;
   };
-  auto one = run(1);
-  auto two = run(2);
+  const auto one = run(1);
+  const auto two = run(2);
   vtkSMPTools::Initialize(0);
-  CHECK(one->GetNumberOfPoints() == two->GetNumberOfPoints(), "same points");
-  CHECK(one->GetNumberOfPolys() == two->GetNumberOfPolys(), "same cells");
-  for (vtkIdType i = 0; i < one->GetNumberOfPoints(); ++i)
+  for (int port = 0; port < 2; ++port)
   {
-    double p[3], q[3];
-    one->GetPoint(i, p);
-    two->GetPoint(i, q);
-    CHECK(p[0] == q[0] && p[1] == q[1] && p[2] == q[2], "bit-identical points");
+    vtkPolyData* a = one[port];
+    vtkPolyData* b = two[port];
+    CHECK(a->GetNumberOfPoints() == b->GetNumberOfPoints(), "same points");
+    CHECK(a->GetNumberOfCells() == b->GetNumberOfCells(), "same cells");
+    for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+    {
+      double p[3], q[3];
+      a->GetPoint(i, p);
+      b->GetPoint(i, q);
+      CHECK(p[0] == q[0] && p[1] == q[1] && p[2] == q[2], "bit-identical points");
+    }
+    // The connectivity too: the same cells over the same point ids, in order.
+    vtkNew<vtkIdList> cellA;
+    vtkNew<vtkIdList> cellB;
+    for (vtkIdType c = 0; c < a->GetNumberOfCells(); ++c)
+    {
+      a->GetCellPoints(c, cellA);
+      b->GetCellPoints(c, cellB);
+      CHECK(a->GetCellType(c) == b->GetCellType(c) &&
+          cellA->GetNumberOfIds() == cellB->GetNumberOfIds() &&
+          std::equal(cellA->begin(), cellA->end(), cellB->begin()),
+        "the same cells over the same point ids");
+    }
+    // And the cell arrays (NewGeometry, OriginalCellId, LineKind).
+    for (int k = 0; k < a->GetCellData()->GetNumberOfArrays(); ++k)
+    {
+      vtkDataArray* x = a->GetCellData()->GetArray(k);
+      vtkDataArray* y = x ? b->GetCellData()->GetArray(x->GetName()) : nullptr;
+      CHECK(x && y && x->GetNumberOfValues() == y->GetNumberOfValues(), "the same cell arrays");
+      for (vtkIdType v = 0; v < x->GetNumberOfValues(); ++v)
+      {
+        CHECK(x->GetVariantValue(v) == y->GetVariantValue(v), "identical cell array values");
+      }
+    }
   }
-  std::printf("threads: 1 and 2 threads give identical output (%lld points)\n",
-    static_cast<long long>(one->GetNumberOfPoints()));
+  std::printf("threads: 1 and 2 threads give identical output: %lld points, %lld triangles, "
+              "%lld silhouette polylines, their connectivity and cell arrays\n",
+    static_cast<long long>(one[0]->GetNumberOfPoints()),
+    static_cast<long long>(one[0]->GetNumberOfPolys()),
+    static_cast<long long>(one[1]->GetNumberOfLines()));
   return true;
 }
 

@@ -12,6 +12,7 @@
 //   part the sphere hides is hidden, its ends within 0.02 of the exact
 //   sphere's shadow on the border line.
 // - The same box smooth-shaded (one normal per corner): no crease.
+// - A capped cylinder's silhouette lines end on its rims' crease points.
 #include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
@@ -20,8 +21,10 @@
 #include "vtkCleanPolyData.h"
 #include "vtkCreaseAndBorderLines.h"
 #include "vtkCubeSource.h"
+#include "vtkCylinderSource.h"
 #include "vtkDataArray.h"
 #include "vtkFieldData.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -278,6 +281,55 @@ bool CheckSmoothShadedBoxHasNoCrease()
     Fail("a box with one normal per corner has no crease; without normals, 12");
 }
 
+// A cylinder with flat caps (24 sides) seen obliquely: its two silhouette
+// lines end on the rims, which are creases; each end is a point of a crease
+// line, so the drawing connects (distance 0).
+bool CheckSilhouettesEndOnCreases()
+{
+  vtkNew<vtkCylinderSource> cylinder;
+  cylinder->SetResolution(24);
+  cylinder->SetHeight(2.0);
+  cylinder->SetRadius(0.6);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputConnection(cylinder->GetOutputPort());
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(3.0, 1.5, 2.0);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  vtkNew<vtkSilhouetteSmoothingFilter> smoothing;
+  smoothing->SetInputConnection(triangles->GetOutputPort());
+  smoothing->SetCamera(camera);
+  vtkNew<vtkCreaseAndBorderLines> edges;
+  edges->SetInputConnection(smoothing->GetOutputPort(0));
+  edges->Update();
+  vtkPolyData* silhouettes = smoothing->GetOutput(1);
+  vtkPolyData* creases = edges->GetOutput();
+  if (silhouettes->GetNumberOfLines() != 2 || FieldValue(creases, "CreaseLineCount") != 2)
+  {
+    return Fail("a capped cylinder: two silhouette lines, two rim creases");
+  }
+  double farthest = 0.0;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < silhouettes->GetNumberOfCells(); ++c)
+  {
+    silhouettes->GetCellPoints(c, ids);
+    for (const vtkIdType end : { ids->GetId(0), ids->GetId(ids->GetNumberOfIds() - 1) })
+    {
+      double p[3];
+      silhouettes->GetPoint(end, p);
+      double nearest = VTK_DOUBLE_MAX;
+      for (vtkIdType q = 0; q < creases->GetNumberOfPoints(); ++q)
+      {
+        double x[3];
+        creases->GetPoint(q, x);
+        nearest = std::min(nearest, vtkMath::Distance2BetweenPoints(p, x));
+      }
+      farthest = std::max(farthest, std::sqrt(nearest));
+    }
+  }
+  std::printf("cylinder: the silhouettes' ends lie %g from the rims' crease points\n", farthest);
+  return farthest == 0.0 || Fail("the silhouettes end on the creases' points");
+}
+
 } // namespace
 
 int TestCreaseAndBorderLines(int, char*[])
@@ -303,5 +355,6 @@ int TestCreaseAndBorderLines(int, char*[])
   }
   ok = CheckSphereHidesBorder() && ok;
   ok = CheckSmoothShadedBoxHasNoCrease() && ok;
+  ok = CheckSilhouettesEndOnCreases() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

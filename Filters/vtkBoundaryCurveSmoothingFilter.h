@@ -70,9 +70,6 @@ protected:
 
   int RequestViewData(vtkInformation*, vtkInformationVector**, vtkInformationVector*,
     const vtkSilhouetteFilterSupport::View& view) override;
-  /// Before a renderer has created its camera: the input, unchanged.
-  int RequestDataWithoutCamera(
-    vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int SamplesPerCurve = 0;
   double Tolerance = 0.5;

@@ -724,6 +724,9 @@ vtkSilhouetteSmoothingFilter::vtkSilhouetteSmoothingFilter()
   : Internal(new Internals)
 {
   this->SetNumberOfOutputPorts(2);
+  // The renderer asks for the bounds before it creates its camera (to reset
+  // it): give the input, and run for real once the camera exists.
+  this->PassInputWithoutCamera = true;
 }
 
 vtkSilhouetteSmoothingFilter::~vtkSilhouetteSmoothingFilter() = default;
@@ -731,24 +734,6 @@ vtkSilhouetteSmoothingFilter::~vtkSilhouetteSmoothingFilter() = default;
 vtkPolyData* vtkSilhouetteSmoothingFilter::GetSilhouetteOutput()
 {
   return vtkPolyData::SafeDownCast(this->GetOutputDataObject(1));
-}
-
-// The renderer asks for the bounds before it creates its camera (to reset
-// it): give the input, and run for real once the camera exists.
-int vtkSilhouetteSmoothingFilter::RequestDataWithoutCamera(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  vtkPolyData* lines = vtkPolyData::GetData(outputVector, 1);
-  if (!input || !output || !lines)
-  {
-    vtkErrorMacro("Missing input or output polydata.");
-    return 0;
-  }
-  output->ShallowCopy(input);
-  lines->Initialize();
-  return 1;
 }
 
 int vtkSilhouetteSmoothingFilter::RequestViewData(vtkInformation*,

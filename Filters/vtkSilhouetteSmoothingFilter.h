@@ -396,9 +396,6 @@ protected:
 
   int RequestViewData(vtkInformation*, vtkInformationVector**, vtkInformationVector*,
     const vtkSilhouetteFilterSupport::View& view) override;
-  /// Before a renderer has created its camera: the input, unchanged.
-  int RequestDataWithoutCamera(
-    vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double Tolerance = 0.5;
   int MinimumSamples = 2;

@@ -2,6 +2,7 @@
 
 #include "vtkCamera.h"
 #include "vtkMatrix4x4.h"
+#include "vtkPolyData.h"
 #include "vtkProp3D.h"
 #include "vtkRenderer.h"
 
@@ -102,9 +103,16 @@ int vtkSilhouetteViewAlgorithm::RequestData(
 }
 
 int vtkSilhouetteViewAlgorithm::RequestDataWithoutCamera(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector*)
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  return 1; // nothing to draw until the camera exists
+  // Nothing to draw until the camera exists; the other outputs stay empty.
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  if (this->PassInputWithoutCamera && input && output)
+  {
+    output->ShallowCopy(input);
+  }
+  return 1;
 }
 
 vtkSilhouetteViewAlgorithm::ViewStatus vtkSilhouetteViewAlgorithm::RequestView(

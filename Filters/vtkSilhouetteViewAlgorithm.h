@@ -137,9 +137,15 @@ protected:
     const vtkSilhouetteFilterSupport::View& view) = 0;
 
   /// What to output before a renderer has created its camera. The default
-  /// leaves the outputs empty and succeeds.
+  /// leaves the outputs empty, or with PassInputWithoutCamera gives the input
+  /// on the first output, and succeeds.
   virtual int RequestDataWithoutCamera(
     vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+
+  /// For RequestDataWithoutCamera: the input on the first output (the
+  /// smoothing filters, whose output stands for their input). Set in the
+  /// subclass's constructor.
+  bool PassInputWithoutCamera = false;
 
   /// Whether a renderer without its camera yet means "wait"
   /// (RequestDataWithoutCamera), the default, or an error. Set in the

@@ -1,5 +1,7 @@
 #include "LineVisibility.h"
 
+#include "PositionHash.h"
+
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
@@ -53,22 +55,6 @@ double rayHit(const glm::dvec3& origin, const glm::dvec3& dir, const glm::dvec3&
   }
   return glm::dot(e2, q) * inverse;
 }
-
-struct PositionHash
-{
-  std::size_t operator()(const glm::dvec3& p) const
-  {
-    std::size_t seed = 0;
-    for (int k = 0; k < 3; ++k)
-    {
-      std::uint64_t bits = 0;
-      const double value = p[k];
-      std::memcpy(&bits, &value, sizeof bits);
-      seed ^= std::hash<std::uint64_t>()(bits) + 0x9e3779b97f4a7c15ULL + (seed << 6) + (seed >> 2);
-    }
-    return seed;
-  }
-};
 
 // Normals within about a degree of each other (zero or broken ones match).
 bool sameNormal(const glm::dvec3& m, const glm::dvec3& n)

@@ -1,6 +1,7 @@
 #include "SurfaceEdgeLines.h"
 
 #include "EdgeClassification.h"
+#include "PositionHash.h"
 
 #include <glm/geometric.hpp>
 
@@ -16,22 +17,6 @@ namespace
 {
 
 constexpr double DegreesToRadians = 3.14159265358979323846 / 180.0;
-
-struct PositionHash
-{
-  std::size_t operator()(const glm::dvec3& p) const
-  {
-    std::size_t seed = 0;
-    for (int k = 0; k < 3; ++k)
-    {
-      std::uint64_t bits = 0;
-      const double value = p[k] + 0.0; // -0 and +0 weld
-      std::memcpy(&bits, &value, sizeof bits);
-      seed ^= std::hash<std::uint64_t>()(bits) + 0x9e3779b97f4a7c15ULL + (seed << 6) + (seed >> 2);
-    }
-    return seed;
-  }
-};
 
 /// For each point, the first point id at its position.
 std::vector<Id> weldByPosition(const std::vector<glm::dvec3>& points)

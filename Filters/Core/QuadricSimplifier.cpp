@@ -135,6 +135,7 @@ public:
       this->push(entry.first.first, entry.first.second);
     }
     this->FaceCount = this->Faces.size();
+    this->RoundOf.assign(n, 0);
   }
 
   SimplificationResult run()
@@ -143,7 +144,7 @@ public:
     const std::size_t target = std::max<std::size_t>(this->Parameters.TargetTriangles, 4);
     const std::size_t start = this->FaceCount;
     std::size_t nextReport = 0; // in collapses
-    while (this->FaceCount > target && !this->Heap.empty())
+    while (this->FaceCount > target && this->nextRoundIfNeeded())
     {
       if (result.Collapses >= nextReport)
       {
@@ -165,11 +166,28 @@ public:
       const std::size_t a = static_cast<std::size_t>(c.A);
       const std::size_t b = static_cast<std::size_t>(c.B);
       if (!this->Alive[a] || !this->Alive[b] || this->Stamp[a] != c.StampA ||
-        this->Stamp[b] != c.StampB || !this->canCollapse(c.A, c.B, c.Position))
+        this->Stamp[b] != c.StampB)
+      {
+        continue;
+      }
+      if (this->Parameters.IndependentRounds && this->touchedThisRound(c.A, c.B))
+      {
+        this->Deferred.push_back(c);
+        continue;
+      }
+      if (!this->canCollapse(c.A, c.B, c.Position))
       {
         continue;
       }
       this->collapse(c.A, c.B, c.Position);
+      if (this->Parameters.IndependentRounds)
+      {
+        this->markRound(c.A);
+      }
+      if (this->Parameters.RecordSequence)
+      {
+        result.Sequence.push_back({ c.A, c.B, c.Position, c.Cost });
+      }
       result.Threshold = std::max(result.Threshold, c.Rank);
       ++result.Collapses;
       this->Error[c.A] = c.Cost;
@@ -205,6 +223,44 @@ public:
 
 private:
   const glm::dvec3& P(Id v) const { return this->Points[static_cast<std::size_t>(v)]; }
+
+  // Whether there is a candidate left; with IndependentRounds, an empty heap
+  // starts the next round with the collapses this one deferred.
+  bool nextRoundIfNeeded()
+  {
+    if (this->Heap.empty() && !this->Deferred.empty())
+    {
+      ++this->Round;
+      for (const Candidate& c : this->Deferred)
+        this->Heap.push(c);
+      this->Deferred.clear();
+    }
+    return !this->Heap.empty();
+  }
+
+  // A collapse of this round changed a triangle at a, at b or next to them.
+  bool touchedThisRound(Id a, Id b) const
+  {
+    for (const Id end : { a, b })
+    {
+      if (this->RoundOf[static_cast<std::size_t>(end)] == this->Round)
+        return true;
+      for (const Id w : this->neighbours(end))
+      {
+        if (this->RoundOf[static_cast<std::size_t>(w)] == this->Round)
+          return true;
+      }
+    }
+    return false;
+  }
+
+  // After a collapse into `kept`: its star's points were touched this round.
+  void markRound(Id kept)
+  {
+    this->RoundOf[static_cast<std::size_t>(kept)] = this->Round;
+    for (const Id w : this->neighbours(kept))
+      this->RoundOf[static_cast<std::size_t>(w)] = this->Round;
+  }
 
   void push(Id a, Id b)
   {
@@ -408,6 +464,11 @@ private:
   std::vector<unsigned char> Locked;
   std::vector<unsigned char> Near;
   std::map<Id, double> Error;
+  // IndependentRounds: the round that last touched each point (0: none yet),
+  // and the candidates this round put off.
+  std::vector<std::uint32_t> RoundOf;
+  std::uint32_t Round = 1;
+  std::vector<Candidate> Deferred;
   std::priority_queue<Candidate, std::vector<Candidate>, std::greater<Candidate>> Heap;
 };
 

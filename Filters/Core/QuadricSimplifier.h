@@ -48,6 +48,27 @@ struct SimplificationParameters
   /// Called with the share of the collapses to the target done, every 256
   /// collapses; false stops the simplification (SimplificationResult::Aborted).
   ProgressCallback Progress;
+  /// Keep every collapse taken, in order (SimplificationResult::Sequence):
+  /// the edge-collapse sequence a view-dependent hierarchy is built from.
+  bool RecordSequence = false;
+  /// Collapse in rounds of independent collapses: within a round, cheapest
+  /// first, a collapse is put off to the next round when a point of its
+  /// triangles (either end or a point next to one) was touched by a collapse
+  /// of this round. The sequence then has few levels, so a view-dependent
+  /// hierarchy built from it has short chains of dependencies (its refinement
+  /// stays local, as in Xia and Varshney's or El-Sana's merge trees); the
+  /// mesh reached is a little worse than cheapest-first alone.
+  bool IndependentRounds = false;
+};
+
+/// One collapse as taken: `Removed` went into `Kept`, which moved from its
+/// position then to `Position`. Point ids are the input's.
+struct CollapseRecord
+{
+  Id Kept = 0;
+  Id Removed = 0;
+  glm::dvec3 Position{ 0.0 };
+  double Cost = 0.0;
 };
 
 struct SimplificationResult
@@ -63,6 +84,10 @@ struct SimplificationResult
   double Threshold = 0.0;
   std::size_t Collapses = 0;
   bool ReachedTarget = false;
+  /// With RecordSequence: every collapse taken, first to last. Replaying
+  /// them on the input (its triangles that name no point twice) gives the
+  /// output mesh.
+  std::vector<CollapseRecord> Sequence;
   /// Stopped by the progress callback: the result is empty.
   bool Aborted = false;
 };

@@ -289,8 +289,8 @@ void SelectiveRefinement::undoAll()
   this->adapt(Nothing());
 }
 
-void SelectiveRefinement::extract(std::vector<glm::dvec3>& points,
-  std::vector<Triangle>& triangles, std::vector<Id>& pointIds, std::vector<Id>& triangleIds) const
+void SelectiveRefinement::extract(std::vector<glm::dvec3>& points, std::vector<Triangle>& triangles,
+  std::vector<Id>& pointIds, std::vector<Id>& triangleIds) const
 {
   points.clear();
   triangles.clear();

@@ -116,8 +116,8 @@ private:
 
   const VertexHierarchy& Hierarchy;
   std::vector<glm::dvec3> Positions;
-  std::vector<Triangle> Corners;                // per face
-  std::vector<std::vector<Index>> FacesOf;      // per point: the active faces at it
+  std::vector<Triangle> Corners;           // per face
+  std::vector<std::vector<Index>> FacesOf; // per point: the active faces at it
   std::vector<unsigned char> Applied;
   std::vector<Index> UnappliedParents; // per node
   std::vector<Index> AppliedChildren;  // per node

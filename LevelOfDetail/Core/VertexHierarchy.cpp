@@ -135,7 +135,8 @@ void NormalCone::add(const NormalCone& other)
   }
   // Turn the axis towards the other cone's by what the half-angle grew.
   const double turn = halfAngle - this->HalfAngle;
-  this->Axis = glm::normalize(std::cos(turn) * this->Axis + std::sin(turn) * (across / acrossLength));
+  this->Axis =
+    glm::normalize(std::cos(turn) * this->Axis + std::sin(turn) * (across / acrossLength));
   // A little slack so that rounding never leaves a merged cone short.
   this->HalfAngle = std::min(Pi, halfAngle + 1e-9);
 }
@@ -224,7 +225,10 @@ public:
 
 private:
   const glm::dvec3& position(Id v) const { return this->Positions[static_cast<std::size_t>(v)]; }
-  const Triangle& corners(Index face) const { return this->Corners[static_cast<std::size_t>(face)]; }
+  const Triangle& corners(Index face) const
+  {
+    return this->Corners[static_cast<std::size_t>(face)];
+  }
   bool has(Index face, Id v) const
   {
     const Triangle& t = this->corners(face);
@@ -284,7 +288,8 @@ private:
     if (left == right)
       this->notAnInteriorEdge();
     node.Neighbours = { this->across(node.LeftFace, node.Kept, left),
-      this->across(node.LeftFace, node.Removed, left), this->across(node.RightFace, node.Kept, right),
+      this->across(node.LeftFace, node.Removed, left),
+      this->across(node.RightFace, node.Kept, right),
       this->across(node.RightFace, node.Removed, right) };
   }
 
@@ -295,9 +300,9 @@ private:
     const Triangle& t = this->corners(face);
     for (std::size_t k = 0; k < 3; ++k)
     {
-      roles[k] = t[k] == node.Kept    ? VertexHierarchy::KeptCorner
-        : t[k] == node.Removed        ? VertexHierarchy::RemovedCorner
-                                      : VertexHierarchy::WedgeCorner;
+      roles[k] = t[k] == node.Kept ? VertexHierarchy::KeptCorner
+        : t[k] == node.Removed     ? VertexHierarchy::RemovedCorner
+                                   : VertexHierarchy::WedgeCorner;
       wedge = roles[k] == VertexHierarchy::WedgeCorner ? t[k] : wedge;
     }
     return wedge;
@@ -385,7 +390,8 @@ private:
       {
         const Triangle& t = this->corners(face);
         nearest = std::min(nearest,
-          pointTriangleDistance(fine, this->position(t[0]), this->position(t[1]), this->position(t[2])));
+          pointTriangleDistance(
+            fine, this->position(t[0]), this->position(t[1]), this->position(t[2])));
       }
       own = std::max(own, std::isfinite(nearest) ? nearest : 0.0);
     }

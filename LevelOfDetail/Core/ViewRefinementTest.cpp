@@ -14,8 +14,8 @@ constexpr double HalfPi = 1.57079632679489661923;
 constexpr double DegreesToRadians = 3.14159265358979323846 / 180.0;
 }
 
-ViewRefinementTest::ViewRefinementTest(const VertexHierarchy& hierarchy,
-  const ViewGeometry& view, const ViewRefinementTolerances& tolerances)
+ViewRefinementTest::ViewRefinementTest(const VertexHierarchy& hierarchy, const ViewGeometry& view,
+  const ViewRefinementTolerances& tolerances)
   : Hierarchy(hierarchy)
   , View(view)
   , Tolerances(tolerances)

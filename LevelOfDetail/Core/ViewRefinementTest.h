@@ -32,8 +32,8 @@
 // least as many, and the test needs it whenever it needs a child.
 #pragma once
 
-#include "VertexHierarchy.h"
 #include "SelectiveRefinement.h"
+#include "VertexHierarchy.h"
 #include "ViewGeometry.h"
 
 #include <limits>

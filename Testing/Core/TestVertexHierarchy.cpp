@@ -266,8 +266,8 @@ SphereCut cutSphere(const Mesh& sphere, const VertexHierarchy& hierarchy, const 
     const Triangle& corners = cut.corners(face);
     const std::size_t f = static_cast<std::size_t>(face);
     bool atInput = corners == sphere.Triangles[f];
-    bool atBase = corners == hierarchy.baseCorners()[f] &&
-      std::binary_search(base.begin(), base.end(), face);
+    bool atBase =
+      corners == hierarchy.baseCorners()[f] && std::binary_search(base.begin(), base.end(), face);
     bool inCap = true;
     for (const Id p : corners)
     {
@@ -322,8 +322,8 @@ TEST(VertexHierarchy, SphereKeepsItsContourFullAndItsCapAtTheBase)
   std::normal_distribution<double> normal;
   for (int view = 0; view < 20; ++view)
   {
-    const glm::dvec3 eye =
-      (4.5 + view % 4) * glm::normalize(glm::dvec3(normal(generator), normal(generator), normal(generator)));
+    const glm::dvec3 eye = (4.5 + view % 4) *
+      glm::normalize(glm::dvec3(normal(generator), normal(generator), normal(generator)));
     const SphereCut cut = cutSphere(sphere, hierarchy, eye, exactContour, 20.0);
     EXPECT_GT(cut.SilhouetteTriangles, 150) << "view " << view;
     EXPECT_EQ(cut.SilhouetteNotFull, 0) << "view " << view;
@@ -351,4 +351,3 @@ TEST(VertexHierarchy, SphereKeepsItsContourFullAndItsCapAtTheBase)
   }
   EXPECT_GT(capNotBase, 20);
 }
-

@@ -26,7 +26,8 @@ Commands:
       smooth the silhouette of INPUT for one view, optionally write the
       result, and print figures about it
   render INPUT -o IMAGE.png|DRAWING.svg [--style STYLE] [--no-smoothing]
-         [--hidden none|dashed] [--width-by-depth] [--json] [camera options]
+         [--hidden none|dashed] [--width-by-depth] [--lod] [--json]
+         [camera options]
   render INPUT --style STYLE --progressive N [--svg] -o DIR [options]
       render INPUT offscreen to a PNG image (or a line style to an SVG
       drawing, or N drawings along its progressive mesh) and print the
@@ -106,7 +107,7 @@ std::string RenderHelp()
 {
   return R"(Usage: silhouette render INPUT -o IMAGE.png|DRAWING.svg [--style STYLE]
                         [--no-smoothing] [--hidden none|dashed]
-                        [--width-by-depth] [--json] [camera options]
+                        [--width-by-depth] [--lod] [--json] [camera options]
        silhouette render INPUT --style STYLE --progressive N [--svg] -o DIR
                         [the same options]
 
@@ -180,6 +181,16 @@ Options:
                           focal point's distance, times that distance over
                           the point's, within 0.5 to 8 pixels (default: 2
                           pixels everywhere)
+  --lod                   refine INPUT for the view first (view-dependent
+                          level of detail, vtkViewDependentLevelOfDetail): a
+                          hierarchy of its edge collapses is built once, and
+                          the view keeps the splits whose error on screen is
+                          over 0.5 pixels where the outline may be and over
+                          1 pixel where the surface faces the viewer (back
+                          faces stay coarse); the smoothing, the drawing and
+                          the figures then take that mesh, and a line before
+                          the figures (on stderr with --json) gives its
+                          triangles and the time (default: the whole INPUT)
   --progressive N         Kim and Choe's progressive sketch: N drawings (2 to
                           64) of a line style along INPUT's progressive mesh
                           (vtkProgressiveMeshFilter), from its base mesh to
@@ -945,6 +956,11 @@ CommandLine ParseCommandLine(int argc, char* argv[])
         RejectInlineValue(option);
         render.WidthByDepth = true;
       }
+      else if (option.Name == "--lod")
+      {
+        RejectInlineValue(option);
+        render.Lod = true;
+      }
       else if (option.Name == "--progressive")
       {
         render.ProgressiveLevels = ParseCount(option, args.TakeValue(option), 2, 64);
@@ -965,6 +981,11 @@ CommandLine ParseCommandLine(int argc, char* argv[])
       throw UsageError(render.ProgressiveLevels > 0
           ? "'render --progressive' needs '-o DIR'"
           : "'render' needs '-o IMAGE.png' or '-o DRAWING.svg'");
+    }
+    if (render.Lod && render.ProgressiveLevels > 0)
+    {
+      throw UsageError("option '--lod' does not go with '--progressive' (each drawing is one "
+                       "level of the progressive mesh already)");
     }
     if (render.ProgressiveSvg && render.ProgressiveLevels == 0)
     {

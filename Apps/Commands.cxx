@@ -2,6 +2,7 @@
 
 #include "CliErrors.h"
 #include "Figures.h"
+#include "LevelOfDetail.h"
 #include "MeshIO.h"
 #include "PrintableText.h"
 #include "Rendering.h"
@@ -257,6 +258,12 @@ void RunRender(const RenderOptions& options)
   const OffscreenView view = MakeOffscreenView(options.Camera.ViewportSize);
   SetUpCamera(view.Renderer, mesh->GetBounds(), options.Camera);
   vtkCamera* camera = view.Renderer->GetActiveCamera();
+  if (options.Lod)
+  {
+    const LevelOfDetailRun lod = ExtractForView(mesh, camera, options.Camera);
+    (options.Json ? std::cerr : std::cout) << lod.summary() << "\n";
+    mesh = lod.Mesh;
+  }
 
   const SmoothingRun run = SmoothSilhouette(mesh, camera, options.Camera);
   PrintWarnings(run);

@@ -2,6 +2,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
@@ -233,6 +234,22 @@ int vtkViewDependentLevelOfDetail::RequestViewData(vtkInformation*,
   output->GetPointData()->CopyAllocate(input->GetPointData(), from->GetNumberOfIds());
   output->GetPointData()->CopyData(input->GetPointData(), from, to);
   output->GetPointData()->AddArray(originalPoint);
+  if (!output->GetPointData()->GetNormals())
+  {
+    // The input's own (angle-weighted) normals, so that a coarse part is
+    // shaded as the fine surface is, not as its few facets are.
+    const std::vector<glm::dvec3>& normals = internal.Hierarchy->pointNormals();
+    vtkNew<vtkFloatArray> outNormals;
+    outNormals->SetName("Normals");
+    outNormals->SetNumberOfComponents(3);
+    outNormals->SetNumberOfTuples(static_cast<vtkIdType>(pointIds.size()));
+    for (std::size_t i = 0; i < pointIds.size(); ++i)
+    {
+      const glm::dvec3& n = normals[static_cast<std::size_t>(pointIds[i])];
+      outNormals->SetTuple3(static_cast<vtkIdType>(i), n.x, n.y, n.z);
+    }
+    output->GetPointData()->SetNormals(outNormals);
+  }
 
   vtkNew<vtkIdTypeArray> originalCell;
   originalCell->SetName("OriginalCellId");

@@ -27,8 +27,10 @@
  * Input: a surface (polygons and strips are read as triangles; vertex and line
  * cells are left out, with a warning). Points on borders or non-manifold edges
  * never move. Output: the extracted triangles; the points they use, with the
- * input's point data (normals included, so that a smoothing filter downstream
- * uses the input's fine normals) and `OriginalPointId`; the input cell's data
+ * input's point data and `OriginalPointId`, and the input's point normals:
+ * its own, or, when it has none, `Normals` computed on the whole input
+ * (angle-weighted), so that a coarse part is shaded as the fine surface is and
+ * a smoothing filter downstream uses the fine normals; the input cell's data
  * and `OriginalCellId` per triangle. Field data: `LevelOfDetailSplits` (splits
  * applied, of the hierarchy's), `LevelOfDetailChanges` (applied and undone in
  * this update) and `LevelOfDetailInputTriangles`.
@@ -56,7 +58,7 @@ public:
   ///@{
   /**
    * The error allowed on screen, in pixels, where the contour may be (default
-   * 0.5), where the surface faces the viewer (default 4) and where it faces
+   * 0.5), where the surface faces the viewer (default 1) and where it faces
    * away (default VTK_DOUBLE_MAX: never refined). 0 asks for full resolution.
    */
   virtual void SetContourTolerance(double pixels);
@@ -115,7 +117,7 @@ protected:
     const vtkSilhouetteFilterSupport::View& view) override;
 
   double ContourTolerance = 0.5;
-  double InteriorTolerance = 4.0;
+  double InteriorTolerance = 1.0;
   double BackFacingTolerance = VTK_DOUBLE_MAX;
   double ContourMargin = 0.0;
   double Hysteresis = 0.8;

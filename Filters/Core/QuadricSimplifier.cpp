@@ -8,7 +8,6 @@
 #include <array>
 #include <cmath>
 #include <limits>
-#include <map>
 #include <queue>
 
 namespace silsmooth
@@ -111,31 +110,40 @@ public:
         this->FacesOf[static_cast<std::size_t>(v)].push_back(static_cast<Id>(f));
       }
     }
-    // Boundary and non-manifold edges lock their points.
-    std::map<std::pair<Id, Id>, int> uses;
+    // Boundary and non-manifold edges lock their points. The edges, sorted,
+    // each as often as triangles have it (the same order a map gave).
+    std::vector<std::pair<Id, Id>> sides;
+    sides.reserve(3 * this->Faces.size());
     for (const Triangle& t : this->Faces)
     {
       for (int k = 0; k < 3; ++k)
       {
         const Id a = t[static_cast<std::size_t>(k)];
         const Id b = t[static_cast<std::size_t>((k + 1) % 3)];
-        ++uses[{ std::min(a, b), std::max(a, b) }];
+        sides.emplace_back(std::min(a, b), std::max(a, b));
       }
     }
-    for (const auto& [edge, count] : uses)
+    std::sort(sides.begin(), sides.end());
+    for (std::size_t i = 0; i < sides.size();)
     {
-      if (count != 2)
+      std::size_t j = i;
+      while (j < sides.size() && sides[j] == sides[i])
+        ++j;
+      if (j - i != 2)
       {
-        this->Locked[static_cast<std::size_t>(edge.first)] = 1;
-        this->Locked[static_cast<std::size_t>(edge.second)] = 1;
+        this->Locked[static_cast<std::size_t>(sides[i].first)] = 1;
+        this->Locked[static_cast<std::size_t>(sides[i].second)] = 1;
       }
+      i = j;
     }
-    for (const auto& entry : uses)
+    sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
+    for (const auto& [a, b] : sides)
     {
-      this->push(entry.first.first, entry.first.second);
+      this->push(a, b);
     }
     this->FaceCount = this->Faces.size();
     this->RoundOf.assign(n, 0);
+    this->Error.assign(n, 0.0);
   }
 
   SimplificationResult run()
@@ -190,7 +198,7 @@ public:
       }
       result.Threshold = std::max(result.Threshold, c.Rank);
       ++result.Collapses;
-      this->Error[c.A] = c.Cost;
+      this->Error[static_cast<std::size_t>(c.A)] = c.Cost;
     }
     result.ReachedTarget = this->FaceCount <= target;
 
@@ -210,8 +218,7 @@ public:
           id = static_cast<Id>(result.Points.size());
           result.Points.push_back(this->Points[static_cast<std::size_t>(v)]);
           result.SourcePoint.push_back(v);
-          const auto error = this->Error.find(v);
-          result.PointError.push_back(error == this->Error.end() ? 0.0 : error->second);
+          result.PointError.push_back(this->Error[static_cast<std::size_t>(v)]);
           result.PointNear.push_back(this->Near[static_cast<std::size_t>(v)]);
         }
         v = id;
@@ -243,12 +250,15 @@ private:
   {
     for (const Id end : { a, b })
     {
-      if (this->RoundOf[static_cast<std::size_t>(end)] == this->Round)
-        return true;
-      for (const Id w : this->neighbours(end))
+      for (const Id f : this->FacesOf[static_cast<std::size_t>(end)])
       {
-        if (this->RoundOf[static_cast<std::size_t>(w)] == this->Round)
-          return true;
+        if (!this->FaceAlive[static_cast<std::size_t>(f)])
+          continue;
+        for (const Id w : this->Faces[static_cast<std::size_t>(f)])
+        {
+          if (this->RoundOf[static_cast<std::size_t>(w)] == this->Round)
+            return true;
+        }
       }
     }
     return false;
@@ -257,9 +267,11 @@ private:
   // After a collapse into `kept`: its star's points were touched this round.
   void markRound(Id kept)
   {
-    this->RoundOf[static_cast<std::size_t>(kept)] = this->Round;
-    for (const Id w : this->neighbours(kept))
-      this->RoundOf[static_cast<std::size_t>(w)] = this->Round;
+    for (const Id f : this->FacesOf[static_cast<std::size_t>(kept)])
+    {
+      for (const Id w : this->Faces[static_cast<std::size_t>(f)])
+        this->RoundOf[static_cast<std::size_t>(w)] = this->Round;
+    }
   }
 
   void push(Id a, Id b)
@@ -463,7 +475,7 @@ private:
   std::vector<unsigned char> Alive;
   std::vector<unsigned char> Locked;
   std::vector<unsigned char> Near;
-  std::map<Id, double> Error;
+  std::vector<double> Error; // per point: the cost of the last collapse into it, else 0
   // IndependentRounds: the round that last touched each point (0: none yet),
   // and the candidates this round put off.
   std::vector<std::uint32_t> RoundOf;

@@ -220,6 +220,7 @@ public:
     }
     std::sort(out.BaseFaces.begin(), out.BaseFaces.end());
     out.BasePositions = this->Positions;
+    out.PointNormals = std::move(this->PointNormals);
     buildParents(out);
   }
 

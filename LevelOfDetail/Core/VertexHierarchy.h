@@ -142,6 +142,9 @@ public:
   const std::vector<glm::dvec3>& basePositions() const { return this->BasePositions; }
   /// Input triangles (faces are numbered as the input's triangles).
   std::size_t faceCount() const { return this->BaseCorners.size(); }
+  /// The input's unit point normals the bounds were made with (given, or
+  /// angle-weighted; zero where a point has none).
+  const std::vector<glm::dvec3>& pointNormals() const { return this->PointNormals; }
 
 private:
   struct Table
@@ -161,6 +164,7 @@ private:
   std::vector<Triangle> BaseCorners;
   std::vector<Index> BaseFaces;
   std::vector<glm::dvec3> BasePositions;
+  std::vector<glm::dvec3> PointNormals;
   bool Aborted = false;
 
   friend class VertexHierarchyBuilder;

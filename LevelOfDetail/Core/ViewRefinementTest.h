@@ -44,7 +44,7 @@ namespace silsmooth
 struct ViewRefinementTolerances
 {
   double ContourPixels = 0.5;
-  double InteriorPixels = 4.0;
+  double InteriorPixels = 1.0;
   double BackPixels = std::numeric_limits<double>::infinity();
   double ContourMarginDegrees = 0.0;
   bool CullOutsideFrustum = true;

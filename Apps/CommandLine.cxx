@@ -305,6 +305,11 @@ Options:
   --no-overlay           no text overlays and no slider (default: shown)
   --no-times             leave the frame rate and times out of the
                          overlay, so images repeat exactly (default: shown)
+  --lod                  refine the mesh for every view before it is
+                         smoothed and drawn (view-dependent level of
+                         detail, as 'silhouette render --lod'); the
+                         overlay's and the orbit's triangles in are the
+                         refined mesh's (default: the whole mesh)
   --screenshot-dir DIR   where key c (and --play) write screenshots,
                          created if missing (default: the current folder)
   --orbit DEG            headless: turn the camera DEG degrees in all
@@ -704,6 +709,10 @@ ViewOptions ParseView(ArgumentList& arguments, RenderBackend& backend)
     else if (option.Name == "--no-times")
     {
       flag(options.NoTimes);
+    }
+    else if (option.Name == "--lod")
+    {
+      flag(options.Lod);
     }
     else if (option.Name == "--screenshot-dir")
     {

@@ -67,6 +67,7 @@ struct ViewOptions
   bool HelpOverlay = false;   ///< start with the key help shown
   bool NoOverlay = false;     ///< no text overlays and no slider
   bool NoTimes = false;       ///< leave the times out of the overlay (repeatable images)
+  bool Lod = false;           ///< refine the mesh for every view first (LevelOfDetail.h)
   int FineLevel = 3;
   int CoarseTriangles = 0;   ///< 0: the model's default
   std::string DataDirectory; ///< where bunny.ply is; empty: the built-in default

@@ -36,6 +36,7 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkThreshold.h>
+#include <vtkViewDependentLevelOfDetail.h>
 
 #include <algorithm>
 #include <cctype>
@@ -299,6 +300,16 @@ void Viewer::LoadMesh()
     this->MeshName = input + " (coarse)";
   }
   this->InputTriangles = CountTriangles(this->Mesh);
+  this->Loaded = this->Mesh;
+  if (this->Options.Lod)
+  {
+    this->Lod = vtkSmartPointer<vtkViewDependentLevelOfDetail>::New();
+    VtkErrorLog::Instance().Watch(this->Lod);
+    this->Lod->SetInputData(this->Loaded);
+    const auto& size = this->Options.Camera.ViewportSize;
+    this->Lod->SetViewportSize(size[0], size[1]);
+    this->Mesh = this->Lod->GetOutput(); // filled before the first render (BuildWindow)
+  }
 }
 
 void Viewer::BuildWindow(Mode mode)
@@ -349,6 +360,12 @@ void Viewer::BuildWindow(Mode mode)
   // The unsmoothed styles take the filter's shading normals, and a mesh the
   // filter refuses (NaN points) should fail before any window opens.
   VtkErrorLog::Instance().Clear();
+  if (this->Lod)
+  {
+    this->Lod->SetRenderer(this->MainRenderer);
+    this->Lod->Update();
+    VtkErrorLog::Instance().ThrowIfErrors("the level of detail failed");
+  }
   this->Filter->Update();
   VtkErrorLog::Instance().ThrowIfErrors("smoothing failed");
   this->FilterRunsAtLastFrame = this->FilterRuns; // that run belongs to no frame
@@ -477,7 +494,7 @@ void Viewer::SetUpTheCamera()
   {
     camera.Parallel = this->MainRenderer->GetActiveCamera()->GetParallelProjection() != 0;
   }
-  SetUpCamera(this->MainRenderer, this->Mesh->GetBounds(), camera);
+  SetUpCamera(this->MainRenderer, this->Loaded->GetBounds(), camera);
   this->CameraSetUp = true;
 }
 
@@ -745,6 +762,10 @@ std::string Viewer::NextScreenshotPath() const
 
 void Viewer::OnViewRenderStart(vtkObject* renderer, unsigned long, void*)
 {
+  if (this->Lod && renderer == this->MainRenderer.GetPointer())
+  {
+    this->Lod->Update(); // the mesh for this view, before anything draws it
+  }
   static_cast<vtkRenderer*>(renderer)->ResetCameraClippingRange();
 }
 
@@ -815,12 +836,12 @@ double Viewer::FramesPerSecond() const
 ViewerFigures Viewer::CurrentFigures() const
 {
   ViewerFigures figures;
-  figures.InputTriangles = this->InputTriangles;
+  figures.InputTriangles = this->Lod ? this->Mesh->GetNumberOfPolys() : this->InputTriangles;
   if (this->UsesMapper())
   {
     const vtkSilhouetteSmoothingMapper* mapper = this->SmoothMapper;
     figures.OutputTriangles =
-      this->InputTriangles - mapper->GetReplacedTriangleCount() + mapper->GetPatchTriangleCount();
+      figures.InputTriangles - mapper->GetReplacedTriangleCount() + mapper->GetPatchTriangleCount();
     figures.SilhouetteTriangles = mapper->GetSilhouetteTriangleCount();
     figures.NewTriangles = mapper->GetNewTriangleCount();
     figures.FilterMilliseconds = 1000.0 * mapper->GetLastPrepareSeconds();
@@ -836,7 +857,7 @@ ViewerFigures Viewer::CurrentFigures() const
   }
   else
   {
-    figures.OutputTriangles = this->InputTriangles;
+    figures.OutputTriangles = figures.InputTriangles;
   }
   figures.FilterMilliseconds = this->FilterRanInLastFrame ? this->LastFilterMilliseconds : 0.0;
   figures.RenderMilliseconds = 1000.0 * this->MainRenderer->GetLastRenderTimeInSeconds();
@@ -859,6 +880,10 @@ std::string Viewer::StatusText() const
        << (parallel ? "parallel" : "perspective") << "\n";
   text << "triangles in " << Grouped(figures.InputTriangles) << ", out "
        << Grouped(figures.OutputTriangles) << "\n";
+  if (this->Lod)
+  {
+    text << "level of detail of " << Grouped(this->InputTriangles) << "\n";
+  }
   if (this->Smoothing)
   {
     text << "silhouette " << Grouped(figures.SilhouetteTriangles) << ", new "

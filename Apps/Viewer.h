@@ -25,6 +25,7 @@ class vtkSilhouetteSmoothingMapper;
 class vtkSliderRepresentation2D;
 class vtkSliderWidget;
 class vtkTextActor;
+class vtkViewDependentLevelOfDetail;
 
 namespace cli
 {
@@ -132,7 +133,11 @@ private:
   ViewOptions Options;
   Mode RunMode = Mode::Interactive;
   std::string MeshName;
-  vtkSmartPointer<vtkPolyData> Mesh;     ///< what is shown and smoothed
+  vtkSmartPointer<vtkPolyData> Mesh; ///< what is shown and smoothed
+  /// --lod: refines the loaded mesh for the main view before every render;
+  /// Mesh is then its output (one object, updated in place).
+  vtkSmartPointer<vtkViewDependentLevelOfDetail> Lod;
+  vtkSmartPointer<vtkPolyData> Loaded;   ///< the mesh as loaded (the LOD's input)
   vtkSmartPointer<vtkPolyData> Original; ///< what the fine reference refines
   vtkSmartPointer<vtkPolyData> Fine;     ///< made the first time it is shown
   vtkIdType InputTriangles = 0;

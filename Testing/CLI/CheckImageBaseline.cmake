@@ -2,10 +2,11 @@
 # wrong variant that must not match it. Counted pixel for pixel
 # (differing_pixels.py): VTK's image difference forgives lines a pixel wide.
 # Variables (-D): PROGRAM, WRAPPER, PYTHON, COUNTER, BASELINE, WORK_DIR, NAME,
-# ARGS (the render arguments but -o, a ;-list), WRONG_ARGS (the wrong
-# variant's extra arguments), MAXIMUM (differing pixels allowed).
+# ARGS (the render arguments but -o, a ;-list), RIGHT_ARGS (optional: the
+# right variant's own extra arguments), WRONG_ARGS (the wrong variant's extra
+# arguments, maybe none), MAXIMUM (differing pixels allowed).
 foreach (variant right wrong)
-  set(extra "")
+  set(extra ${RIGHT_ARGS})
   if (variant STREQUAL "wrong")
     set(extra ${WRONG_ARGS})
   endif ()

@@ -7,8 +7,9 @@
 // The filters: the quadric decimation (the bunny to 300 triangles), the
 // progressive mesh's build (the bunny), OpenSubdiv refinement (the coarse
 // bunny to level 3), the line visibility (2,000 short lines over a sphere),
-// and the smoothing filter (the coarse bunny), whose core pass runs between
-// two checks.
+// the smoothing filter (the coarse bunny), whose core pass runs between two
+// checks, and the view-dependent level of detail's build (the bunny's
+// simplification and vertex hierarchy).
 #include "vtkAlgorithm.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
@@ -23,6 +24,7 @@
 #include "vtkSilhouetteQuadricDecimation.h"
 #include "vtkSilhouetteSmoothingFilter.h"
 #include "vtkSmartPointer.h"
+#include "vtkViewDependentLevelOfDetail.h"
 
 #include "SilhouetteTestSupport.h"
 
@@ -173,6 +175,11 @@ int TestAbortAtHalf(int argc, char* argv[])
   smoothing->SetInputData(coarse);
   smoothing->SetCamera(camera);
   ok = Check("smoothing", smoothing, false) && ok;
+
+  vtkNew<vtkViewDependentLevelOfDetail> lod;
+  lod->SetInputData(bunny);
+  lod->SetCamera(silhouette_test::CameraAroundMesh(bunny, { 0.3, 0.2, 1.0 }, 3.0, false));
+  ok = Check("level of detail", lod, false) && ok;
 
   vtkNew<vtkSilhouetteLineVisibility> visibility;
   visibility->SetInputData(ShortLinesOnSphere(2000));

@@ -51,6 +51,36 @@ class SilhouetteSmoothingTest(unittest.TestCase):
             self.assertIs(view_filter.GetCamera(), camera)
             self.assertEqual(view_filter.GetViewportSize(), (640, 480))
 
+    def test_level_of_detail_feeds_the_smoothing(self):
+        # vtkViewDependentLevelOfDetail (issue 18): a fine sphere is drawn
+        # with a fraction of its triangles, the same for a second update of
+        # an unchanged view, and the smoothing filter takes its output.
+        sphere = vtkIcosphereSource()
+        sphere.SetSubdivisionLevel(5)
+        sphere.Update()
+        camera = vtkCamera()
+        camera.SetPosition(0.3, 0.5, 5.0)
+        lod = silhouette_smoothing.vtkViewDependentLevelOfDetail()
+        self.assertTrue(lod.IsA("vtkSilhouetteViewAlgorithm"))
+        lod.SetInputConnection(sphere.GetOutputPort())
+        lod.SetCamera(camera)
+        lod.SetViewportSize(640, 480)
+        lod.Update()
+        drawn = lod.GetOutput().GetNumberOfPolys()
+        full = sphere.GetOutput().GetNumberOfPolys()
+        self.assertLess(drawn, full // 2)
+        self.assertGreater(drawn, 100)
+        self.assertIsNotNone(lod.GetOutput().GetPointData().GetArray("OriginalPointId"))
+        smoothing = vtkSilhouetteSmoothingFilter()
+        smoothing.SetInputConnection(lod.GetOutputPort())
+        smoothing.SetCamera(camera)
+        smoothing.SetViewportSize(640, 480)
+        smoothing.Update()
+        self.assertGreater(field(smoothing.GetOutput(), "SilhouetteTriangleCount"), 0)
+        lod.Modified()
+        lod.Update()
+        self.assertEqual(lod.GetOutput().GetNumberOfPolys(), drawn)
+
     def test_triangle_soup_is_welded(self):
         # Every corner its own point, as VTK's OBJ reader makes of textured
         # assets: smoothed as the welded sphere, unless welding is off (issue 12).

@@ -16,7 +16,10 @@
 // finished drawing, the view-dependent work included) with its ratio to the
 // full mesh's. The hierarchy's one-off build is printed first.
 //
-// Usage: lod_benchmark [--levels 2,3,4] [--frames N] [--size WxH] [--data DIR]
+// --mesh FILE.ply takes another closed mesh instead of the bunny (the fidelity
+// evaluation's CGAL meshes: bash scripts/real-meshes.sh).
+//
+// Usage: lod_benchmark [--levels 2,3,4] [--frames N] [--size WxH] [--data DIR | --mesh FILE.ply]
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkLoopSubdivisionFilter.h"
@@ -55,12 +58,14 @@ struct Options
   int Width = 1024;
   int Height = 768;
   std::string Data = SILHOUETTE_DATA_DIR;
+  std::string Mesh; ///< a .ply to refine instead of DATA/bunny.ply
 };
 
 [[noreturn]] void Usage()
 {
-  std::fprintf(
-    stderr, "usage: lod_benchmark [--levels 2,3,4] [--frames N] [--size WxH] [--data DIR]\n");
+  std::fprintf(stderr,
+    "usage: lod_benchmark [--levels 2,3,4] [--frames N] [--size WxH] [--data DIR | --mesh "
+    "FILE.ply]\n");
   std::exit(2);
 }
 
@@ -90,6 +95,8 @@ Options Parse(int argc, char* argv[])
     }
     else if (arg == "--data")
       options.Data = value;
+    else if (arg == "--mesh")
+      options.Mesh = value;
     else
       Usage();
   }
@@ -98,10 +105,15 @@ Options Parse(int argc, char* argv[])
   return options;
 }
 
-vtkSmartPointer<vtkPolyData> RefinedBunny(const std::string& data, int level)
+std::string MeshPath(const Options& options)
+{
+  return options.Mesh.empty() ? options.Data + "/bunny.ply" : options.Mesh;
+}
+
+vtkSmartPointer<vtkPolyData> Refined(const std::string& path, int level)
 {
   vtkNew<vtkPLYReader> reader;
-  reader->SetFileName((data + "/bunny.ply").c_str());
+  reader->SetFileName(path.c_str());
   vtkNew<vtkLoopSubdivisionFilter> loop;
   loop->SetInputConnection(reader->GetOutputPort());
   loop->SetNumberOfSubdivisions(level);
@@ -112,7 +124,7 @@ vtkSmartPointer<vtkPolyData> RefinedBunny(const std::string& data, int level)
   normals->Update();
   if (normals->GetOutput()->GetNumberOfPolys() == 0)
   {
-    std::fprintf(stderr, "lod_benchmark: cannot read %s/bunny.ply\n", data.c_str());
+    std::fprintf(stderr, "lod_benchmark: cannot read %s\n", path.c_str());
     std::exit(1);
   }
   return normals->GetOutput();
@@ -200,7 +212,7 @@ double Largest(const std::vector<double>& values)
 
 void RunLevel(const Options& options, int level)
 {
-  vtkSmartPointer<vtkPolyData> mesh = RefinedBunny(options.Data, level);
+  vtkSmartPointer<vtkPolyData> mesh = Refined(MeshPath(options), level);
   const vtkIdType input = mesh->GetNumberOfPolys();
 
   Variant full{ "full" }, uniform{ "uniform" }, lod{ "lod" }, smooth{ "lod+smooth" };
@@ -242,9 +254,9 @@ void RunLevel(const Options& options, int level)
   decimation->Update();
   uniform.Mapper->SetInputConnection(decimation->GetOutputPort());
 
-  std::printf("\nrefined bunny, Loop level %d: %lld triangles; hierarchy built in %.0f ms "
+  std::printf("\n%s, Loop level %d: %lld triangles; hierarchy built in %.0f ms "
               "(simplification, splits, first cut)\n",
-    level, static_cast<long long>(input), buildMs);
+    MeshPath(options).c_str(), level, static_cast<long long>(input), buildMs);
   silhouette_eval::MaskRenderer masks(options.Width, options.Height);
   for (int frame = 0; frame < options.Frames; ++frame)
   {

@@ -351,3 +351,85 @@ TEST(VertexHierarchy, SphereKeepsItsContourFullAndItsCapAtTheBase)
   }
   EXPECT_GT(capNotBase, 20);
 }
+
+// Parallel projection: the contour is where the normals are orthogonal to the
+// direction of view, and it is kept at full resolution there too.
+TEST(VertexHierarchy, ParallelViewKeepsItsContourFull)
+{
+  Mesh sphere;
+  coretest::unitSphere(40, 80, sphere.Points, sphere.Triangles);
+  const VertexHierarchy hierarchy = hierarchyOf(sphere, 960, sphere.Points);
+  const glm::dvec3 toward = glm::normalize(glm::dvec3(0.3, -0.5, 0.8));
+  ViewGeometry view;
+  view.Parallel = true;
+  view.TowardViewer = toward;
+  view.ModelToClip = glm::ortho(-1.5, 1.5, -1.2, 1.2, 0.1, 20.0) *
+    glm::lookAt(5.0 * toward, glm::dvec3(0.0), glm::dvec3(0.0, 0.0, 1.0));
+  view.ViewportWidth = 800;
+  view.ViewportHeight = 640;
+  ViewRefinementTolerances exactContour;
+  exactContour.ContourPixels = 0.0;
+  exactContour.InteriorPixels = std::numeric_limits<double>::infinity();
+  SelectiveRefinement cut(hierarchy);
+  cut.adapt(ViewRefinementTest(hierarchy, view, exactContour));
+  std::vector<char> full(sphere.Triangles.size(), 0);
+  for (const VertexHierarchy::Index face : cut.activeFaces())
+  {
+    bool atInput = cut.corners(face) == sphere.Triangles[static_cast<std::size_t>(face)];
+    for (const Id p : cut.corners(face))
+      atInput = atInput &&
+        cut.positions()[static_cast<std::size_t>(p)] == sphere.Points[static_cast<std::size_t>(p)];
+    full[static_cast<std::size_t>(face)] = atInput ? 1 : 0;
+  }
+  int contour = 0;
+  int notFull = 0;
+  for (std::size_t t = 0; t < sphere.Triangles.size(); ++t)
+  {
+    int front = 0;
+    for (const Id p : sphere.Triangles[t])
+      front += glm::dot(sphere.Points[static_cast<std::size_t>(p)], toward) >= 0.0 ? 1 : 0;
+    if (front == 1 || front == 2)
+    {
+      ++contour;
+      notFull += full[t] ? 0 : 1;
+    }
+  }
+  EXPECT_GT(contour, 150);
+  EXPECT_EQ(notFull, 0);
+  EXPECT_LT(cut.triangleCount(), sphere.Triangles.size() / 2);
+}
+
+// Frustum culling: a view zoomed on one side of a sphere leaves the part
+// outside the frustum at the base level; without culling (the wrong variant)
+// the contour there is refined too.
+TEST(VertexHierarchy, OutsideTheFrustumStaysAtTheBase)
+{
+  Mesh sphere;
+  coretest::unitSphere(40, 80, sphere.Points, sphere.Triangles);
+  const VertexHierarchy hierarchy = hierarchyOf(sphere, 960, sphere.Points);
+  ViewGeometry view = viewFrom({ 0.0, -4.0, 0.0 });
+  // Look at (1, 0, 0) from (1, -4, 0) with a narrow field: x < 0.5 is off screen.
+  view.Eye = { 1.0, -4.0, 0.0 };
+  view.ModelToClip = glm::perspective(12.0 * Pi / 180.0, 800.0 / 600.0, 0.1, 100.0) *
+    glm::lookAt(view.Eye, glm::dvec3(1.0, 0.0, 0.0), glm::dvec3(0.0, 0.0, 1.0));
+  const auto refinedOffScreen = [&](bool cull) {
+    ViewRefinementTolerances tolerances;
+    tolerances.ContourPixels = 0.0;
+    tolerances.CullOutsideFrustum = cull;
+    SelectiveRefinement cut(hierarchy);
+    cut.adapt(ViewRefinementTest(hierarchy, view, tolerances));
+    int refined = 0;
+    for (const VertexHierarchy::Index face : cut.activeFaces())
+    {
+      bool offScreen = true;
+      for (const Id p : cut.corners(face))
+        offScreen = offScreen && cut.positions()[static_cast<std::size_t>(p)].x < 0.0;
+      const bool atBase =
+        cut.corners(face) == hierarchy.baseCorners()[static_cast<std::size_t>(face)];
+      refined += offScreen && !atBase ? 1 : 0;
+    }
+    return refined;
+  };
+  EXPECT_EQ(refinedOffScreen(true), 0);
+  EXPECT_GT(refinedOffScreen(false), 50);
+}

@@ -116,6 +116,148 @@ std::string BuildHierarchy(vtkPolyData* input, vtkIdType base, vtkAlgorithm* sel
 
 } // namespace
 
+namespace
+{
+
+// The extracted mesh: its points and triangles.
+void WriteMesh(const silsmooth::ExtractedMesh& mesh, vtkPolyData* output)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.Points.size()));
+  for (std::size_t i = 0; i < mesh.Points.size(); ++i)
+  {
+    const glm::dvec3& p = mesh.Points[i];
+    points->SetPoint(static_cast<vtkIdType>(i), p.x, p.y, p.z);
+  }
+  const auto count = static_cast<vtkIdType>(mesh.Triangles.size());
+  vtkNew<vtkIdTypeArray> offsets;
+  vtkNew<vtkIdTypeArray> connectivity;
+  offsets->SetNumberOfValues(count + 1);
+  connectivity->SetNumberOfValues(3 * count);
+  for (vtkIdType t = 0; t < count; ++t)
+  {
+    offsets->SetValue(t, 3 * t);
+    for (vtkIdType k = 0; k < 3; ++k)
+      connectivity->SetValue(3 * t + k, mesh.Triangles[static_cast<std::size_t>(t)][k]);
+  }
+  offsets->SetValue(count, 3 * count);
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+  output->Initialize();
+  output->SetPoints(points);
+  output->SetPolys(polys);
+}
+
+// Copies the input's tuples `from[i]` to the output's `i`, and adds the ids as
+// `idName`.
+void CopyTuples(vtkDataSetAttributes* in, vtkDataSetAttributes* out,
+  const std::vector<vtkIdType>& from, const char* idName)
+{
+  vtkNew<vtkIdList> fromIds;
+  vtkNew<vtkIdList> toIds;
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName(idName);
+  const auto count = static_cast<vtkIdType>(from.size());
+  fromIds->SetNumberOfIds(count);
+  toIds->SetNumberOfIds(count);
+  ids->SetNumberOfValues(count);
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    fromIds->SetId(i, from[static_cast<std::size_t>(i)]);
+    toIds->SetId(i, i);
+    ids->SetValue(i, from[static_cast<std::size_t>(i)]);
+  }
+  out->CopyAllocate(in, count);
+  out->CopyData(in, fromIds, toIds);
+  out->AddArray(ids);
+}
+
+// The input's own (angle-weighted) normals, when it gives none: a coarse part
+// is then shaded as the fine surface is, not as its few facets are.
+void AddComputedNormals(
+  const std::vector<glm::dvec3>& normals, const std::vector<vtkIdType>& pointIds, vtkPointData* out)
+{
+  vtkNew<vtkFloatArray> outNormals;
+  outNormals->SetName("Normals");
+  outNormals->SetNumberOfComponents(3);
+  outNormals->SetNumberOfTuples(static_cast<vtkIdType>(pointIds.size()));
+  for (std::size_t i = 0; i < pointIds.size(); ++i)
+  {
+    const glm::dvec3& n = normals[static_cast<std::size_t>(pointIds[i])];
+    outNormals->SetTuple3(static_cast<vtkIdType>(i), n.x, n.y, n.z);
+  }
+  out->SetNormals(outNormals);
+}
+
+void AddCount(vtkPolyData* output, const char* name, double first, double second = -1.0)
+{
+  vtkNew<vtkIdTypeArray> array;
+  array->SetName(name);
+  array->SetNumberOfComponents(second < 0.0 ? 1 : 2);
+  if (second < 0.0)
+    array->InsertNextTuple1(first);
+  else
+    array->InsertNextTuple2(first, second);
+  output->GetFieldData()->AddArray(array);
+}
+
+} // namespace
+
+int vtkViewDependentLevelOfDetail::EnsureHierarchy(vtkPolyData* input)
+{
+  Internals& internal = *this->Internal;
+  if (internal.builtFor(input, this->BaseTriangles))
+    return 1;
+  internal.clear();
+  std::unique_ptr<silsmooth::VertexHierarchy> hierarchy;
+  std::string error;
+  try
+  {
+    error = BuildHierarchy(input, this->BaseTriangles, this, hierarchy, internal.CellIds);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    error = e.what();
+  }
+  if (error == "aborted")
+    return -1;
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  if (input->GetNumberOfVerts() + input->GetNumberOfLines() > 0)
+  {
+    vtkWarningMacro("The input's " << input->GetNumberOfVerts() << " vertex and "
+                                   << input->GetNumberOfLines()
+                                   << " line cells are left out: only surfaces are refined.");
+  }
+  if (hierarchy->baseFaces().empty())
+    vtkWarningMacro("The input has no triangles to refine: the output is empty.");
+  internal.Hierarchy = std::move(hierarchy);
+  internal.Cut = std::make_unique<silsmooth::SelectiveRefinement>(*internal.Hierarchy);
+  internal.Input = input;
+  internal.InputTime = input->GetMTime();
+  internal.Base = this->BaseTriangles;
+  return 1;
+}
+
+silsmooth::ViewRefinementTolerances vtkViewDependentLevelOfDetail::Tolerances() const
+{
+  silsmooth::ViewRefinementTolerances tolerances;
+  tolerances.ContourPixels = this->ContourTolerance;
+  tolerances.InteriorPixels = this->InteriorTolerance;
+  tolerances.BackPixels = this->BackFacingTolerance >= VTK_DOUBLE_MAX
+    ? std::numeric_limits<double>::infinity()
+    : this->BackFacingTolerance;
+  tolerances.ContourMarginDegrees = this->ContourMargin;
+  tolerances.CullOutsideFrustum = this->FrustumCulling != 0;
+  tolerances.Hysteresis = this->Hysteresis;
+  tolerances.HysteresisDegrees = this->HysteresisAngle;
+  return tolerances;
+}
+
 int vtkViewDependentLevelOfDetail::RequestViewData(vtkInformation*,
   vtkInformationVector** inputVector, vtkInformationVector* outputVector,
   const vtkSilhouetteFilterSupport::View& view)
@@ -133,156 +275,35 @@ int vtkViewDependentLevelOfDetail::RequestViewData(vtkInformation*,
     vtkErrorMacro(<< mismatched);
     return 0;
   }
-  Internals& internal = *this->Internal;
-  if (!internal.builtFor(input, this->BaseTriangles))
+  const int built = this->EnsureHierarchy(input);
+  if (built <= 0)
   {
-    internal.clear();
-    std::unique_ptr<silsmooth::VertexHierarchy> hierarchy;
-    std::string error;
-    try
-    {
-      error = BuildHierarchy(input, this->BaseTriangles, this, hierarchy, internal.CellIds);
-    }
-    catch (const std::invalid_argument& e)
-    {
-      error = e.what();
-    }
-    if (error == "aborted")
-    {
-      output->Initialize(); // VTK's way: an aborted update succeeds, empty
-      return 1;
-    }
-    if (!error.empty())
-    {
-      vtkErrorMacro(<< error);
-      return 0;
-    }
-    if (input->GetNumberOfVerts() + input->GetNumberOfLines() > 0)
-    {
-      vtkWarningMacro("The input's " << input->GetNumberOfVerts() << " vertex and "
-                                     << input->GetNumberOfLines()
-                                     << " line cells are left out: only surfaces are refined.");
-    }
-    if (hierarchy->baseFaces().empty())
-    {
-      vtkWarningMacro("The input has no triangles to refine: the output is empty.");
-    }
-    internal.Hierarchy = std::move(hierarchy);
-    internal.Cut = std::make_unique<silsmooth::SelectiveRefinement>(*internal.Hierarchy);
-    internal.Input = input;
-    internal.InputTime = input->GetMTime();
-    internal.Base = this->BaseTriangles;
+    output->Initialize(); // aborted (VTK's way: the update succeeds, empty), or failed
+    return built < 0 ? 1 : 0;
   }
-
-  silsmooth::ViewRefinementTolerances tolerances;
-  tolerances.ContourPixels = this->ContourTolerance;
-  tolerances.InteriorPixels = this->InteriorTolerance;
-  tolerances.BackPixels = this->BackFacingTolerance >= VTK_DOUBLE_MAX
-    ? std::numeric_limits<double>::infinity()
-    : this->BackFacingTolerance;
-  tolerances.ContourMarginDegrees = this->ContourMargin;
-  tolerances.CullOutsideFrustum = this->FrustumCulling != 0;
-  tolerances.Hysteresis = this->Hysteresis;
-  tolerances.HysteresisDegrees = this->HysteresisAngle;
+  Internals& internal = *this->Internal;
   const silsmooth::AdaptStatistics changes = internal.Cut->adapt(
-    silsmooth::ViewRefinementTest(*internal.Hierarchy, view.Geometry, tolerances));
+    silsmooth::ViewRefinementTest(*internal.Hierarchy, view.Geometry, this->Tolerances()));
   this->UpdateProgress(0.97);
 
-  std::vector<glm::dvec3> points;
-  std::vector<silsmooth::Triangle> triangles;
-  std::vector<silsmooth::Id> pointIds;
-  std::vector<silsmooth::Id> triangleIds;
-  internal.Cut->extract(points, triangles, pointIds, triangleIds);
-
-  vtkNew<vtkPoints> outPoints;
-  outPoints->SetDataTypeToDouble();
-  outPoints->SetNumberOfPoints(static_cast<vtkIdType>(points.size()));
-  for (std::size_t i = 0; i < points.size(); ++i)
-    outPoints->SetPoint(static_cast<vtkIdType>(i), points[i].x, points[i].y, points[i].z);
-  vtkNew<vtkIdTypeArray> offsets;
-  vtkNew<vtkIdTypeArray> connectivity;
-  offsets->SetNumberOfValues(static_cast<vtkIdType>(triangles.size()) + 1);
-  connectivity->SetNumberOfValues(3 * static_cast<vtkIdType>(triangles.size()));
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-  {
-    offsets->SetValue(static_cast<vtkIdType>(t), 3 * static_cast<vtkIdType>(t));
-    for (std::size_t k = 0; k < 3; ++k)
-      connectivity->SetValue(static_cast<vtkIdType>(3 * t + k), triangles[t][k]);
-  }
-  offsets->SetValue(
-    static_cast<vtkIdType>(triangles.size()), 3 * static_cast<vtkIdType>(triangles.size()));
-  vtkNew<vtkCellArray> polys;
-  polys->SetData(offsets, connectivity);
-
-  output->Initialize();
-  output->SetPoints(outPoints);
-  output->SetPolys(polys);
-
-  vtkNew<vtkIdList> from;
-  vtkNew<vtkIdList> to;
-  vtkNew<vtkIdTypeArray> originalPoint;
-  originalPoint->SetName("OriginalPointId");
-  originalPoint->SetNumberOfValues(static_cast<vtkIdType>(pointIds.size()));
-  from->SetNumberOfIds(static_cast<vtkIdType>(pointIds.size()));
-  to->SetNumberOfIds(static_cast<vtkIdType>(pointIds.size()));
-  for (std::size_t i = 0; i < pointIds.size(); ++i)
-  {
-    from->SetId(static_cast<vtkIdType>(i), pointIds[i]);
-    to->SetId(static_cast<vtkIdType>(i), static_cast<vtkIdType>(i));
-    originalPoint->SetValue(static_cast<vtkIdType>(i), pointIds[i]);
-  }
-  output->GetPointData()->CopyAllocate(input->GetPointData(), from->GetNumberOfIds());
-  output->GetPointData()->CopyData(input->GetPointData(), from, to);
-  output->GetPointData()->AddArray(originalPoint);
+  silsmooth::ExtractedMesh mesh;
+  internal.Cut->extract(mesh);
+  WriteMesh(mesh, output);
+  const std::vector<vtkIdType> pointIds(mesh.PointIds.begin(), mesh.PointIds.end());
+  CopyTuples(input->GetPointData(), output->GetPointData(), pointIds, "OriginalPointId");
   if (!output->GetPointData()->GetNormals())
-  {
-    // The input's own (angle-weighted) normals, so that a coarse part is
-    // shaded as the fine surface is, not as its few facets are.
-    const std::vector<glm::dvec3>& normals = internal.Hierarchy->pointNormals();
-    vtkNew<vtkFloatArray> outNormals;
-    outNormals->SetName("Normals");
-    outNormals->SetNumberOfComponents(3);
-    outNormals->SetNumberOfTuples(static_cast<vtkIdType>(pointIds.size()));
-    for (std::size_t i = 0; i < pointIds.size(); ++i)
-    {
-      const glm::dvec3& n = normals[static_cast<std::size_t>(pointIds[i])];
-      outNormals->SetTuple3(static_cast<vtkIdType>(i), n.x, n.y, n.z);
-    }
-    output->GetPointData()->SetNormals(outNormals);
-  }
+    AddComputedNormals(internal.Hierarchy->pointNormals(), pointIds, output->GetPointData());
+  std::vector<vtkIdType> cellIds(mesh.TriangleIds.size());
+  for (std::size_t t = 0; t < cellIds.size(); ++t)
+    cellIds[t] = internal.CellIds[static_cast<std::size_t>(mesh.TriangleIds[t])];
+  CopyTuples(input->GetCellData(), output->GetCellData(), cellIds, "OriginalCellId");
 
-  vtkNew<vtkIdTypeArray> originalCell;
-  originalCell->SetName("OriginalCellId");
-  originalCell->SetNumberOfValues(static_cast<vtkIdType>(triangleIds.size()));
-  from->SetNumberOfIds(static_cast<vtkIdType>(triangleIds.size()));
-  to->SetNumberOfIds(static_cast<vtkIdType>(triangleIds.size()));
-  for (std::size_t t = 0; t < triangleIds.size(); ++t)
-  {
-    const vtkIdType cell = internal.CellIds[static_cast<std::size_t>(triangleIds[t])];
-    from->SetId(static_cast<vtkIdType>(t), cell);
-    to->SetId(static_cast<vtkIdType>(t), static_cast<vtkIdType>(t));
-    originalCell->SetValue(static_cast<vtkIdType>(t), cell);
-  }
-  output->GetCellData()->CopyAllocate(input->GetCellData(), from->GetNumberOfIds());
-  output->GetCellData()->CopyData(input->GetCellData(), from, to);
-  output->GetCellData()->AddArray(originalCell);
-
-  vtkNew<vtkIdTypeArray> splits;
-  splits->SetName("LevelOfDetailSplits");
-  splits->SetNumberOfComponents(2);
-  splits->InsertNextTuple2(static_cast<double>(internal.Cut->appliedCount()),
+  AddCount(output, "LevelOfDetailSplits", static_cast<double>(internal.Cut->appliedCount()),
     static_cast<double>(internal.Hierarchy->nodeCount()));
-  output->GetFieldData()->AddArray(splits);
-  vtkNew<vtkIdTypeArray> changed;
-  changed->SetName("LevelOfDetailChanges");
-  changed->SetNumberOfComponents(2);
-  changed->InsertNextTuple2(
-    static_cast<double>(changes.Applied), static_cast<double>(changes.Undone));
-  output->GetFieldData()->AddArray(changed);
-  vtkNew<vtkIdTypeArray> inputTriangles;
-  inputTriangles->SetName("LevelOfDetailInputTriangles");
-  inputTriangles->InsertNextValue(static_cast<vtkIdType>(internal.Hierarchy->faceCount()));
-  output->GetFieldData()->AddArray(inputTriangles);
+  AddCount(output, "LevelOfDetailChanges", static_cast<double>(changes.Applied),
+    static_cast<double>(changes.Undone));
+  AddCount(
+    output, "LevelOfDetailInputTriangles", static_cast<double>(internal.Hierarchy->faceCount()));
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -47,6 +47,11 @@
 
 #include <memory> // For the hierarchy
 
+namespace silsmooth
+{
+struct ViewRefinementTolerances;
+}
+
 class SILHOUETTESMOOTHINGFILTERSLEVELOFDETAIL_EXPORT vtkViewDependentLevelOfDetail
   : public vtkSilhouetteViewAlgorithm
 {
@@ -127,6 +132,10 @@ protected:
 
 private:
   vtkViewDependentLevelOfDetail(const vtkViewDependentLevelOfDetail&) = delete;
+  // Builds the hierarchy unless it is the input's already: 1 ready, 0 failed
+  // (reported), -1 aborted.
+  int EnsureHierarchy(vtkPolyData* input);
+  silsmooth::ViewRefinementTolerances Tolerances() const;
   void operator=(const vtkViewDependentLevelOfDetail&) = delete;
 
   struct Internals;

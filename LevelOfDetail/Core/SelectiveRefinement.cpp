@@ -289,9 +289,12 @@ void SelectiveRefinement::undoAll()
   this->adapt(Nothing());
 }
 
-void SelectiveRefinement::extract(std::vector<glm::dvec3>& points, std::vector<Triangle>& triangles,
-  std::vector<Id>& pointIds, std::vector<Id>& triangleIds) const
+void SelectiveRefinement::extract(ExtractedMesh& mesh) const
 {
+  std::vector<glm::dvec3>& points = mesh.Points;
+  std::vector<Triangle>& triangles = mesh.Triangles;
+  std::vector<Id>& pointIds = mesh.PointIds;
+  std::vector<Id>& triangleIds = mesh.TriangleIds;
   points.clear();
   triangles.clear();
   pointIds.clear();

@@ -43,6 +43,17 @@ public:
   virtual bool keeps(VertexHierarchy::Index node) const { return this->needs(node); }
 };
 
+/// A cut's mesh compacted: the points its triangles use, in the order first
+/// used, with `PointIds` their input ids; triangles renumbered to match, with
+/// `TriangleIds` their input triangle ids.
+struct ExtractedMesh
+{
+  std::vector<glm::dvec3> Points;
+  std::vector<Triangle> Triangles;
+  std::vector<Id> PointIds;
+  std::vector<Id> TriangleIds;
+};
+
 struct AdaptStatistics
 {
   std::size_t Applied = 0;   ///< nodes applied by this call
@@ -78,11 +89,8 @@ public:
   /// Every point's position in the current mesh (points not in it keep a stale one).
   const std::vector<glm::dvec3>& positions() const { return this->Positions; }
 
-  /// The current mesh compacted: the points its triangles use, in the order
-  /// first used, with `pointIds` their input ids; triangles renumbered to
-  /// match, with `triangleIds` their input triangle ids. O(triangles).
-  void extract(std::vector<glm::dvec3>& points, std::vector<Triangle>& triangles,
-    std::vector<Id>& pointIds, std::vector<Id>& triangleIds) const;
+  /// The current mesh compacted (ExtractedMesh). O(triangles).
+  void extract(ExtractedMesh& mesh) const;
 
 private:
   // A set of indices with O(1) insert and erase (by swapping with the last).

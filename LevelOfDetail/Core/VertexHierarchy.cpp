@@ -1,5 +1,6 @@
 #include "VertexHierarchy.h"
 
+#include "ClosestPoint.h"
 #include "ShadingNormals.h"
 
 #include <glm/geometric.hpp>
@@ -19,44 +20,11 @@ namespace
 
 constexpr double Pi = 3.14159265358979323846;
 
-// Distance from p to triangle (a, b, c), by the regions of Ericson's
-// closest-point test.
+// Distance from p to triangle (a, b, c).
 double pointTriangleDistance(
   const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c)
 {
-  const glm::dvec3 ab = b - a;
-  const glm::dvec3 ac = c - a;
-  const glm::dvec3 ap = p - a;
-  const double d1 = glm::dot(ab, ap);
-  const double d2 = glm::dot(ac, ap);
-  if (d1 <= 0.0 && d2 <= 0.0)
-    return glm::length(ap);
-  const glm::dvec3 bp = p - b;
-  const double d3 = glm::dot(ab, bp);
-  const double d4 = glm::dot(ac, bp);
-  if (d3 >= 0.0 && d4 <= d3)
-    return glm::length(bp);
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
-    return glm::length(p - (a + ab * (d1 / (d1 - d3))));
-  const glm::dvec3 cp = p - c;
-  const double d5 = glm::dot(ab, cp);
-  const double d6 = glm::dot(ac, cp);
-  if (d6 >= 0.0 && d5 <= d6)
-    return glm::length(cp);
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
-    return glm::length(p - (a + ac * (d2 / (d2 - d6))));
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0.0 && (d4 - d3) >= 0.0 && (d5 - d6) >= 0.0)
-    return glm::length(p - (b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6)))));
-  const double sum = va + vb + vc;
-  if (!(sum > 0.0))
-  {
-    // Degenerate triangle: the nearest of its corners.
-    return std::min({ glm::length(ap), glm::length(bp), glm::length(cp) });
-  }
-  return glm::length(p - (a + ab * (vb / sum) + ac * (vc / sum)));
+  return glm::length(p - closestPointOnTriangle(p, a, b, c));
 }
 
 } // namespace

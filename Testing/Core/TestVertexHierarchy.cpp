@@ -98,11 +98,10 @@ struct CutCheck
 
 CutCheck checkCut(const SelectiveRefinement& cut)
 {
-  std::vector<glm::dvec3> points;
-  std::vector<Triangle> triangles;
-  std::vector<Id> pointIds;
-  std::vector<Id> triangleIds;
-  cut.extract(points, triangles, pointIds, triangleIds);
+  ExtractedMesh mesh;
+  cut.extract(mesh);
+  const std::vector<glm::dvec3>& points = mesh.Points;
+  const std::vector<Triangle>& triangles = mesh.Triangles;
   CutCheck check;
   check.ClosedManifold = coretest::checkManifold(triangles).closedManifold() &&
     verticesAreDisks(triangles, points.size());
@@ -149,11 +148,12 @@ TEST(VertexHierarchy, AllNodesGiveTheInputExactlyAndNoneTheBase)
   zero.CullOutsideFrustum = false;
   cut.adapt(ViewRefinementTest(hierarchy, viewFrom({ 4.0, 1.0, 2.0 }), zero));
   EXPECT_EQ(cut.appliedCount(), hierarchy.nodeCount());
-  std::vector<glm::dvec3> points;
-  std::vector<Triangle> triangles;
-  std::vector<Id> pointIds;
-  std::vector<Id> triangleIds;
-  cut.extract(points, triangles, pointIds, triangleIds);
+  ExtractedMesh mesh;
+  cut.extract(mesh);
+  std::vector<glm::dvec3>& points = mesh.Points;
+  std::vector<Triangle>& triangles = mesh.Triangles;
+  std::vector<Id>& pointIds = mesh.PointIds;
+  std::vector<Id>& triangleIds = mesh.TriangleIds;
   ASSERT_EQ(triangles.size(), torus.Triangles.size());
   ASSERT_EQ(points.size(), torus.Points.size());
   std::vector<int> seen(torus.Triangles.size(), 0);
@@ -175,11 +175,11 @@ TEST(VertexHierarchy, AllNodesGiveTheInputExactlyAndNoneTheBase)
   // positions and triangles (up to the renumbering of points).
   cut.undoAll();
   EXPECT_EQ(cut.appliedCount(), 0u);
-  cut.extract(points, triangles, pointIds, triangleIds);
+  cut.extract(mesh);
   std::multiset<std::array<double, 9>> fromCut;
   std::multiset<std::array<double, 9>> fromSimplifier;
   const auto corners = [](const std::vector<glm::dvec3>& p, const Triangle& t) {
-    // Rotated so that the smallest point id's corner... by position instead:
+    // Rotated so that the lexicographically least corner comes first.
     std::array<glm::dvec3, 3> c{ p[static_cast<std::size_t>(t[0])],
       p[static_cast<std::size_t>(t[1])], p[static_cast<std::size_t>(t[2])] };
     const auto less = [](const glm::dvec3& a, const glm::dvec3& b) {

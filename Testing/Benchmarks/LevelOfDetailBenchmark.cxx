@@ -139,6 +139,10 @@ struct Variant
   vtkNew<vtkPolyDataMapper> Mapper;
   vtkAlgorithm* Work = nullptr; // the view-dependent filter to update first, if any
   std::vector<double> Triangles, WorkMs, FrameMs, Mean, Max, Change;
+  // Where the largest distance was: frame, pixel, and whether this outline
+  // lies outside the full mesh's there (else inside: a shrink or a gap).
+  int WorstFrame = -1, WorstX = -1, WorstY = -1;
+  bool WorstOutside = false;
   silhouette_eval::Mask Previous;
 };
 
@@ -171,6 +175,8 @@ void PlaceCamera(vtkCamera* camera, vtkPolyData* mesh, int frame, int frames)
   camera->SetClippingRange(0.1 * d, 3.0 * d);
 }
 
+double Largest(const std::vector<double>& values);
+
 void Measure(Variant& v, vtkPolyData* full, int frame, int frames,
   silhouette_eval::MaskRenderer& masks, const silhouette_eval::Mask& fullMask)
 {
@@ -188,6 +194,13 @@ void Measure(Variant& v, vtkPolyData* full, int frame, int frames,
   const silhouette_eval::Mask mask = masks.Render(drawn, v.Renderer->GetActiveCamera());
   const silhouette_eval::BoundaryDistance d = silhouette_eval::OutlineDeviation(mask, fullMask);
   v.Mean.push_back(d.Mean);
+  if (v.Max.empty() || d.Max > Largest(v.Max))
+  {
+    v.WorstFrame = frame;
+    v.WorstX = d.FarthestX;
+    v.WorstY = d.FarthestY;
+    v.WorstOutside = d.FarthestOutside;
+  }
   v.Max.push_back(d.Max);
   if (!v.Previous.Covered.empty())
     v.Change.push_back(silhouette_eval::OutlineDeviation(mask, v.Previous).Mean);
@@ -273,6 +286,13 @@ void RunLevel(const Options& options, int level)
     std::printf("%-11s %10.0f %10.2f %10.3f %9.1f %12.3f %10.1f %8.2f\n", v->Name,
       Median(v->Triangles), Median(v->WorkMs), Mean(v->Mean), Largest(v->Max), Mean(v->Change),
       Median(v->FrameMs), Median(v->FrameMs) / fullFrame);
+  }
+  for (Variant* v : variants)
+  {
+    if (v != &full && v->WorstFrame >= 0)
+      std::printf("%s: largest distance at frame %d, pixel (%d, %d) from the bottom left, %s the "
+                  "full mesh's outline\n",
+        v->Name, v->WorstFrame, v->WorstX, v->WorstY, v->WorstOutside ? "outside" : "inside");
   }
 }
 

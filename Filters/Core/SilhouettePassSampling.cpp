@@ -1,0 +1,289 @@
+#include "SilhouettePass.h"
+
+#include "FoldGuard.h"
+#include "HermiteCurve.h"
+#include "LocalRemesher.h"
+#include "ShadingNormals.h"
+#include "SilhouettePoint.h"
+#include "SilhouettePolylines.h"
+#include "VertexPerturbation.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <iterator>
+#include <mutex>
+#include <tuple>
+#include <unordered_map>
+
+namespace silsmooth
+{
+namespace detail
+{
+
+void SilhouettePass::findSilhouetteTriangles()
+{
+  const std::vector<Triangle>& triangles = this->Mesh.triangles();
+  // Each vertex's side as a byte: the triangle pass reads three per
+  // triangle at random, and bytes stay in cache where doubles do not.
+  std::vector<unsigned char> visible(this->G.size());
+  this->For(this->G.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t v = begin; v < end; ++v)
+    {
+      visible[v] = isVisible(this->G[v]) ? 1 : 0;
+    }
+  });
+  // Each sub-range collects its own silhouette triangles (ascending);
+  // the ranges are then joined in order, so the list does not depend on
+  // how the range was split.
+  std::mutex rangesMutex;
+  std::vector<std::pair<std::size_t, std::vector<Id>>> ranges;
+  this->For(triangles.size(), [&](std::size_t begin, std::size_t end) {
+    std::vector<Id> found;
+    for (std::size_t t = begin; t < end; ++t)
+    {
+      const Triangle& tri = triangles[t];
+      const unsigned char v0 = visible[static_cast<std::size_t>(tri[0])];
+      const unsigned char v1 = visible[static_cast<std::size_t>(tri[1])];
+      const unsigned char v2 = visible[static_cast<std::size_t>(tri[2])];
+      if ((v0 != v1 || v1 != v2) && !hasRepeatedCorner(tri))
+      {
+        found.push_back(static_cast<Id>(t));
+      }
+    }
+    const std::lock_guard<std::mutex> lock(rangesMutex);
+    ranges.emplace_back(begin, std::move(found));
+  });
+  std::sort(
+    ranges.begin(), ranges.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  for (const auto& range : ranges)
+  {
+    this->Silhouette.insert(this->Silhouette.end(), range.second.begin(), range.second.end());
+  }
+  if (this->Parameters.CullOutsideFrustum)
+  {
+    this->cullOutsideFrustum();
+  }
+  if (this->Parameters.FrozenTriangles)
+  {
+    this->Silhouette.erase(std::remove_if(this->Silhouette.begin(), this->Silhouette.end(),
+                             [this](Id t) { return this->isFrozen(t); }),
+      this->Silhouette.end());
+  }
+}
+
+// SmoothingParameters::CullOutsideFrustum: planes in model coordinates
+// from the rows of ModelToClip (w + x >= 0, w - x >= 0, and so for y and
+// z), scaled so that they give distances in model units.
+void SilhouettePass::cullOutsideFrustum()
+{
+  const glm::dmat4& m = this->View.ModelToClip;
+  auto row = [&m](int i) {
+    return glm::dvec4(m[0][i], m[1][i], m[2][i], m[3][i]);
+  };
+  std::array<glm::dvec4, 6> planes{ { row(3) + row(0), row(3) - row(0), row(3) + row(1),
+    row(3) - row(1), row(3) + row(2), row(3) - row(2) } };
+  for (glm::dvec4& plane : planes)
+  {
+    const double length = glm::length(glm::dvec3(plane));
+    plane = length > 0.0 && std::isfinite(length) ? plane / length : glm::dvec4(0.0);
+  }
+  const std::vector<Triangle>& triangles = this->Mesh.triangles();
+  const std::vector<glm::dvec3>& points = this->Mesh.points();
+  const std::size_t before = this->Silhouette.size();
+  this->Silhouette.erase(std::remove_if(this->Silhouette.begin(), this->Silhouette.end(),
+                           [&](Id t) {
+                             const Triangle& tri = triangles[static_cast<std::size_t>(t)];
+                             const glm::dvec3& a = points[static_cast<std::size_t>(tri[0])];
+                             const glm::dvec3& b = points[static_cast<std::size_t>(tri[1])];
+                             const glm::dvec3& c = points[static_cast<std::size_t>(tri[2])];
+                             const double margin = std::max(
+                               { glm::length(b - a), glm::length(c - b), glm::length(a - c) });
+                             for (const glm::dvec4& plane : planes)
+                             {
+                               auto beyond = [&](const glm::dvec3& p) {
+                                 return glm::dot(glm::dvec3(plane), p) + plane.w < -margin;
+                               };
+                               if (beyond(a) && beyond(b) && beyond(c))
+                               {
+                                 return true;
+                               }
+                             }
+                             return false;
+                           }),
+    this->Silhouette.end());
+  this->Culled = before - this->Silhouette.size();
+}
+
+// One silhouette point per mixed edge, in ascending edge order, so both
+// triangles of an edge use the same point (the crack-free rule). On a feature edge
+// the silhouette bridge is the edge's feature segment (III-D, case (a)).
+void SilhouettePass::computeSilhouettePoints()
+{
+  const EdgeTable& edges = this->Mesh.edges();
+  std::vector<Id> mixedEdges;
+  for (const Id t : this->Silhouette)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Id e = edges.sideEdge(t, k);
+      if (this->isMixed(edges.edge(e)))
+      {
+        mixedEdges.push_back(e);
+      }
+    }
+  }
+  std::sort(mixedEdges.begin(), mixedEdges.end());
+  mixedEdges.erase(std::unique(mixedEdges.begin(), mixedEdges.end()), mixedEdges.end());
+
+  const auto& points = this->Mesh.points();
+  const auto& normals = this->Mesh.normals();
+  const Id pointCount = static_cast<Id>(points.size());
+  this->EdgePoints.reserve(mixedEdges.size());
+  for (const Id e : mixedEdges)
+  {
+    const Edge& edge = edges.edge(e);
+    const std::size_t lo = static_cast<std::size_t>(edge.low);
+    const std::size_t hi = static_cast<std::size_t>(edge.high);
+    // Walked from the end with the smaller position (x, then y, then z; the
+    // id only for coincident ends), not the smaller id: then the point comes
+    // out bit for bit the same in every piece of a partitioned mesh (the
+    // ids differ between pieces), and pieces meet without a crack.
+    const bool lowFirst = std::make_tuple(points[lo].x, points[lo].y, points[lo].z, lo) <
+      std::make_tuple(points[hi].x, points[hi].y, points[hi].z, hi);
+    const std::size_t a = lowFirst ? lo : hi;
+    const std::size_t b = lowFirst ? hi : lo;
+    const VisibilityQuadratic h = visibilityAlongEdge(normals[a],
+      this->View.towardViewerFrom(points[a]), normals[b], this->View.towardViewerFrom(points[b]));
+    // G holds only signs for hierarchically decided vertices: the values here.
+    const double t = std::clamp(silhouetteParameter(h, this->View.visibility(points[a], normals[a]),
+                                  this->View.visibility(points[b], normals[b])),
+      EdgeParameterMargin, 1.0 - EdgeParameterMargin);
+    NewPoint p;
+    const Id feature = this->Mesh.edgeFeature(e);
+    if (feature >= 0)
+    {
+      const bool forward =
+        this->Mesh.sourcePoint(static_cast<Id>(a)) == this->Mesh.features().edges()[feature].first;
+      const double along = forward ? t : 1.0 - t;
+      p.Position = this->featurePoint(feature, along);
+      this->FeatureSilhouettePoints.push_back({ feature, e, along });
+    }
+    else if (std::binary_search(this->StraightEdges.begin(), this->StraightEdges.end(), e))
+    {
+      p.Position = (1.0 - t) * points[a] + t * points[b];
+    }
+    else
+    {
+      p.Position =
+        makeCircleApproximatingCurve(points[a], normals[a], points[b], normals[b]).evaluate(t);
+    }
+    p.Normal = safeNormalize((1.0 - t) * normals[a] + t * normals[b]);
+    if (p.Normal == glm::dvec3(0.0))
+    {
+      // Opposite normals at the ends: no interpolated direction exists.
+      p.Normal = t < 0.5 ? normals[a] : normals[b];
+    }
+    const double u = lowFirst ? t : 1.0 - t; // from the low id to the high id
+    p.Sources = { edge.low, edge.high, edge.high };
+    p.Weights = { 1.0 - u, u, 0.0 };
+    EdgeSilhouettePoint sp;
+    sp.Edge = e;
+    sp.Point = pointCount + static_cast<Id>(this->Result.NewPoints.size());
+    sp.HighWeight = u;
+    this->Result.NewPoints.push_back(p);
+    this->EdgePoints.push_back(sp);
+  }
+  // By feature edge, for featureSamples().
+  std::sort(this->FeatureSilhouettePoints.begin(), this->FeatureSilhouettePoints.end(),
+    [](const FeatureSilhouettePoint& x, const FeatureSilhouettePoint& y) {
+      return x.Feature != y.Feature ? x.Feature < y.Feature : x.Edge < y.Edge;
+    });
+}
+
+// The triangles re-meshed for their feature sides in this frame: those
+// with a smoothed (curved) feature side, every frame, and those with a side
+// on a straight feature edge that the silhouette crosses, from any side of
+// the crease: each side has its own normals, so the silhouette may cross
+// the crease on one side only, and the others must still split the edge at
+// that point (or the output has a T-junction there).
+const std::vector<Id>& SilhouettePass::featureTrianglesOfFrame()
+{
+  std::vector<Id> straight;
+  for (const FeatureSilhouettePoint& point : this->FeatureSilhouettePoints)
+  {
+    if (this->Mesh.features().isCurved(point.Feature))
+    {
+      continue;
+    }
+    const auto& sides = this->Mesh.featureSideTriangles();
+    auto it = std::lower_bound(sides.begin(), sides.end(), std::make_pair(point.Feature, Id{ 0 }));
+    for (; it != sides.end() && it->first == point.Feature; ++it)
+    {
+      straight.push_back(it->second);
+    }
+  }
+  if (straight.empty())
+  {
+    return this->Mesh.featureTriangles();
+  }
+  std::sort(straight.begin(), straight.end());
+  this->FrameFeatureTriangles.clear();
+  std::set_union(this->Mesh.featureTriangles().begin(), this->Mesh.featureTriangles().end(),
+    straight.begin(), straight.end(), std::back_inserter(this->FrameFeatureTriangles));
+  this->FrameFeatureTriangles.erase(
+    std::unique(this->FrameFeatureTriangles.begin(), this->FrameFeatureTriangles.end()),
+    this->FrameFeatureTriangles.end());
+  return this->FrameFeatureTriangles;
+}
+
+// SmoothingParameters::MaximumSampledPoints, shared evenly by the frame's
+// silhouette triangles and feature edges: the most samples a segment may
+// have in this frame, 0 for no cap.
+void SilhouettePass::applySampleBudget()
+{
+  this->SampleCap = 0;
+  this->SampleCapBit = false;
+  const std::size_t budget = this->Parameters.MaximumSampledPoints;
+  if (budget == 0)
+  {
+    return;
+  }
+  const std::size_t segments =
+    std::max<std::size_t>(1, this->Silhouette.size() + this->Mesh.features().edges().size());
+  const std::size_t perSegment = 2 + budget / segments;
+  if (perSegment < static_cast<std::size_t>(this->Parameters.Sampling.MaximumSamples))
+  {
+    this->SampleCap = static_cast<int>(perSegment);
+  }
+}
+
+// Points per smoothed feature segment in this view (both ends counted), by
+// the same rule as silhouette segments. Both sides of a crease use the
+// segment's one count, so their samples coincide. Straight ones keep 2.
+void SilhouettePass::countFeatureSamples()
+{
+  const FeatureCurves& features = this->Mesh.features();
+  this->FeatureSampleCounts.assign(features.edges().size(), 2);
+  if (this->Mesh.featureTriangles().empty())
+  {
+    return;
+  }
+  this->For(features.edges().size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t f = begin; f < end; ++f)
+    {
+      if (features.isCurved(static_cast<Id>(f)) && !this->isStraightened(static_cast<Id>(f)))
+      {
+        const HermiteCurve& curve = features.curve(static_cast<Id>(f));
+        // Eq. 8 wants the arc's turning: the end tangents give it here.
+        this->FeatureSampleCounts[f] =
+          this->sampleCount(curve, safeNormalize(curve.T0), safeNormalize(curve.T1));
+      }
+    }
+  });
+}
+
+} // namespace detail
+} // namespace silsmooth

@@ -31,6 +31,35 @@ void serialFor(std::size_t count, const std::function<void(std::size_t, std::siz
   }
 }
 
+namespace
+{
+
+// The feature edges that are edges of the triangles (normalised, sorted).
+std::vector<FeatureEdge> featureEdgesOfTriangles(std::vector<FeatureEdge> featureEdges,
+  const std::vector<Triangle>& triangles, const EdgeTable* edges)
+{
+  // Only edges of the triangles can be feature edges.
+  featureEdges = normalizedFeatureEdges(std::move(featureEdges));
+  const EdgeTable built = edges ? EdgeTable() : EdgeTable(triangles);
+  const EdgeTable& input = edges ? *edges : built;
+  std::size_t e = 0;
+  featureEdges.erase(
+    std::remove_if(featureEdges.begin(), featureEdges.end(),
+      [&](const FeatureEdge& f) {
+        while (e < input.edgeCount() &&
+          FeatureEdge(input.edge(static_cast<Id>(e)).low, input.edge(static_cast<Id>(e)).high) < f)
+        {
+          ++e;
+        }
+        return e == input.edgeCount() ||
+          FeatureEdge(input.edge(static_cast<Id>(e)).low, input.edge(static_cast<Id>(e)).high) != f;
+      }),
+    featureEdges.end());
+  return featureEdges;
+}
+
+} // namespace
+
 PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
   const std::vector<glm::dvec3>& normals, std::vector<FeatureEdge> featureEdges,
   const std::vector<glm::dvec3>& cornerNormals, const EdgeTable* edges, NormalWeighting weighting)
@@ -40,97 +69,102 @@ PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle>
 {
   if (!featureEdges.empty())
   {
-    // Only edges of the triangles can be feature edges.
-    featureEdges = normalizedFeatureEdges(std::move(featureEdges));
-    const EdgeTable built = edges ? EdgeTable() : EdgeTable(this->Triangles);
-    const EdgeTable& input = edges ? *edges : built;
-    std::size_t e = 0;
-    featureEdges.erase(std::remove_if(featureEdges.begin(), featureEdges.end(),
-                         [&](const FeatureEdge& f) {
-                           while (e < input.edgeCount() &&
-                             FeatureEdge(input.edge(static_cast<Id>(e)).low,
-                               input.edge(static_cast<Id>(e)).high) < f)
-                           {
-                             ++e;
-                           }
-                           return e == input.edgeCount() ||
-                             FeatureEdge(input.edge(static_cast<Id>(e)).low,
-                               input.edge(static_cast<Id>(e)).high) != f;
-                         }),
-      featureEdges.end());
-    this->Features = FeatureCurves(this->Points, std::move(featureEdges));
+    this->Features = FeatureCurves(
+      this->Points, featureEdgesOfTriangles(std::move(featureEdges), this->Triangles, edges));
   }
-  if (!this->Features.empty())
-  {
-    FeatureSplit split = splitAtFeatureEdges(this->Points.size(), this->Triangles, this->Features);
-    this->Triangles = std::move(split.Triangles);
-    this->CopySources = std::move(split.CopySources);
-    this->OnFeature = std::move(split.OnFeature);
-    for (const Id source : this->CopySources)
-    {
-      this->Points.push_back(this->Points[static_cast<std::size_t>(source)]);
-    }
-  }
+  this->splitAtFeatures();
   this->Edges = this->Features.empty() && edges ? *edges : EdgeTable(this->Triangles);
-  {
-    std::vector<int> uses(this->Edges.edgeCount(), 0);
-    for (std::size_t t = 0; t < this->Triangles.size(); ++t)
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        ++uses[static_cast<std::size_t>(this->Edges.sideEdge(static_cast<Id>(t), k))];
-      }
-    }
-    this->OnBoundary.assign(this->Points.size(), 0);
-    this->BoundaryEdges.assign(uses.size(), 0);
-    for (std::size_t e = 0; e < uses.size(); ++e)
-    {
-      if (uses[e] == 1)
-      {
-        this->BoundaryEdges[e] = 1;
-        const Edge& edge = this->Edges.edge(static_cast<Id>(e));
-        this->OnBoundary[static_cast<std::size_t>(edge.low)] = 1;
-        this->OnBoundary[static_cast<std::size_t>(edge.high)] = 1;
-      }
-    }
-  }
-  if (!this->Features.empty())
-  {
-    this->EdgeFeatures.resize(this->Edges.edgeCount());
-    for (std::size_t e = 0; e < this->Edges.edgeCount(); ++e)
-    {
-      const Edge& edge = this->Edges.edge(static_cast<Id>(e));
-      this->EdgeFeatures[e] =
-        this->Features.find(this->sourcePoint(edge.low), this->sourcePoint(edge.high));
-    }
-    for (std::size_t t = 0; t < this->Triangles.size(); ++t)
-    {
-      if (hasRepeatedCorner(this->Triangles[t]))
-      {
-        continue;
-      }
-      bool curvedSide = false;
-      for (int k = 0; k < 3; ++k)
-      {
-        const Id f = this->edgeFeature(this->Edges.sideEdge(static_cast<Id>(t), k));
-        if (f >= 0)
-        {
-          this->FeatureSideTriangles.emplace_back(f, static_cast<Id>(t));
-          curvedSide = curvedSide || this->Features.isCurved(f);
-        }
-      }
-      if (curvedSide)
-      {
-        this->FeatureTriangles.push_back(static_cast<Id>(t));
-      }
-    }
-    std::sort(this->FeatureSideTriangles.begin(), this->FeatureSideTriangles.end());
-    this->FeatureSideTriangles.erase(
-      std::unique(this->FeatureSideTriangles.begin(), this->FeatureSideTriangles.end()),
-      this->FeatureSideTriangles.end());
-  }
+  this->findBoundaries();
+  this->indexFeatureEdges();
+  this->findNeighbours();
+  this->chooseNormals(normals, cornerNormals, weighting);
+}
 
-  // Edge neighbours of every vertex (compressed rows), for the perturbation.
+void PreparedMesh::splitAtFeatures()
+{
+  if (this->Features.empty())
+  {
+    return;
+  }
+  FeatureSplit split = splitAtFeatureEdges(this->Points.size(), this->Triangles, this->Features);
+  this->Triangles = std::move(split.Triangles);
+  this->CopySources = std::move(split.CopySources);
+  this->OnFeature = std::move(split.OnFeature);
+  for (const Id source : this->CopySources)
+  {
+    this->Points.push_back(this->Points[static_cast<std::size_t>(source)]);
+  }
+}
+
+// Boundary edges (in one triangle) and the points on them.
+void PreparedMesh::findBoundaries()
+{
+  std::vector<int> uses(this->Edges.edgeCount(), 0);
+  for (std::size_t t = 0; t < this->Triangles.size(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      ++uses[static_cast<std::size_t>(this->Edges.sideEdge(static_cast<Id>(t), k))];
+    }
+  }
+  this->OnBoundary.assign(this->Points.size(), 0);
+  this->BoundaryEdges.assign(uses.size(), 0);
+  for (std::size_t e = 0; e < uses.size(); ++e)
+  {
+    if (uses[e] == 1)
+    {
+      this->BoundaryEdges[e] = 1;
+      const Edge& edge = this->Edges.edge(static_cast<Id>(e));
+      this->OnBoundary[static_cast<std::size_t>(edge.low)] = 1;
+      this->OnBoundary[static_cast<std::size_t>(edge.high)] = 1;
+    }
+  }
+}
+
+// Each edge's feature curve, and the triangles with a feature side.
+void PreparedMesh::indexFeatureEdges()
+{
+  if (this->Features.empty())
+  {
+    return;
+  }
+  this->EdgeFeatures.resize(this->Edges.edgeCount());
+  for (std::size_t e = 0; e < this->Edges.edgeCount(); ++e)
+  {
+    const Edge& edge = this->Edges.edge(static_cast<Id>(e));
+    this->EdgeFeatures[e] =
+      this->Features.find(this->sourcePoint(edge.low), this->sourcePoint(edge.high));
+  }
+  for (std::size_t t = 0; t < this->Triangles.size(); ++t)
+  {
+    if (hasRepeatedCorner(this->Triangles[t]))
+    {
+      continue;
+    }
+    bool curvedSide = false;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Id f = this->edgeFeature(this->Edges.sideEdge(static_cast<Id>(t), k));
+      if (f >= 0)
+      {
+        this->FeatureSideTriangles.emplace_back(f, static_cast<Id>(t));
+        curvedSide = curvedSide || this->Features.isCurved(f);
+      }
+    }
+    if (curvedSide)
+    {
+      this->FeatureTriangles.push_back(static_cast<Id>(t));
+    }
+  }
+  std::sort(this->FeatureSideTriangles.begin(), this->FeatureSideTriangles.end());
+  this->FeatureSideTriangles.erase(
+    std::unique(this->FeatureSideTriangles.begin(), this->FeatureSideTriangles.end()),
+    this->FeatureSideTriangles.end());
+}
+
+// Edge neighbours of every vertex (compressed rows), for the perturbation.
+void PreparedMesh::findNeighbours()
+{
   std::vector<Id> degree(this->Points.size() + 1, 0);
   for (std::size_t e = 0; e < this->Edges.edgeCount(); ++e)
   {
@@ -158,9 +192,13 @@ PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle>
         edge.low;
     }
   }
+}
 
-  // Given normals for the input's points; feature points (and their copies)
-  // and points with no usable given normal get the angle-weighted one.
+// Given normals for the input's points; feature points (and their copies)
+// and points with no usable given normal get the computed ones.
+void PreparedMesh::chooseNormals(const std::vector<glm::dvec3>& normals,
+  const std::vector<glm::dvec3>& cornerNormals, NormalWeighting weighting)
+{
   std::vector<glm::dvec3> computed;
   bool needComputed = normals.size() != this->InputPointCount || !this->Features.empty();
   if (cornerNormals.size() == this->Triangles.size() * 3 && !this->Triangles.empty())

@@ -118,6 +118,13 @@ public:
   const TriangleGrid& triangleGrid() const;
 
 private:
+  // The constructor's steps, in order.
+  void splitAtFeatures();
+  void findBoundaries();
+  void indexFeatureEdges();
+  void findNeighbours();
+  void chooseNormals(const std::vector<glm::dvec3>& normals,
+    const std::vector<glm::dvec3>& cornerNormals, NormalWeighting weighting);
   std::vector<glm::dvec3> normalsFromCorners(const std::vector<glm::dvec3>& cornerNormals) const;
 
   std::vector<glm::dvec3> Points;

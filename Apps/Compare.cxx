@@ -5,6 +5,7 @@
 #include "MeshIO.h"
 #include "PrintableText.h"
 #include "RenderingBackend.h"
+#include "TextFormat.h"
 #include "VtkErrorLog.h"
 
 #include "EvaluationModels.h"
@@ -44,13 +45,6 @@ double FrameRatio(const ModelComparison& c)
 {
   return c.Fine.FrameMilliseconds > 0 ? c.Smoothed.FrameMilliseconds / c.Fine.FrameMilliseconds
                                       : 0.0;
-}
-
-std::string Fixed(double value, int digits)
-{
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.*f", digits, value);
-  return text;
 }
 
 std::string JsonVariant(const VariantFigures& v)

@@ -3,6 +3,7 @@
 #include "CameraOptions.h"
 #include "CliErrors.h"
 #include "Smoothing.h"
+#include "TextFormat.h"
 
 #include <vtkCamera.h>
 #include <vtkDataArray.h>
@@ -33,18 +34,6 @@ vtkIdType CountFromFieldData(vtkPolyData* smoothed, const char* name)
 std::array<double, 3> ToArray(const double v[3])
 {
   return { v[0], v[1], v[2] };
-}
-
-// The shortest text that reads back as the same double.
-std::string JsonNumber(double value)
-{
-  if (!std::isfinite(value))
-  {
-    return "null"; // JSON has no NaN or infinity
-  }
-  char buffer[32];
-  const auto result = std::to_chars(buffer, buffer + sizeof(buffer), value);
-  return std::string(buffer, result.ptr);
 }
 
 std::string JsonVector(const std::array<double, 3>& v)

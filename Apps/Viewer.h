@@ -93,6 +93,10 @@ private:
   Viewer(const Viewer&) = delete;
   Viewer& operator=(const Viewer&) = delete;
 
+  // The slider's range; the keys double and halve the tolerance within it.
+  static constexpr double MinimumSliderTolerance = 0.1;
+  static constexpr double MaximumSliderTolerance = 5.0;
+
   enum class Mode
   {
     Interactive,

@@ -1,0 +1,72 @@
+/**
+ * The output builders of vtkSilhouetteSmoothingFilter: its mesh (points with
+ * the input's point data, cells with the input's cell data, feature copies
+ * and new points interpolated), its silhouette lines and the changed-cells
+ * output of BuildChanges. Private to the module: not wrapped or installed.
+ */
+#ifndef vtkSilhouetteSmoothingOutput_h
+#define vtkSilhouetteSmoothingOutput_h
+
+#include "vtkSmartPointer.h"
+#include "vtkType.h"
+
+#include "SilhouetteSmoother.h"
+#include "WeldedSurface.h"
+
+#include <vector>
+
+class vtkCellData;
+class vtkDataSetAttributes;
+class vtkFieldData;
+class vtkPointData;
+class vtkPoints;
+class vtkPolyData;
+
+namespace vtkSilhouetteSmoothingOutput
+{
+
+void AddCount(vtkFieldData* fd, const char* name, vtkIdType value);
+
+int OutputPointType(vtkPolyData* input, int precision);
+
+// Input points (ids kept), copies of input points for extra smooth groups,
+// then the added points; points lowered by the perturbation move in every
+// copy. With `only`, just those output points (ascending ids), in order.
+vtkSmartPointer<vtkPoints> BuildPoints(vtkPolyData* input, int pointType,
+  const silsmooth::WeldedSurface& surface, const silsmooth::SmoothingResult& result,
+  const silsmooth::SurfaceFrame& frame, const std::vector<vtkIdType>* only = nullptr);
+
+// Input point arrays are copied and extended with values interpolated for the
+// added points (VTK's interpolation rules; the arrays those rules do not
+// interpolate take the nearest source's value). The shading normals replace
+// the input's normals (if any) as the active normals, keeping the input's
+// array name. `OriginalPointId` gives every output point's input point (-1
+// for added points), composed with an input array of that name. With
+// `only`, just those output points (ascending ids), in order.
+void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
+  const silsmooth::WeldedSurface& surface, const silsmooth::SmoothingResult& result,
+  const silsmooth::SurfaceFrame& frame, const std::vector<vtkIdType>* only = nullptr);
+
+// Verts and lines pass through (PassVertsAndLines: `droppedCells` counts the
+// ones left out); polygons and strips become the frame's triangles, written
+// by the surface straight into the cell arrays. `OriginalCellId` is composed
+// with an input array of that name.
+silsmooth::SurfaceFrame BuildCells(vtkPolyData* input, vtkPolyData* output,
+  const std::vector<vtkIdType>& triangleCell, const silsmooth::WeldedSurface& surface,
+  const silsmooth::SmoothingResult& result, vtkIdType& droppedCells);
+
+// A frame's changes (WeldedSurface::assembleChanges) as a mesh of their own:
+// the triangles over the output points they use (`used`, ascending output
+// ids), each with its input cell's data, NewGeometry and OriginalCellId as
+// the whole output gives them.
+void BuildChangedCells(vtkPolyData* input, vtkPolyData* changes,
+  const std::vector<vtkIdType>& triangleCell, const silsmooth::SurfaceFrame& frame,
+  const std::vector<vtkIdType>& used);
+
+// Output port 1: the silhouette polylines over their own compact point set.
+void BuildSilhouetteLines(
+  vtkPolyData* mesh, const silsmooth::SurfaceFrame& frame, vtkPolyData* lines);
+
+} // namespace vtkSilhouetteSmoothingOutput
+
+#endif

@@ -11,30 +11,19 @@
 
 vtkStandardNewMacro(vtkPNTriangleFilter);
 
-vtkTypeBool vtkPNTriangleFilter::ProcessRequest(
-  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
-{
-  return vtkSilhouetteFilterSupport::GuardRequest(this, request, inputs, outputs,
-    [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });
-}
+vtkSilhouetteGuardedProcessRequestMacro(vtkPNTriangleFilter);
 
 namespace support = vtkSilhouetteFilterSupport;
 
 int vtkPNTriangleFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  if (!input || !output)
+  vtkPolyData* input = nullptr;
+  vtkPolyData* output = nullptr;
+  vtkSilhouetteFilterSupport::Triangles triangles;
+  if (!vtkSilhouetteFilterSupport::ReadSurface(
+        this, inputVector, outputVector, input, output, triangles))
   {
-    vtkErrorMacro("Missing input or output polydata.");
-    return 0;
-  }
-  support::Triangles triangles;
-  const std::string error = support::ReadFiniteTriangles(input, triangles);
-  if (!error.empty())
-  {
-    vtkErrorMacro(<< error);
     return 0;
   }
   const silsmooth::PNTriangleResult result = silsmooth::tessellatePNTriangles(

@@ -13,30 +13,19 @@ vtkStandardNewMacro(vtkPhongTessellationFilter);
 
 vtkSilhouetteCheckedSetterMacro(vtkPhongTessellationFilter, ShapeFactor, double, 0.0, 1.0);
 
-vtkTypeBool vtkPhongTessellationFilter::ProcessRequest(
-  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
-{
-  return vtkSilhouetteFilterSupport::GuardRequest(this, request, inputs, outputs,
-    [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });
-}
+vtkSilhouetteGuardedProcessRequestMacro(vtkPhongTessellationFilter);
 
 namespace support = vtkSilhouetteFilterSupport;
 
 int vtkPhongTessellationFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  if (!input || !output)
+  vtkPolyData* input = nullptr;
+  vtkPolyData* output = nullptr;
+  vtkSilhouetteFilterSupport::Triangles triangles;
+  if (!vtkSilhouetteFilterSupport::ReadSurface(
+        this, inputVector, outputVector, input, output, triangles))
   {
-    vtkErrorMacro("Missing input or output polydata.");
-    return 0;
-  }
-  support::Triangles triangles;
-  const std::string error = support::ReadFiniteTriangles(input, triangles);
-  if (!error.empty())
-  {
-    vtkErrorMacro(<< error);
     return 0;
   }
   const silsmooth::PhongTessellationResult result = silsmooth::tessellatePhong(

@@ -23,12 +23,7 @@ vtkStandardNewMacro(vtkProgressiveMeshFilter);
 
 vtkSilhouetteCheckedSetterMacro(vtkProgressiveMeshFilter, Fraction, double, 0.0, 1.0);
 
-vtkTypeBool vtkProgressiveMeshFilter::ProcessRequest(
-  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
-{
-  return vtkSilhouetteFilterSupport::GuardRequest(this, request, inputs, outputs,
-    [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });
-}
+vtkSilhouetteGuardedProcessRequestMacro(vtkProgressiveMeshFilter);
 
 struct vtkProgressiveMeshFilter::Internal
 {

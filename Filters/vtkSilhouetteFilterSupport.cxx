@@ -257,6 +257,26 @@ std::string ReadTriangles(vtkPolyData* input, Triangles& out)
   return std::string();
 }
 
+bool ReadSurface(vtkAlgorithm* self, vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector, vtkPolyData*& input, vtkPolyData*& output,
+  Triangles& triangles)
+{
+  input = vtkPolyData::GetData(inputVector[0]);
+  output = vtkPolyData::GetData(outputVector, 0);
+  if (!input || !output)
+  {
+    vtkErrorWithObjectMacro(self, "Missing input or output polydata.");
+    return false;
+  }
+  const std::string error = ReadFiniteTriangles(input, triangles);
+  if (!error.empty())
+  {
+    vtkErrorWithObjectMacro(self, << error);
+    return false;
+  }
+  return true;
+}
+
 std::string ReadFiniteTriangles(vtkPolyData* input, Triangles& out)
 {
   const std::string error = ReadTriangles(input, out);

@@ -83,6 +83,14 @@ struct Triangles
 /// points).
 std::string ReadTriangles(vtkPolyData* input, Triangles& out);
 
+/// RequestData's first step for the filters of one surface: the input and
+/// output polydata and the input's triangles (ReadFiniteTriangles). False
+/// after reporting the error on `self` (a missing polydata, cells naming
+/// missing points, points with NaN or infinite coordinates).
+bool ReadSurface(vtkAlgorithm* self, vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector, vtkPolyData*& input, vtkPolyData*& output,
+  Triangles& triangles);
+
 /// ReadTriangles, and also the error for points with NaN or infinite
 /// coordinates, for the filters that cannot use such input at all.
 std::string ReadFiniteTriangles(vtkPolyData* input, Triangles& out);
@@ -113,6 +121,18 @@ std::string MismatchedArrayError(vtkPolyData* input);
 /// whose arrays have the wrong number of tuples (MismatchedArrayError).
 int GuardRequest(vtkAlgorithm* self, vtkInformation* request, vtkInformationVector** inputs,
   vtkInformationVector* outputs, const std::function<int()>& process);
+
+/// Defines Class::ProcessRequest as its superclass's under GuardRequest (no
+/// exception leaves it). Used as a statement, with a `;`.
+#define vtkSilhouetteGuardedProcessRequestMacro(Class)                                             \
+  vtkTypeBool Class::ProcessRequest(                                                               \
+    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)         \
+  {                                                                                                \
+    return vtkSilhouetteFilterSupport::GuardRequest(this, request, inputs, outputs, [&] {          \
+      return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs));         \
+    });                                                                                            \
+  }                                                                                                \
+  static_assert(true, "")
 
 /// For the Set methods of a filter's settings: stores `value` clamped to
 /// [lo, hi], with a warning when it was outside; keeps the current setting,

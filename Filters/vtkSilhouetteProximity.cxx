@@ -29,18 +29,12 @@ vtkSilhouetteProximity::~vtkSilhouetteProximity() = default;
 int vtkSilhouetteProximity::RequestViewData(vtkInformation*, vtkInformationVector** inputVector,
   vtkInformationVector* outputVector, const vtkSilhouetteFilterSupport::View& view)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  if (!input || !output)
-  {
-    vtkErrorMacro("Missing input or output polydata.");
-    return 0;
-  }
+  vtkPolyData* input = nullptr;
+  vtkPolyData* output = nullptr;
   vtkSilhouetteFilterSupport::Triangles mesh;
-  const std::string readError = vtkSilhouetteFilterSupport::ReadFiniteTriangles(input, mesh);
-  if (!readError.empty())
+  if (!vtkSilhouetteFilterSupport::ReadSurface(
+        this, inputVector, outputVector, input, output, mesh))
   {
-    vtkErrorMacro(<< readError);
     return 0;
   }
   const vtkIdType numPoints = input->GetNumberOfPoints();

@@ -28,12 +28,7 @@ vtkSilhouetteCheckedSetterMacro(
 vtkSilhouetteCheckedSetterMacro(
   vtkSilhouetteQuadricDecimation, NearFactor, double, 0.0, VTK_DOUBLE_MAX);
 
-vtkTypeBool vtkSilhouetteQuadricDecimation::ProcessRequest(
-  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
-{
-  return vtkSilhouetteFilterSupport::GuardRequest(this, request, inputs, outputs,
-    [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });
-}
+vtkSilhouetteGuardedProcessRequestMacro(vtkSilhouetteQuadricDecimation);
 
 void vtkSilhouetteQuadricDecimation::SetDistanceArrayName(const std::string& name)
 {
@@ -47,18 +42,12 @@ void vtkSilhouetteQuadricDecimation::SetDistanceArrayName(const std::string& nam
 int vtkSilhouetteQuadricDecimation::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  if (!input || !output)
-  {
-    vtkErrorMacro("Missing input or output polydata.");
-    return 0;
-  }
+  vtkPolyData* input = nullptr;
+  vtkPolyData* output = nullptr;
   vtkSilhouetteFilterSupport::Triangles mesh;
-  const std::string readError = vtkSilhouetteFilterSupport::ReadFiniteTriangles(input, mesh);
-  if (!readError.empty())
+  if (!vtkSilhouetteFilterSupport::ReadSurface(
+        this, inputVector, outputVector, input, output, mesh))
   {
-    vtkErrorMacro(<< readError);
     return 0;
   }
   const vtkIdType numPoints = input->GetNumberOfPoints();

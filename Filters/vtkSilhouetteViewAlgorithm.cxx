@@ -141,12 +141,7 @@ vtkSilhouetteViewAlgorithm::ViewStatus vtkSilhouetteViewAlgorithm::RequestView(
   return VIEW_READY;
 }
 
-vtkTypeBool vtkSilhouetteViewAlgorithm::ProcessRequest(
-  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
-{
-  return vtkSilhouetteFilterSupport::GuardRequest(this, request, inputs, outputs,
-    [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });
-}
+vtkSilhouetteGuardedProcessRequestMacro(vtkSilhouetteViewAlgorithm);
 void vtkSilhouetteViewAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

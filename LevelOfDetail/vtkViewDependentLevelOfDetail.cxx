@@ -269,12 +269,6 @@ int vtkViewDependentLevelOfDetail::RequestViewData(vtkInformation*,
     vtkErrorMacro("Missing input or output polydata.");
     return 0;
   }
-  const std::string mismatched = vtkSilhouetteFilterSupport::MismatchedArrayError(input);
-  if (!mismatched.empty())
-  {
-    vtkErrorMacro(<< mismatched);
-    return 0;
-  }
   const int built = this->EnsureHierarchy(input);
   if (built <= 0)
   {

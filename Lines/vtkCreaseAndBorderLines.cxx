@@ -27,28 +27,17 @@ vtkCreaseAndBorderLines::~vtkCreaseAndBorderLines() = default;
 vtkSilhouetteCheckedSetterMacro(vtkCreaseAndBorderLines, NormalJumpAngle, double, 0.0, 180.0);
 vtkSilhouetteCheckedSetterMacro(vtkCreaseAndBorderLines, FeatureAngle, double, 0.0, 180.0);
 
-vtkTypeBool vtkCreaseAndBorderLines::ProcessRequest(
-  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
-{
-  return support::GuardRequest(this, request, inputs, outputs,
-    [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });
-}
+vtkSilhouetteGuardedProcessRequestMacro(vtkCreaseAndBorderLines);
 
 int vtkCreaseAndBorderLines::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  if (!input || !output)
+  vtkPolyData* input = nullptr;
+  vtkPolyData* output = nullptr;
+  vtkSilhouetteFilterSupport::Triangles triangles;
+  if (!vtkSilhouetteFilterSupport::ReadSurface(
+        this, inputVector, outputVector, input, output, triangles))
   {
-    vtkErrorMacro("Missing input or output polydata.");
-    return 0;
-  }
-  support::Triangles triangles;
-  const std::string error = support::ReadFiniteTriangles(input, triangles);
-  if (!error.empty())
-  {
-    vtkErrorMacro(<< error);
     return 0;
   }
   this->UpdateProgress(0.2);

@@ -36,12 +36,7 @@ vtkStandardNewMacro(vtkOpenSubdivRefiner);
 
 vtkSilhouetteCheckedSetterMacro(vtkOpenSubdivRefiner, FeatureAngle, double, 0.0, 180.0);
 
-vtkTypeBool vtkOpenSubdivRefiner::ProcessRequest(
-  vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
-{
-  return vtkSilhouetteFilterSupport::GuardRequest(this, request, inputs, outputs,
-    [&] { return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs)); });
-}
+vtkSilhouetteGuardedProcessRequestMacro(vtkOpenSubdivRefiner);
 
 namespace
 {

@@ -99,43 +99,85 @@ struct Item
 
 } // namespace
 
-FoldFindings findFolds(
-  const FoldGuardMesh& mesh, const FoldGuardFrame& frame, const FoldGuardParallelFor& parallelFor)
+namespace
 {
-  const FrameGeometry geometry(mesh, frame);
-  std::vector<Item> items;
-  for (std::size_t i = 0; i < frame.Remeshed.size(); ++i)
+
+// One check of a frame, in steps: the changed triangles (items), which of
+// them to check, their boxes, the verdict of each, and the findings.
+class FoldCheck
+{
+public:
+  FoldCheck(const FoldGuardMesh& mesh, const FoldGuardFrame& frame)
+    : Mesh(mesh)
+    , Frame(frame)
+    , Geometry(mesh, frame)
   {
-    for (std::size_t r = frame.ReplacementOffsets[i]; r < frame.ReplacementOffsets[i + 1]; ++r)
+  }
+
+  FoldFindings run(const FoldGuardParallelFor& parallelFor)
+  {
+    this->collectItems();
+    this->placeItems();
+    this->chooseItemsToCheck();
+    this->judgeItems(parallelFor);
+    return this->findings();
+  }
+
+private:
+  const Triangle& idsOf(const Item& item) const
+  {
+    return item.Index >= 0 ? this->Frame.Replacements[static_cast<std::size_t>(item.Index)]
+                           : this->Mesh.Triangles[static_cast<std::size_t>(item.Source)];
+  }
+
+  static bool overlap(const glm::dvec3& aLow, const glm::dvec3& aHigh, const glm::dvec3& bLow,
+    const glm::dvec3& bHigh)
+  {
+    return aLow.x <= bHigh.x && bLow.x <= aHigh.x && aLow.y <= bHigh.y && bLow.y <= aHigh.y &&
+      aLow.z <= bHigh.z && bLow.z <= aHigh.z;
+  }
+
+  bool hasMovedCorner(const Triangle& t) const
+  {
+    return !this->Frame.Moved.empty() &&
+      (this->Geometry.isMoved(t[0]) || this->Geometry.isMoved(t[1]) ||
+        this->Geometry.isMoved(t[2]));
+  }
+
+  // The replacements, and the kept triangles around moved points (in a
+  // partial check also around the points whose move changed: a triangle
+  // that moved back is changed too).
+  void collectItems()
+  {
+    const FoldGuardFrame& frame = this->Frame;
+    for (std::size_t i = 0; i < frame.Remeshed.size(); ++i)
     {
-      items.push_back({ frame.Remeshed[i], static_cast<long>(i), static_cast<long>(r) });
+      for (std::size_t r = frame.ReplacementOffsets[i]; r < frame.ReplacementOffsets[i + 1]; ++r)
+      {
+        this->Items.push_back({ frame.Remeshed[i], static_cast<long>(i), static_cast<long>(r) });
+      }
     }
-  }
-  // Kept triangles around moved points, and in a partial check around the
-  // points whose move changed (a triangle that moved back is changed too).
-  std::vector<Id> aroundPoints;
-  for (const auto& m : frame.Moved)
-  {
-    aroundPoints.push_back(m.first);
-  }
-  if (frame.CheckSources && frame.CheckPoints)
-  {
-    aroundPoints.insert(aroundPoints.end(), frame.CheckPoints->begin(), frame.CheckPoints->end());
-    std::sort(aroundPoints.begin(), aroundPoints.end());
-    aroundPoints.erase(std::unique(aroundPoints.begin(), aroundPoints.end()), aroundPoints.end());
-  }
-  if (!aroundPoints.empty())
-  {
+    std::vector<Id> aroundPoints;
+    for (const auto& m : frame.Moved)
+    {
+      aroundPoints.push_back(m.first);
+    }
+    if (frame.CheckSources && frame.CheckPoints)
+    {
+      aroundPoints.insert(aroundPoints.end(), frame.CheckPoints->begin(), frame.CheckPoints->end());
+      std::sort(aroundPoints.begin(), aroundPoints.end());
+      aroundPoints.erase(std::unique(aroundPoints.begin(), aroundPoints.end()), aroundPoints.end());
+    }
     std::vector<Id> around;
     std::vector<Id> candidates;
     for (const Id p : aroundPoints)
     {
-      const glm::dvec3& at = mesh.Points[static_cast<std::size_t>(p)];
-      mesh.Grid.query(at, at, candidates);
+      const glm::dvec3& at = this->Mesh.Points[static_cast<std::size_t>(p)];
+      this->Mesh.Grid.query(at, at, candidates);
       for (const Id t : candidates)
       {
-        const Triangle& tri = mesh.Triangles[static_cast<std::size_t>(t)];
-        if ((tri[0] == p || tri[1] == p || tri[2] == p) && geometry.remeshedIndex(t) < 0)
+        const Triangle& tri = this->Mesh.Triangles[static_cast<std::size_t>(t)];
+        if ((tri[0] == p || tri[1] == p || tri[2] == p) && this->Geometry.remeshedIndex(t) < 0)
         {
           around.push_back(t);
         }
@@ -145,165 +187,198 @@ FoldFindings findFolds(
     around.erase(std::unique(around.begin(), around.end()), around.end());
     for (const Id t : around)
     {
-      items.push_back({ t, -1, -1 });
+      this->Items.push_back({ t, -1, -1 });
     }
   }
 
-  auto idsOf = [&](const Item& item) -> const Triangle& {
-    return item.Index >= 0 ? frame.Replacements[static_cast<std::size_t>(item.Index)]
-                           : mesh.Triangles[static_cast<std::size_t>(item.Source)];
-  };
-
-  // The changed triangles where they are now, and a grid of their boxes
-  // made for this frame: the prepared grid knows only the input's boxes,
-  // which a lifted new triangle or a moved one may leave.
-  std::vector<TriangleCorners> corners(items.size());
-  std::vector<glm::dvec3> lows(items.size());
-  std::vector<glm::dvec3> highs(items.size());
-  for (std::size_t k = 0; k < items.size(); ++k)
+  // The changed triangles where they are now, and their boxes.
+  void placeItems()
   {
-    corners[k] = geometry.current(idsOf(items[k]));
-    lows[k] = glm::min(corners[k].P[0], glm::min(corners[k].P[1], corners[k].P[2]));
-    highs[k] = glm::max(corners[k].P[0], glm::max(corners[k].P[1], corners[k].P[2]));
-  }
-  auto overlap = [](const glm::dvec3& aLow, const glm::dvec3& aHigh, const glm::dvec3& bLow,
-                   const glm::dvec3& bHigh) {
-    return aLow.x <= bHigh.x && bLow.x <= aHigh.x && aLow.y <= bHigh.y && bLow.y <= aHigh.y &&
-      aLow.z <= bHigh.z && bLow.z <= aHigh.z;
-  };
-  auto hasMovedCorner = [&](const Triangle& t) {
-    return !frame.Moved.empty() &&
-      (geometry.isMoved(t[0]) || geometry.isMoved(t[1]) || geometry.isMoved(t[2]));
-  };
-
-  // Which items to check (all, unless the caller names what changed).
-  std::vector<unsigned char> toCheck(items.size(), 1);
-  if (frame.CheckSources && frame.CheckPoints)
-  {
-    for (std::size_t k = 0; k < items.size(); ++k)
+    const std::size_t n = this->Items.size();
+    this->Corners.resize(n);
+    this->Lows.resize(n);
+    this->Highs.resize(n);
+    for (std::size_t k = 0; k < n; ++k)
     {
-      const Triangle& t = idsOf(items[k]);
-      toCheck[k] = std::binary_search(
-                     frame.CheckSources->begin(), frame.CheckSources->end(), items[k].Source) ||
-          std::binary_search(frame.CheckPoints->begin(), frame.CheckPoints->end(), t[0]) ||
-          std::binary_search(frame.CheckPoints->begin(), frame.CheckPoints->end(), t[1]) ||
-          std::binary_search(frame.CheckPoints->begin(), frame.CheckPoints->end(), t[2])
-        ? 1
-        : 0;
+      const TriangleCorners& c = this->Corners[k] =
+        this->Geometry.current(this->idsOf(this->Items[k]));
+      this->Lows[k] = glm::min(c.P[0], glm::min(c.P[1], c.P[2]));
+      this->Highs[k] = glm::max(c.P[0], glm::max(c.P[1], c.P[2]));
     }
   }
 
-  // The grid pays off when many triangles are checked; a few (a partial
-  // check after the first round) scan the boxes instead.
-  const std::size_t checking =
-    static_cast<std::size_t>(std::count(toCheck.begin(), toCheck.end(), 1));
-  const bool scan = checking <= 64;
-  const TriangleGrid changed = scan ? TriangleGrid() : TriangleGrid(lows, highs);
-  auto changedCandidates = [&](std::size_t k, std::vector<Id>& out) {
-    if (!scan)
+  // Which items to check (all, unless the caller names what changed), and
+  // how to find the changed triangles near one: a grid of their boxes made
+  // for this frame (the prepared grid knows only the input's boxes, which a
+  // lifted new triangle or a moved one may leave) when many are checked; a
+  // few (a partial check after the first round) scan the boxes instead.
+  void chooseItemsToCheck()
+  {
+    const FoldGuardFrame& frame = this->Frame;
+    this->ToCheck.assign(this->Items.size(), 1);
+    if (frame.CheckSources && frame.CheckPoints)
     {
-      changed.query(lows[k], highs[k], out);
+      const auto named = [&frame](Id p) {
+        return std::binary_search(frame.CheckPoints->begin(), frame.CheckPoints->end(), p);
+      };
+      for (std::size_t k = 0; k < this->Items.size(); ++k)
+      {
+        const Triangle& t = this->idsOf(this->Items[k]);
+        this->ToCheck[k] = std::binary_search(frame.CheckSources->begin(),
+                             frame.CheckSources->end(), this->Items[k].Source) ||
+            named(t[0]) || named(t[1]) || named(t[2])
+          ? 1
+          : 0;
+      }
+    }
+    const auto checking =
+      static_cast<std::size_t>(std::count(this->ToCheck.begin(), this->ToCheck.end(), 1));
+    this->Scan = checking <= 64;
+    if (!this->Scan)
+    {
+      this->Changed = TriangleGrid(this->Lows, this->Highs);
+    }
+  }
+
+  void changedCandidates(std::size_t k, std::vector<Id>& out) const
+  {
+    if (!this->Scan)
+    {
+      this->Changed.query(this->Lows[k], this->Highs[k], out);
       return;
     }
     out.clear();
-    for (std::size_t j = 0; j < items.size(); ++j)
+    for (std::size_t j = 0; j < this->Items.size(); ++j)
     {
-      if (overlap(lows[k], highs[k], lows[j], highs[j]))
+      if (overlap(this->Lows[k], this->Highs[k], this->Lows[j], this->Highs[j]))
       {
         out.push_back(static_cast<Id>(j));
       }
     }
-  };
+  }
 
   // 0: fine, 1: turned over, 2: cuts through another; and per item, the
   // changed triangles it cuts, which fold too.
-  std::vector<unsigned char> verdict(items.size(), 0);
-  std::vector<std::vector<std::size_t>> cutItems(items.size());
-  parallelFor(items.size(), [&](std::size_t begin, std::size_t end) {
-    std::vector<Id> candidates;
-    for (std::size_t k = begin; k < end; ++k)
+  void judgeItems(const FoldGuardParallelFor& parallelFor)
+  {
+    this->Verdict.assign(this->Items.size(), 0);
+    this->CutItems.assign(this->Items.size(), {});
+    parallelFor(this->Items.size(), [this](std::size_t begin, std::size_t end) {
+      std::vector<Id> candidates;
+      for (std::size_t k = begin; k < end; ++k)
+      {
+        this->judge(k, candidates);
+      }
+    });
+  }
+
+  void judge(std::size_t k, std::vector<Id>& candidates)
+  {
+    const Item& item = this->Items[k];
+    const Triangle& ids = this->idsOf(item);
+    if (!this->ToCheck[k] || hasRepeatedCorner(ids))
     {
-      const Item& item = items[k];
-      const Triangle& ids = idsOf(item);
-      if (!toCheck[k] || hasRepeatedCorner(ids))
+      return;
+    }
+    const FrameGeometry& geometry = this->Geometry;
+    const TriangleCorners& x = this->Corners[k];
+    const TriangleCorners source = geometry.prepared(item.Source);
+    // Turned over or not, the cuts are looked for: the triangles it cuts
+    // fold too, and a partial check may not look at them.
+    const bool turned = geometry.turnedOver(x, ids, source);
+    // Whether y (of input triangle `other`) cuts x where the inputs do not
+    // already touch; the touch test, the dearest, comes last.
+    auto cutBy = [&](const TriangleCorners& y, Id other) {
+      return trianglesIntersect(x, y) &&
+        (other == item.Source || !trianglesTouch(source, geometry.prepared(other)));
+    };
+    bool cuts = false;
+    // Kept, unmoved triangles: where the prepared grid has them.
+    this->Mesh.Grid.query(this->Lows[k], this->Highs[k], candidates);
+    for (std::size_t c = 0; c < candidates.size() && !cuts; ++c)
+    {
+      const Id other = candidates[c];
+      const Triangle& y = this->Mesh.Triangles[static_cast<std::size_t>(other)];
+      if (other != item.Source && !hasRepeatedCorner(y) && geometry.remeshedIndex(other) < 0 &&
+        !this->hasMovedCorner(y))
+      {
+        cuts = cutBy(geometry.current(y), other);
+      }
+    }
+    // Changed triangles (new ones, and kept ones with a moved corner): all
+    // of those it cuts, since each of them folds too (a whole check would
+    // find that from there; a partial one may not look there).
+    this->changedCandidates(k, candidates);
+    for (const Id candidate : candidates)
+    {
+      const std::size_t j = static_cast<std::size_t>(candidate);
+      if (j != k && !hasRepeatedCorner(this->idsOf(this->Items[j])) &&
+        overlap(this->Lows[k], this->Highs[k], this->Lows[j], this->Highs[j]) &&
+        cutBy(this->Corners[j], this->Items[j].Source))
+      {
+        cuts = true;
+        this->CutItems[k].push_back(j);
+      }
+    }
+    this->Verdict[k] = turned ? 1 : (cuts ? 2 : 0);
+  }
+
+  FoldFindings findings() const
+  {
+    FoldFindings findings;
+    findings.FoldingRemeshed.assign(this->Frame.Remeshed.size(), 0);
+    auto mark = [&](std::size_t k) {
+      if (this->Items[k].Remeshed >= 0)
+      {
+        findings.FoldingRemeshed[static_cast<std::size_t>(this->Items[k].Remeshed)] = 1;
+      }
+      for (const Id p : this->idsOf(this->Items[k]))
+      {
+        if (this->Geometry.isMoved(p))
+        {
+          findings.FoldingMovedPoints.push_back(p);
+        }
+      }
+    };
+    for (std::size_t k = 0; k < this->Items.size(); ++k)
+    {
+      if (this->Verdict[k] == 0)
       {
         continue;
       }
-      const TriangleCorners& x = corners[k];
-      const TriangleCorners source = geometry.prepared(item.Source);
-      // Turned over or not, the cuts are looked for: the triangles it cuts
-      // fold too, and a partial check may not look at them.
-      const bool turned = geometry.turnedOver(x, ids, source);
-      // Whether y (of input triangle `other`) cuts x where the inputs do
-      // not already touch; the touch test, the dearest, comes last.
-      auto cutBy = [&](const TriangleCorners& y, Id other) {
-        return trianglesIntersect(x, y) &&
-          (other == item.Source || !trianglesTouch(source, geometry.prepared(other)));
-      };
-      bool cuts = false;
-      // Kept, unmoved triangles: where the prepared grid has them.
-      mesh.Grid.query(lows[k], highs[k], candidates);
-      for (std::size_t c = 0; c < candidates.size() && !cuts; ++c)
+      ++(this->Verdict[k] == 1 ? findings.Turned : findings.Cutting);
+      mark(k);
+      for (const std::size_t j : this->CutItems[k])
       {
-        const Id other = candidates[c];
-        const Triangle& y = mesh.Triangles[static_cast<std::size_t>(other)];
-        if (other != item.Source && !hasRepeatedCorner(y) && geometry.remeshedIndex(other) < 0 &&
-          !hasMovedCorner(y))
-        {
-          cuts = cutBy(geometry.current(y), other);
-        }
-      }
-      // Changed triangles (new ones, and kept ones with a moved corner):
-      // all of those it cuts, since each of them folds too (a whole check
-      // would find that from there; a partial one may not look there).
-      changedCandidates(k, candidates);
-      for (const Id candidate : candidates)
-      {
-        const std::size_t j = static_cast<std::size_t>(candidate);
-        if (j != k && !hasRepeatedCorner(idsOf(items[j])) &&
-          overlap(lows[k], highs[k], lows[j], highs[j]) && cutBy(corners[j], items[j].Source))
-        {
-          cuts = true;
-          cutItems[k].push_back(j);
-        }
-      }
-      verdict[k] = turned ? 1 : (cuts ? 2 : 0);
-    }
-  });
-
-  FoldFindings findings;
-  findings.FoldingRemeshed.assign(frame.Remeshed.size(), 0);
-  auto mark = [&](std::size_t k) {
-    if (items[k].Remeshed >= 0)
-    {
-      findings.FoldingRemeshed[static_cast<std::size_t>(items[k].Remeshed)] = 1;
-    }
-    for (const Id p : idsOf(items[k]))
-    {
-      if (geometry.isMoved(p))
-      {
-        findings.FoldingMovedPoints.push_back(p);
+        mark(j);
       }
     }
-  };
-  for (std::size_t k = 0; k < items.size(); ++k)
-  {
-    if (verdict[k] == 0)
-    {
-      continue;
-    }
-    ++(verdict[k] == 1 ? findings.Turned : findings.Cutting);
-    mark(k);
-    for (const std::size_t j : cutItems[k])
-    {
-      mark(j);
-    }
+    std::vector<Id>& moved = findings.FoldingMovedPoints;
+    std::sort(moved.begin(), moved.end());
+    moved.erase(std::unique(moved.begin(), moved.end()), moved.end());
+    return findings;
   }
-  std::sort(findings.FoldingMovedPoints.begin(), findings.FoldingMovedPoints.end());
-  findings.FoldingMovedPoints.erase(
-    std::unique(findings.FoldingMovedPoints.begin(), findings.FoldingMovedPoints.end()),
-    findings.FoldingMovedPoints.end());
-  return findings;
+
+  const FoldGuardMesh& Mesh;
+  const FoldGuardFrame& Frame;
+  const FrameGeometry Geometry;
+  std::vector<Item> Items;
+  std::vector<TriangleCorners> Corners;
+  std::vector<glm::dvec3> Lows;
+  std::vector<glm::dvec3> Highs;
+  std::vector<unsigned char> ToCheck;
+  bool Scan = true;
+  TriangleGrid Changed;
+  std::vector<unsigned char> Verdict;
+  std::vector<std::vector<std::size_t>> CutItems;
+};
+
+} // namespace
+
+FoldFindings findFolds(
+  const FoldGuardMesh& mesh, const FoldGuardFrame& frame, const FoldGuardParallelFor& parallelFor)
+{
+  return FoldCheck(mesh, frame).run(parallelFor);
 }
 
 } // namespace silsmooth

@@ -68,170 +68,248 @@ bool triangleOverlapsSquare(
   return true;
 }
 
-ProximityGrid silhouetteProximity(const std::vector<glm::dvec3>& points,
-  const std::vector<Triangle>& triangles, const ViewGeometry& view, int resolution)
+namespace
 {
-  ProximityGrid grid;
-  resolution = std::max(resolution, 1);
-  std::vector<glm::dvec2> pixel(points.size());
-  std::vector<unsigned char> projected(points.size(), 0);
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    projected[i] = view.toPixels(points[i], pixel[i]) ? 1 : 0;
-  }
-  grid.PointDistance.assign(points.size(), -1.0);
-  grid.TriangleDistance.assign(triangles.size(), -1.0);
 
-  auto usable = [&](const Triangle& t) {
-    return projected[static_cast<std::size_t>(t[0])] && projected[static_cast<std::size_t>(t[1])] &&
-      projected[static_cast<std::size_t>(t[2])];
-  };
-  glm::dvec2 low(std::numeric_limits<double>::infinity());
-  glm::dvec2 high(-std::numeric_limits<double>::infinity());
-  for (const Triangle& t : triangles)
+// The steps of silhouetteProximity (SilhouetteProximity.h), numbered as the
+// paper's.
+class ProximityBuilder
+{
+public:
+  ProximityBuilder(
+    const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles, int resolution)
+    : Points(points)
+    , Triangles(triangles)
+    , Resolution(std::max(resolution, 1))
   {
-    if (!usable(t))
-    {
-      continue;
-    }
-    for (const Id p : t)
-    {
-      low = glm::min(low, pixel[static_cast<std::size_t>(p)]);
-      high = glm::max(high, pixel[static_cast<std::size_t>(p)]);
-    }
   }
-  if (!(low.x <= high.x))
+
+  ProximityGrid build(const ViewGeometry& view)
   {
-    return grid; // nothing projects
+    this->project(view);
+    if (!this->frameGrid())
+    {
+      return std::move(this->Grid); // nothing projects
+    }
+    this->mapMesh();
+    this->markOutside();
+    this->measureDistances();
+    this->label();
+    return std::move(this->Grid);
   }
-  const double extent = std::max({ high.x - low.x, high.y - low.y, 1e-300 });
-  grid.CellSize = extent / resolution;
-  grid.OriginX = low.x;
-  grid.OriginY = low.y;
-  grid.Width =
-    std::clamp(static_cast<int>(std::ceil((high.x - low.x) / grid.CellSize)), 1, resolution);
-  grid.Height =
-    std::clamp(static_cast<int>(std::ceil((high.y - low.y) / grid.CellSize)), 1, resolution);
-  const std::size_t cells =
-    static_cast<std::size_t>(grid.Width) * static_cast<std::size_t>(grid.Height);
-  grid.Occupancy.assign(cells, 0);
-  auto cellIndex = [&](int x, int y) {
-    return static_cast<std::size_t>(y) * static_cast<std::size_t>(grid.Width) +
+
+private:
+  bool usable(const Triangle& t) const
+  {
+    return this->Projected[static_cast<std::size_t>(t[0])] &&
+      this->Projected[static_cast<std::size_t>(t[1])] &&
+      this->Projected[static_cast<std::size_t>(t[2])];
+  }
+  std::size_t cellIndex(int x, int y) const
+  {
+    return static_cast<std::size_t>(y) * static_cast<std::size_t>(this->Grid.Width) +
       static_cast<std::size_t>(x);
-  };
+  }
   // Grid coordinates (cells are unit squares there).
-  auto toGrid = [&](const glm::dvec2& p) {
-    return glm::dvec2((p.x - grid.OriginX) / grid.CellSize, (p.y - grid.OriginY) / grid.CellSize);
-  };
-  auto cellRange = [](double lo, double hi, int n, int& first, int& last) {
+  glm::dvec2 toGrid(const glm::dvec2& p) const
+  {
+    return glm::dvec2((p.x - this->Grid.OriginX) / this->Grid.CellSize,
+      (p.y - this->Grid.OriginY) / this->Grid.CellSize);
+  }
+  static void cellRange(double lo, double hi, int n, int& first, int& last)
+  {
     first = std::clamp(static_cast<int>(std::floor(lo)), 0, n - 1);
     last = std::clamp(static_cast<int>(std::floor(hi)), 0, n - 1);
-  };
+  }
+
+  void project(const ViewGeometry& view)
+  {
+    this->Pixel.resize(this->Points.size());
+    this->Projected.assign(this->Points.size(), 0);
+    for (std::size_t i = 0; i < this->Points.size(); ++i)
+    {
+      this->Projected[i] = view.toPixels(this->Points[i], this->Pixel[i]) ? 1 : 0;
+    }
+    this->Grid.PointDistance.assign(this->Points.size(), -1.0);
+    this->Grid.TriangleDistance.assign(this->Triangles.size(), -1.0);
+  }
+
+  // The grid over the projected triangles' bounding box; false when none projects.
+  bool frameGrid()
+  {
+    glm::dvec2 low(std::numeric_limits<double>::infinity());
+    glm::dvec2 high(-std::numeric_limits<double>::infinity());
+    for (const Triangle& t : this->Triangles)
+    {
+      if (!this->usable(t))
+      {
+        continue;
+      }
+      for (const Id p : t)
+      {
+        low = glm::min(low, this->Pixel[static_cast<std::size_t>(p)]);
+        high = glm::max(high, this->Pixel[static_cast<std::size_t>(p)]);
+      }
+    }
+    if (!(low.x <= high.x))
+    {
+      return false;
+    }
+    ProximityGrid& grid = this->Grid;
+    const double extent = std::max({ high.x - low.x, high.y - low.y, 1e-300 });
+    grid.CellSize = extent / this->Resolution;
+    grid.OriginX = low.x;
+    grid.OriginY = low.y;
+    grid.Width = std::clamp(
+      static_cast<int>(std::ceil((high.x - low.x) / grid.CellSize)), 1, this->Resolution);
+    grid.Height = std::clamp(
+      static_cast<int>(std::ceil((high.y - low.y) / grid.CellSize)), 1, this->Resolution);
+    this->Cells = static_cast<std::size_t>(grid.Width) * static_cast<std::size_t>(grid.Height);
+    grid.Occupancy.assign(this->Cells, 0);
+    return true;
+  }
 
   // 1. Mesh mapping: the cells each triangle overlaps (kept for step 4).
-  std::vector<std::vector<std::size_t>> cellsOf(triangles.size());
-  for (std::size_t t = 0; t < triangles.size(); ++t)
+  void mapMesh()
   {
-    if (!usable(triangles[t]))
+    ProximityGrid& grid = this->Grid;
+    this->CellsOf.assign(this->Triangles.size(), {});
+    for (std::size_t t = 0; t < this->Triangles.size(); ++t)
     {
-      continue;
-    }
-    const glm::dvec2 a = toGrid(pixel[static_cast<std::size_t>(triangles[t][0])]);
-    const glm::dvec2 b = toGrid(pixel[static_cast<std::size_t>(triangles[t][1])]);
-    const glm::dvec2 c = toGrid(pixel[static_cast<std::size_t>(triangles[t][2])]);
-    int x0, x1, y0, y1;
-    cellRange(std::min({ a.x, b.x, c.x }), std::max({ a.x, b.x, c.x }), grid.Width, x0, x1);
-    cellRange(std::min({ a.y, b.y, c.y }), std::max({ a.y, b.y, c.y }), grid.Height, y0, y1);
-    for (int y = y0; y <= y1; ++y)
-    {
-      for (int x = x0; x <= x1; ++x)
+      const Triangle& tri = this->Triangles[t];
+      if (!this->usable(tri))
       {
-        if (triangleOverlapsSquare(a, b, c, x, y, 1.0))
+        continue;
+      }
+      const glm::dvec2 a = this->toGrid(this->Pixel[static_cast<std::size_t>(tri[0])]);
+      const glm::dvec2 b = this->toGrid(this->Pixel[static_cast<std::size_t>(tri[1])]);
+      const glm::dvec2 c = this->toGrid(this->Pixel[static_cast<std::size_t>(tri[2])]);
+      int x0, x1, y0, y1;
+      cellRange(std::min({ a.x, b.x, c.x }), std::max({ a.x, b.x, c.x }), grid.Width, x0, x1);
+      cellRange(std::min({ a.y, b.y, c.y }), std::max({ a.y, b.y, c.y }), grid.Height, y0, y1);
+      for (int y = y0; y <= y1; ++y)
+      {
+        for (int x = x0; x <= x1; ++x)
         {
-          grid.Occupancy[cellIndex(x, y)] = 1;
-          cellsOf[t].push_back(cellIndex(x, y));
+          if (triangleOverlapsSquare(a, b, c, x, y, 1.0))
+          {
+            grid.Occupancy[this->cellIndex(x, y)] = 1;
+            this->CellsOf[t].push_back(this->cellIndex(x, y));
+          }
         }
       }
     }
   }
 
-  // 2. External contour: flood the background from the grid's border.
-  std::vector<unsigned char> outside(cells, 0);
-  std::vector<std::size_t> stack;
-  auto seed = [&](int x, int y) {
-    const std::size_t i = cellIndex(x, y);
-    if (!grid.Occupancy[i] && !outside[i])
+  // 2. External contour: flood the background from the grid's border; empty
+  // cells it does not reach are holes inside the object (occupancy 2).
+  void markOutside()
+  {
+    ProximityGrid& grid = this->Grid;
+    std::vector<unsigned char> outside(this->Cells, 0);
+    std::vector<std::size_t> stack;
+    auto seed = [&](int x, int y) {
+      const std::size_t i = this->cellIndex(x, y);
+      if (!grid.Occupancy[i] && !outside[i])
+      {
+        outside[i] = 1;
+        stack.push_back(i);
+      }
+    };
+    for (int x = 0; x < grid.Width; ++x)
     {
-      outside[i] = 1;
-      stack.push_back(i);
+      seed(x, 0);
+      seed(x, grid.Height - 1);
     }
-  };
-  for (int x = 0; x < grid.Width; ++x)
-  {
-    seed(x, 0);
-    seed(x, grid.Height - 1);
-  }
-  for (int y = 0; y < grid.Height; ++y)
-  {
-    seed(0, y);
-    seed(grid.Width - 1, y);
-  }
-  while (!stack.empty())
-  {
-    const std::size_t i = stack.back();
-    stack.pop_back();
-    const int x = static_cast<int>(i % static_cast<std::size_t>(grid.Width));
-    const int y = static_cast<int>(i / static_cast<std::size_t>(grid.Width));
-    if (x > 0)
-      seed(x - 1, y);
-    if (x + 1 < grid.Width)
-      seed(x + 1, y);
-    if (y > 0)
-      seed(x, y - 1);
-    if (y + 1 < grid.Height)
-      seed(x, y + 1);
-  }
-  std::vector<unsigned char> object(cells, 0);
-  for (std::size_t i = 0; i < cells; ++i)
-  {
-    if (!grid.Occupancy[i] && !outside[i])
+    for (int y = 0; y < grid.Height; ++y)
     {
-      grid.Occupancy[i] = 2;
+      seed(0, y);
+      seed(grid.Width - 1, y);
     }
-    object[i] = grid.Occupancy[i] ? 1 : 0;
+    while (!stack.empty())
+    {
+      const std::size_t i = stack.back();
+      stack.pop_back();
+      const int x = static_cast<int>(i % static_cast<std::size_t>(grid.Width));
+      const int y = static_cast<int>(i / static_cast<std::size_t>(grid.Width));
+      if (x > 0)
+        seed(x - 1, y);
+      if (x + 1 < grid.Width)
+        seed(x + 1, y);
+      if (y > 0)
+        seed(x, y - 1);
+      if (y + 1 < grid.Height)
+        seed(x, y + 1);
+    }
+    for (std::size_t i = 0; i < this->Cells; ++i)
+    {
+      if (!grid.Occupancy[i] && !outside[i])
+      {
+        grid.Occupancy[i] = 2;
+      }
+    }
   }
 
   // 3. Distance transform, in cells.
-  const std::vector<std::int32_t> chamfer = chamferDistance34(object, grid.Width, grid.Height);
-  grid.Distance.resize(cells);
-  for (std::size_t i = 0; i < cells; ++i)
+  void measureDistances()
   {
-    grid.Distance[i] = chamfer[i] / 3.0;
+    ProximityGrid& grid = this->Grid;
+    std::vector<unsigned char> object(this->Cells, 0);
+    for (std::size_t i = 0; i < this->Cells; ++i)
+    {
+      object[i] = grid.Occupancy[i] ? 1 : 0;
+    }
+    const std::vector<std::int32_t> chamfer = chamferDistance34(object, grid.Width, grid.Height);
+    grid.Distance.resize(this->Cells);
+    for (std::size_t i = 0; i < this->Cells; ++i)
+    {
+      grid.Distance[i] = chamfer[i] / 3.0;
+    }
   }
 
-  // 4. Labels.
-  for (std::size_t t = 0; t < triangles.size(); ++t)
+  // 4. Labels: a triangle's is its nearest cell's, a point's its cell's.
+  void label()
   {
-    double best = -1.0;
-    for (const std::size_t i : cellsOf[t])
+    ProximityGrid& grid = this->Grid;
+    for (std::size_t t = 0; t < this->Triangles.size(); ++t)
     {
-      best = best < 0.0 ? grid.Distance[i] : std::min(best, grid.Distance[i]);
+      double best = -1.0;
+      for (const std::size_t i : this->CellsOf[t])
+      {
+        best = best < 0.0 ? grid.Distance[i] : std::min(best, grid.Distance[i]);
+      }
+      grid.TriangleDistance[t] = best;
     }
-    grid.TriangleDistance[t] = best;
-  }
-  for (std::size_t p = 0; p < points.size(); ++p)
-  {
-    if (!projected[p])
+    for (std::size_t p = 0; p < this->Points.size(); ++p)
     {
-      continue;
+      if (!this->Projected[p])
+      {
+        continue;
+      }
+      const glm::dvec2 g = this->toGrid(this->Pixel[p]);
+      int x, y, unused;
+      cellRange(g.x, g.x, grid.Width, x, unused);
+      cellRange(g.y, g.y, grid.Height, y, unused);
+      grid.PointDistance[p] = grid.Distance[this->cellIndex(x, y)];
     }
-    const glm::dvec2 g = toGrid(pixel[p]);
-    int x, y, unused;
-    cellRange(g.x, g.x, grid.Width, x, unused);
-    cellRange(g.y, g.y, grid.Height, y, unused);
-    grid.PointDistance[p] = grid.Distance[cellIndex(x, y)];
   }
-  return grid;
+
+  const std::vector<glm::dvec3>& Points;
+  const std::vector<Triangle>& Triangles;
+  const int Resolution;
+  ProximityGrid Grid;
+  std::vector<glm::dvec2> Pixel;
+  std::vector<unsigned char> Projected;
+  std::size_t Cells = 0;
+  std::vector<std::vector<std::size_t>> CellsOf;
+};
+
+} // namespace
+
+ProximityGrid silhouetteProximity(const std::vector<glm::dvec3>& points,
+  const std::vector<Triangle>& triangles, const ViewGeometry& view, int resolution)
+{
+  return ProximityBuilder(points, triangles, resolution).build(view);
 }
 
 } // namespace silsmooth

@@ -44,6 +44,7 @@
 #include "ViewGeometry.h"
 
 #include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -132,6 +133,14 @@ public:
     const BoundaryCurveParameters& parameters) const;
 
 private:
+  // smooth()'s steps.
+  std::vector<unsigned char> frontFacing(const ViewGeometry& view) const;
+  void curveEdge(std::size_t e, const ViewGeometry& view, const glm::dmat4& clipToModel,
+    const glm::dmat3& normalToEye, const BoundaryCurveParameters& parameters,
+    std::vector<Id>& edgeCurve, BoundaryCurveResult& result) const;
+  void remeshTriangle(
+    std::size_t t, const std::vector<Id>& edgeCurve, BoundaryCurveResult& result) const;
+
   std::vector<glm::dvec3> Points;
   std::vector<Triangle> Triangles;
   std::vector<glm::dvec3> Normals;

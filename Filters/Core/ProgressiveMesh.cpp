@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <queue>
 #include <stdexcept>
@@ -150,21 +151,32 @@ public:
   }
 
   // The best collapse of edge (a, b), or false when it is not allowed.
-  bool evaluate(Id a, Id b, VertexSplit& best) const
+  // Where a collapse of (a, b) may put the kept point: the border end when
+  // one end is on the border, else either end or the midpoint.
+  struct Placement
+  {
+    Id kept;
+    Id removed;
+    glm::dvec3 v;
+  };
+
+  // The rules a collapse of (a, b) must keep (ProgressiveMesh.h): one or two
+  // triangles on the edge, no pinch between two border points, and the link
+  // condition on vertices and on edges. `onEdge` gets the edge's triangles,
+  // `na` and `nb` the ends' neighbours.
+  bool collapsible(
+    Id a, Id b, std::vector<Id>& onEdge, std::vector<Id>& na, std::vector<Id>& nb) const
   {
     if (this->Frozen[a] || this->Frozen[b])
     {
       return false;
     }
-    const std::vector<Id> onEdge = this->edgeTriangles(a, b);
+    onEdge = this->edgeTriangles(a, b);
     if (onEdge.empty() || onEdge.size() > 2)
     {
       return false;
     }
-    const bool borderEdge = onEdge.size() == 1;
-    const bool aBorder = this->onBorder(a);
-    const bool bBorder = this->onBorder(b);
-    if (aBorder && bBorder && !borderEdge)
+    if (this->onBorder(a) && this->onBorder(b) && onEdge.size() != 1)
     {
       return false;
     }
@@ -181,8 +193,8 @@ public:
       }
     }
     std::sort(far.begin(), far.end());
-    const std::vector<Id> na = this->neighbours(a);
-    const std::vector<Id> nb = this->neighbours(b);
+    na = this->neighbours(a);
+    nb = this->neighbours(b);
     std::vector<Id> common;
     std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
     if (common != far)
@@ -201,37 +213,28 @@ public:
         }
       }
     }
-    // Triangles around a and b, each once.
-    std::vector<Id> around = this->Incident[a];
-    around.insert(around.end(), this->Incident[b].begin(), this->Incident[b].end());
-    std::sort(around.begin(), around.end());
-    around.erase(std::unique(around.begin(), around.end()), around.end());
+    return true;
+  }
 
-    const double length2 = glm::dot(P[a] - P[b], P[a] - P[b]);
-    const double degree = static_cast<double>(na.size() + nb.size());
-
-    struct Option
-    {
-      Id kept;
-      Id removed;
-      glm::dvec3 v;
-    };
-    std::vector<Option> options;
+  std::vector<Placement> placements(Id a, Id b) const
+  {
+    const bool aBorder = this->onBorder(a);
+    const bool bBorder = this->onBorder(b);
     if (aBorder && !bBorder)
     {
-      options.push_back({ a, b, P[a] });
+      return { { a, b, P[a] } };
     }
-    else if (bBorder && !aBorder)
+    if (bBorder && !aBorder)
     {
-      options.push_back({ b, a, P[b] });
+      return { { b, a, P[b] } };
     }
-    else
-    {
-      options.push_back({ a, b, P[a] });
-      options.push_back({ b, a, P[b] });
-      options.push_back({ std::min(a, b), std::max(a, b), 0.5 * (P[a] + P[b]) });
-    }
-    // The border edges at a or b, oriented as in their triangle.
+    return { { a, b, P[a] }, { b, a, P[b] },
+      { std::min(a, b), std::max(a, b), 0.5 * (P[a] + P[b]) } };
+  }
+
+  // The border edges at a or b among `around`, oriented as in their triangle.
+  std::vector<std::pair<Id, Id>> borderEdgesAt(Id a, Id b, const std::vector<Id>& around) const
+  {
     std::vector<std::pair<Id, Id>> borderEdges;
     for (Id t : around)
     {
@@ -246,57 +249,82 @@ public:
         }
       }
     }
-    bool found = false;
-    for (const Option& option : options)
+    return borderEdges;
+  }
+
+  // F_C of putting the merged point at `placement` (ProgressiveMesh.h), or
+  // NaN when a remaining triangle around a or b would turn over.
+  double costOf(const Placement& placement, Id a, Id b, const std::vector<Id>& around,
+    const std::vector<Id>& onEdge, const std::vector<std::pair<Id, Id>>& borderEdges, double degree,
+    double length2) const
+  {
+    double volume = 0.0;
+    for (Id t : around)
     {
-      double volume = 0.0;
-      glm::dvec3 area(0.0);
-      bool flips = false;
-      for (Id t : around)
-      {
-        const Triangle& tri = T[t];
-        const glm::dvec3& p0 = P[tri[0]];
-        const glm::dvec3& p1 = P[tri[1]];
-        const glm::dvec3& p2 = P[tri[2]];
-        volume += glm::dot(option.v - p0, glm::cross(p1 - p0, p2 - p0)) / 6.0;
-        if (std::find(onEdge.begin(), onEdge.end(), t) != onEdge.end())
-        {
-          continue;
-        }
-        glm::dvec3 q[3];
-        for (int k = 0; k < 3; ++k)
-        {
-          q[k] = (tri[k] == a || tri[k] == b) ? option.v : P[tri[k]];
-        }
-        const glm::dvec3 before = normalOf(p0, p1, p2);
-        const glm::dvec3 after = normalOf(q[0], q[1], q[2]);
-        if (!(glm::dot(before, after) > 0.0))
-        {
-          flips = true;
-        }
-      }
-      if (flips)
+      const Triangle& tri = T[t];
+      const glm::dvec3& p0 = P[tri[0]];
+      const glm::dvec3& p1 = P[tri[1]];
+      const glm::dvec3& p2 = P[tri[2]];
+      volume += glm::dot(placement.v - p0, glm::cross(p1 - p0, p2 - p0)) / 6.0;
+      if (std::find(onEdge.begin(), onEdge.end(), t) != onEdge.end())
       {
         continue;
       }
-      for (const auto& [u, w] : borderEdges)
+      glm::dvec3 q[3];
+      for (int k = 0; k < 3; ++k)
       {
-        area += 0.5 * glm::cross(P[u] - option.v, P[w] - option.v);
+        q[k] = (tri[k] == a || tri[k] == b) ? placement.v : P[tri[k]];
       }
-      const double cost = ProgressiveMesh::Lambda * std::abs(volume) * degree +
-        (1.0 - ProgressiveMesh::Lambda) * length2 * glm::length(area);
+      if (!(glm::dot(normalOf(p0, p1, p2), normalOf(q[0], q[1], q[2])) > 0.0))
+      {
+        return std::numeric_limits<double>::quiet_NaN();
+      }
+    }
+    glm::dvec3 area(0.0);
+    for (const auto& [u, w] : borderEdges)
+    {
+      area += 0.5 * glm::cross(P[u] - placement.v, P[w] - placement.v);
+    }
+    return ProgressiveMesh::Lambda * std::abs(volume) * degree +
+      (1.0 - ProgressiveMesh::Lambda) * length2 * glm::length(area);
+  }
+
+  // The cheapest allowed collapse of edge (a, b), as the split that undoes
+  // it; false when the edge may not collapse.
+  bool evaluate(Id a, Id b, VertexSplit& best) const
+  {
+    std::vector<Id> onEdge;
+    std::vector<Id> na;
+    std::vector<Id> nb;
+    if (!this->collapsible(a, b, onEdge, na, nb))
+    {
+      return false;
+    }
+    // Triangles around a and b, each once.
+    std::vector<Id> around = this->Incident[a];
+    around.insert(around.end(), this->Incident[b].begin(), this->Incident[b].end());
+    std::sort(around.begin(), around.end());
+    around.erase(std::unique(around.begin(), around.end()), around.end());
+    const std::vector<std::pair<Id, Id>> borderEdges = this->borderEdgesAt(a, b, around);
+    const double length2 = glm::dot(P[a] - P[b], P[a] - P[b]);
+    const double degree = static_cast<double>(na.size() + nb.size());
+    bool found = false;
+    for (const Placement& placement : this->placements(a, b))
+    {
+      const double cost =
+        this->costOf(placement, a, b, around, onEdge, borderEdges, degree, length2);
       if (!std::isfinite(cost))
       {
-        continue;
+        continue; // a triangle turns over, or no finite cost
       }
       if (!found || cost < best.cost)
       {
         found = true;
         best = VertexSplit();
-        best.kept = option.kept;
-        best.removed = option.removed;
-        best.keptBefore = P[option.kept];
-        best.keptAfter = option.v;
+        best.kept = placement.kept;
+        best.removed = placement.removed;
+        best.keptBefore = P[placement.kept];
+        best.keptAfter = placement.v;
         best.cost = cost;
         best.removedTriangles = onEdge;
       }

@@ -227,6 +227,117 @@ FrameTiming OrbitTimer::Time(vtkPolyData* mesh, FrameFilter filter)
   return timing;
 }
 
+namespace
+{
+
+// PN triangles at result.PNLevel (view-independent: made once, its time is
+// the one-off tessellation), measured from the views.
+vtkSmartPointer<vtkPolyData> MeasurePN(const ModelVersions& model, const ComparisonOptions& options,
+  MaskRenderer& masks, vtkRenderer* framing, ExactOutline& exact, ModelComparison& result)
+{
+  vtkNew<vtkPNTriangleFilter> pnFilter;
+  pnFilter->SetInputData(model.Coarse);
+  pnFilter->SetLevel(result.PNLevel);
+  const Clock::time_point pnStart = Clock::now();
+  pnFilter->Update();
+  result.PN.FilterMilliseconds = Since(pnStart);
+  vtkSmartPointer<vtkPolyData> pn = pnFilter->GetOutput();
+  result.PN.Triangles = static_cast<double>(pn->GetNumberOfPolys());
+  for (int view = 0; view < options.Views; ++view)
+  {
+    PlaceCamera(framing, model.Original, view, options.Views);
+    vtkCamera* camera = framing->GetActiveCamera();
+    const Mask fine = masks.Render(model.Fine, camera);
+    const Mask pnMask = masks.Render(pn, camera);
+    Accumulate(result.PN, OutlineDeviation(pnMask, fine), false, options.Views);
+    if (exact.Exists())
+    {
+      exact.SetView(masks, view, camera);
+      Accumulate(result.PN, exact.From(pnMask), true, options.Views);
+    }
+  }
+  return pn;
+}
+
+// Temporal coherence: an orbit of 1-degree steps from the first view; every
+// variant's outline is compared with its own outline one step before.
+void MeasureCoherence(const ModelVersions& model, const ComparisonOptions& options,
+  MaskRenderer& masks, vtkRenderer* framing, vtkSilhouetteSmoothingFilter* smoother,
+  vtkBoundaryCurveSmoothingFilter* curves, vtkPolyData* pn, ModelComparison& result)
+{
+  VariantFigures* figures[5] = { &result.Coarse, &result.Smoothed, &result.Wang2003, &result.PN,
+    &result.Fine };
+  std::array<Mask, 5> previous;
+  std::array<double, 5> sum{};
+  std::array<double, 5> largest{};
+  std::array<double, 5> excess{};
+  std::array<double, 5> stepMax{};
+  PlaceCamera(framing, model.Original, 0, 1);
+  for (int step = 0; step <= options.CoherenceSteps; ++step)
+  {
+    vtkCamera* camera = framing->GetActiveCamera();
+    if (step > 0)
+    {
+      camera->Azimuth(1.0);
+      framing->ResetCameraClippingRange();
+    }
+    smoother->Update();
+    curves->Update();
+    vtkPolyData* meshes[5] = { model.Coarse, smoother->GetOutput(), curves->GetOutput(), pn,
+      model.Fine };
+    for (int v = 0; v < 5; ++v)
+    {
+      Mask current = masks.Render(meshes[v], camera);
+      if (step > 0)
+      {
+        const BoundaryDistance change = OutlineDeviation(previous[v], current);
+        sum[v] += change.Mean;
+        largest[v] = std::max(largest[v], change.Max);
+        stepMax[v] = change.Max;
+      }
+      previous[v] = std::move(current);
+    }
+    for (int v = 0; step > 0 && v < 5; ++v)
+    {
+      excess[v] = std::max(excess[v], stepMax[v] - stepMax[4]);
+    }
+  }
+  for (int v = 0; v < 5; ++v)
+  {
+    figures[v]->CoherenceMean = sum[v] / options.CoherenceSteps;
+    figures[v]->CoherenceMax = largest[v];
+    figures[v]->CoherenceExcess = excess[v];
+  }
+  for (int v = 0; v < 5; ++v)
+  {
+    figures[v]->CoherenceRatio =
+      result.Fine.CoherenceMean > 0 ? figures[v]->CoherenceMean / result.Fine.CoherenceMean : -1;
+  }
+}
+
+// The whole frame of each variant over an orbit.
+void TimeVariants(const ModelVersions& model, const ComparisonOptions& options, vtkPolyData* pn,
+  ModelComparison& result)
+{
+  OrbitTimer timer(options);
+  for (auto [mesh, filter, figures] :
+    { std::make_tuple(model.Coarse.Get(), FrameFilter::None, &result.Coarse),
+      std::make_tuple(model.Coarse.Get(), FrameFilter::Smoothing2008, &result.Smoothed),
+      std::make_tuple(model.Coarse.Get(), FrameFilter::BoundaryCurves2003, &result.Wang2003),
+      std::make_tuple(pn, FrameFilter::None, &result.PN),
+      std::make_tuple(model.Fine.Get(), FrameFilter::None, &result.Fine) })
+  {
+    const FrameTiming timing = timer.Time(mesh, filter);
+    figures->FrameMilliseconds = timing.FrameMilliseconds;
+    if (filter != FrameFilter::None)
+    {
+      figures->FilterMilliseconds = timing.FilterMilliseconds;
+    }
+  }
+}
+
+} // namespace
+
 ModelComparison CompareModel(const ModelVersions& model, const ComparisonOptions& options)
 {
   auto progress = [&](const std::string& what) {
@@ -294,103 +405,16 @@ ModelComparison CompareModel(const ModelVersions& model, const ComparisonOptions
   result.Coarse.Triangles = static_cast<double>(model.Coarse->GetNumberOfPolys());
   result.Fine.Triangles = static_cast<double>(model.Fine->GetNumberOfPolys());
 
-  // PN triangles at the level whose count is nearest ours (view-independent:
-  // made once, its time is the one-off tessellation).
   result.PNLevel = NearestPNLevel(result.Coarse.Triangles, result.Smoothed.Triangles);
   progress("PN triangles at level " + std::to_string(result.PNLevel));
-  vtkNew<vtkPNTriangleFilter> pnFilter;
-  pnFilter->SetInputData(model.Coarse);
-  pnFilter->SetLevel(result.PNLevel);
-  const Clock::time_point pnStart = Clock::now();
-  pnFilter->Update();
-  result.PN.FilterMilliseconds = Since(pnStart);
-  vtkSmartPointer<vtkPolyData> pn = pnFilter->GetOutput();
-  result.PN.Triangles = static_cast<double>(pn->GetNumberOfPolys());
-  for (int view = 0; view < options.Views; ++view)
-  {
-    PlaceCamera(framing, model.Original, view, options.Views);
-    vtkCamera* camera = framing->GetActiveCamera();
-    const Mask fine = masks.Render(model.Fine, camera);
-    const Mask pnMask = masks.Render(pn, camera);
-    Accumulate(result.PN, OutlineDeviation(pnMask, fine), false, options.Views);
-    if (exact.Exists())
-    {
-      exact.SetView(masks, view, camera);
-      Accumulate(result.PN, exact.From(pnMask), true, options.Views);
-    }
-  }
-
-  // Temporal coherence: an orbit of 1-degree steps from the first view; every
-  // variant's outline is compared with its own outline one step before.
+  vtkSmartPointer<vtkPolyData> pn = MeasurePN(model, options, masks, framing, exact, result);
   if (options.CoherenceSteps > 0)
   {
     progress("coherence over " + std::to_string(options.CoherenceSteps) + " 1-degree steps");
-    VariantFigures* figures[5] = { &result.Coarse, &result.Smoothed, &result.Wang2003, &result.PN,
-      &result.Fine };
-    std::array<Mask, 5> previous;
-    std::array<double, 5> sum{};
-    std::array<double, 5> largest{};
-    std::array<double, 5> excess{};
-    std::array<double, 5> stepMax{};
-    PlaceCamera(framing, model.Original, 0, 1);
-    for (int step = 0; step <= options.CoherenceSteps; ++step)
-    {
-      vtkCamera* camera = framing->GetActiveCamera();
-      if (step > 0)
-      {
-        camera->Azimuth(1.0);
-        framing->ResetCameraClippingRange();
-      }
-      smoother->Update();
-      curves->Update();
-      vtkPolyData* meshes[5] = { model.Coarse, smoother->GetOutput(), curves->GetOutput(), pn,
-        model.Fine };
-      for (int v = 0; v < 5; ++v)
-      {
-        Mask current = masks.Render(meshes[v], camera);
-        if (step > 0)
-        {
-          const BoundaryDistance change = OutlineDeviation(previous[v], current);
-          sum[v] += change.Mean;
-          largest[v] = std::max(largest[v], change.Max);
-          stepMax[v] = change.Max;
-        }
-        previous[v] = std::move(current);
-      }
-      for (int v = 0; step > 0 && v < 5; ++v)
-      {
-        excess[v] = std::max(excess[v], stepMax[v] - stepMax[4]);
-      }
-    }
-    for (int v = 0; v < 5; ++v)
-    {
-      figures[v]->CoherenceMean = sum[v] / options.CoherenceSteps;
-      figures[v]->CoherenceMax = largest[v];
-      figures[v]->CoherenceExcess = excess[v];
-    }
-    for (int v = 0; v < 5; ++v)
-    {
-      figures[v]->CoherenceRatio =
-        result.Fine.CoherenceMean > 0 ? figures[v]->CoherenceMean / result.Fine.CoherenceMean : -1;
-    }
+    MeasureCoherence(model, options, masks, framing, smoother, curves, pn, result);
   }
-
   progress("timing " + std::to_string(options.TimedFrames) + " orbit frames of each variant");
-  OrbitTimer timer(options);
-  for (auto [mesh, filter, figures] :
-    { std::make_tuple(model.Coarse.Get(), FrameFilter::None, &result.Coarse),
-      std::make_tuple(model.Coarse.Get(), FrameFilter::Smoothing2008, &result.Smoothed),
-      std::make_tuple(model.Coarse.Get(), FrameFilter::BoundaryCurves2003, &result.Wang2003),
-      std::make_tuple(pn.Get(), FrameFilter::None, &result.PN),
-      std::make_tuple(model.Fine.Get(), FrameFilter::None, &result.Fine) })
-  {
-    const FrameTiming timing = timer.Time(mesh, filter);
-    figures->FrameMilliseconds = timing.FrameMilliseconds;
-    if (filter != FrameFilter::None)
-    {
-      figures->FilterMilliseconds = timing.FilterMilliseconds;
-    }
-  }
+  TimeVariants(model, options, pn, result);
   return result;
 }
 

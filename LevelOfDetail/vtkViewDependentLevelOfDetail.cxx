@@ -14,14 +14,17 @@
 
 #include "QuadricSimplifier.h"
 #include "SelectiveRefinement.h"
+#include "SurfaceWelding.h"
 #include "VertexHierarchy.h"
 #include "ViewRefinementTest.h"
 #include "vtkSilhouetteFilterSupport.h"
 
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 
 vtkStandardNewMacro(vtkViewDependentLevelOfDetail);
 
@@ -45,6 +48,20 @@ void vtkViewDependentLevelOfDetail::SetBaseTriangles(vtkIdType count)
   }
 }
 
+namespace
+{
+
+// The input's tables the output needs: per triangle its input cell and its
+// input points, per point its welded vertex.
+struct InputTables
+{
+  std::vector<vtkIdType> CellIds;
+  std::vector<silsmooth::Triangle> InputCorners;
+  std::vector<silsmooth::Id> Vertex;
+};
+
+} // namespace
+
 // The hierarchy of the input it was built for, and the cut that follows the view.
 struct vtkViewDependentLevelOfDetail::Internals
 {
@@ -53,19 +70,20 @@ struct vtkViewDependentLevelOfDetail::Internals
   vtkIdType Base = -1;
   std::unique_ptr<silsmooth::VertexHierarchy> Hierarchy;
   std::unique_ptr<silsmooth::SelectiveRefinement> Cut;
-  std::vector<vtkIdType> CellIds; // per input triangle: its input cell
+  bool Weld = true;
+  InputTables Tables;
 
-  bool builtFor(vtkPolyData* input, vtkIdType base) const
+  bool builtFor(vtkPolyData* input, vtkIdType base, bool weld) const
   {
     return this->Hierarchy && this->Input == input && this->InputTime == input->GetMTime() &&
-      this->Base == base;
+      this->Base == base && this->Weld == weld;
   }
   void clear()
   {
     this->Cut.reset();
     this->Hierarchy.reset();
     this->Input = nullptr;
-    this->CellIds.clear();
+    this->Tables = InputTables();
   }
 };
 
@@ -82,14 +100,22 @@ vtkViewDependentLevelOfDetail::~vtkViewDependentLevelOfDetail() = default;
 namespace
 {
 
-// Builds the hierarchy of `input`; returns an error to report, or "".
-std::string BuildHierarchy(vtkPolyData* input, vtkIdType base, vtkAlgorithm* self,
-  std::unique_ptr<silsmooth::VertexHierarchy>& hierarchy, std::vector<vtkIdType>& cellIds)
+// Builds the hierarchy of `input` (on its welded surface when `weld`), and
+// fills `internal`; returns an error to report, "aborted", or "".
+std::string BuildHierarchy(vtkPolyData* input, vtkIdType base, bool weld, vtkAlgorithm* self,
+  std::unique_ptr<silsmooth::VertexHierarchy>& hierarchy, InputTables& internal)
 {
   vtkSilhouetteFilterSupport::Triangles mesh;
   std::string error = vtkSilhouetteFilterSupport::ReadFiniteTriangles(input, mesh);
   if (!error.empty())
     return error;
+  internal.Vertex.resize(mesh.Points.size());
+  if (weld)
+    internal.Vertex = silsmooth::weldCoincidentPoints(mesh.Points);
+  else
+    std::iota(internal.Vertex.begin(), internal.Vertex.end(), silsmooth::Id(0));
+  const std::vector<silsmooth::Triangle> cells =
+    weld ? silsmooth::weldTriangles(mesh.Cells, internal.Vertex) : mesh.Cells;
   silsmooth::SimplificationParameters parameters;
   parameters.TargetTriangles = static_cast<std::size_t>(std::max<vtkIdType>(base, 4));
   parameters.RecordSequence = true;
@@ -99,19 +125,54 @@ std::string BuildHierarchy(vtkPolyData* input, vtkIdType base, vtkAlgorithm* sel
     return !self->GetAbortExecute();
   };
   const silsmooth::SimplificationResult result =
-    silsmooth::simplifyQuadric(mesh.Points, mesh.Cells, parameters);
+    silsmooth::simplifyQuadric(mesh.Points, cells, parameters);
   if (result.Aborted)
     return "aborted";
   auto built = std::make_unique<silsmooth::VertexHierarchy>(
-    mesh.Points, mesh.Cells, result.Sequence, mesh.Normals, [self](double done) {
+    mesh.Points, cells, result.Sequence, mesh.Normals, [self](double done) {
       self->UpdateProgress(0.8 + 0.15 * done);
       return !self->GetAbortExecute();
     });
   if (built->aborted())
     return "aborted";
   hierarchy = std::move(built);
-  cellIds.assign(mesh.CellIds.begin(), mesh.CellIds.end());
+  internal.CellIds.assign(mesh.CellIds.begin(), mesh.CellIds.end());
+  internal.InputCorners = std::move(mesh.Cells);
   return "";
+}
+
+// The cut's mesh with each corner given back as its triangle's own input
+// point where the triangle still has that vertex (so texture seams and hard
+// edges keep their copies wherever the mesh is at full resolution), else as
+// the welded vertex; every copy at its vertex's position in the cut.
+silsmooth::ExtractedMesh WithInputCopies(const silsmooth::ExtractedMesh& cut,
+  const std::vector<silsmooth::Triangle>& inputCorners, const std::vector<silsmooth::Id>& vertex)
+{
+  silsmooth::ExtractedMesh out;
+  out.TriangleIds = cut.TriangleIds;
+  out.Triangles.resize(cut.Triangles.size());
+  std::unordered_map<silsmooth::Id, silsmooth::Id> outputOf; // input copy -> output point
+  for (std::size_t t = 0; t < cut.Triangles.size(); ++t)
+  {
+    const silsmooth::Triangle& own = inputCorners[static_cast<std::size_t>(cut.TriangleIds[t])];
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      const std::size_t at = static_cast<std::size_t>(cut.Triangles[t][k]);
+      const silsmooth::Id v = cut.PointIds[at];
+      silsmooth::Id copy = v;
+      for (const silsmooth::Id c : own)
+        copy = vertex[static_cast<std::size_t>(c)] == v ? c : copy;
+      const auto [it, added] =
+        outputOf.emplace(copy, static_cast<silsmooth::Id>(out.PointIds.size()));
+      if (added)
+      {
+        out.PointIds.push_back(copy);
+        out.Points.push_back(cut.Points[at]);
+      }
+      out.Triangles[t][k] = it->second;
+    }
+  }
+  return out;
 }
 
 } // namespace
@@ -175,8 +236,9 @@ void CopyTuples(vtkDataSetAttributes* in, vtkDataSetAttributes* out,
 
 // The input's own (angle-weighted) normals, when it gives none: a coarse part
 // is then shaded as the fine surface is, not as its few facets are.
-void AddComputedNormals(
-  const std::vector<glm::dvec3>& normals, const std::vector<vtkIdType>& pointIds, vtkPointData* out)
+void AddComputedNormals(const std::vector<glm::dvec3>& normals,
+  const std::vector<silsmooth::Id>& vertex, const std::vector<vtkIdType>& pointIds,
+  vtkPointData* out)
 {
   vtkNew<vtkFloatArray> outNormals;
   outNormals->SetName("Normals");
@@ -184,7 +246,8 @@ void AddComputedNormals(
   outNormals->SetNumberOfTuples(static_cast<vtkIdType>(pointIds.size()));
   for (std::size_t i = 0; i < pointIds.size(); ++i)
   {
-    const glm::dvec3& n = normals[static_cast<std::size_t>(pointIds[i])];
+    const glm::dvec3& n =
+      normals[static_cast<std::size_t>(vertex[static_cast<std::size_t>(pointIds[i])])];
     outNormals->SetTuple3(static_cast<vtkIdType>(i), n.x, n.y, n.z);
   }
   out->SetNormals(outNormals);
@@ -207,14 +270,15 @@ void AddCount(vtkPolyData* output, const char* name, double first, double second
 int vtkViewDependentLevelOfDetail::EnsureHierarchy(vtkPolyData* input)
 {
   Internals& internal = *this->Internal;
-  if (internal.builtFor(input, this->BaseTriangles))
+  if (internal.builtFor(input, this->BaseTriangles, this->WeldCoincidentPoints))
     return 1;
   internal.clear();
   std::unique_ptr<silsmooth::VertexHierarchy> hierarchy;
   std::string error;
   try
   {
-    error = BuildHierarchy(input, this->BaseTriangles, this, hierarchy, internal.CellIds);
+    error = BuildHierarchy(
+      input, this->BaseTriangles, this->WeldCoincidentPoints, this, hierarchy, internal.Tables);
   }
   catch (const std::invalid_argument& e)
   {
@@ -234,12 +298,22 @@ int vtkViewDependentLevelOfDetail::EnsureHierarchy(vtkPolyData* input)
                                    << " line cells are left out: only surfaces are refined.");
   }
   if (hierarchy->baseFaces().empty())
+  {
     vtkWarningMacro("The input has no triangles to refine: the output is empty.");
+  }
+  else if (hierarchy->nodeCount() == 0 && hierarchy->baseFaces().size() > 4)
+  {
+    vtkWarningMacro("No edge of the input could be collapsed (each is on a border or shared by "
+                    "more than two triangles"
+      << (this->WeldCoincidentPoints ? "" : "; WeldCoincidentPoints is off")
+      << "): every view gets the whole input.");
+  }
   internal.Hierarchy = std::move(hierarchy);
   internal.Cut = std::make_unique<silsmooth::SelectiveRefinement>(*internal.Hierarchy);
   internal.Input = input;
   internal.InputTime = input->GetMTime();
   internal.Base = this->BaseTriangles;
+  internal.Weld = this->WeldCoincidentPoints;
   return 1;
 }
 
@@ -280,16 +354,21 @@ int vtkViewDependentLevelOfDetail::RequestViewData(vtkInformation*,
     silsmooth::ViewRefinementTest(*internal.Hierarchy, view.Geometry, this->Tolerances()));
   this->UpdateProgress(0.97);
 
-  silsmooth::ExtractedMesh mesh;
-  internal.Cut->extract(mesh);
+  silsmooth::ExtractedMesh cut;
+  internal.Cut->extract(cut);
+  const silsmooth::ExtractedMesh mesh =
+    WithInputCopies(cut, internal.Tables.InputCorners, internal.Tables.Vertex);
   WriteMesh(mesh, output);
   const std::vector<vtkIdType> pointIds(mesh.PointIds.begin(), mesh.PointIds.end());
   CopyTuples(input->GetPointData(), output->GetPointData(), pointIds, "OriginalPointId");
   if (!output->GetPointData()->GetNormals())
-    AddComputedNormals(internal.Hierarchy->pointNormals(), pointIds, output->GetPointData());
+  {
+    AddComputedNormals(
+      internal.Hierarchy->pointNormals(), internal.Tables.Vertex, pointIds, output->GetPointData());
+  }
   std::vector<vtkIdType> cellIds(mesh.TriangleIds.size());
   for (std::size_t t = 0; t < cellIds.size(); ++t)
-    cellIds[t] = internal.CellIds[static_cast<std::size_t>(mesh.TriangleIds[t])];
+    cellIds[t] = internal.Tables.CellIds[static_cast<std::size_t>(mesh.TriangleIds[t])];
   CopyTuples(input->GetCellData(), output->GetCellData(), cellIds, "OriginalCellId");
 
   AddCount(output, "LevelOfDetailSplits", static_cast<double>(internal.Cut->appliedCount()),
@@ -313,4 +392,5 @@ void vtkViewDependentLevelOfDetail::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "HysteresisAngle: " << this->HysteresisAngle << "\n";
   os << indent << "FrustumCulling: " << this->FrustumCulling << "\n";
   os << indent << "BaseTriangles: " << this->BaseTriangles << "\n";
+  os << indent << "WeldCoincidentPoints: " << this->WeldCoincidentPoints << "\n";
 }

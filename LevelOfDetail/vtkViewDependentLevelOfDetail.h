@@ -114,6 +114,20 @@ public:
   vtkGetMacro(BaseTriangles, vtkIdType);
   ///@}
 
+  ///@{
+  /**
+   * Points at one position are one vertex of the hierarchy (default on), so
+   * that the copies asset files keep along texture seams and hard edges, and
+   * triangle soups, do not cut the surface into pieces that cannot be
+   * simplified. Where the mesh is at full resolution each triangle keeps its
+   * own copies (and their point data); where it is coarser a corner may be
+   * another copy of the same position. Changing it rebuilds the hierarchy.
+   */
+  vtkSetMacro(WeldCoincidentPoints, bool);
+  vtkGetMacro(WeldCoincidentPoints, bool);
+  vtkBooleanMacro(WeldCoincidentPoints, bool);
+  ///@}
+
 protected:
   vtkViewDependentLevelOfDetail();
   ~vtkViewDependentLevelOfDetail() override;
@@ -129,6 +143,7 @@ protected:
   double HysteresisAngle = 2.0;
   vtkTypeBool FrustumCulling = 1;
   vtkIdType BaseTriangles = 0;
+  bool WeldCoincidentPoints = true;
 
 private:
   vtkViewDependentLevelOfDetail(const vtkViewDependentLevelOfDetail&) = delete;

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <limits>
 #include <queue>
+#include <unordered_map>
 
 namespace silsmooth
 {
@@ -136,6 +137,7 @@ public:
       }
       i = j;
     }
+    this->lockPinchedPoints();
     sides.erase(std::unique(sides.begin(), sides.end()), sides.end());
     for (const auto& [a, b] : sides)
     {
@@ -230,6 +232,46 @@ public:
 
 private:
   const glm::dvec3& P(Id v) const { return this->Points[static_cast<std::size_t>(v)]; }
+
+  // Points whose triangles form more than one fan around them (triangles
+  // around the point joined through the edges at it): a collapse there would
+  // need a disk around the point.
+  void lockPinchedPoints()
+  {
+    std::vector<std::size_t> parent;
+    std::unordered_map<Id, std::size_t> faceAcross; // other corner -> first face index here
+    for (std::size_t v = 0; v < this->FacesOf.size(); ++v)
+    {
+      const std::vector<Id>& faces = this->FacesOf[v];
+      if (faces.size() < 2 || this->Locked[v])
+        continue;
+      parent.resize(faces.size());
+      for (std::size_t i = 0; i < faces.size(); ++i)
+        parent[i] = i;
+      const auto root = [&parent](std::size_t i) {
+        while (parent[i] != i)
+          i = parent[i] = parent[parent[i]];
+        return i;
+      };
+      faceAcross.clear();
+      for (std::size_t i = 0; i < faces.size(); ++i)
+      {
+        for (const Id w : this->Faces[static_cast<std::size_t>(faces[i])])
+        {
+          if (w == static_cast<Id>(v))
+            continue;
+          const auto [it, added] = faceAcross.emplace(w, i);
+          if (!added)
+            parent[root(i)] = root(it->second);
+        }
+      }
+      std::size_t fans = 0;
+      for (std::size_t i = 0; i < faces.size(); ++i)
+        fans += root(i) == i ? 1 : 0;
+      if (fans > 1)
+        this->Locked[v] = 1;
+    }
+  }
 
   // Whether there is a candidate left; with IndependentRounds, an empty heap
   // starts the next round with the collapses this one deferred.
@@ -384,6 +426,28 @@ private:
     std::vector<Id> common;
     std::set_intersection(na.begin(), na.end(), nb.begin(), nb.end(), std::back_inserter(common));
     if (common != opposite)
+    {
+      return false;
+    }
+    // Link condition, edges: the opposite corners c, d must not make a
+    // triangle with a and one with b (an edge of a tetrahedron: collapsing it
+    // would fold two triangles onto each other).
+    int ends = 0;
+    for (const Id v : { a, b })
+    {
+      for (const Id f : this->FacesOf[static_cast<std::size_t>(v)])
+      {
+        const Triangle& t = this->Faces[static_cast<std::size_t>(f)];
+        if (this->FaceAlive[static_cast<std::size_t>(f)] &&
+          std::count(t.begin(), t.end(), opposite[0]) == 1 &&
+          std::count(t.begin(), t.end(), opposite[1]) == 1)
+        {
+          ++ends;
+          break;
+        }
+      }
+    }
+    if (ends == 2)
     {
       return false;
     }

@@ -21,10 +21,14 @@
 // target may then be out of reach (ReachedTarget tells).
 //
 // Topology: an edge collapses only when the link condition holds (the
-// points next to both ends are exactly the two opposite corners), it has
+// points next to both ends are exactly the two opposite corners, and those
+// two do not make a triangle with each end: a tetrahedron's edge would fold
+// two triangles onto each other), it has
 // exactly two triangles, and no remaining triangle around it turns over or
 // degenerates; so a closed manifold stays a closed manifold of the same
-// genus. Points on boundary or non-manifold edges never move.
+// genus. Points on boundary or non-manifold edges never move, nor do points
+// whose triangles form more than one fan around them (two sheets touching
+// at a point): no collapse involves them.
 #pragma once
 
 #include "MeshTopology.h"

@@ -170,3 +170,56 @@ TEST(QuadricSimplifier, OpenMeshKeepsItsBoundary)
       if (i == 0 || j == 0 || i == n || j == n)
         EXPECT_TRUE(kept.count(j * (n + 1) + i));
 }
+
+// The edge link condition: a small closed component (a tetrahedron beside a
+// sphere) is not folded into two triangles back to back when the budget asks
+// for fewer triangles than the sphere can give; every edge keeps two
+// triangles, and the component its four.
+TEST(QuadricSimplifier, ATetrahedronIsNotFolded)
+{
+  Sphere sphere(12, 24);
+  const Id base = static_cast<Id>(sphere.Points.size());
+  for (const glm::dvec3& p :
+    { glm::dvec3(3, 0, 0), glm::dvec3(3.1, 0, 0), glm::dvec3(3, 0.1, 0), glm::dvec3(3, 0, 0.1) })
+    sphere.Points.push_back(p);
+  for (const Triangle& t :
+    std::vector<Triangle>{ { 0, 2, 1 }, { 0, 1, 3 }, { 0, 3, 2 }, { 1, 2, 3 } })
+    sphere.Triangles.push_back({ base + t[0], base + t[1], base + t[2] });
+  SimplificationParameters parameters;
+  parameters.TargetTriangles = 4;
+  const SimplificationResult result = simplifyQuadric(sphere.Points, sphere.Triangles, parameters);
+  EXPECT_TRUE(coretest::checkManifold(result.Triangles).closedManifold());
+  std::size_t onTetrahedron = 0;
+  for (const Triangle& t : result.Triangles)
+    onTetrahedron += result.SourcePoint[static_cast<std::size_t>(t[0])] >= base ? 1 : 0;
+  EXPECT_EQ(onTetrahedron, 4u);
+}
+
+// Two spheres touching at one point (their poles welded): the shared point's
+// triangles make two fans, and no collapse may involve it, so every
+// collapse's end has a disk around it (what a vertex hierarchy needs).
+TEST(QuadricSimplifier, APinchedPointStays)
+{
+  Sphere first(10, 20);
+  Sphere second(10, 20);
+  const Id offset = static_cast<Id>(first.Points.size());
+  for (glm::dvec3 p : second.Points)
+    first.Points.push_back(p * glm::dvec3(1, 1, -1) + glm::dvec3(0, 0, 2)); // pole 0 at (0, 0, 1)
+  for (const Triangle& t : second.Triangles)
+  {
+    Triangle u = { t[0] + offset, t[2] + offset, t[1] + offset }; // mirrored: turn back outward
+    for (Id& v : u)
+      v = v == offset ? 0 : v; // the second north pole is the first's
+    first.Triangles.push_back(u);
+  }
+  SimplificationParameters parameters;
+  parameters.TargetTriangles = 8;
+  parameters.RecordSequence = true;
+  const SimplificationResult result = simplifyQuadric(first.Points, first.Triangles, parameters);
+  EXPECT_GT(result.Sequence.size(), 100u);
+  for (const CollapseRecord& c : result.Sequence)
+  {
+    EXPECT_NE(c.Kept, 0);
+    EXPECT_NE(c.Removed, 0);
+  }
+}

@@ -68,6 +68,15 @@ void SelectiveRefinement::removeFace(Index face)
   }
 }
 
+void SelectiveRefinement::renameCorner(Index face, Id from, Id to)
+{
+  for (Id& v : this->Corners[static_cast<std::size_t>(face)])
+    v = v == from ? to : v;
+  std::vector<Index>& list = this->FacesOf[static_cast<std::size_t>(from)];
+  list.erase(std::find(list.begin(), list.end(), face));
+  this->FacesOf[static_cast<std::size_t>(to)].push_back(face);
+}
+
 Id SelectiveRefinement::sharedPoint(Index a, Index b, Id kept) const
 {
   const Triangle& ta = this->corners(a);
@@ -122,12 +131,7 @@ void SelectiveRefinement::apply(Index node)
   const Id right = this->sharedPoint(fn[2], fn[3], n.Kept);
   this->fanBetween(n.Kept, fn[1], fn[3], left, this->Fan);
   for (const Index face : this->Fan)
-  {
-    this->removeFace(face);
-    for (Id& v : this->Corners[static_cast<std::size_t>(face)])
-      v = v == n.Kept ? n.Removed : v;
-    this->addFace(face);
-  }
+    this->renameCorner(face, n.Kept, n.Removed);
   const Id roleLeft[3] = { n.Kept, n.Removed, left };
   const Id roleRight[3] = { n.Kept, n.Removed, right };
   for (std::size_t k = 0; k < 3; ++k)
@@ -165,12 +169,7 @@ void SelectiveRefinement::undo(Index node)
   this->removeFace(n.RightFace);
   this->Fan = this->FacesOf[static_cast<std::size_t>(n.Removed)];
   for (const Index face : this->Fan)
-  {
-    this->removeFace(face);
-    for (Id& v : this->Corners[static_cast<std::size_t>(face)])
-      v = v == n.Removed ? n.Kept : v;
-    this->addFace(face);
-  }
+    this->renameCorner(face, n.Removed, n.Kept);
   this->Positions[static_cast<std::size_t>(n.Kept)] = n.KeptCoarse;
   this->Applied[static_cast<std::size_t>(node)] = 0;
   --this->AppliedNodes;

@@ -119,6 +119,9 @@ private:
   void fanBetween(Id kept, Index first, Index last, Id wedge, std::vector<Index>& fan) const;
   void addFace(Index face);
   void removeFace(Index face);
+  // Face keeps being active; its corner `from` becomes `to` (moving it
+  // between the two points' lists).
+  void renameCorner(Index face, Id from, Id to);
   // Applies `node` after its unapplied parents, adding each to `applied`.
   void applyWithParents(Index node, std::vector<Index>& applied);
 

@@ -35,6 +35,7 @@ ViewRefinementTest::ViewRefinementTest(const VertexHierarchy& hierarchy, const V
   const double sx = 0.5 * view.ViewportWidth * glm::length(glm::dvec3(this->Rows[0]));
   const double sy = 0.5 * view.ViewportHeight * glm::length(glm::dvec3(this->Rows[1]));
   this->PixelsPerClipUnit = std::max(sx, sy);
+  this->DepthPerUnit = glm::length(glm::dvec3(this->Rows[3]));
   this->Margin = std::max(0.0, tolerances.ContourMarginDegrees) * DegreesToRadians;
   this->HysteresisMargin = std::max(0.0, tolerances.HysteresisDegrees) * DegreesToRadians;
 }
@@ -55,16 +56,15 @@ ViewRefinementTest::NodeClass ViewRefinementTest::classify(
   }
   if (n.Normals.HalfAngle < 0.0)
     return NodeClass::Front; // no triangle with a normal: nothing to draw an outline
-  glm::dvec3 toward = this->View.towardViewerFrom(sphere.Center);
+  const glm::dvec3 toward = this->View.towardViewerFrom(sphere.Center);
+  const double towardLength = glm::length(toward);
   double seen = 0.0; // the sphere's angular radius from the eye
   if (!this->View.Parallel)
   {
-    const double distance = glm::length(toward);
-    if (distance <= sphere.Radius)
+    if (towardLength <= sphere.Radius)
       return NodeClass::Contour;
-    seen = std::asin(sphere.Radius / distance);
+    seen = std::asin(sphere.Radius / towardLength);
   }
-  const double towardLength = glm::length(toward);
   if (!(towardLength > 0.0))
     return NodeClass::Contour;
   const double angle =
@@ -80,8 +80,8 @@ ViewRefinementTest::NodeClass ViewRefinementTest::classify(
 double ViewRefinementTest::screenError(VertexHierarchy::Index node) const
 {
   const VertexHierarchy::Node& n = this->Hierarchy.node(node);
-  const double nearestW = glm::dot(this->Rows[3], glm::dvec4(n.Bound.Center, 1.0)) -
-    n.Bound.Radius * glm::length(glm::dvec3(this->Rows[3]));
+  const double nearestW =
+    glm::dot(this->Rows[3], glm::dvec4(n.Bound.Center, 1.0)) - n.Bound.Radius * this->DepthPerUnit;
   if (!(nearestW > 1e-12))
     return std::numeric_limits<double>::infinity();
   return n.Error * this->PixelsPerClipUnit / nearestW;

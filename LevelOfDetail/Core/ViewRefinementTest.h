@@ -84,6 +84,7 @@ private:
   glm::dvec4 Rows[4];           // rows of ModelToClip
   glm::dvec4 SidePlanes[4];     // x >= -w, x <= w, y >= -w, y <= w, unit normals
   double PixelsPerClipUnit = 0; // half the larger viewport side per unit of x/w or y/w
+  double DepthPerUnit = 0;      // how fast w changes per model unit, at most
   double Margin = 0.0;
   double HysteresisMargin = 0.0;
 };

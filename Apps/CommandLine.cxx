@@ -309,6 +309,20 @@ std::optional<RenderStyle> ParseRenderStyle(const std::string& name)
   return std::nullopt;
 }
 
+// The value of --style; a usage error names the styles.
+RenderStyle TakeRenderStyle(const Option& option, ArgumentList& arguments)
+{
+  const std::string name = arguments.TakeValue(option);
+  const std::optional<RenderStyle> style = ParseRenderStyle(name);
+  if (!style)
+  {
+    throw UsageError("option '--style' needs shaded, wireframe, new-geometry, lines, charcoal, "
+                     "lazy, hand or rough, got '" +
+      name + "'");
+  }
+  return *style;
+}
+
 ViewOptions ParseView(ArgumentList& arguments, RenderBackend& backend)
 {
   ViewOptions options;
@@ -338,16 +352,7 @@ ViewOptions ParseView(ArgumentList& arguments, RenderBackend& backend)
     };
     if (option.Name == "--style")
     {
-      const std::string name = arguments.TakeValue(option);
-      const std::optional<RenderStyle> style = ParseRenderStyle(name);
-      if (!style)
-      {
-        throw UsageError(
-          "option '--style' needs shaded, wireframe, new-geometry, lines, charcoal, lazy, "
-          "hand or rough, got '" +
-          name + "'");
-      }
-      options.Style = *style;
+      options.Style = TakeRenderStyle(option, arguments);
     }
     else if (option.Name == "--no-smoothing")
     {
@@ -522,16 +527,7 @@ RenderOptions ParseRender(
     }
     else if (option.Name == "--style")
     {
-      const std::string name = args.TakeValue(option);
-      const std::optional<RenderStyle> style = ParseRenderStyle(name);
-      if (!style)
-      {
-        throw UsageError(
-          "option '--style' needs shaded, wireframe, new-geometry, lines, charcoal, lazy, "
-          "hand or rough, got '" +
-          name + "'");
-      }
-      render.Style = *style;
+      render.Style = TakeRenderStyle(option, args);
     }
     else if (option.Name == "--no-smoothing")
     {

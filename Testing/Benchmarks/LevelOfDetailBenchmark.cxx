@@ -175,7 +175,21 @@ void PlaceCamera(vtkCamera* camera, vtkPolyData* mesh, int frame, int frames)
   camera->SetClippingRange(0.1 * d, 3.0 * d);
 }
 
-double Largest(const std::vector<double>& values);
+double Mean(const std::vector<double>& values)
+{
+  double sum = 0.0;
+  for (const double v : values)
+    sum += v;
+  return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
+}
+
+double Largest(const std::vector<double>& values)
+{
+  double largest = 0.0;
+  for (const double v : values)
+    largest = std::max(largest, v);
+  return largest;
+}
 
 void Measure(Variant& v, vtkPolyData* full, int frame, int frames,
   silhouette_eval::MaskRenderer& masks, const silhouette_eval::Mask& fullMask)
@@ -205,22 +219,6 @@ void Measure(Variant& v, vtkPolyData* full, int frame, int frames,
   if (!v.Previous.Covered.empty())
     v.Change.push_back(silhouette_eval::OutlineDeviation(mask, v.Previous).Mean);
   v.Previous = mask;
-}
-
-double Mean(const std::vector<double>& values)
-{
-  double sum = 0.0;
-  for (const double v : values)
-    sum += v;
-  return values.empty() ? 0.0 : sum / static_cast<double>(values.size());
-}
-
-double Largest(const std::vector<double>& values)
-{
-  double largest = 0.0;
-  for (const double v : values)
-    largest = std::max(largest, v);
-  return largest;
 }
 
 void RunLevel(const Options& options, int level)

@@ -54,6 +54,16 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
   : InputPointCount(points.size())
   , InputTriangles(std::move(triangles))
 {
+  const GivenNormals given = this->weldAndOrient(points, normals, options);
+  this->Prepared = this->prepareGeometry(
+    std::move(points), normals, given, markedFeatures, options, this->Statistics);
+  this->mapOutputPoints();
+  this->indexOutputsByPrepared();
+}
+
+WeldedSurface::GivenNormals WeldedSurface::weldAndOrient(const std::vector<glm::dvec3>& points,
+  const std::vector<glm::dvec3>& normals, const SurfaceOptions& options)
+{
   const std::size_t n = this->InputPointCount;
   this->Vertex.resize(n);
   if (options.Weld)
@@ -75,7 +85,7 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
   // One edge table for the whole preparation: built for the welded
   // triangles, its sides turned with the triangles once they are oriented.
   EdgeTable table(welded);
-  const GivenNormals given = this->examineNormals(points, normals, &welded, &table);
+  GivenNormals given = this->examineNormals(points, normals, &welded, &table);
   std::vector<glm::dvec3> cornerNormals;
   if (given.Use)
   {
@@ -109,8 +119,12 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
   }
   this->Welded = std::move(welded);
   this->Table = std::move(table);
-  this->Prepared = this->prepareGeometry(
-    std::move(points), normals, given, markedFeatures, options, this->Statistics);
+  return given;
+}
+
+void WeldedSurface::mapOutputPoints()
+{
+  const std::size_t n = this->InputPointCount;
   auto inputCorner = [this](std::size_t t, std::size_t k) -> std::size_t {
     return this->Reversed[t] && k != 0 ? 3 - k : k;
   };
@@ -163,7 +177,11 @@ WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangl
   {
     this->CornerOutput[corner.first] = copies.at(corner.second);
   }
+}
 
+void WeldedSurface::indexOutputsByPrepared()
+{
+  const std::size_t n = this->InputPointCount;
   const std::size_t preparedCount = this->Prepared->points().size();
   this->PreparedHome.assign(preparedCount, -1);
   std::vector<Id> degree(preparedCount + 1, 0);
@@ -422,6 +440,57 @@ SurfaceFrame WeldedSurface::assemble(const SmoothingResult& result, IdType* tria
   return this->assembleSome(result, nullptr, triangles, sourceTriangle, kind);
 }
 
+void WeldedSurface::addPolylinesAndMoves(
+  const SmoothingResult& result, std::vector<Id>& firstCopy, SurfaceFrame& frame) const
+{
+  const Id preparedCount = static_cast<Id>(this->Prepared->points().size());
+  const Id outputBase = static_cast<Id>(this->outputPointCount());
+  // Silhouette polylines: any copy of a point will do (same position).
+  frame.Polylines.reserve(result.Polylines.size());
+  for (const std::vector<Id>& chain : result.Polylines)
+  {
+    std::vector<Id> out;
+    out.reserve(chain.size());
+    for (const Id v : chain)
+    {
+      if (v < preparedCount)
+      {
+        out.push_back(this->PreparedHome[static_cast<std::size_t>(v)]);
+        continue;
+      }
+      const std::size_t np = static_cast<std::size_t>(v - preparedCount);
+      if (firstCopy[np] < 0)
+      {
+        // On no output triangle (cannot happen for a sampled segment): keep
+        // the point anyway, from its prepared sources.
+        SurfaceFrame::AddedPoint point{ np, {} };
+        for (std::size_t k = 0; k < 3; ++k)
+        {
+          point.Sources[k] = this->outputSource(
+            this->PreparedHome[static_cast<std::size_t>(result.NewPoints[np].Sources[k])]);
+        }
+        firstCopy[np] = outputBase + static_cast<Id>(frame.Added.size());
+        frame.Added.push_back(point);
+      }
+      out.push_back(firstCopy[np]);
+    }
+    frame.Polylines.push_back(std::move(out));
+  }
+
+  for (const auto& moved : result.MovedPoints)
+  {
+    const std::size_t p = static_cast<std::size_t>(moved.first);
+    for (Id k = this->OutputsOffsets[p]; k < this->OutputsOffsets[p + 1]; ++k)
+    {
+      frame.Moved.emplace_back(this->OutputsOf[static_cast<std::size_t>(k)], moved.second);
+    }
+  }
+  std::sort(frame.Moved.begin(), frame.Moved.end(),
+    [](const std::pair<Id, glm::dvec3>& a, const std::pair<Id, glm::dvec3>& b) {
+      return a.first < b.first;
+    });
+}
+
 template<typename IdType>
 SurfaceFrame WeldedSurface::assembleSome(const SmoothingResult& result, const std::vector<Id>* only,
   IdType* triangles, IdType* sourceTriangle, unsigned char* kind) const
@@ -536,50 +605,7 @@ SurfaceFrame WeldedSurface::assembleSome(const SmoothingResult& result, const st
       t, 0);
   }
 
-  // Silhouette polylines: any copy of a point will do (same position).
-  frame.Polylines.reserve(result.Polylines.size());
-  for (const std::vector<Id>& chain : result.Polylines)
-  {
-    std::vector<Id> out;
-    out.reserve(chain.size());
-    for (const Id v : chain)
-    {
-      if (v < preparedCount)
-      {
-        out.push_back(this->PreparedHome[static_cast<std::size_t>(v)]);
-        continue;
-      }
-      const std::size_t np = static_cast<std::size_t>(v - preparedCount);
-      if (firstCopy[np] < 0)
-      {
-        // On no output triangle (cannot happen for a sampled segment): keep
-        // the point anyway, from its prepared sources.
-        SurfaceFrame::AddedPoint point{ np, {} };
-        for (std::size_t k = 0; k < 3; ++k)
-        {
-          point.Sources[k] = this->outputSource(
-            this->PreparedHome[static_cast<std::size_t>(result.NewPoints[np].Sources[k])]);
-        }
-        firstCopy[np] = outputBase + static_cast<Id>(frame.Added.size());
-        frame.Added.push_back(point);
-      }
-      out.push_back(firstCopy[np]);
-    }
-    frame.Polylines.push_back(std::move(out));
-  }
-
-  for (const auto& moved : result.MovedPoints)
-  {
-    const std::size_t p = static_cast<std::size_t>(moved.first);
-    for (Id k = this->OutputsOffsets[p]; k < this->OutputsOffsets[p + 1]; ++k)
-    {
-      frame.Moved.emplace_back(this->OutputsOf[static_cast<std::size_t>(k)], moved.second);
-    }
-  }
-  std::sort(frame.Moved.begin(), frame.Moved.end(),
-    [](const std::pair<Id, glm::dvec3>& a, const std::pair<Id, glm::dvec3>& b) {
-      return a.first < b.first;
-    });
+  this->addPolylinesAndMoves(result, firstCopy, frame);
   return frame;
 }
 

@@ -183,6 +183,17 @@ private:
   GivenNormals examineNormals(const std::vector<glm::dvec3>& points,
     const std::vector<glm::dvec3>& normals, const std::vector<Triangle>* welded,
     const EdgeTable* table) const;
+  // The topology movePoints keeps: welds the points, builds the edge table,
+  // orients the triangles (Vertex, Welded, Table, Reversed, Components).
+  GivenNormals weldAndOrient(const std::vector<glm::dvec3>& points,
+    const std::vector<glm::dvec3>& normals, const SurfaceOptions& options);
+  // Output points: an input point per prepared point of its first corner,
+  // and a copy per (prepared point, input point) pair beyond it
+  // (OutputPrepared, CornerOutput, CopySources).
+  void mapOutputPoints();
+  // The output points of each prepared point, and the one that stands for
+  // it (OutputsOffsets, OutputsOf, PreparedHome).
+  void indexOutputsByPrepared();
   // Everything that depends on the points' positions and the normals, on
   // the kept welding, orientation and edge table.
   std::unique_ptr<PreparedMesh> prepareGeometry(std::vector<glm::dvec3> points,
@@ -195,6 +206,11 @@ private:
   template<typename IdType>
   SurfaceFrame assembleSome(const SmoothingResult& result, const std::vector<Id>* only,
     IdType* triangles, IdType* sourceTriangle, unsigned char* kind) const;
+  /// assembleSome's last steps: the silhouette polylines in output ids
+  /// (`firstCopy`: each new point's first output copy, or -1; a point on no
+  /// output triangle is added) and the perturbation's moved output points.
+  void addPolylinesAndMoves(
+    const SmoothingResult& result, std::vector<Id>& firstCopy, SurfaceFrame& frame) const;
   /// assembleSome into the frame's own vectors (`count` triangles).
   SurfaceFrame assembleInto(
     const SmoothingResult& result, const std::vector<Id>* only, std::size_t count) const;

@@ -87,7 +87,55 @@ std::array<int, 2> ParseViewportSize(const std::string& option, const std::strin
     std::to_string(MaximumViewportSide) + " pixels, got '" + text + "'");
 }
 
-bool ParseCameraOption(const Option& option, ArgumentList& arguments, CameraOptions& camera)
+namespace
+{
+
+// The options that take no value and only switch a setting.
+bool ParseSwitch(const Option& option, CameraOptions& camera)
+{
+  static const struct
+  {
+    const char* Name;
+    bool CameraOptions::*Setting;
+    bool Value;
+  } switches[] = {
+    { "--parallel", &CameraOptions::Parallel, true },
+    { "--no-feature-lines", &CameraOptions::FeatureLines, false },
+    { "--no-perturbation", &CameraOptions::PerturbVertices, false },
+    { "--no-fold-guard", &CameraOptions::FoldPrevention, false },
+    { "--no-weld", &CameraOptions::Weld, false },
+    { "--no-orientation", &CameraOptions::Orient, false },
+    { "--no-normal-seams", &CameraOptions::NormalSeams, false },
+    { "--no-flat-creases", &CameraOptions::FlatCreases, false },
+    { "--double-precision", &CameraOptions::DoublePrecision, true },
+  };
+  for (const auto& entry : switches)
+  {
+    if (option.Name == entry.Name)
+    {
+      RejectInlineValue(option);
+      camera.*entry.Setting = entry.Value;
+      return true;
+    }
+  }
+  return false;
+}
+
+// An angle of 0 to 180 degrees (a crease's, a feature's).
+double TakeCreaseAngle(const Option& option, ArgumentList& arguments)
+{
+  const std::string text = arguments.TakeValue(option);
+  const double angle = ParseNumber(option.Name, text);
+  if (!(angle >= 0.0 && angle <= 180.0))
+  {
+    throw UsageError(
+      "option '" + option.Name + "' needs degrees from 0 to 180, got '" + text + "'");
+  }
+  return angle;
+}
+
+// The view: image size, tolerance and camera.
+bool ParseViewOption(const Option& option, ArgumentList& arguments, CameraOptions& camera)
 {
   const std::string& name = option.Name;
   if (name == "--size")
@@ -148,40 +196,24 @@ bool ParseCameraOption(const Option& option, ArgumentList& arguments, CameraOpti
         "option '" + name + "' needs degrees above 0 and at most 179, got '" + text + "'");
     }
   }
-  else if (name == "--parallel")
+  else
   {
-    RejectInlineValue(option);
-    camera.Parallel = true;
+    return false;
   }
-  else if (name == "--feature-angle")
+  return true;
+}
+
+// How the surface is read: features, welding, creases, normals.
+bool ParseSurfaceOption(const Option& option, ArgumentList& arguments, CameraOptions& camera)
+{
+  const std::string& name = option.Name;
+  if (name == "--feature-angle")
   {
-    const std::string text = arguments.TakeValue(option);
-    const double angle = ParseNumber(name, text);
-    if (!(angle >= 0.0 && angle <= 180.0))
-    {
-      throw UsageError("option '" + name + "' needs degrees from 0 to 180, got '" + text + "'");
-    }
-    camera.FeatureAngle = angle;
+    camera.FeatureAngle = TakeCreaseAngle(option, arguments);
   }
-  else if (name == "--no-feature-lines")
+  else if (name == "--flat-crease-angle")
   {
-    RejectInlineValue(option);
-    camera.FeatureLines = false;
-  }
-  else if (name == "--no-perturbation")
-  {
-    RejectInlineValue(option);
-    camera.PerturbVertices = false;
-  }
-  else if (name == "--no-fold-guard")
-  {
-    RejectInlineValue(option);
-    camera.FoldPrevention = false;
-  }
-  else if (name == "--no-weld")
-  {
-    RejectInlineValue(option);
-    camera.Weld = false;
+    camera.FlatCreaseAngle = TakeCreaseAngle(option, arguments);
   }
   else if (name == "--weld-tolerance")
   {
@@ -191,31 +223,6 @@ bool ParseCameraOption(const Option& option, ArgumentList& arguments, CameraOpti
     {
       throw UsageError("option '" + name + "' needs a distance of 0 or more, got '" + text + "'");
     }
-  }
-  else if (name == "--no-orientation")
-  {
-    RejectInlineValue(option);
-    camera.Orient = false;
-  }
-  else if (name == "--no-normal-seams")
-  {
-    RejectInlineValue(option);
-    camera.NormalSeams = false;
-  }
-  else if (name == "--no-flat-creases")
-  {
-    RejectInlineValue(option);
-    camera.FlatCreases = false;
-  }
-  else if (name == "--flat-crease-angle")
-  {
-    const std::string text = arguments.TakeValue(option);
-    const double angle = ParseNumber(name, text);
-    if (!(angle >= 0.0 && angle <= 180.0))
-    {
-      throw UsageError("option '" + name + "' needs degrees from 0 to 180, got '" + text + "'");
-    }
-    camera.FlatCreaseAngle = angle;
   }
   else if (name == "--normals")
   {
@@ -232,16 +239,19 @@ bool ParseCameraOption(const Option& option, ArgumentList& arguments, CameraOpti
     }
     camera.NormalEstimation = found;
   }
-  else if (name == "--double-precision")
-  {
-    RejectInlineValue(option);
-    camera.DoublePrecision = true;
-  }
   else
   {
     return false;
   }
   return true;
+}
+
+} // namespace
+
+bool ParseCameraOption(const Option& option, ArgumentList& arguments, CameraOptions& camera)
+{
+  return ParseSwitch(option, camera) || ParseViewOption(option, arguments, camera) ||
+    ParseSurfaceOption(option, arguments, camera);
 }
 
 void CheckCameraOptions(const CameraOptions& camera)

@@ -173,17 +173,248 @@ bool ParseCount(const std::string& value, std::uint64_t& count)
   return true;
 }
 
+// What the checks of one file share: its text, the limit on what it can
+// declare, its header words, and where its appended data is.
+struct VtpFile
+{
+  const std::string& Text;
+  std::uint64_t Size = 0;
+  std::uint64_t Limit = 0; ///< the most bytes or items a file of Size bytes can declare
+  std::size_t Width = 4;   ///< bytes of a header word (UInt32 or UInt64)
+  bool Compressed = false;
+  std::string Where; ///< the start of every message
+  std::size_t RootEnd = 0;
+  std::size_t XmlEnd = 0; ///< where the appended data's raw bytes may start
+  /// The appended data, after the '_' that follows its tag (npos: none).
+  std::size_t AppendedStart = std::string::npos;
+  std::size_t AppendedEnd = 0;
+  bool AppendedRaw = true;
+  std::vector<std::uint64_t> AppendedOffsets; ///< of the arrays in it
+
+  [[noreturn]] void fail(const std::string& what) const { throw RuntimeError(this->Where + what); }
+};
+
+// The reader also allocates for the counts each Piece declares. False when a
+// tag is cut short (the reader reports that itself).
+bool CheckPieceCounts(const VtpFile& file)
+{
+  const std::string& text = file.Text;
+  for (std::size_t piece = text.find("<Piece", file.RootEnd); piece < file.XmlEnd;
+       piece = text.find("<Piece", piece + 1))
+  {
+    const Tag pieceTag = ParseTag(text, piece);
+    if (pieceTag.End == std::string::npos)
+    {
+      return false;
+    }
+    for (const char* name :
+      { "NumberOfPoints", "NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys" })
+    {
+      std::uint64_t count = 0;
+      if (!ParseCount(pieceTag.Attribute(name), count))
+      {
+        continue; // not a plain count: the reader reports it
+      }
+      if (count > file.Limit)
+      {
+        std::ostringstream message;
+        message << "a piece declares " << name << "=" << count << ", more than a file of "
+                << file.Size << " bytes can hold";
+        file.fail(message.str());
+      }
+    }
+  }
+  return true;
+}
+
+// Where the appended data starts and ends, and the offsets of its arrays.
+void FindAppendedData(VtpFile& file)
+{
+  const std::string& text = file.Text;
+  file.AppendedEnd = text.size();
+  if (file.XmlEnd < text.size())
+  {
+    const Tag appended = ParseTag(text, file.XmlEnd);
+    const std::size_t marker =
+      appended.End == std::string::npos ? appended.End : text.find('_', appended.End);
+    if (marker != std::string::npos)
+    {
+      file.AppendedStart = marker + 1;
+      file.AppendedRaw = appended.Attribute("encoding") != "base64";
+      const std::size_t close = text.rfind("</AppendedData>");
+      file.AppendedEnd =
+        close != std::string::npos && close >= file.AppendedStart ? close : text.size();
+    }
+  }
+  for (std::size_t tag = text.find("<DataArray", file.RootEnd); tag < file.XmlEnd;
+       tag = text.find("<DataArray", tag + 1))
+  {
+    const Tag array = ParseTag(text, tag);
+    std::uint64_t offset = 0;
+    if (array.Attribute("format") == "appended" && ParseCount(array.Attribute("offset"), offset))
+    {
+      file.AppendedOffsets.push_back(offset);
+    }
+  }
+}
+
+// Where a binary or appended array's header and data are, and up to where
+// they may go.
+struct ArrayBytes
+{
+  std::size_t Data = 0;
+  std::size_t Stop = 0;
+  bool Raw = false; ///< raw bytes, not base64
+
+  // The first `count` bytes from Data (fewer where the array stops sooner).
+  std::string prefix(const std::string& text, std::size_t count) const
+  {
+    return this->Raw ? text.substr(this->Data, std::min(count, this->Stop - this->Data))
+                     : DecodeBase64Prefix(text, this->Data, count, this->Stop);
+  }
+};
+
+// False for an array whose data the reader checks itself (ASCII, or an
+// appended offset out of range).
+bool LocateArrayBytes(const VtpFile& file, const Tag& array, ArrayBytes& bytes)
+{
+  const std::string& text = file.Text;
+  const std::string format = array.Attribute("format");
+  bytes.Stop = text.size();
+  if (format == "binary")
+  {
+    bytes.Data = array.End + 1;
+    while (bytes.Data < text.size() && IsSpace(text[bytes.Data]))
+    {
+      ++bytes.Data;
+    }
+    return true;
+  }
+  if (format != "appended" || file.AppendedStart == std::string::npos)
+  {
+    return false; // ASCII data: the reader finds it short itself
+  }
+  std::uint64_t offset = 0;
+  if (!ParseCount(array.Attribute("offset"), offset) ||
+    offset >= file.AppendedEnd - file.AppendedStart)
+  {
+    return false; // the reader reports it
+  }
+  bytes.Data = file.AppendedStart + static_cast<std::size_t>(offset);
+  bytes.Stop = file.AppendedEnd;
+  bytes.Raw = file.AppendedRaw;
+  if (!bytes.Raw)
+  {
+    // Base64 arrays follow each other with nothing between them.
+    for (const std::uint64_t next : file.AppendedOffsets)
+    {
+      if (next > offset && file.AppendedStart + next < bytes.Stop)
+      {
+        bytes.Stop = file.AppendedStart + static_cast<std::size_t>(next);
+      }
+    }
+  }
+  return true;
+}
+
+// The uncompressed bytes a compressed array declares (its header: blocks,
+// block size, last block's size, then each block's compressed size).
+std::uint64_t CompressedBytes(
+  const VtpFile& file, const ArrayBytes& bytes, const std::string& header)
+{
+  const std::size_t width = file.Width;
+  const std::uint64_t blocks = Word(header, 0, width);
+  const std::uint64_t blockSize = Word(header, 1, width);
+  const std::uint64_t lastSize = Word(header, 2, width);
+  if (blocks > file.Size)
+  {
+    std::ostringstream message;
+    message << "a compressed data array declares " << blocks << " blocks, more than a file of "
+            << file.Size << " bytes can hold";
+    file.fail(message.str());
+  }
+  // Each block's compressed bytes are in the file: VTK 9.1's reader
+  // allocates a buffer of that size before it finds the data short.
+  const std::string sizes = bytes.prefix(file.Text, (3 + blocks) * width);
+  for (std::uint64_t b = 0; (3 + b + 1) * width <= sizes.size(); ++b)
+  {
+    const std::uint64_t compressedSize = Word(sizes, 3 + b, width);
+    if (compressedSize > file.Size)
+    {
+      std::ostringstream message;
+      message << "a compressed block declares " << compressedSize << " bytes, more than a file of "
+              << file.Size << " bytes holds";
+      file.fail(message.str());
+    }
+  }
+  // Overflow-safe: blocks <= size, and sizes beyond the limit fail anyway.
+  if (blocks == 0)
+  {
+    return 0;
+  }
+  const std::uint64_t last = lastSize != 0 ? lastSize : blockSize;
+  return (blockSize > file.Limit || last > file.Limit) ? file.Limit + 1
+                                                       : (blocks - 1) * blockSize + last;
+}
+
+// A binary or appended array declares no more bytes than the file can hold,
+// and an uncompressed one holds what it declares.
+void CheckDataArray(const VtpFile& file, const Tag& array)
+{
+  const std::string& text = file.Text;
+  ArrayBytes bytes;
+  if (!LocateArrayBytes(file, array, bytes))
+  {
+    return;
+  }
+  const std::string name = array.Attribute("Name").empty()
+    ? std::string("a data array")
+    : "data array '" + array.Attribute("Name") + "'";
+  const std::size_t width = file.Width;
+  const std::size_t words = file.Compressed ? 3 : 1;
+  const std::string header = bytes.prefix(text, words * width);
+  if (header.size() < words * width)
+  {
+    return; // too short to declare anything: the reader reports it
+  }
+  const std::uint64_t declared =
+    file.Compressed ? CompressedBytes(file, bytes, header) : Word(header, 0, width);
+  if (declared > file.Limit)
+  {
+    std::ostringstream message;
+    message << "a data array declares " << declared << " bytes, more than a file of " << file.Size
+            << " bytes can hold";
+    file.fail(message.str());
+  }
+  // VTK 9.1's reader takes the byte count in an uncompressed array's header
+  // at its word: when the data stops sooner, it keeps what its buffer held
+  // for the rest (uninitialised memory, or the closing tags after appended
+  // data) and reports nothing. A compressed array it finds short itself.
+  if (!file.Compressed)
+  {
+    const std::size_t held = bytes.Raw
+      ? bytes.Stop - bytes.Data - width
+      : DecodeBase64Prefix(text, bytes.Data, width + declared, bytes.Stop).size() - width;
+    if (held < declared)
+    {
+      std::ostringstream message;
+      message << name << " declares " << declared << " bytes but holds " << held;
+      file.fail(message.str());
+    }
+  }
+}
+
 } // namespace
 
 void CheckVtpFile(const std::string& path)
 {
-  std::ifstream file(path, std::ios::binary);
-  if (!file)
+  std::ifstream stream(path, std::ios::binary);
+  if (!stream)
   {
     throw RuntimeError("cannot read '" + path + "': " + std::strerror(errno));
   }
-  const std::string text((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  const auto size = static_cast<std::uint64_t>(text.size());
+  const std::string text(
+    (std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
   const std::size_t root = text.find("<VTKFile");
   if (root == std::string::npos)
   {
@@ -194,73 +425,22 @@ void CheckVtpFile(const std::string& path)
   {
     return;
   }
-  const std::size_t rootEnd = rootTag.End;
-  const std::size_t width = rootTag.Attribute("header_type") == "UInt64" ? 8 : 4;
-  const bool compressed = !rootTag.Attribute("compressor").empty();
-  const std::uint64_t limit = 1024 * size + 65536;
-  const std::string where = "cannot read '" + path + "': VTK XML: ";
+  VtpFile file{ text };
+  file.Size = static_cast<std::uint64_t>(text.size());
+  file.Limit = 1024 * file.Size + 65536;
+  file.Width = rootTag.Attribute("header_type") == "UInt64" ? 8 : 4;
+  file.Compressed = !rootTag.Attribute("compressor").empty();
+  file.Where = "cannot read '" + path + "': VTK XML: ";
+  file.RootEnd = rootTag.End;
   // The XML ends where the appended data starts: raw bytes after it may look
   // like tags.
-  const std::size_t xmlEnd = std::min(text.find("<AppendedData", rootEnd), text.size());
-
-  // The reader also allocates for the counts each Piece declares.
-  for (std::size_t piece = text.find("<Piece", rootEnd); piece < xmlEnd;
-       piece = text.find("<Piece", piece + 1))
+  file.XmlEnd = std::min(text.find("<AppendedData", file.RootEnd), text.size());
+  if (!CheckPieceCounts(file))
   {
-    const Tag pieceTag = ParseTag(text, piece);
-    if (pieceTag.End == std::string::npos)
-    {
-      return;
-    }
-    for (const char* name :
-      { "NumberOfPoints", "NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys" })
-    {
-      std::uint64_t count = 0;
-      if (!ParseCount(pieceTag.Attribute(name), count))
-      {
-        continue; // not a plain count: the reader reports it
-      }
-      if (count > limit)
-      {
-        std::ostringstream message;
-        message << where << "a piece declares " << name << "=" << count << ", more than a file of "
-                << size << " bytes can hold";
-        throw RuntimeError(message.str());
-      }
-    }
+    return;
   }
-
-  // Where the appended data starts (after the '_' that follows its tag) and
-  // ends, and the offsets of the arrays in it.
-  std::size_t appendedStart = std::string::npos;
-  std::size_t appendedEnd = text.size();
-  bool appendedRaw = true;
-  if (xmlEnd < text.size())
-  {
-    const Tag appended = ParseTag(text, xmlEnd);
-    const std::size_t marker =
-      appended.End == std::string::npos ? appended.End : text.find('_', appended.End);
-    if (marker != std::string::npos)
-    {
-      appendedStart = marker + 1;
-      appendedRaw = appended.Attribute("encoding") != "base64";
-      const std::size_t close = text.rfind("</AppendedData>");
-      appendedEnd = close != std::string::npos && close >= appendedStart ? close : text.size();
-    }
-  }
-  std::vector<std::uint64_t> appendedOffsets;
-  for (std::size_t tag = text.find("<DataArray", rootEnd); tag < xmlEnd;
-       tag = text.find("<DataArray", tag + 1))
-  {
-    const Tag array = ParseTag(text, tag);
-    std::uint64_t offset = 0;
-    if (array.Attribute("format") == "appended" && ParseCount(array.Attribute("offset"), offset))
-    {
-      appendedOffsets.push_back(offset);
-    }
-  }
-
-  for (std::size_t tag = text.find("<DataArray", rootEnd); tag < xmlEnd;
+  FindAppendedData(file);
+  for (std::size_t tag = text.find("<DataArray", file.RootEnd); tag < file.XmlEnd;
        tag = text.find("<DataArray", tag + 1))
   {
     const Tag array = ParseTag(text, tag);
@@ -268,119 +448,7 @@ void CheckVtpFile(const std::string& path)
     {
       return;
     }
-    const std::string format = array.Attribute("format");
-    const std::string name = array.Attribute("Name").empty()
-      ? std::string("a data array")
-      : "data array '" + array.Attribute("Name") + "'";
-    // Where the array's header and data are, and up to where they may go.
-    std::size_t data = 0;
-    std::size_t stop = text.size();
-    bool raw = false;
-    if (format == "binary")
-    {
-      data = array.End + 1;
-      while (data < text.size() && IsSpace(text[data]))
-      {
-        ++data;
-      }
-    }
-    else if (format == "appended" && appendedStart != std::string::npos)
-    {
-      std::uint64_t offset = 0;
-      if (!ParseCount(array.Attribute("offset"), offset) || offset >= appendedEnd - appendedStart)
-      {
-        continue; // the reader reports it
-      }
-      data = appendedStart + static_cast<std::size_t>(offset);
-      stop = appendedEnd;
-      raw = appendedRaw;
-      if (!raw)
-      {
-        // Base64 arrays follow each other with nothing between them.
-        for (const std::uint64_t next : appendedOffsets)
-        {
-          if (next > offset && appendedStart + next < stop)
-          {
-            stop = appendedStart + static_cast<std::size_t>(next);
-          }
-        }
-      }
-    }
-    else
-    {
-      continue; // ASCII data: the reader finds it short itself
-    }
-    const std::size_t words = compressed ? 3 : 1;
-    const std::string header = raw ? text.substr(data, std::min(words * width, stop - data))
-                                   : DecodeBase64Prefix(text, data, words * width, stop);
-    if (header.size() < words * width)
-    {
-      continue; // too short to declare anything: the reader reports it
-    }
-    std::uint64_t declared = 0;
-    if (compressed)
-    {
-      const std::uint64_t blocks = Word(header, 0, width);
-      const std::uint64_t blockSize = Word(header, 1, width);
-      const std::uint64_t lastSize = Word(header, 2, width);
-      if (blocks > size)
-      {
-        std::ostringstream message;
-        message << where << "a compressed data array declares " << blocks
-                << " blocks, more than a file of " << size << " bytes can hold";
-        throw RuntimeError(message.str());
-      }
-      // Each block's compressed bytes are in the file: VTK 9.1's reader
-      // allocates a buffer of that size before it finds the data short.
-      const std::string sizes = raw
-        ? text.substr(data, std::min<std::size_t>((3 + blocks) * width, stop - data))
-        : DecodeBase64Prefix(text, data, (3 + blocks) * width, stop);
-      for (std::uint64_t b = 0; (3 + b + 1) * width <= sizes.size(); ++b)
-      {
-        const std::uint64_t compressedSize = Word(sizes, 3 + b, width);
-        if (compressedSize > size)
-        {
-          std::ostringstream message;
-          message << where << "a compressed block declares " << compressedSize
-                  << " bytes, more than a file of " << size << " bytes holds";
-          throw RuntimeError(message.str());
-        }
-      }
-      // Overflow-safe: blocks <= size, and sizes beyond the limit fail anyway.
-      if (blocks > 0)
-      {
-        const std::uint64_t last = lastSize != 0 ? lastSize : blockSize;
-        declared =
-          (blockSize > limit || last > limit) ? limit + 1 : (blocks - 1) * blockSize + last;
-      }
-    }
-    else
-    {
-      declared = Word(header, 0, width);
-    }
-    if (declared > limit)
-    {
-      std::ostringstream message;
-      message << where << "a data array declares " << declared << " bytes, more than a file of "
-              << size << " bytes can hold";
-      throw RuntimeError(message.str());
-    }
-    // VTK 9.1's reader takes the byte count in an uncompressed array's header
-    // at its word: when the data stops sooner, it keeps what its buffer held
-    // for the rest (uninitialised memory, or the closing tags after appended
-    // data) and reports nothing. A compressed array it finds short itself.
-    if (!compressed)
-    {
-      const std::size_t held = raw
-        ? stop - data - width
-        : DecodeBase64Prefix(text, data, width + declared, stop).size() - width;
-      if (held < declared)
-      {
-        std::ostringstream message;
-        message << where << name << " declares " << declared << " bytes but holds " << held;
-        throw RuntimeError(message.str());
-      }
-    }
+    CheckDataArray(file, array);
   }
 }
 

@@ -41,7 +41,7 @@ started=$SECONDS
 ASAN_OPTIONS=detect_leaks=1 ctest --output-on-failure -j "$jobs" \
   -R '^core\.|^module\.Test(TopologyInvariants|NoFolds|BadInput|HostileMeshes|VisibilityMethod|BoundaryCurveSmoothing|FaceSilhouetteLines|PNTriangleFilter|ProgressiveMeshFilter|StylizedStrokes|LineVisibilityFilter|OutlineDeviation|CreaseAndBorderLines|AbortAtHalf)$'
 ASAN_OPTIONS=detect_leaks=0 "${display[@]}" ctest --output-on-failure -j "$jobs" \
-  -R '^module\.Test(OpenSubdivRefiner|FilterPipeline|SphereAccuracy|SmoothingImages|OrbitCoherence|FeatureCurves|AssetMeshes|AssetImages|LineDrawingAccuracy)$'
+  -R '^module\.Test(OpenSubdivRefiner|OpenSubdivRefinerInput|FilterPipeline|SphereAccuracy|SmoothingImages|OrbitCoherence|FeatureCurves|AssetMeshes|AssetImages|LineDrawingAccuracy)$'
 echo "sanitize: core and module tests in $((SECONDS - started)) s"
 started=$SECONDS
 # The program reads files in a child process (Apps/IO/SandboxedReading.h),

@@ -16,6 +16,7 @@
 // Seeds: scripts/fuzz.sh prefixes small meshes with a format byte and
 // ParameterBytes bytes of 0x80 (a camera around the mesh).
 #include "CliErrors.h"
+#include "FuzzBytes.h"
 #include "MeshIO.h"
 #include "VtkErrorLog.h"
 
@@ -47,31 +48,11 @@
 namespace
 {
 
+using fuzz::Bytes;
+
 constexpr std::size_t ParameterBytes = 48; // two cameras and the settings, with room
 const char* const Extensions[] = { ".ply", ".obj", ".stl", ".vtp", ".vtk" };
 constexpr std::size_t FormatCount = sizeof(Extensions) / sizeof(Extensions[0]);
-
-// Reads parameter bytes as small values; zeros when exhausted.
-class Bytes
-{
-public:
-  Bytes(const std::uint8_t* data, std::size_t size)
-    : Data(data)
-    , Size(size)
-  {
-  }
-  std::uint8_t byte() { return this->At < this->Size ? this->Data[this->At++] : 0; }
-  double unit() // in [-1, 1]
-  {
-    const int value = (this->byte() << 8) | this->byte();
-    return value / 32767.5 - 1.0;
-  }
-
-private:
-  const std::uint8_t* Data;
-  std::size_t Size;
-  std::size_t At = 0;
-};
 
 void require(bool condition, const char* what)
 {

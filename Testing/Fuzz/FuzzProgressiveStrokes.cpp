@@ -5,6 +5,7 @@
 // brushes through the stylizer, whose offsets must stay within the
 // amplitude; random views through the edge classification.
 #include "EdgeClassification.h"
+#include "FuzzBytes.h"
 #include "ProgressiveMesh.h"
 #include "StrokeStylizer.h"
 
@@ -17,35 +18,8 @@
 namespace
 {
 
-// Reads the fuzzer's bytes as a stream of small values; zeros when exhausted.
-class Bytes
-{
-public:
-  Bytes(const std::uint8_t* data, std::size_t size)
-    : Data(data)
-    , Size(size)
-  {
-  }
-  std::uint8_t byte() { return this->At < this->Size ? this->Data[this->At++] : 0; }
-  double unit() // in [-1, 1]
-  {
-    const int value = (this->byte() << 8) | this->byte();
-    return value / 32767.5 - 1.0;
-  }
-
-private:
-  const std::uint8_t* Data;
-  std::size_t Size;
-  std::size_t At = 0;
-};
-
-void require(bool condition)
-{
-  if (!condition)
-  {
-    std::abort();
-  }
-}
+using fuzz::Bytes;
+using fuzz::require;
 
 } // namespace
 

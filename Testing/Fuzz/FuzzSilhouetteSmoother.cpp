@@ -4,6 +4,7 @@
 // smoothing pass, which
 // must not crash, hang, or produce non-finite points, out-of-range ids,
 // triangles that repeat an id, or a fold its fold guard leaves unresolved.
+#include "FuzzBytes.h"
 #include "SilhouetteSmoother.h"
 #include "WeldedSurface.h"
 
@@ -18,35 +19,8 @@
 namespace
 {
 
-// Reads the fuzzer's bytes as a stream of small values; zeros when exhausted.
-class Bytes
-{
-public:
-  Bytes(const std::uint8_t* data, std::size_t size)
-    : Data(data)
-    , Size(size)
-  {
-  }
-  std::uint8_t byte() { return this->At < this->Size ? this->Data[this->At++] : 0; }
-  double unit() // in [-1, 1]
-  {
-    const int value = (this->byte() << 8) | this->byte();
-    return value / 32767.5 - 1.0;
-  }
-
-private:
-  const std::uint8_t* Data;
-  std::size_t Size;
-  std::size_t At = 0;
-};
-
-void require(bool condition)
-{
-  if (!condition)
-  {
-    std::abort();
-  }
-}
+using fuzz::Bytes;
+using fuzz::require;
 
 bool finite(const glm::dvec3& v)
 {

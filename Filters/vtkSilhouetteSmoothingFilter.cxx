@@ -106,6 +106,7 @@ struct vtkSilhouetteSmoothingFilter::Internals
   vtkIdType NonFinitePoints = 0;
   vtkIdType FirstNonFinitePoint = -1;
   vtkIdType TooSmallPolygons = 0;
+  std::size_t DistinctTriangles = 0; ///< triangles with three distinct point ids
   vtkPolyData* CachedInput = nullptr;
   vtkMTimeType CachedInputTime = 0;
   std::array<double, 10> CachedSettings{};
@@ -155,6 +156,9 @@ std::string vtkSilhouetteSmoothingFilter::Internals::Rebuild(
   this->NonFinitePoints = mesh.NonFinitePoints;
   this->FirstNonFinitePoint = mesh.FirstNonFinitePoint;
   this->TooSmallPolygons = mesh.TooSmallPolygons;
+  this->DistinctTriangles =
+    static_cast<std::size_t>(std::count_if(mesh.Cells.begin(), mesh.Cells.end(),
+      [](const silsmooth::Triangle& t) { return t[0] != t[1] && t[1] != t[2] && t[0] != t[2]; }));
   this->TriangleCell = std::move(mesh.CellIds);
   if (this->NonFinitePoints > 0)
   {
@@ -255,6 +259,13 @@ bool vtkSilhouetteSmoothingFilter::Internals::Prepare(
                    << " points with NaN or infinite coordinates (the first is point "
                    << this->FirstNonFinitePoint << ").");
     return false;
+  }
+  if (rebuilt && this->DistinctTriangles == 0 && input->GetNumberOfPoints() > 0)
+  {
+    // An empty input (an empty piece of a parallel pipeline) passes silently.
+    vtkWarningWithObjectMacro(self,
+      "The input has no triangles (no polygon or strip with three distinct points): there is "
+      "no surface to smooth, and its other cells pass through unchanged.");
   }
   const silsmooth::SurfaceStatistics& statistics = this->Surface->statistics();
   if (rebuilt && statistics.FlatShadedNormals)

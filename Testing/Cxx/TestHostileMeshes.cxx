@@ -1,13 +1,20 @@
-// Hostile meshes (issue 6, item 4): deterministic pseudo-random meshes of the
-// awkward kinds real files contain (non-manifold fans, duplicate points,
-// zero-area and repeated-id triangles, inconsistent orientation, coordinates
-// at 1e30 and 1e-30 and both at once, NaN, infinite, zero and extreme normals,
-// triangle soups) go through vtkSilhouetteSmoothingFilter for many random
-// cameras (parallel and perspective, eye outside and inside, degenerate
-// view-ups), with vertex perturbation on and off. Each request must either
-// succeed or fail with an error; a successful one must give finite points and
-// normals, ids in range on both outputs, and keep at least as many triangles
-// as the input has valid ones (three distinct ids).
+// Hostile meshes (issue 6, item 4; per-case expectations, issue 17):
+// deterministic pseudo-random meshes of the awkward kinds real files contain
+// (non-manifold fans, duplicate points, zero-area and repeated-id triangles,
+// inconsistent orientation, coordinates at 1e30 and 1e-30 and both at once,
+// NaN, infinite, zero and extreme normals, triangle soups) go through
+// vtkSilhouetteSmoothingFilter for many random cameras (parallel and
+// perspective, eye outside and inside, view-ups made parallel to the line of
+// sight on purpose), with vertex perturbation on and off. Each case says
+// what must happen:
+// - smoothed: every request with a well-formed view succeeds, without an
+//   error, with finite points and normals, ids in range on both outputs, and
+//   at least as many triangles as the input has valid ones (three distinct
+//   ids); a degenerate view may fail, and only with the view's error;
+// - refused (non-finite coordinates, cells naming missing points): every
+//   request fails, with the error that names the problem;
+// - warned (no triangle at all): every request with a well-formed view
+//   succeeds, and a warning says why nothing is smoothed.
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -322,11 +329,58 @@ Soup TriangleSoup(Random& random, double scale)
   return soup;
 }
 
+enum class Outcome
+{
+  Smoothed,
+  Refused,
+  Warned
+};
+
 struct Case
 {
   std::string Name;
   Soup Mesh;
+  Outcome Expected = Outcome::Smoothed;
+  std::string Message = {}; ///< how the error or warning starts (Refused, Warned)
 };
+
+// Cases the filter cannot use: it must say so, by an error or a warning.
+void AddUnusableMeshes(std::vector<Case>& cases)
+{
+  Soup nan = Sphere(1);
+  nan.Points[3][1] = std::numeric_limits<double>::quiet_NaN();
+  cases.push_back({ "a NaN coordinate", nan, Outcome::Refused, "Input has 1 points with NaN" });
+
+  Soup infinite = Sphere(1);
+  infinite.Normals.clear();
+  infinite.Points[0][2] = -std::numeric_limits<double>::infinity();
+  infinite.Points[7][0] = std::numeric_limits<double>::infinity();
+  cases.push_back(
+    { "two infinite coordinates", infinite, Outcome::Refused, "Input has 2 points with NaN" });
+
+  Soup missing = Sphere(1);
+  const auto count = static_cast<vtkIdType>(missing.Points.size());
+  missing.Polygons.push_back({ 0, 1, count + 5 });
+  cases.push_back({ "a triangle naming a missing point", missing, Outcome::Refused,
+    "Input cells refer to points that do not exist" });
+
+  Soup negative = Sphere(1);
+  negative.Polygons.push_back({ 0, -1, 2 });
+  cases.push_back({ "a triangle naming point -1", negative, Outcome::Refused,
+    "Input cells refer to points that do not exist" });
+
+  Soup none = Sphere(1);
+  const std::size_t polygons = none.Polygons.size();
+  none.Polygons.clear();
+  for (std::size_t i = 0; i < polygons; ++i)
+  {
+    const auto a = static_cast<vtkIdType>(i % static_cast<std::size_t>(count));
+    none.Polygons.push_back({ a, (a + 1) % count, a }); // a repeated id
+    none.Polygons.push_back({ a, (a + 2) % count });    // two points
+  }
+  cases.push_back({ "no triangle, only repeated-id and two-point polygons", none, Outcome::Warned,
+    "The input has no triangles" });
+}
 
 std::vector<Case> HostileMeshes()
 {
@@ -396,6 +450,7 @@ std::vector<Case> HostileMeshes()
     }
     cases.push_back({ "triangle soup at 1e" + std::to_string(-30 + 12 * s), soup });
   }
+  AddUnusableMeshes(cases);
   return cases;
 }
 
@@ -478,10 +533,26 @@ vtkIdType ValidTriangles(vtkPolyData* mesh)
 
 // A random camera: around the mesh's bounding sphere (outside or inside it),
 // parallel or perspective; now and then a view-up along the view direction.
-void AimCamera(vtkCamera* camera, vtkPolyData* mesh, Random& random)
+// Aims the camera at the mesh from a random place; true when its view-up is
+// made parallel to the line of sight on purpose (a degenerate view).
+bool AimCamera(vtkCamera* camera, vtkPolyData* mesh, Random& random)
 {
-  double bounds[6];
-  mesh->GetBounds(bounds);
+  // The bounds of the finite points (vtkPolyData's take infinite ones in).
+  double bounds[6] = { 0, -1, 0, -1, 0, -1 };
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))
+    {
+      for (int a = 0; a < 3; ++a)
+      {
+        const bool first = bounds[2 * a] > bounds[2 * a + 1];
+        bounds[2 * a] = first ? p[a] : std::min(bounds[2 * a], p[a]);
+        bounds[2 * a + 1] = first ? p[a] : std::max(bounds[2 * a + 1], p[a]);
+      }
+    }
+  }
   double center[3], radius = 0.0;
   for (int a = 0; a < 3; ++a)
   {
@@ -513,9 +584,10 @@ void AimCamera(vtkCamera* camera, vtkPolyData* mesh, Random& random)
   }
   camera->SetFocalPoint(focal);
   camera->SetPosition(position);
-  if (random.chance(0.05))
+  const bool degenerate = random.chance(0.05);
+  if (degenerate)
   {
-    camera->SetViewUp(direction[0], direction[1], direction[2]); // degenerate on purpose
+    camera->SetViewUp(direction[0], direction[1], direction[2]);
   }
   else
   {
@@ -524,7 +596,36 @@ void AimCamera(vtkCamera* camera, vtkPolyData* mesh, Random& random)
   camera->SetViewAngle(random.uniform(5, 120));
   camera->SetParallelProjection(random.chance(0.4));
   camera->SetParallelScale(radius * random.uniform(0.2, 3));
+  return degenerate;
 }
+
+// The first sentence of a VTK error or warning's text:
+// "ERROR: In file, line N\nvtkSilhouetteSmoothingFilter (0x...): Text. More".
+std::string FirstSentence(std::string message)
+{
+  const std::size_t text = message.find("): ");
+  message = message.substr(text == std::string::npos ? 0 : text + 3);
+  return message.substr(0, message.find_first_of(".\n"));
+}
+
+bool StartsWith(const std::string& text, const std::string& start)
+{
+  return text.compare(0, start.size(), start) == 0;
+}
+
+const char* NameOf(Outcome outcome)
+{
+  return outcome == Outcome::Smoothed ? "smoothed"
+                                      : (outcome == Outcome::Refused ? "refused" : "warned");
+}
+
+// What the requests of one case did.
+struct Tally
+{
+  int Succeeded = 0;
+  int Failed = 0;
+  bool Warned = false; ///< the expected warning was seen
+};
 
 } // namespace
 
@@ -540,6 +641,7 @@ int TestHostileMeshes(int, char*[])
   {
     vtkSmartPointer<vtkPolyData> input = hostile.Mesh.polyData();
     const vtkIdType inputTriangles = ValidTriangles(input);
+    Tally tally;
     for (bool perturb : { true, false })
     {
       // One filter per mesh: the prepared cache serves all the cameras.
@@ -555,7 +657,7 @@ int TestHostileMeshes(int, char*[])
       filter->SetCamera(camera);
       for (int view = 0; view < CamerasPerMesh; ++view)
       {
-        AimCamera(camera, input, random);
+        const bool degenerateView = AimCamera(camera, input, random);
         filter->SetViewportSize(
           1 + static_cast<int>(random.below(2000)), 1 + static_cast<int>(random.below(2000)));
         filter->SetTolerance(random.uniform(0.1, 3.0));
@@ -564,25 +666,46 @@ int TestHostileMeshes(int, char*[])
         const int result = filter->GetExecutive()->Update();
         const std::string where = hostile.Name + (perturb ? ", perturbation on" : ", off") +
           ", view " + std::to_string(view);
+        const std::string error =
+          errors->GetError() ? FirstSentence(errors->GetErrorMessage()) : "";
+        // Warnings are said once per input, on the first request.
+        if (errors->GetWarning() && !hostile.Message.empty() &&
+          errors->GetWarningMessage().find(hostile.Message) != std::string::npos)
+        {
+          tally.Warned = true;
+        }
         if (!result)
         {
           ++failed;
-          if (errors->GetError())
-          {
-            // "ERROR: In file, line N\nvtkSilhouetteSmoothingFilter (0x...): Text. More"
-            std::string message = errors->GetErrorMessage();
-            const std::size_t text = message.find("): ");
-            message = message.substr(text == std::string::npos ? 0 : text + 3);
-            ++errorMessages[message.substr(0, message.find_first_of(".\n"))];
-          }
+          ++tally.Failed;
           if (!errors->GetError())
           {
             std::printf("FAIL: %s: the request failed without an error\n", where.c_str());
+            ok = false;
+            continue;
+          }
+          ++errorMessages[error];
+          // The view is checked before the input.
+          const bool expected =
+            (hostile.Expected == Outcome::Refused && StartsWith(error, hostile.Message)) ||
+            (degenerateView && StartsWith(error, "The view is degenerate"));
+          if (!expected)
+          {
+            std::printf("FAIL: %s: expected %s, failed with \"%s\"\n", where.c_str(),
+              NameOf(hostile.Expected), error.c_str());
             ok = false;
           }
           continue;
         }
         ++succeeded;
+        ++tally.Succeeded;
+        if (hostile.Expected == Outcome::Refused)
+        {
+          std::printf("FAIL: %s: expected an error \"%s...\", the request succeeded\n",
+            where.c_str(), hostile.Message.c_str());
+          ok = false;
+          continue;
+        }
         std::string problem;
         if (!Valid(filter->GetOutput(), problem) || !Valid(filter->GetSilhouetteOutput(), problem))
         {
@@ -600,8 +723,16 @@ int TestHostileMeshes(int, char*[])
         }
       }
     }
-    std::printf("%-48s %6lld points %6lld valid triangles: checked\n", hostile.Name.c_str(),
-      static_cast<long long>(input->GetNumberOfPoints()), static_cast<long long>(inputTriangles));
+    if (hostile.Expected == Outcome::Warned && !tally.Warned)
+    {
+      std::printf(
+        "FAIL: %s: no warning \"%s...\"\n", hostile.Name.c_str(), hostile.Message.c_str());
+      ok = false;
+    }
+    std::printf("%-52s %6lld points %6lld valid triangles: %-8s (%d succeeded, %d failed)\n",
+      hostile.Name.c_str(), static_cast<long long>(input->GetNumberOfPoints()),
+      static_cast<long long>(inputTriangles), NameOf(hostile.Expected), tally.Succeeded,
+      tally.Failed);
   }
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

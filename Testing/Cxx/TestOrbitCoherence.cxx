@@ -16,8 +16,9 @@
 // the view axis at the same distance in every frame, so its change is 0 px
 // whatever the orbit; it is measured the same way, from its analytic mask.
 // The smoothed outline's largest change, in 5-degree bins, must stay within
-// 1 px of it, and below the raw coarse mesh's, whose polygonal outline turns
-// with the mesh. A 20,480-triangle sphere shows what the pixel grid alone
+// 0.8 px of it (measured: 0.58 px), a limit the raw coarse mesh, whose
+// polygonal outline turns with the mesh, fails (1.19 px); and below the raw
+// mesh's. A 20,480-triangle sphere shows what the pixel grid alone
 // contributes.
 #include "vtkCamera.h"
 #include "vtkIcosphereSource.h"
@@ -236,11 +237,24 @@ int TestOrbitCoherence(int, char*[])
               "distance to the exact circle over the orbit is %.3f px\n",
     smooth.WorstFrame, (smooth.WorstFrame + 1) % frames, worstOffCircle);
 
-  if (!(smooth.Largest <= truth.Largest + 1.0))
+  // Between the measured 0.58 px and the raw mesh's 1.19 px.
+  constexpr double Limit = 0.8;
+  for (int v : { 1, 3 })
   {
-    std::printf("FAIL: the smoothed silhouette jumps by %.3f px between frames, more than 1 px "
+    std::printf("%s: %.3f px beyond the exact answer, limit %.1f: %s\n", variants[v]->Name,
+      figures[v][0].Largest - truth.Largest, Limit,
+      figures[v][0].Largest <= truth.Largest + Limit ? "within" : "beyond");
+  }
+  if (!(smooth.Largest <= truth.Largest + Limit))
+  {
+    std::printf("FAIL: the smoothed silhouette jumps by %.3f px between frames, more than %.1f px "
                 "beyond the exact answer's %.3f px\n",
-      smooth.Largest, truth.Largest);
+      smooth.Largest, Limit, truth.Largest);
+    return EXIT_FAILURE;
+  }
+  if (figures[3][0].Largest <= truth.Largest + Limit)
+  {
+    std::printf("FAIL: the raw coarse mesh is within the limit too: it tells nothing apart\n");
     return EXIT_FAILURE;
   }
   if (!(figures[3][0].Largest > smooth.Largest))

@@ -2,8 +2,14 @@
 
 #include "EvaluationModels.h"
 
+#include "ArgumentList.h"
 #include "CliErrors.h"
 #include "CommandHelp.h"
+#include "Commands.h"
+#include "Compare.h"
+#include "Figure.h"
+#include "Generate.h"
+#include "Simplify.h"
 #include "Smoothing.h"
 #include "Viewer.h"
 
@@ -255,44 +261,6 @@ FigureOptions ParseFigure(ArgumentList& arguments, RenderBackend& backend)
 bool IsHelpWord(const std::string& word)
 {
   return word == "--help" || word == "-h";
-}
-
-// The help of `command`, or UsageError if there is no such command.
-std::string HelpOf(const std::string& command)
-{
-  if (command == "smooth")
-  {
-    return SmoothHelp();
-  }
-  if (command == "render")
-  {
-    return RenderHelp();
-  }
-  if (command == "generate")
-  {
-    return GenerateHelp();
-  }
-  if (command == "compare")
-  {
-    return CompareHelp();
-  }
-  if (command == "figure")
-  {
-    return FigureHelp();
-  }
-  if (command == "view")
-  {
-    return ViewHelp();
-  }
-  if (command == "simplify")
-  {
-    return SimplifyHelp();
-  }
-  if (command == "help")
-  {
-    return MainHelp();
-  }
-  throw UsageError("unknown command '" + command + "'; run 'silhouette --help'");
 }
 
 std::optional<RenderStyle> ParseRenderStyle(const std::string& name)
@@ -587,6 +555,87 @@ RenderOptions ParseRender(
   return options;
 }
 
+Rendering NoRendering(const CommandLine&)
+{
+  return Rendering::None;
+}
+
+Rendering OffscreenRendering(const CommandLine&)
+{
+  return Rendering::Offscreen;
+}
+
+// The program's commands: name, help, parsing, running, rendering.
+const Command Commands[] = {
+  { "smooth", SmoothHelp,
+    [](const std::string& name, ArgumentList& arguments, CommandLine& into) {
+      into.Smooth = ParseSmooth(name, arguments);
+    },
+    [](const CommandLine& commandLine) { RunSmooth(commandLine.Smooth); }, NoRendering },
+  { "render", RenderHelp,
+    [](const std::string& name, ArgumentList& arguments, CommandLine& into) {
+      into.Render = ParseRender(name, arguments, into.Backend);
+    },
+    [](const CommandLine& commandLine) { RunRender(commandLine.Render); }, OffscreenRendering },
+  { "generate", GenerateHelp,
+    [](const std::string&, ArgumentList& arguments, CommandLine& into) {
+      into.Generate = ParseGenerate(arguments);
+    },
+    [](const CommandLine& commandLine) { RunGenerate(commandLine.Generate); }, NoRendering },
+  { "compare", CompareHelp,
+    [](const std::string&, ArgumentList& arguments, CommandLine& into) {
+      into.Compare = ParseCompare(arguments, into.Backend);
+    },
+    [](const CommandLine& commandLine) { RunCompare(commandLine.Compare); }, OffscreenRendering },
+  { "figure", FigureHelp,
+    [](const std::string&, ArgumentList& arguments, CommandLine& into) {
+      into.Figure = ParseFigure(arguments, into.Backend);
+    },
+    [](const CommandLine& commandLine) { RunFigure(commandLine.Figure); }, OffscreenRendering },
+  { "view", ViewHelp,
+    [](const std::string&, ArgumentList& arguments, CommandLine& into) {
+      into.View = ParseView(arguments, into.Backend);
+    },
+    [](const CommandLine& commandLine) { RunView(commandLine.View); },
+    [](const CommandLine& commandLine) {
+      // An orbit or a played log renders offscreen; otherwise a window.
+      const ViewOptions& view = commandLine.View;
+      return view.Orbit || !view.PlayLog.empty() ? Rendering::Offscreen : Rendering::Window;
+    } },
+  { "simplify", SimplifyHelp,
+    [](const std::string& name, ArgumentList& arguments, CommandLine& into) {
+      SimplifyOptions& simplify = into.Simplify;
+      ParseCommand(
+        name, arguments, simplify, [&simplify](const Option& option, ArgumentList& args) {
+          return ParseSimplifyOption(option, args, simplify);
+        });
+      CheckSimplifyOptions(simplify);
+    },
+    [](const CommandLine& commandLine) { RunSimplify(commandLine.Simplify); },
+    [](const CommandLine& commandLine) {
+      return commandLine.Simplify.Measure ? Rendering::Offscreen : Rendering::None;
+    } },
+};
+
+// The command named `name`, or UsageError if there is none.
+const Command& FindCommand(const std::string& name)
+{
+  for (const Command& command : Commands)
+  {
+    if (name == command.Name)
+    {
+      return command;
+    }
+  }
+  throw UsageError("unknown command '" + name + "'; run 'silhouette --help'");
+}
+
+// The help of `command` ("help" is the program's), or UsageError.
+std::string HelpOf(const std::string& command)
+{
+  return command == "help" ? MainHelp() : FindCommand(command).Help();
+}
+
 } // namespace
 
 const char* NameOf(RenderStyle style)
@@ -643,46 +692,8 @@ CommandLine ParseCommandLine(int argc, char* argv[])
   }
 
   ArgumentList arguments({ words.begin() + 1, words.end() });
-  if (command == "generate")
-  {
-    result.What = CommandLine::Action::Generate;
-    result.Generate = ParseGenerate(arguments);
-  }
-  else if (command == "compare")
-  {
-    result.What = CommandLine::Action::Compare;
-    result.Compare = ParseCompare(arguments, result.Backend);
-  }
-  else if (command == "figure")
-  {
-    result.What = CommandLine::Action::Figure;
-    result.Figure = ParseFigure(arguments, result.Backend);
-  }
-  else if (command == "view")
-  {
-    result.What = CommandLine::Action::View;
-    result.View = ParseView(arguments, result.Backend);
-  }
-  else if (command == "simplify")
-  {
-    result.What = CommandLine::Action::Simplify;
-    SimplifyOptions& simplify = result.Simplify;
-    ParseCommand(
-      command, arguments, simplify, [&simplify](const Option& option, ArgumentList& args) {
-        return ParseSimplifyOption(option, args, simplify);
-      });
-    CheckSimplifyOptions(simplify);
-  }
-  else if (command == "smooth")
-  {
-    result.What = CommandLine::Action::Smooth;
-    result.Smooth = ParseSmooth(command, arguments);
-  }
-  else
-  {
-    result.What = CommandLine::Action::Render;
-    result.Render = ParseRender(command, arguments, result.Backend);
-  }
+  result.Selected = &FindCommand(command);
+  result.Selected->Parse(command, arguments, result);
   return result;
 }
 

@@ -81,21 +81,35 @@ struct ViewOptions
   CameraOptions Camera;
 };
 
+class ArgumentList;
+struct CommandLine;
+
+/// Whether a command renders: it picks its back-end before any VTK window
+/// exists, an on-screen one for an interactive window.
+enum class Rendering
+{
+  None,
+  Offscreen,
+  Window
+};
+
+/// One command of the program. The table in CommandLine.cxx lists them all;
+/// nothing else names them.
+struct Command
+{
+  const char* Name;
+  std::string (*Help)();
+  /// Parses the command's arguments into its options in `into`; throws
+  /// UsageError.
+  void (*Parse)(const std::string& name, ArgumentList& arguments, CommandLine& into);
+  void (*Run)(const CommandLine& commandLine);
+  Rendering (*Renders)(const CommandLine& commandLine);
+};
+
 /// What the command line asks for.
 struct CommandLine
 {
-  enum class Action
-  {
-    ShowHelp, ///< print HelpText and exit 0
-    Smooth,
-    Render,
-    Generate,
-    Compare,
-    Figure,
-    View,
-    Simplify
-  };
-  Action What = Action::ShowHelp;
+  const Command* Selected = nullptr; ///< null: print HelpText and exit 0
   std::string HelpText;
   SmoothOptions Smooth;
   RenderOptions Render;

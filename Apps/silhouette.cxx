@@ -2,13 +2,8 @@
 // Run `silhouette --help` for what it does.
 #include "CliErrors.h"
 #include "CommandLine.h"
-#include "Commands.h"
-#include "Compare.h"
-#include "Figure.h"
-#include "Generate.h"
 #include "PrintableText.h"
 #include "RenderingBackend.h"
-#include "Viewer.h"
 #include "VtkErrorLog.h"
 
 #include <csignal>
@@ -29,31 +24,12 @@ int Fail(cli::ExitStatus status, const std::string& message)
 // (this may restart the program with the OSMesa library preloaded).
 void SelectBackendFor(const cli::CommandLine& commandLine, char* argv[])
 {
-  using Action = cli::CommandLine::Action;
-  switch (commandLine.What)
+  const cli::Rendering rendering =
+    commandLine.Selected ? commandLine.Selected->Renders(commandLine) : cli::Rendering::None;
+  if (rendering != cli::Rendering::None)
   {
-    case Action::Render:
-    case Action::Compare:
-    case Action::Figure:
-      cli::SelectRenderBackend(commandLine.Backend, false, argv);
-      cli::GuardRenderingAborts(argv);
-      break;
-    case Action::Simplify:
-      if (commandLine.Simplify.Measure)
-      {
-        cli::SelectRenderBackend(commandLine.Backend, false, argv);
-        cli::GuardRenderingAborts(argv);
-      }
-      break;
-    case Action::View:
-    {
-      const bool headless = commandLine.View.Orbit || !commandLine.View.PlayLog.empty();
-      cli::SelectRenderBackend(commandLine.Backend, !headless, argv);
-      cli::GuardRenderingAborts(argv);
-      break;
-    }
-    default:
-      break;
+    cli::SelectRenderBackend(commandLine.Backend, rendering == cli::Rendering::Window, argv);
+    cli::GuardRenderingAborts(argv);
   }
 }
 
@@ -70,32 +46,13 @@ int main(int argc, char* argv[])
   {
     const cli::CommandLine commandLine = cli::ParseCommandLine(argc, argv);
     SelectBackendFor(commandLine, argv);
-    switch (commandLine.What)
+    if (commandLine.Selected)
     {
-      case cli::CommandLine::Action::ShowHelp:
-        std::cout << commandLine.HelpText;
-        break;
-      case cli::CommandLine::Action::Smooth:
-        cli::RunSmooth(commandLine.Smooth);
-        break;
-      case cli::CommandLine::Action::Render:
-        cli::RunRender(commandLine.Render);
-        break;
-      case cli::CommandLine::Action::Generate:
-        cli::RunGenerate(commandLine.Generate);
-        break;
-      case cli::CommandLine::Action::Compare:
-        cli::RunCompare(commandLine.Compare);
-        break;
-      case cli::CommandLine::Action::Figure:
-        cli::RunFigure(commandLine.Figure);
-        break;
-      case cli::CommandLine::Action::View:
-        cli::RunView(commandLine.View);
-        break;
-      case cli::CommandLine::Action::Simplify:
-        cli::RunSimplify(commandLine.Simplify);
-        break;
+      commandLine.Selected->Run(commandLine);
+    }
+    else
+    {
+      std::cout << commandLine.HelpText;
     }
     return cli::ExitSuccess;
   }

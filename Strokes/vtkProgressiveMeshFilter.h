@@ -12,7 +12,7 @@
  * negative). The sequence is built once per input; changing the count only
  * applies splits or collapses. At the full count the output is the input
  * mesh exactly: same points (positions bit for bit, less points used by no
- * triangle), same triangles in the same order. Filters/Core/ProgressiveMesh.h
+ * triangle), same triangles in the same order. Strokes/Core/ProgressiveMesh.h
  * has the details.
  *
  * Input: triangles only (polygons of other sizes and strips are an error; run
@@ -28,12 +28,12 @@
 #ifndef vtkProgressiveMeshFilter_h
 #define vtkProgressiveMeshFilter_h
 
-#include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
+#include "SilhouetteSmoothingFiltersStrokesModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <memory> // For std::unique_ptr
 
-class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkProgressiveMeshFilter
+class SILHOUETTESMOOTHINGFILTERSSTROKES_EXPORT vtkProgressiveMeshFilter
   : public vtkPolyDataAlgorithm
 {
 public:

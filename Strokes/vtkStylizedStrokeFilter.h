@@ -15,7 +15,7 @@
  * - HAND: low-magnitude smooth noise, along and across the stroke,
  * - ROUGH: high-magnitude noise along the stroke (per point).
  *
- * Filters/Core/StrokeStylizer.h has the formulas. |v_x| and |v_y| never
+ * Strokes/Core/StrokeStylizer.h has the formulas. |v_x| and |v_y| never
  * exceed the amplitude, and Amplitude 0 with Spacing 0 gives the input
  * points back. The noise is seeded (Seed) and repeatable. A closed polyline
  * (last point equal to the first) stays closed without a seam: its
@@ -39,10 +39,10 @@
 #ifndef vtkStylizedStrokeFilter_h
 #define vtkStylizedStrokeFilter_h
 
-#include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
+#include "SilhouetteSmoothingFiltersStrokesModule.h" // For export macro
 #include "vtkSilhouetteViewAlgorithm.h"
 
-class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkStylizedStrokeFilter
+class SILHOUETTESMOOTHINGFILTERSSTROKES_EXPORT vtkStylizedStrokeFilter
   : public vtkSilhouetteViewAlgorithm
 {
 public:

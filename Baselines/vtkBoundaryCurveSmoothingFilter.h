@@ -10,7 +10,7 @@
  * curve (tangents: the projected vertex normals turned by pi/2, magnitudes
  * from rho), which is back-projected to 3D and sampled; the two triangles of
  * the edge are fanned from their opposite vertices to the samples. New points
- * get linearly interpolated normals. Filters/Core/BoundaryCurveSmoother.h
+ * get linearly interpolated normals. Baselines/Core/BoundaryCurveSmoother.h
  * lists the choices the paper leaves open (and why rho is cos t / (1 + cos t)).
  *
  * It is kept for comparison (`silhouette compare`), not as an alternative:
@@ -36,12 +36,12 @@
 #ifndef vtkBoundaryCurveSmoothingFilter_h
 #define vtkBoundaryCurveSmoothingFilter_h
 
-#include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
+#include "SilhouetteSmoothingFiltersBaselinesModule.h" // For export macro
 #include "vtkSilhouetteViewAlgorithm.h"
 
 #include <memory> // For the internals
 
-class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkBoundaryCurveSmoothingFilter
+class SILHOUETTESMOOTHINGFILTERSBASELINES_EXPORT vtkBoundaryCurveSmoothingFilter
   : public vtkSilhouetteViewAlgorithm
 {
 public:

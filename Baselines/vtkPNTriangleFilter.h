@@ -7,7 +7,7 @@
  * with: every triangle becomes a cubic Bezier triangle built from its
  * corners' positions and normals, with quadratic normals, tessellated with
  * `Level` points inserted on every edge, so each input triangle gives
- * (Level + 1)^2 triangles (Filters/Core/PNTriangles.h has the formulas).
+ * (Level + 1)^2 triangles (Baselines/Core/PNTriangles.h has the formulas).
  *
  * Input: a vtkPolyData; polygons are fan-triangulated, strips split; point
  * normals are used when present (zero ones are replaced), angle-weighted
@@ -22,10 +22,10 @@
 #ifndef vtkPNTriangleFilter_h
 #define vtkPNTriangleFilter_h
 
-#include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
+#include "SilhouetteSmoothingFiltersBaselinesModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkPNTriangleFilter : public vtkPolyDataAlgorithm
+class SILHOUETTESMOOTHINGFILTERSBASELINES_EXPORT vtkPNTriangleFilter : public vtkPolyDataAlgorithm
 {
 public:
   static vtkPNTriangleFilter* New();

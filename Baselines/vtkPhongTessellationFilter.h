@@ -8,7 +8,7 @@
  * projections onto the corners' tangent planes by `ShapeFactor`, with Phong
  * normals (the corner normals interpolated linearly, normalised). It is
  * tessellated with `Level` points inserted on every edge, so each input
- * triangle gives (Level + 1)^2 triangles (Filters/Core/PhongTessellation.h
+ * triangle gives (Level + 1)^2 triangles (Baselines/Core/PhongTessellation.h
  * has the formulas).
  *
  * Input: a vtkPolyData; polygons are fan-triangulated, strips split; point
@@ -26,10 +26,10 @@
 #ifndef vtkPhongTessellationFilter_h
 #define vtkPhongTessellationFilter_h
 
-#include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
+#include "SilhouetteSmoothingFiltersBaselinesModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkPhongTessellationFilter
+class SILHOUETTESMOOTHINGFILTERSBASELINES_EXPORT vtkPhongTessellationFilter
   : public vtkPolyDataAlgorithm
 {
 public:

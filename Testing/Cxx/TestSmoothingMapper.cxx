@@ -272,6 +272,293 @@ vtkSmartPointer<vtkTexture> Checkers()
   return texture;
 }
 
+struct MapperCase
+{
+  const char* Name;
+  vtkPolyData* Mesh;
+  Colouring How;
+  double Zoom = 1.3;
+  /// A clipping plane through the mesh's centre, on both mappers.
+  bool Clipped = false;
+  /// The actors' opacity (below 1: the translucent pass).
+  double Opacity = 1.0;
+};
+
+// One case: the mapper's image against filter + mapper's over the views,
+// the wrong variants that must fail, and selection.
+bool CheckCase(const MapperCase& c, vtkTexture* filterTexture, vtkTexture* mapperTexture)
+{
+  bool ok = true;
+  vtkSmartPointer<vtkPolyData> mesh = Coloured(c.Mesh, c.How);
+  Scene viaFilter;
+  vtkNew<vtkSilhouetteSmoothingFilter> filter;
+  filter->SetInputData(mesh);
+  filter->SetRenderer(viaFilter.Renderer);
+  filter->SetProp3D(viaFilter.Actor);
+  vtkNew<vtkPolyDataMapper> plain;
+  plain->SetInputConnection(filter->GetOutputPort());
+  Configure(plain, viaFilter.Actor, c.How, filterTexture);
+  viaFilter.Actor->SetMapper(plain);
+
+  Scene viaMapper;
+  viaFilter.Zoom = viaMapper.Zoom = c.Zoom;
+  vtkNew<vtkSilhouetteSmoothingMapper> mapper;
+  mapper->SetInputData(mesh);
+  Configure(mapper, viaMapper.Actor, c.How, mapperTexture);
+  viaMapper.Actor->SetMapper(mapper);
+  for (Scene* scene : { &viaFilter, &viaMapper })
+  {
+    scene->Actor->GetProperty()->SetOpacity(c.Opacity);
+  }
+  if (c.Clipped)
+  {
+    // Oblique, through the centre: it cuts across silhouette triangles.
+    const double* centre = mesh->GetCenter();
+    for (vtkMapper* m : { static_cast<vtkMapper*>(plain), static_cast<vtkMapper*>(mapper) })
+    {
+      vtkNew<vtkPlane> plane;
+      plane->SetOrigin(centre[0], centre[1], centre[2]);
+      plane->SetNormal(0.6, -0.3, 0.74);
+      m->AddClippingPlane(plane);
+    }
+  }
+
+  long worst = 0;
+  long leastUnsmoothed = -1;
+  vtkIdType culled = 0;
+  for (int view = 0; view < Views; ++view)
+  {
+    viaFilter.Look(mesh, view);
+    viaMapper.Look(mesh, view);
+    const std::vector<unsigned char> expected = viaFilter.Pixels();
+    mapper->SmoothingOff();
+    const long unsmoothed = Differing(viaMapper.Pixels(), expected);
+    mapper->SmoothingOn();
+    const long differing = Differing(viaMapper.Pixels(), expected);
+    worst = std::max(worst, differing);
+    culled += mapper->GetCulledTriangleCount();
+    leastUnsmoothed = leastUnsmoothed < 0 ? unsmoothed : std::min(leastUnsmoothed, unsmoothed);
+    if (view == 0 && mapper->GetReplacedTriangleCount() == 0)
+    {
+      std::printf("FAIL: %s: the mapper replaced no triangle\n", c.Name);
+      ok = false;
+    }
+    if (view == 0 && (c.Clipped || c.Opacity < 1.0))
+    {
+      // The wrong variant: the mapper without the plane, or opaque, must
+      // fail the check, or the case does not test what it names.
+      vtkSmartPointer<vtkPlaneCollection> planes = mapper->GetClippingPlanes();
+      mapper->SetClippingPlanes(static_cast<vtkPlaneCollection*>(nullptr));
+      viaMapper.Actor->GetProperty()->SetOpacity(1.0);
+      const long without = Differing(viaMapper.Pixels(), expected);
+      mapper->SetClippingPlanes(planes);
+      viaMapper.Actor->GetProperty()->SetOpacity(c.Opacity);
+      std::printf("%s: %s, %ld pixels differ\n", c.Name,
+        c.Clipped ? "without the clipping plane" : "opaque", without);
+      if (without <= MaximumDifferingPixels)
+      {
+        std::printf("FAIL: %s: the check cannot tell\n", c.Name);
+        ok = false;
+      }
+    }
+  }
+  std::printf("%s: at most %ld pixels differ from the filter's image over %d views "
+              "(limit %ld); with smoothing off at least %ld\n",
+    c.Name, worst, Views, MaximumDifferingPixels, leastUnsmoothed);
+  if (c.Zoom > 2.0)
+  {
+    std::printf("%s: %lld silhouette triangles outside the view left as they are\n", c.Name,
+      static_cast<long long>(culled));
+    if (culled == 0)
+    {
+      std::printf("FAIL: %s: nothing was outside the view, the case is not tested\n", c.Name);
+      ok = false;
+    }
+  }
+  if (worst > MaximumDifferingPixels)
+  {
+    std::printf("FAIL: %s: the mapper's image is not the filter's\n", c.Name);
+    ok = false;
+  }
+  if (leastUnsmoothed <= MaximumDifferingPixels)
+  {
+    std::printf("FAIL: %s: the chord-only outline passes the check, which cannot fail\n", c.Name);
+    ok = false;
+  }
+
+  if (c.How == Colouring::Plain)
+  {
+    // Selection: the input cell under every pixel, as the filter's output
+    // says (through OriginalCellId).
+    viaFilter.Look(mesh, 1);
+    viaMapper.Look(mesh, 1);
+    viaFilter.Window->Render();
+    viaMapper.Window->Render();
+    vtkIdTypeArray* original =
+      vtkIdTypeArray::SafeDownCast(filter->GetOutput()->GetCellData()->GetArray("OriginalCellId"));
+    const std::vector<vtkIdType> expected = viaFilter.CellUnderPixels(original);
+    const std::vector<vtkIdType> picked = viaMapper.CellUnderPixels(nullptr);
+    long mismatches = 0;
+    long covered = 0;
+    long outOfRange = 0;
+    for (std::size_t p = 0; p < expected.size(); ++p)
+    {
+      mismatches += expected[p] != picked[p] ? 1 : 0;
+      covered += expected[p] >= 0 ? 1 : 0;
+      outOfRange += picked[p] >= mesh->GetNumberOfCells() ? 1 : 0;
+    }
+    std::printf("%s: selection: %ld of %ld covered pixels report another cell than the "
+                "filter's; %ld ids beyond the input's cells\n",
+      c.Name, mismatches, covered, outOfRange);
+    if (covered == 0 || mismatches > MaximumDifferingPixels || outOfRange > 0)
+    {
+      std::printf("FAIL: %s: selection does not report the input's cells\n", c.Name);
+      ok = false;
+    }
+  }
+  return ok;
+}
+
+// Ghost cells: the cells of one side of the sphere are another piece's.
+bool CheckGhostCells(vtkPolyData* sphere, vtkTexture* filterTexture, vtkTexture* mapperTexture)
+{
+  bool ok = true;
+  vtkNew<vtkPolyData> piece;
+  piece->DeepCopy(sphere);
+  vtkNew<vtkUnsignedCharArray> ghosts;
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  ghosts->SetNumberOfValues(piece->GetNumberOfCells());
+  long ghostCells = 0;
+  for (vtkIdType c = 0; c < piece->GetNumberOfCells(); ++c)
+  {
+    double bounds[6];
+    piece->GetCellBounds(c, bounds);
+    const bool ghost = bounds[0] + bounds[1] > 0.3;
+    ghosts->SetValue(c, ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
+    ghostCells += ghost ? 1 : 0;
+  }
+  piece->GetCellData()->AddArray(ghosts);
+  Scene viaFilter;
+  Scene viaMapper;
+  viaFilter.Look(piece, 0);
+  viaMapper.Look(piece, 0);
+  // The filter: ghost cells pass through as they are.
+  auto count = [&](const char* ghostName) {
+    vtkNew<vtkPolyData> named;
+    named->DeepCopy(piece);
+    named->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName())->SetName(ghostName);
+    vtkNew<vtkSilhouetteSmoothingFilter> filter;
+    filter->SetInputData(named);
+    filter->SetRenderer(viaFilter.Renderer);
+    filter->Update();
+    vtkPolyData* out = filter->GetOutput();
+    vtkDataArray* made = out->GetCellData()->GetArray("NewGeometry");
+    vtkDataArray* from = out->GetCellData()->GetArray("OriginalCellId");
+    long remeshedGhosts = 0;
+    for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+    {
+      remeshedGhosts +=
+        made->GetTuple1(c) > 0 && ghosts->GetValue(static_cast<vtkIdType>(from->GetTuple1(c))) ? 1
+                                                                                               : 0;
+    }
+    return remeshedGhosts;
+  };
+  const long remeshed = count(vtkDataSetAttributes::GhostArrayName());
+  const long remeshedIfNotGhosts = count("NotGhosts");
+  std::printf("ghost cells: %ld of %lld; new triangles from them %ld (%ld were they not "
+              "ghosts)\n",
+    ghostCells, static_cast<long long>(piece->GetNumberOfCells()), remeshed, remeshedIfNotGhosts);
+  if (remeshed != 0 || remeshedIfNotGhosts == 0)
+  {
+    std::printf("FAIL: ghost cells are re-meshed, or the case has none to re-mesh\n");
+    ok = false;
+  }
+  // The mapper: the filter's output without its ghost cells, drawn.
+  vtkNew<vtkSilhouetteSmoothingFilter> filter;
+  filter->SetInputData(piece);
+  filter->SetRenderer(viaFilter.Renderer);
+  filter->Update();
+  vtkNew<vtkPolyDataMapper> plain;
+  plain->SetInputData(WithoutGhosts(filter->GetOutput()));
+  Configure(plain, viaFilter.Actor, Colouring::Plain, filterTexture);
+  viaFilter.Actor->SetMapper(plain);
+  vtkNew<vtkSilhouetteSmoothingMapper> mapper;
+  mapper->SetInputData(piece);
+  Configure(mapper, viaMapper.Actor, Colouring::Plain, mapperTexture);
+  viaMapper.Actor->SetMapper(mapper);
+  const std::vector<unsigned char> expected = viaFilter.Pixels();
+  const long differing = Differing(viaMapper.Pixels(), expected);
+  vtkNew<vtkPolyDataMapper> withGhosts;
+  withGhosts->SetInputData(filter->GetOutput());
+  Configure(withGhosts, viaFilter.Actor, Colouring::Plain, filterTexture);
+  viaFilter.Actor->SetMapper(withGhosts);
+  const long ghostsDrawn = Differing(viaFilter.Pixels(), expected);
+  std::printf("ghost cells: the mapper's image differs from the filter's without ghosts in "
+              "%ld pixels; drawing the ghosts too differs in %ld\n",
+    differing, ghostsDrawn);
+  if (differing > MaximumDifferingPixels || ghostsDrawn <= MaximumDifferingPixels)
+  {
+    std::printf("FAIL: ghost cells drawn, or the check cannot fail\n");
+    ok = false;
+  }
+  return ok;
+}
+
+// A deforming mesh (new points, the same cells, as a time series gives):
+// the filter keeps the base mesh's cell arrays (WeldedSurface::movePoints),
+// and the mapper's image still equals the filter's, frame after frame.
+bool CheckDeformingMesh(vtkPolyData* bunny, vtkTexture* filterTexture, vtkTexture* mapperTexture)
+{
+  bool ok = true;
+  vtkNew<vtkPolyData> deforming;
+  deforming->DeepCopy(bunny);
+  vtkNew<vtkSilhouetteSmoothingFilter> builder;
+  vtkNew<vtkPolyData> base;
+  builder->BuildBaseMesh(deforming, base);
+  vtkCellArray* cellsBefore = base->GetPolys();
+  Scene viaFilter;
+  vtkNew<vtkSilhouetteSmoothingFilter> filter;
+  filter->SetInputData(deforming);
+  filter->SetRenderer(viaFilter.Renderer);
+  filter->SetProp3D(viaFilter.Actor);
+  vtkNew<vtkPolyDataMapper> plain;
+  plain->SetInputConnection(filter->GetOutputPort());
+  Configure(plain, viaFilter.Actor, Colouring::Plain, filterTexture);
+  viaFilter.Actor->SetMapper(plain);
+  Scene viaMapper;
+  vtkNew<vtkSilhouetteSmoothingMapper> mapper;
+  mapper->SetInputData(deforming);
+  Configure(mapper, viaMapper.Actor, Colouring::Plain, mapperTexture);
+  viaMapper.Actor->SetMapper(mapper);
+  viaFilter.Look(deforming, 0);
+  viaMapper.Look(deforming, 0);
+  long worst = 0;
+  bool keptCells = true;
+  for (int step = 0; step < 3; ++step)
+  {
+    vtkPoints* points = deforming->GetPoints();
+    for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+    {
+      double x[3];
+      points->GetPoint(p, x);
+      points->SetPoint(p, x[0] * 1.03, x[1] + 0.02 * x[0], x[2]);
+    }
+    points->Modified();
+    builder->BuildBaseMesh(deforming, base);
+    keptCells = keptCells && base->GetPolys() == cellsBefore;
+    worst = std::max(worst, Differing(viaMapper.Pixels(), viaFilter.Pixels()));
+  }
+  std::printf("deforming bunny: at most %ld pixels differ over 3 moves; the base mesh %s its "
+              "cell arrays\n",
+    worst, keptCells ? "kept" : "did not keep");
+  if (worst > MaximumDifferingPixels || !keptCells)
+  {
+    std::printf("FAIL: deforming bunny\n");
+    ok = false;
+  }
+  return ok;
+}
+
 } // namespace
 
 int TestSmoothingMapper(int argc, char* argv[])
@@ -297,18 +584,7 @@ int TestSmoothingMapper(int argc, char* argv[])
   // context.
   vtkSmartPointer<vtkTexture> filterTexture = Checkers();
   vtkSmartPointer<vtkTexture> mapperTexture = Checkers();
-  struct Case
-  {
-    const char* Name;
-    vtkPolyData* Mesh;
-    Colouring How;
-    double Zoom = 1.3;
-    /// A clipping plane through the mesh's centre, on both mappers.
-    bool Clipped = false;
-    /// The actors' opacity (below 1: the translucent pass).
-    double Opacity = 1.0;
-  };
-  const Case cases[] = { { "sphere", sphere->GetOutput(), Colouring::Plain },
+  const MapperCase cases[] = { { "sphere", sphere->GetOutput(), Colouring::Plain },
     { "torus", torus->GetOutput(), Colouring::Plain }, { "bunny", bunny, Colouring::Plain },
     { "bunny, point scalars", bunny, Colouring::PointScalars },
     { "torus, cell scalars", torus->GetOutput(), Colouring::CellScalars },
@@ -322,269 +598,11 @@ int TestSmoothingMapper(int argc, char* argv[])
       0.5 } };
 
   bool ok = true;
-  for (const Case& c : cases)
+  for (const MapperCase& c : cases)
   {
-    vtkSmartPointer<vtkPolyData> mesh = Coloured(c.Mesh, c.How);
-    Scene viaFilter;
-    vtkNew<vtkSilhouetteSmoothingFilter> filter;
-    filter->SetInputData(mesh);
-    filter->SetRenderer(viaFilter.Renderer);
-    filter->SetProp3D(viaFilter.Actor);
-    vtkNew<vtkPolyDataMapper> plain;
-    plain->SetInputConnection(filter->GetOutputPort());
-    Configure(plain, viaFilter.Actor, c.How, filterTexture);
-    viaFilter.Actor->SetMapper(plain);
-
-    Scene viaMapper;
-    viaFilter.Zoom = viaMapper.Zoom = c.Zoom;
-    vtkNew<vtkSilhouetteSmoothingMapper> mapper;
-    mapper->SetInputData(mesh);
-    Configure(mapper, viaMapper.Actor, c.How, mapperTexture);
-    viaMapper.Actor->SetMapper(mapper);
-    for (Scene* scene : { &viaFilter, &viaMapper })
-    {
-      scene->Actor->GetProperty()->SetOpacity(c.Opacity);
-    }
-    if (c.Clipped)
-    {
-      // Oblique, through the centre: it cuts across silhouette triangles.
-      const double* centre = mesh->GetCenter();
-      for (vtkMapper* m : { static_cast<vtkMapper*>(plain), static_cast<vtkMapper*>(mapper) })
-      {
-        vtkNew<vtkPlane> plane;
-        plane->SetOrigin(centre[0], centre[1], centre[2]);
-        plane->SetNormal(0.6, -0.3, 0.74);
-        m->AddClippingPlane(plane);
-      }
-    }
-
-    long worst = 0;
-    long leastUnsmoothed = -1;
-    vtkIdType culled = 0;
-    for (int view = 0; view < Views; ++view)
-    {
-      viaFilter.Look(mesh, view);
-      viaMapper.Look(mesh, view);
-      const std::vector<unsigned char> expected = viaFilter.Pixels();
-      mapper->SmoothingOff();
-      const long unsmoothed = Differing(viaMapper.Pixels(), expected);
-      mapper->SmoothingOn();
-      const long differing = Differing(viaMapper.Pixels(), expected);
-      worst = std::max(worst, differing);
-      culled += mapper->GetCulledTriangleCount();
-      leastUnsmoothed = leastUnsmoothed < 0 ? unsmoothed : std::min(leastUnsmoothed, unsmoothed);
-      if (view == 0 && mapper->GetReplacedTriangleCount() == 0)
-      {
-        std::printf("FAIL: %s: the mapper replaced no triangle\n", c.Name);
-        ok = false;
-      }
-      if (view == 0 && (c.Clipped || c.Opacity < 1.0))
-      {
-        // The wrong variant: the mapper without the plane, or opaque, must
-        // fail the check, or the case does not test what it names.
-        vtkSmartPointer<vtkPlaneCollection> planes = mapper->GetClippingPlanes();
-        mapper->SetClippingPlanes(static_cast<vtkPlaneCollection*>(nullptr));
-        viaMapper.Actor->GetProperty()->SetOpacity(1.0);
-        const long without = Differing(viaMapper.Pixels(), expected);
-        mapper->SetClippingPlanes(planes);
-        viaMapper.Actor->GetProperty()->SetOpacity(c.Opacity);
-        std::printf("%s: %s, %ld pixels differ\n", c.Name,
-          c.Clipped ? "without the clipping plane" : "opaque", without);
-        if (without <= MaximumDifferingPixels)
-        {
-          std::printf("FAIL: %s: the check cannot tell\n", c.Name);
-          ok = false;
-        }
-      }
-    }
-    std::printf("%s: at most %ld pixels differ from the filter's image over %d views "
-                "(limit %ld); with smoothing off at least %ld\n",
-      c.Name, worst, Views, MaximumDifferingPixels, leastUnsmoothed);
-    if (c.Zoom > 2.0)
-    {
-      std::printf("%s: %lld silhouette triangles outside the view left as they are\n", c.Name,
-        static_cast<long long>(culled));
-      if (culled == 0)
-      {
-        std::printf("FAIL: %s: nothing was outside the view, the case is not tested\n", c.Name);
-        ok = false;
-      }
-    }
-    if (worst > MaximumDifferingPixels)
-    {
-      std::printf("FAIL: %s: the mapper's image is not the filter's\n", c.Name);
-      ok = false;
-    }
-    if (leastUnsmoothed <= MaximumDifferingPixels)
-    {
-      std::printf("FAIL: %s: the chord-only outline passes the check, which cannot fail\n", c.Name);
-      ok = false;
-    }
-
-    if (c.How == Colouring::Plain)
-    {
-      // Selection: the input cell under every pixel, as the filter's output
-      // says (through OriginalCellId).
-      viaFilter.Look(mesh, 1);
-      viaMapper.Look(mesh, 1);
-      viaFilter.Window->Render();
-      viaMapper.Window->Render();
-      vtkIdTypeArray* original = vtkIdTypeArray::SafeDownCast(
-        filter->GetOutput()->GetCellData()->GetArray("OriginalCellId"));
-      const std::vector<vtkIdType> expected = viaFilter.CellUnderPixels(original);
-      const std::vector<vtkIdType> picked = viaMapper.CellUnderPixels(nullptr);
-      long mismatches = 0;
-      long covered = 0;
-      long outOfRange = 0;
-      for (std::size_t p = 0; p < expected.size(); ++p)
-      {
-        mismatches += expected[p] != picked[p] ? 1 : 0;
-        covered += expected[p] >= 0 ? 1 : 0;
-        outOfRange += picked[p] >= mesh->GetNumberOfCells() ? 1 : 0;
-      }
-      std::printf("%s: selection: %ld of %ld covered pixels report another cell than the "
-                  "filter's; %ld ids beyond the input's cells\n",
-        c.Name, mismatches, covered, outOfRange);
-      if (covered == 0 || mismatches > MaximumDifferingPixels || outOfRange > 0)
-      {
-        std::printf("FAIL: %s: selection does not report the input's cells\n", c.Name);
-        ok = false;
-      }
-    }
+    ok = CheckCase(c, filterTexture, mapperTexture) && ok;
   }
-  // Ghost cells: the cells of one side of the sphere are another piece's.
-  {
-    vtkNew<vtkPolyData> piece;
-    piece->DeepCopy(sphere->GetOutput());
-    vtkNew<vtkUnsignedCharArray> ghosts;
-    ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
-    ghosts->SetNumberOfValues(piece->GetNumberOfCells());
-    long ghostCells = 0;
-    for (vtkIdType c = 0; c < piece->GetNumberOfCells(); ++c)
-    {
-      double bounds[6];
-      piece->GetCellBounds(c, bounds);
-      const bool ghost = bounds[0] + bounds[1] > 0.3;
-      ghosts->SetValue(c, ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
-      ghostCells += ghost ? 1 : 0;
-    }
-    piece->GetCellData()->AddArray(ghosts);
-    Scene viaFilter;
-    Scene viaMapper;
-    viaFilter.Look(piece, 0);
-    viaMapper.Look(piece, 0);
-    // The filter: ghost cells pass through as they are.
-    auto count = [&](const char* ghostName) {
-      vtkNew<vtkPolyData> named;
-      named->DeepCopy(piece);
-      named->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName())->SetName(ghostName);
-      vtkNew<vtkSilhouetteSmoothingFilter> filter;
-      filter->SetInputData(named);
-      filter->SetRenderer(viaFilter.Renderer);
-      filter->Update();
-      vtkPolyData* out = filter->GetOutput();
-      vtkDataArray* made = out->GetCellData()->GetArray("NewGeometry");
-      vtkDataArray* from = out->GetCellData()->GetArray("OriginalCellId");
-      long remeshedGhosts = 0;
-      for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
-      {
-        remeshedGhosts +=
-          made->GetTuple1(c) > 0 && ghosts->GetValue(static_cast<vtkIdType>(from->GetTuple1(c)))
-          ? 1
-          : 0;
-      }
-      return remeshedGhosts;
-    };
-    const long remeshed = count(vtkDataSetAttributes::GhostArrayName());
-    const long remeshedIfNotGhosts = count("NotGhosts");
-    std::printf("ghost cells: %ld of %lld; new triangles from them %ld (%ld were they not "
-                "ghosts)\n",
-      ghostCells, static_cast<long long>(piece->GetNumberOfCells()), remeshed, remeshedIfNotGhosts);
-    if (remeshed != 0 || remeshedIfNotGhosts == 0)
-    {
-      std::printf("FAIL: ghost cells are re-meshed, or the case has none to re-mesh\n");
-      ok = false;
-    }
-    // The mapper: the filter's output without its ghost cells, drawn.
-    vtkNew<vtkSilhouetteSmoothingFilter> filter;
-    filter->SetInputData(piece);
-    filter->SetRenderer(viaFilter.Renderer);
-    filter->Update();
-    vtkNew<vtkPolyDataMapper> plain;
-    plain->SetInputData(WithoutGhosts(filter->GetOutput()));
-    Configure(plain, viaFilter.Actor, Colouring::Plain, filterTexture);
-    viaFilter.Actor->SetMapper(plain);
-    vtkNew<vtkSilhouetteSmoothingMapper> mapper;
-    mapper->SetInputData(piece);
-    Configure(mapper, viaMapper.Actor, Colouring::Plain, mapperTexture);
-    viaMapper.Actor->SetMapper(mapper);
-    const std::vector<unsigned char> expected = viaFilter.Pixels();
-    const long differing = Differing(viaMapper.Pixels(), expected);
-    vtkNew<vtkPolyDataMapper> withGhosts;
-    withGhosts->SetInputData(filter->GetOutput());
-    Configure(withGhosts, viaFilter.Actor, Colouring::Plain, filterTexture);
-    viaFilter.Actor->SetMapper(withGhosts);
-    const long ghostsDrawn = Differing(viaFilter.Pixels(), expected);
-    std::printf("ghost cells: the mapper's image differs from the filter's without ghosts in "
-                "%ld pixels; drawing the ghosts too differs in %ld\n",
-      differing, ghostsDrawn);
-    if (differing > MaximumDifferingPixels || ghostsDrawn <= MaximumDifferingPixels)
-    {
-      std::printf("FAIL: ghost cells drawn, or the check cannot fail\n");
-      ok = false;
-    }
-  }
-
-  // A deforming mesh (new points, the same cells, as a time series gives):
-  // the filter keeps the base mesh's cell arrays (WeldedSurface::movePoints),
-  // and the mapper's image still equals the filter's, frame after frame.
-  {
-    vtkNew<vtkPolyData> deforming;
-    deforming->DeepCopy(bunny);
-    vtkNew<vtkSilhouetteSmoothingFilter> builder;
-    vtkNew<vtkPolyData> base;
-    builder->BuildBaseMesh(deforming, base);
-    vtkCellArray* cellsBefore = base->GetPolys();
-    Scene viaFilter;
-    vtkNew<vtkSilhouetteSmoothingFilter> filter;
-    filter->SetInputData(deforming);
-    filter->SetRenderer(viaFilter.Renderer);
-    filter->SetProp3D(viaFilter.Actor);
-    vtkNew<vtkPolyDataMapper> plain;
-    plain->SetInputConnection(filter->GetOutputPort());
-    Configure(plain, viaFilter.Actor, Colouring::Plain, filterTexture);
-    viaFilter.Actor->SetMapper(plain);
-    Scene viaMapper;
-    vtkNew<vtkSilhouetteSmoothingMapper> mapper;
-    mapper->SetInputData(deforming);
-    Configure(mapper, viaMapper.Actor, Colouring::Plain, mapperTexture);
-    viaMapper.Actor->SetMapper(mapper);
-    viaFilter.Look(deforming, 0);
-    viaMapper.Look(deforming, 0);
-    long worst = 0;
-    bool keptCells = true;
-    for (int step = 0; step < 3; ++step)
-    {
-      vtkPoints* points = deforming->GetPoints();
-      for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
-      {
-        double x[3];
-        points->GetPoint(p, x);
-        points->SetPoint(p, x[0] * 1.03, x[1] + 0.02 * x[0], x[2]);
-      }
-      points->Modified();
-      builder->BuildBaseMesh(deforming, base);
-      keptCells = keptCells && base->GetPolys() == cellsBefore;
-      worst = std::max(worst, Differing(viaMapper.Pixels(), viaFilter.Pixels()));
-    }
-    std::printf("deforming bunny: at most %ld pixels differ over 3 moves; the base mesh %s its "
-                "cell arrays\n",
-      worst, keptCells ? "kept" : "did not keep");
-    if (worst > MaximumDifferingPixels || !keptCells)
-    {
-      std::printf("FAIL: deforming bunny\n");
-      ok = false;
-    }
-  }
+  ok = CheckGhostCells(sphere->GetOutput(), filterTexture, mapperTexture) && ok;
+  ok = CheckDeformingMesh(bunny, filterTexture, mapperTexture) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -38,10 +38,10 @@
 #ifndef vtkSilhouetteProximity_h
 #define vtkSilhouetteProximity_h
 
-#include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
+#include "SilhouetteSmoothingFiltersSimplificationModule.h" // For export macro
 #include "vtkSilhouetteViewAlgorithm.h"
 
-class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkSilhouetteProximity
+class SILHOUETTESMOOTHINGFILTERSSIMPLIFICATION_EXPORT vtkSilhouetteProximity
   : public vtkSilhouetteViewAlgorithm
 {
 public:

@@ -39,12 +39,12 @@
 #ifndef vtkSilhouetteQuadricDecimation_h
 #define vtkSilhouetteQuadricDecimation_h
 
-#include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
+#include "SilhouetteSmoothingFiltersSimplificationModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
 #include <string> // For the array name
 
-class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkSilhouetteQuadricDecimation
+class SILHOUETTESMOOTHINGFILTERSSIMPLIFICATION_EXPORT vtkSilhouetteQuadricDecimation
   : public vtkPolyDataAlgorithm
 {
 public:

@@ -61,12 +61,12 @@
 #ifndef vtkFaceSilhouetteLines_h
 #define vtkFaceSilhouetteLines_h
 
-#include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
+#include "SilhouetteSmoothingFiltersLinesModule.h" // For export macro
 #include "vtkSilhouetteViewAlgorithm.h"
 
 #include <memory> // For the cached core mesh
 
-class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkFaceSilhouetteLines
+class SILHOUETTESMOOTHINGFILTERSLINES_EXPORT vtkFaceSilhouetteLines
   : public vtkSilhouetteViewAlgorithm
 {
 public:

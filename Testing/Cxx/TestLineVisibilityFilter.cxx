@@ -83,53 +83,11 @@ bool Fail(const char* what)
   return false;
 }
 
-} // namespace
-
-int TestLineVisibilityFilter(int, char*[])
+// Every point against the exact torus.
+bool CheckPointsAgainstTorus(
+  vtkPolyData* out, vtkUnsignedCharArray* pointVisible, const double* eye)
 {
   bool ok = true;
-  vtkNew<vtkTorusSurfaceSource> torus;
-  torus->SetRingResolution(96);
-  torus->SetTubeResolution(48);
-  vtkNew<vtkCamera> camera;
-  camera->SetPosition(0.0, -4.0, 2.5);
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetViewUp(0.0, 0.0, 1.0);
-  const int width = 800;
-  const int height = 600;
-  vtkNew<vtkSilhouetteSmoothingFilter> smoother;
-  smoother->SetInputConnection(torus->GetOutputPort());
-  smoother->SetCamera(camera);
-  smoother->SetViewportSize(width, height);
-  vtkNew<vtkSilhouetteLineVisibility> visibility;
-  visibility->SetInputConnection(smoother->GetOutputPort(1));
-  visibility->SetSurfaceConnection(smoother->GetOutputPort(0));
-  visibility->SetCamera(camera);
-  visibility->Update();
-  vtkPolyData* out = visibility->GetOutput();
-
-  auto* pointVisible = vtkUnsignedCharArray::SafeDownCast(out->GetPointData()->GetArray("Visible"));
-  auto* cellVisible = vtkUnsignedCharArray::SafeDownCast(out->GetCellData()->GetArray("Visible"));
-  auto* original = vtkIdTypeArray::SafeDownCast(out->GetCellData()->GetArray("OriginalCellId"));
-  if (!pointVisible || !cellVisible || !original || !out->GetPointData()->GetNormals())
-  {
-    return Fail("the output lacks Visible, OriginalCellId or the lines' normals") ? 0 : 1;
-  }
-  const vtkIdType visiblePieces =
-    vtkIdTypeArray::SafeDownCast(out->GetFieldData()->GetArray("VisiblePieceCount"))->GetValue(0);
-  const vtkIdType hiddenPieces =
-    vtkIdTypeArray::SafeDownCast(out->GetFieldData()->GetArray("HiddenPieceCount"))->GetValue(0);
-  std::printf("torus: %lld silhouette lines in, %lld visible and %lld hidden pieces out\n",
-    static_cast<long long>(smoother->GetOutput(1)->GetNumberOfLines()),
-    static_cast<long long>(visiblePieces), static_cast<long long>(hiddenPieces));
-  if (hiddenPieces == 0 || visiblePieces == 0 ||
-    out->GetNumberOfLines() != visiblePieces + hiddenPieces)
-  {
-    ok = Fail("expected visible and hidden pieces, one polyline each");
-  }
-
-  // Every point against the exact torus.
-  const double* eye = camera->GetPosition();
   long agree = 0;
   long disagree = 0;
   long grazing = 0;
@@ -158,10 +116,17 @@ int TestLineVisibilityFilter(int, char*[])
   {
     ok = Fail("points classified against the exact torus");
   }
+  return ok;
+}
 
-  // Each change point X (the end of a piece followed by a piece of the same
-  // line) against the nearest exact change along the same two pieces: where
-  // Lowest crosses 0. Both projected to pixels.
+// Each change point X (the end of a piece followed by a piece of the same
+// line) against the nearest exact change along the same two pieces: where
+// Lowest crosses 0. Both projected to pixels.
+bool CheckChangePoints(
+  vtkPolyData* out, vtkIdTypeArray* original, vtkCamera* camera, int width, int height)
+{
+  bool ok = true;
+  const double* eye = camera->GetPosition();
   double worstPixels = 0.0;
   double wrongPixels = 0.0;
   int changes = 0;
@@ -257,9 +222,16 @@ int TestLineVisibilityFilter(int, char*[])
   {
     ok = Fail("the change-point check cannot fail: the vertices before the changes pass it");
   }
+  return ok;
+}
 
-  // The wrong variant: no tolerance, so a silhouette is hidden by the
-  // surface it lies on.
+// The wrong variant: no tolerance, so a silhouette is hidden by the
+// surface it lies on.
+// Then: hidden pieces left out; errors for a negative tolerance and no camera.
+bool CheckOptions(
+  vtkSilhouetteLineVisibility* visibility, vtkIdType visiblePieces, const double* eye)
+{
+  bool ok = true;
   visibility->SetTolerance(1e-9);
   visibility->Update();
   long selfHidden = 0;
@@ -309,5 +281,57 @@ int TestLineVisibilityFilter(int, char*[])
   {
     ok = Fail("no camera was accepted");
   }
+  return ok;
+}
+
+} // namespace
+
+int TestLineVisibilityFilter(int, char*[])
+{
+  bool ok = true;
+  vtkNew<vtkTorusSurfaceSource> torus;
+  torus->SetRingResolution(96);
+  torus->SetTubeResolution(48);
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(0.0, -4.0, 2.5);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+  const int width = 800;
+  const int height = 600;
+  vtkNew<vtkSilhouetteSmoothingFilter> smoother;
+  smoother->SetInputConnection(torus->GetOutputPort());
+  smoother->SetCamera(camera);
+  smoother->SetViewportSize(width, height);
+  vtkNew<vtkSilhouetteLineVisibility> visibility;
+  visibility->SetInputConnection(smoother->GetOutputPort(1));
+  visibility->SetSurfaceConnection(smoother->GetOutputPort(0));
+  visibility->SetCamera(camera);
+  visibility->Update();
+  vtkPolyData* out = visibility->GetOutput();
+
+  auto* pointVisible = vtkUnsignedCharArray::SafeDownCast(out->GetPointData()->GetArray("Visible"));
+  auto* cellVisible = vtkUnsignedCharArray::SafeDownCast(out->GetCellData()->GetArray("Visible"));
+  auto* original = vtkIdTypeArray::SafeDownCast(out->GetCellData()->GetArray("OriginalCellId"));
+  if (!pointVisible || !cellVisible || !original || !out->GetPointData()->GetNormals())
+  {
+    return Fail("the output lacks Visible, OriginalCellId or the lines' normals") ? 0 : 1;
+  }
+  const vtkIdType visiblePieces =
+    vtkIdTypeArray::SafeDownCast(out->GetFieldData()->GetArray("VisiblePieceCount"))->GetValue(0);
+  const vtkIdType hiddenPieces =
+    vtkIdTypeArray::SafeDownCast(out->GetFieldData()->GetArray("HiddenPieceCount"))->GetValue(0);
+  std::printf("torus: %lld silhouette lines in, %lld visible and %lld hidden pieces out\n",
+    static_cast<long long>(smoother->GetOutput(1)->GetNumberOfLines()),
+    static_cast<long long>(visiblePieces), static_cast<long long>(hiddenPieces));
+  if (hiddenPieces == 0 || visiblePieces == 0 ||
+    out->GetNumberOfLines() != visiblePieces + hiddenPieces)
+  {
+    ok = Fail("expected visible and hidden pieces, one polyline each");
+  }
+
+  const double* eye = camera->GetPosition();
+  ok = CheckPointsAgainstTorus(out, pointVisible, eye) && ok;
+  ok = CheckChangePoints(out, original, camera, width, height) && ok;
+  ok = CheckOptions(visibility, visiblePieces, eye) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

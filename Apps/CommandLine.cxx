@@ -680,20 +680,20 @@ CommandLine ParseCommandLine(int argc, char* argv[])
     result.HelpText = words.size() == 2 ? HelpOf(words[1]) : MainHelp();
     return result;
   }
-  const std::string commandHelp = HelpOf(command); // also rejects unknown commands
+  const Command& selected = FindCommand(command); // rejects unknown commands
   // "--help" anywhere before "--" wins over mistakes elsewhere on the line.
   for (std::size_t i = 1; i < words.size() && words[i] != "--"; ++i)
   {
     if (IsHelpWord(words[i]))
     {
-      result.HelpText = commandHelp;
+      result.HelpText = selected.Help();
       return result;
     }
   }
 
   ArgumentList arguments({ words.begin() + 1, words.end() });
-  result.Selected = &FindCommand(command);
-  result.Selected->Parse(command, arguments, result);
+  result.Selected = &selected;
+  selected.Parse(command, arguments, result);
   return result;
 }
 

@@ -15,26 +15,16 @@ import os
 import subprocess
 import sys
 
-from vtkmodules.vtkIOImage import vtkPNGReader
-
-
-def pixels(path):
-    reader = vtkPNGReader()
-    if not reader.CanReadFile(path):
-        sys.exit("FAILED: cannot read the image '%s'" % path)
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    return image.GetDimensions(), image.GetPointData().GetScalars()
+# The program's image tests count differing pixels the same way.
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "CLI"))
+import differing_pixels  # noqa: E402
 
 
 def differing(a_path, b_path):
-    (size_a, a), (size_b, b) = pixels(a_path), pixels(b_path)
-    if size_a != size_b or a.GetNumberOfComponents() != b.GetNumberOfComponents():
-        sys.exit("FAILED: '%s' and '%s' differ in size or channels" % (a_path, b_path))
-    components = a.GetNumberOfComponents()
-    return sum(1 for i in range(a.GetNumberOfTuples())
-               if any(a.GetComponent(i, c) != b.GetComponent(i, c) for c in range(components)))
+    try:
+        return differing_pixels.differing(a_path, b_path)
+    except ValueError as error:
+        sys.exit("FAILED: comparing '%s' with '%s': %s" % (a_path, b_path, error))
 
 
 def run(script, arguments, image, only_the_image=False):

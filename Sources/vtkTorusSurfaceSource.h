@@ -12,11 +12,10 @@
 #ifndef vtkTorusSurfaceSource_h
 #define vtkTorusSurfaceSource_h
 
-#include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
+#include "SilhouetteSmoothingFiltersSourcesModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkTorusSurfaceSource
-  : public vtkPolyDataAlgorithm
+class SILHOUETTESMOOTHINGFILTERSSOURCES_EXPORT vtkTorusSurfaceSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkTorusSurfaceSource* New();

@@ -1,6 +1,6 @@
 #include "vtkTorusSurfaceSource.h"
 
-#include "vtkSilhouetteFilterSupport.h"
+#include "vtkSilhouetteCheckedSetting.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"

@@ -13,10 +13,10 @@
 #ifndef vtkIcosphereSource_h
 #define vtkIcosphereSource_h
 
-#include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
+#include "SilhouetteSmoothingFiltersSourcesModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
 
-class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkIcosphereSource : public vtkPolyDataAlgorithm
+class SILHOUETTESMOOTHINGFILTERSSOURCES_EXPORT vtkIcosphereSource : public vtkPolyDataAlgorithm
 {
 public:
   static vtkIcosphereSource* New();

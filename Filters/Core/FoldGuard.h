@@ -95,7 +95,7 @@ struct FoldFindings
   bool any() const { return this->Turned + this->Cutting > 0; }
 };
 
-/// Same signature as silsmooth::ParallelFor (SilhouetteSmoother.h).
+/// Same signature as silsmooth::ParallelFor (ParallelFor.h).
 using FoldGuardParallelFor =
   std::function<void(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body)>;
 

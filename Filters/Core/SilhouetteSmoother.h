@@ -1,5 +1,6 @@
 // The per-frame silhouette smoothing pass of Wang et al. 2008 over a mesh whose
-// view-independent data (edge table, shading normals) is prepared once.
+// view-independent data (edge table, shading normals) is prepared once
+// (PreparedMesh.h).
 //
 // Steps, each in its own unit: vertex visibility (ViewGeometry), silhouette
 // triangles, one silhouette point per mixed edge on its silhouette bridge
@@ -12,149 +13,19 @@
 #include "AdaptiveSampling.h"
 #include "FeatureCurves.h"
 #include "MeshTopology.h"
-#include "ShadingNormals.h"
+#include "ParallelFor.h"
+#include "PreparedMesh.h"
 #include "SurfaceWelding.h"
-#include "TriangleGrid.h"
 #include "ViewGeometry.h"
-#include "VisibilityHierarchy.h"
 
 #include <glm/vec3.hpp>
 
 #include <array>
-#include <functional>
-#include <memory>
-#include <mutex>
 #include <utility>
 #include <vector>
 
 namespace silsmooth
 {
-
-/// The view-independent state: points, triangles, unit shading normals, the
-/// edge table and the feature curves. Build it when the input changes, reuse
-/// it every frame.
-///
-/// With feature edges, every point on one is split into one point per smooth
-/// group (FeatureCurves.h): the prepared points are the input's, with their
-/// ids, followed by the copies, and the triangles refer to the copies where
-/// they belong to another group. Without feature edges nothing is split.
-class PreparedMesh
-{
-public:
-  /// `normals` may be empty (angle-weighted normals are computed) or hold one
-  /// normal per point; a given normal that is zero or not finite is replaced
-  /// by the angle-weighted one. Points on feature edges always get the
-  /// angle-weighted normal of their smooth group (one given normal cannot
-  /// serve two sides of a crease). `featureEdges` are pairs of point ids.
-  ///
-  /// `cornerNormals`, when not empty, holds a normal per triangle corner
-  /// (3t + k) instead of per point, for meshes whose triangles meet at one
-  /// point but came with a normal each (welded asset files); `normals` is then
-  /// ignored. A point's normal is its corners' normal (the normalised sum of
-  /// their distinct usable normals). On a feature point the smooth groups keep
-  /// their own corners' normals when those differ between the groups by more
-  /// than NormalSeamAngleDegrees (the input told the sides apart, as at a
-  /// normal seam); otherwise they get the angle-weighted normal as above.
-  ///
-  /// `edges`, when given, is the edge table of `triangles`; it saves building
-  /// it again when no point is split. `weighting` is how the normals that are
-  /// computed are estimated (ShadingNormals.h); "angle-weighted" above means
-  /// that estimate.
-  PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
-    const std::vector<glm::dvec3>& normals = {}, std::vector<FeatureEdge> featureEdges = {},
-    const std::vector<glm::dvec3>& cornerNormals = {}, const EdgeTable* edges = nullptr,
-    NormalWeighting weighting = NormalWeighting::Angle);
-
-  /// Input points, then the copies made by splitting feature points.
-  const std::vector<glm::dvec3>& points() const { return this->Points; }
-  const std::vector<Triangle>& triangles() const { return this->Triangles; }
-  const std::vector<glm::dvec3>& normals() const { return this->Normals; }
-  const EdgeTable& edges() const { return this->Edges; }
-  /// How many of points() are the input's (the rest are copies).
-  std::size_t inputPointCount() const { return this->InputPointCount; }
-  /// The input point that prepared point p is (or copies).
-  Id sourcePoint(Id p) const
-  {
-    return static_cast<std::size_t>(p) < this->InputPointCount
-      ? p
-      : this->CopySources[static_cast<std::size_t>(p) - this->InputPointCount];
-  }
-  /// Whether prepared point p lies on a feature edge.
-  bool onFeature(Id p) const
-  {
-    return !this->OnFeature.empty() && this->OnFeature[static_cast<std::size_t>(p)] != 0;
-  }
-  /// Whether prepared point p lies on a boundary edge (an edge of one
-  /// triangle): the edge of an open mesh, or a seam where a partitioned mesh
-  /// was cut. Such points are never moved by the perturbation, so pieces
-  /// still meet.
-  bool onBoundary(Id p) const { return this->OnBoundary[static_cast<std::size_t>(p)] != 0; }
-  /// Whether edge e is a side of one triangle only (a boundary edge).
-  bool isBoundaryEdge(Id e) const { return this->BoundaryEdges[static_cast<std::size_t>(e)] != 0; }
-  const FeatureCurves& features() const { return this->Features; }
-  /// The feature edge (index into features()) that edge e lies on, or -1.
-  Id edgeFeature(Id e) const
-  {
-    return this->EdgeFeatures.empty() ? -1 : this->EdgeFeatures[static_cast<std::size_t>(e)];
-  }
-  /// Triangles with a side on a smoothed feature edge, ascending: they are
-  /// re-meshed in every frame so that the feature curve is drawn smooth.
-  const std::vector<Id>& featureTriangles() const { return this->FeatureTriangles; }
-  /// Every (feature edge, triangle with a side on it), sorted: the triangles
-  /// of the crease's sides (two or more, one per smooth group).
-  const std::vector<std::pair<Id, Id>>& featureSideTriangles() const
-  {
-    return this->FeatureSideTriangles;
-  }
-  /// The vertices joined to v by an edge are
-  /// neighbours()[neighbourOffsets()[v] .. neighbourOffsets()[v + 1]).
-  const std::vector<Id>& neighbourOffsets() const { return this->NeighbourOffsets; }
-  const std::vector<Id>& neighbours() const { return this->Neighbours; }
-  /// The clustering for VisibilityMethod::Hierarchical, built on first use
-  /// (thread-safe); copies of the mesh share it.
-  const VisibilityHierarchy& visibilityHierarchy() const;
-  /// The grid of the triangles' boxes for the fold guard, built on first use
-  /// (thread-safe); copies of the mesh share it.
-  const TriangleGrid& triangleGrid() const;
-
-private:
-  // The constructor's steps, in order.
-  void splitAtFeatures();
-  void findBoundaries();
-  void indexFeatureEdges();
-  void findNeighbours();
-  void chooseNormals(const std::vector<glm::dvec3>& normals,
-    const std::vector<glm::dvec3>& cornerNormals, NormalWeighting weighting);
-  std::vector<glm::dvec3> normalsFromCorners(const std::vector<glm::dvec3>& cornerNormals) const;
-
-  std::vector<glm::dvec3> Points;
-  std::vector<Triangle> Triangles;
-  std::vector<glm::dvec3> Normals;
-  EdgeTable Edges;
-  std::size_t InputPointCount = 0;
-  std::vector<Id> CopySources;
-  std::vector<unsigned char> OnFeature;
-  std::vector<unsigned char> OnBoundary;
-  std::vector<unsigned char> BoundaryEdges;
-  FeatureCurves Features;
-  std::vector<Id> EdgeFeatures;
-  std::vector<Id> FeatureTriangles;
-  std::vector<std::pair<Id, Id>> FeatureSideTriangles;
-  std::vector<Id> NeighbourOffsets;
-  std::vector<Id> Neighbours;
-  struct LazyHierarchy
-  {
-    std::once_flag Once;
-    VisibilityHierarchy Hierarchy;
-  };
-  std::shared_ptr<LazyHierarchy> Hierarchy = std::make_shared<LazyHierarchy>();
-  struct LazyGrid
-  {
-    std::once_flag Once;
-    TriangleGrid Grid;
-  };
-  std::shared_ptr<LazyGrid> Grid = std::make_shared<LazyGrid>();
-};
 
 /// How the pass finds the vertices facing the viewer (paper III-B). Both make
 /// bitwise the same decisions, so the output does not depend on the choice.
@@ -283,13 +154,6 @@ struct SmoothingResult
   std::size_t newTriangleCount() const { return this->Replacements.size(); }
 };
 
-/// Runs body(begin, end) over sub-ranges covering [0, count). The VTK adapter
-/// passes vtkSMPTools; the default is a plain loop. Results never depend on
-/// how the range is split.
-using ParallelFor =
-  std::function<void(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body)>;
-void serialFor(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body);
-
 /// Silhouette points are kept at least this far (in edge parameter) from the
 /// ends of their edge. A point closer to the triangle's lone vertex would make
 /// the region between them a sliver, and any fan over the bulging curve there
@@ -304,9 +168,6 @@ constexpr double EdgeParameterMargin = 0.01;
 SmoothingResult smoothSilhouettes(const PreparedMesh& mesh, const ViewGeometry& view,
   const SmoothingParameters& parameters, const ParallelFor& parallelFor = serialFor);
 
-/// The visibility value g of every point (parallel over points).
-std::vector<double> vertexVisibility(
-  const PreparedMesh& mesh, const ViewGeometry& view, const ParallelFor& parallelFor = serialFor);
 /// The same decisions by either method; with Hierarchical, vertices of
 /// decided clusters hold +1 or -1 instead of g (the sign is what counts).
 std::vector<double> vertexVisibility(const PreparedMesh& mesh, const ViewGeometry& view,

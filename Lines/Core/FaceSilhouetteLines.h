@@ -12,7 +12,7 @@
 #pragma once
 
 #include "MeshTopology.h"
-#include "SilhouetteSmoother.h"
+#include "PreparedMesh.h"
 #include "ViewGeometry.h"
 
 #include <glm/vec3.hpp>

@@ -1,0 +1,314 @@
+#include "PreparedMesh.h"
+
+#include "ShadingNormals.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <mutex>
+#include <tuple>
+#include <unordered_map>
+
+namespace silsmooth
+{
+
+namespace
+{
+
+// The feature edges that are edges of the triangles (normalised, sorted).
+std::vector<FeatureEdge> featureEdgesOfTriangles(std::vector<FeatureEdge> featureEdges,
+  const std::vector<Triangle>& triangles, const EdgeTable* edges)
+{
+  // Only edges of the triangles can be feature edges.
+  featureEdges = normalizedFeatureEdges(std::move(featureEdges));
+  const EdgeTable built = edges ? EdgeTable() : EdgeTable(triangles);
+  const EdgeTable& input = edges ? *edges : built;
+  std::size_t e = 0;
+  featureEdges.erase(
+    std::remove_if(featureEdges.begin(), featureEdges.end(),
+      [&](const FeatureEdge& f) {
+        while (e < input.edgeCount() &&
+          FeatureEdge(input.edge(static_cast<Id>(e)).low, input.edge(static_cast<Id>(e)).high) < f)
+        {
+          ++e;
+        }
+        return e == input.edgeCount() ||
+          FeatureEdge(input.edge(static_cast<Id>(e)).low, input.edge(static_cast<Id>(e)).high) != f;
+      }),
+    featureEdges.end());
+  return featureEdges;
+}
+
+} // namespace
+
+PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
+  const std::vector<glm::dvec3>& normals, std::vector<FeatureEdge> featureEdges,
+  const std::vector<glm::dvec3>& cornerNormals, const EdgeTable* edges, NormalWeighting weighting)
+  : Points(std::move(points))
+  , Triangles(std::move(triangles))
+  , InputPointCount(this->Points.size())
+{
+  if (!featureEdges.empty())
+  {
+    this->Features = FeatureCurves(
+      this->Points, featureEdgesOfTriangles(std::move(featureEdges), this->Triangles, edges));
+  }
+  this->splitAtFeatures();
+  this->Edges = this->Features.empty() && edges ? *edges : EdgeTable(this->Triangles);
+  this->findBoundaries();
+  this->indexFeatureEdges();
+  this->findNeighbours();
+  this->chooseNormals(normals, cornerNormals, weighting);
+}
+
+void PreparedMesh::splitAtFeatures()
+{
+  if (this->Features.empty())
+  {
+    return;
+  }
+  FeatureSplit split = splitAtFeatureEdges(this->Points.size(), this->Triangles, this->Features);
+  this->Triangles = std::move(split.Triangles);
+  this->CopySources = std::move(split.CopySources);
+  this->OnFeature = std::move(split.OnFeature);
+  for (const Id source : this->CopySources)
+  {
+    this->Points.push_back(this->Points[static_cast<std::size_t>(source)]);
+  }
+}
+
+// Boundary edges (in one triangle) and the points on them.
+void PreparedMesh::findBoundaries()
+{
+  std::vector<int> uses(this->Edges.edgeCount(), 0);
+  for (std::size_t t = 0; t < this->Triangles.size(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      ++uses[static_cast<std::size_t>(this->Edges.sideEdge(static_cast<Id>(t), k))];
+    }
+  }
+  this->OnBoundary.assign(this->Points.size(), 0);
+  this->BoundaryEdges.assign(uses.size(), 0);
+  for (std::size_t e = 0; e < uses.size(); ++e)
+  {
+    if (uses[e] == 1)
+    {
+      this->BoundaryEdges[e] = 1;
+      const Edge& edge = this->Edges.edge(static_cast<Id>(e));
+      this->OnBoundary[static_cast<std::size_t>(edge.low)] = 1;
+      this->OnBoundary[static_cast<std::size_t>(edge.high)] = 1;
+    }
+  }
+}
+
+// Each edge's feature curve, and the triangles with a feature side.
+void PreparedMesh::indexFeatureEdges()
+{
+  if (this->Features.empty())
+  {
+    return;
+  }
+  this->EdgeFeatures.resize(this->Edges.edgeCount());
+  for (std::size_t e = 0; e < this->Edges.edgeCount(); ++e)
+  {
+    const Edge& edge = this->Edges.edge(static_cast<Id>(e));
+    this->EdgeFeatures[e] =
+      this->Features.find(this->sourcePoint(edge.low), this->sourcePoint(edge.high));
+  }
+  for (std::size_t t = 0; t < this->Triangles.size(); ++t)
+  {
+    if (hasRepeatedCorner(this->Triangles[t]))
+    {
+      continue;
+    }
+    bool curvedSide = false;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Id f = this->edgeFeature(this->Edges.sideEdge(static_cast<Id>(t), k));
+      if (f >= 0)
+      {
+        this->FeatureSideTriangles.emplace_back(f, static_cast<Id>(t));
+        curvedSide = curvedSide || this->Features.isCurved(f);
+      }
+    }
+    if (curvedSide)
+    {
+      this->FeatureTriangles.push_back(static_cast<Id>(t));
+    }
+  }
+  std::sort(this->FeatureSideTriangles.begin(), this->FeatureSideTriangles.end());
+  this->FeatureSideTriangles.erase(
+    std::unique(this->FeatureSideTriangles.begin(), this->FeatureSideTriangles.end()),
+    this->FeatureSideTriangles.end());
+}
+
+// Edge neighbours of every vertex (compressed rows), for the perturbation.
+void PreparedMesh::findNeighbours()
+{
+  std::vector<Id> degree(this->Points.size() + 1, 0);
+  for (std::size_t e = 0; e < this->Edges.edgeCount(); ++e)
+  {
+    const Edge& edge = this->Edges.edge(static_cast<Id>(e));
+    if (edge.low != edge.high)
+    {
+      ++degree[static_cast<std::size_t>(edge.low) + 1];
+      ++degree[static_cast<std::size_t>(edge.high) + 1];
+    }
+  }
+  for (std::size_t v = 1; v < degree.size(); ++v)
+  {
+    degree[v] += degree[v - 1];
+  }
+  this->NeighbourOffsets = degree;
+  this->Neighbours.resize(static_cast<std::size_t>(degree.back()));
+  for (std::size_t e = 0; e < this->Edges.edgeCount(); ++e)
+  {
+    const Edge& edge = this->Edges.edge(static_cast<Id>(e));
+    if (edge.low != edge.high)
+    {
+      this->Neighbours[static_cast<std::size_t>(degree[static_cast<std::size_t>(edge.low)]++)] =
+        edge.high;
+      this->Neighbours[static_cast<std::size_t>(degree[static_cast<std::size_t>(edge.high)]++)] =
+        edge.low;
+    }
+  }
+}
+
+// Given normals for the input's points; feature points (and their copies)
+// and points with no usable given normal get the computed ones.
+void PreparedMesh::chooseNormals(const std::vector<glm::dvec3>& normals,
+  const std::vector<glm::dvec3>& cornerNormals, NormalWeighting weighting)
+{
+  std::vector<glm::dvec3> computed;
+  bool needComputed = normals.size() != this->InputPointCount || !this->Features.empty();
+  if (cornerNormals.size() == this->Triangles.size() * 3 && !this->Triangles.empty())
+  {
+    this->Normals = this->normalsFromCorners(cornerNormals);
+    needComputed = true;
+  }
+  else if (normals.size() == this->InputPointCount)
+  {
+    this->Normals.resize(this->Points.size(), glm::dvec3(0.0));
+    for (std::size_t i = 0; i < normals.size(); ++i)
+    {
+      this->Normals[i] =
+        this->onFeature(static_cast<Id>(i)) ? glm::dvec3(0.0) : safeNormalize(normals[i]);
+      needComputed = needComputed || this->Normals[i] == glm::dvec3(0.0);
+    }
+  }
+  if (needComputed)
+  {
+    computed = vertexNormals(this->Points, this->Triangles, weighting);
+    if (this->Normals.empty())
+    {
+      this->Normals = std::move(computed);
+    }
+    else
+    {
+      for (std::size_t i = 0; i < this->Normals.size(); ++i)
+      {
+        if (this->Normals[i] == glm::dvec3(0.0))
+        {
+          this->Normals[i] = computed[i];
+        }
+      }
+    }
+  }
+}
+
+std::vector<glm::dvec3> PreparedMesh::normalsFromCorners(
+  const std::vector<glm::dvec3>& cornerNormals) const
+{
+  const std::size_t count = this->Points.size();
+  std::vector<glm::dvec3> first(count, glm::dvec3(0.0));
+  std::vector<glm::dvec3> sum(count, glm::dvec3(0.0));
+  std::vector<unsigned char> mixed(count, 0);
+  for (std::size_t t = 0; t < this->Triangles.size(); ++t)
+  {
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      const std::size_t p = static_cast<std::size_t>(this->Triangles[t][k]);
+      const glm::dvec3 n = safeNormalize(cornerNormals[t * 3 + k]);
+      if (n == glm::dvec3(0.0))
+      {
+        continue;
+      }
+      if (first[p] == glm::dvec3(0.0))
+      {
+        first[p] = n;
+        sum[p] = n;
+      }
+      else if (n != first[p])
+      {
+        mixed[p] = 1;
+        sum[p] += n;
+      }
+    }
+  }
+  std::vector<glm::dvec3> result(count);
+  for (std::size_t p = 0; p < count; ++p)
+  {
+    result[p] = mixed[p] ? safeNormalize(sum[p]) : first[p];
+  }
+  if (this->Features.empty())
+  {
+    return result;
+  }
+  // A feature point's groups keep their corners' normals only where those
+  // tell the sides of the crease apart.
+  const double cosLimit = std::cos(NormalSeamAngleDegrees * 3.14159265358979323846 / 180.0);
+  std::vector<unsigned char> distinct(this->InputPointCount, 0);
+  for (std::size_t p = this->InputPointCount; p < count; ++p)
+  {
+    const std::size_t s = static_cast<std::size_t>(this->sourcePoint(static_cast<Id>(p)));
+    const glm::dvec3& a = result[s];
+    const glm::dvec3& b = result[p];
+    if (a == glm::dvec3(0.0) || b == glm::dvec3(0.0) || glm::dot(a, b) < cosLimit)
+    {
+      distinct[s] = 1;
+    }
+  }
+  for (std::size_t p = 0; p < count; ++p)
+  {
+    const std::size_t s = static_cast<std::size_t>(this->sourcePoint(static_cast<Id>(p)));
+    if (this->onFeature(static_cast<Id>(p)) && !distinct[s])
+    {
+      result[p] = glm::dvec3(0.0);
+    }
+  }
+  return result;
+}
+
+std::vector<double> vertexVisibility(
+  const PreparedMesh& mesh, const ViewGeometry& view, const ParallelFor& parallelFor)
+{
+  const std::vector<glm::dvec3>& points = mesh.points();
+  const std::vector<glm::dvec3>& normals = mesh.normals();
+  std::vector<double> g(points.size());
+  parallelFor(points.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      g[i] = view.visibility(points[i], normals[i]);
+    }
+  });
+  return g;
+}
+
+const TriangleGrid& PreparedMesh::triangleGrid() const
+{
+  std::call_once(
+    this->Grid->Once, [this] { this->Grid->Grid = TriangleGrid(this->Points, this->Triangles); });
+  return this->Grid->Grid;
+}
+
+const VisibilityHierarchy& PreparedMesh::visibilityHierarchy() const
+{
+  std::call_once(this->Hierarchy->Once,
+    [this] { this->Hierarchy->Hierarchy = VisibilityHierarchy(this->Points, this->Normals); });
+  return this->Hierarchy->Hierarchy;
+}
+
+} // namespace silsmooth

@@ -57,11 +57,6 @@ int vtkBoundaryCurveSmoothingFilter::RequestViewData(vtkInformation*,
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* lines = vtkPolyData::GetData(outputVector, 1);
-  if (!input || !output || !lines)
-  {
-    vtkErrorMacro("Missing input or output polydata.");
-    return 0;
-  }
 
   Internals& internal = *this->Internal;
   if (!internal.Mesh || internal.CachedInput != input ||

@@ -18,19 +18,10 @@ namespace support = vtkSilhouetteFilterSupport;
 int vtkPNTriangleFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = nullptr;
-  vtkPolyData* output = nullptr;
-  vtkSilhouetteFilterSupport::Triangles triangles;
-  if (!vtkSilhouetteFilterSupport::ReadSurface(
-        this, inputVector, outputVector, input, output, triangles))
-  {
-    return 0;
-  }
-  const silsmooth::PNTriangleResult result = silsmooth::tessellatePNTriangles(
-    triangles.Points, triangles.Cells, triangles.Normals, this->Level);
-
-  support::WriteTessellation(input, output, triangles, result, this->Level);
-  return 1;
+  return support::RequestTessellation(
+    this, inputVector, outputVector, this->Level, [this](const support::Triangles& mesh) {
+      return silsmooth::tessellatePNTriangles(mesh.Points, mesh.Cells, mesh.Normals, this->Level);
+    });
 }
 
 void vtkPNTriangleFilter::PrintSelf(ostream& os, vtkIndent indent)

@@ -20,19 +20,11 @@ namespace support = vtkSilhouetteFilterSupport;
 int vtkPhongTessellationFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = nullptr;
-  vtkPolyData* output = nullptr;
-  vtkSilhouetteFilterSupport::Triangles triangles;
-  if (!vtkSilhouetteFilterSupport::ReadSurface(
-        this, inputVector, outputVector, input, output, triangles))
-  {
-    return 0;
-  }
-  const silsmooth::PhongTessellationResult result = silsmooth::tessellatePhong(
-    triangles.Points, triangles.Cells, triangles.Normals, this->Level, this->ShapeFactor);
-
-  support::WriteTessellation(input, output, triangles, result, this->Level);
-  return 1;
+  return support::RequestTessellation(
+    this, inputVector, outputVector, this->Level, [this](const support::Triangles& mesh) {
+      return silsmooth::tessellatePhong(
+        mesh.Points, mesh.Cells, mesh.Normals, this->Level, this->ShapeFactor);
+    });
 }
 
 void vtkPhongTessellationFilter::PrintSelf(ostream& os, vtkIndent indent)

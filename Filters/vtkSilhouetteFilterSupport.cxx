@@ -257,24 +257,24 @@ std::string ReadTriangles(vtkPolyData* input, Triangles& out)
   return std::string();
 }
 
-bool ReadSurface(vtkAlgorithm* self, vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector, vtkPolyData*& input, vtkPolyData*& output,
-  Triangles& triangles)
+std::optional<Surface> ReadSurface(
+  vtkAlgorithm* self, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  input = vtkPolyData::GetData(inputVector[0]);
-  output = vtkPolyData::GetData(outputVector, 0);
-  if (!input || !output)
+  Surface surface;
+  surface.Input = vtkPolyData::GetData(inputVector[0]);
+  surface.Output = vtkPolyData::GetData(outputVector, 0);
+  if (!surface.Input || !surface.Output)
   {
     vtkErrorWithObjectMacro(self, "Missing input or output polydata.");
-    return false;
+    return std::nullopt;
   }
-  const std::string error = ReadFiniteTriangles(input, triangles);
+  const std::string error = ReadFiniteTriangles(surface.Input, surface.Mesh);
   if (!error.empty())
   {
     vtkErrorWithObjectMacro(self, << error);
-    return false;
+    return std::nullopt;
   }
-  return true;
+  return surface;
 }
 
 std::string ReadFiniteTriangles(vtkPolyData* input, Triangles& out)
@@ -400,46 +400,6 @@ int GuardRequest(vtkAlgorithm* self, vtkInformation* request, vtkInformationVect
   }
   vtkErrorWithObjectMacro(self, << failure);
   return 0;
-}
-
-namespace
-{
-
-template<typename T>
-bool StoreSetting(vtkObject* self, const char* name, T& setting, T value, T lo, T hi)
-{
-  if (value != value) // NaN
-  {
-    vtkWarningWithObjectMacro(
-      self, "Set" << name << ": NaN is not a value; " << name << " stays " << setting << ".");
-    return false;
-  }
-  const T clamped = value < lo ? lo : (value > hi ? hi : value);
-  if (clamped != value)
-  {
-    vtkWarningWithObjectMacro(self,
-      "Set" << name << "(" << value << ") is outside [" << lo << ", " << hi << "]; using "
-            << clamped << ".");
-  }
-  if (clamped == setting)
-  {
-    return false;
-  }
-  setting = clamped;
-  return true;
-}
-
-} // namespace
-
-bool SetSetting(
-  vtkObject* self, const char* name, double& setting, double value, double lo, double hi)
-{
-  return StoreSetting(self, name, setting, value, lo, hi);
-}
-
-bool SetSetting(vtkObject* self, const char* name, int& setting, int value, int lo, int hi)
-{
-  return StoreSetting(self, name, setting, value, lo, hi);
 }
 
 void WriteMesh(vtkPolyData* input, vtkPolyData* output, const std::vector<glm::dvec3>& inputNormals,
@@ -589,6 +549,20 @@ void WriteTessellation(vtkPolyData* input, vtkPolyData* output, const Triangles&
     result.Triangles.size(), static_cast<unsigned char>(level > 0 ? 1 : 0));
   WriteMesh(input, output, inputNormals, addedPoints, addedNormals, sources, result.Triangles,
     originalCell, newGeometry);
+}
+
+int RequestTessellation(vtkAlgorithm* self, vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector, int level,
+  const std::function<silsmooth::TessellationResult(const Triangles&)>& tessellate)
+{
+  const std::optional<Surface> surface = ReadSurface(self, inputVector, outputVector);
+  if (!surface)
+  {
+    return 0;
+  }
+  WriteTessellation(
+    surface->Input, surface->Output, surface->Mesh, tessellate(surface->Mesh), level);
+  return 1;
 }
 
 vtkSmartPointer<vtkUnsignedCharArray> LineKindArray(vtkIdType count, LineKindValue kind)

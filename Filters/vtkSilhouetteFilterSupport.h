@@ -8,7 +8,8 @@
 #ifndef vtkSilhouetteFilterSupport_h
 #define vtkSilhouetteFilterSupport_h
 
-#include "vtkSilhouetteViewTracker.h" // ViewTracker, part of this support
+#include "vtkSilhouetteCheckedSetting.h" // the checked setter macro, for the filters
+#include "vtkSilhouetteViewTracker.h"    // ViewTracker, part of this support
 #include "vtkSmartPointer.h"
 #include "vtkTimeStamp.h"
 #include "vtkType.h"
@@ -22,6 +23,7 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -83,13 +85,20 @@ struct Triangles
 /// points).
 std::string ReadTriangles(vtkPolyData* input, Triangles& out);
 
-/// RequestData's first step for the filters of one surface: the input and
-/// output polydata and the input's triangles (ReadFiniteTriangles). False
-/// after reporting the error on `self` (a missing polydata, cells naming
-/// missing points, points with NaN or infinite coordinates).
-bool ReadSurface(vtkAlgorithm* self, vtkInformationVector** inputVector,
-  vtkInformationVector* outputVector, vtkPolyData*& input, vtkPolyData*& output,
-  Triangles& triangles);
+/// What a filter of one surface reads first: its input and output polydata
+/// and the input's triangles.
+struct Surface
+{
+  vtkPolyData* Input = nullptr;
+  vtkPolyData* Output = nullptr;
+  Triangles Mesh; ///< ReadFiniteTriangles of Input
+};
+
+/// RequestData's first step for the filters of one surface. No value after
+/// reporting the error on `self` (a missing polydata, cells naming missing
+/// points, points with NaN or infinite coordinates).
+std::optional<Surface> ReadSurface(
+  vtkAlgorithm* self, vtkInformationVector** inputVector, vtkInformationVector* outputVector);
 
 /// ReadTriangles, and also the error for points with NaN or infinite
 /// coordinates, for the filters that cannot use such input at all.
@@ -134,25 +143,6 @@ int GuardRequest(vtkAlgorithm* self, vtkInformation* request, vtkInformationVect
   }                                                                                                \
   static_assert(true, "")
 
-/// For the Set methods of a filter's settings: stores `value` clamped to
-/// [lo, hi], with a warning when it was outside; keeps the current setting,
-/// with a warning, when `value` is NaN. Returns whether the setting changed.
-bool SetSetting(
-  vtkObject* self, const char* name, double& setting, double value, double lo, double hi);
-bool SetSetting(vtkObject* self, const char* name, int& setting, int value, int lo, int hi);
-
-/// Defines Class::SetName(Type) with SetSetting: clamped to [Lo, Hi] with a
-/// warning, NaN refused with a warning. Used as a statement, with a `;`.
-#define vtkSilhouetteCheckedSetterMacro(Class, Name, Type, Lo, Hi)                                 \
-  void Class::Set##Name(Type value)                                                                \
-  {                                                                                                \
-    if (vtkSilhouetteFilterSupport::SetSetting(this, #Name, this->Name, value, Lo, Hi))            \
-    {                                                                                              \
-      this->Modified();                                                                            \
-    }                                                                                              \
-  }                                                                                                \
-  static_assert(true, "")
-
 /// An added point as a weighted sum of input points (weights sum to one).
 struct PointSource
 {
@@ -177,6 +167,12 @@ void WriteMesh(vtkPolyData* input, vtkPolyData* output, const std::vector<glm::d
 /// input cell, NewGeometry 1 for every patch triangle (0 when `level` is 0).
 void WriteTessellation(vtkPolyData* input, vtkPolyData* output, const Triangles& mesh,
   const silsmooth::TessellationResult& result, int level);
+
+/// The whole RequestData of a uniform tessellation filter: ReadSurface, then
+/// `tessellate(mesh)`, written with WriteTessellation.
+int RequestTessellation(vtkAlgorithm* self, vtkInformationVector** inputVector,
+  vtkInformationVector* outputVector, int level,
+  const std::function<silsmooth::TessellationResult(const Triangles&)>& tessellate);
 
 /// The cell array `LineKind` of the line filters (0 silhouette, 1 crease,
 /// 2 border: the kinds of a line drawing), `count` tuples of `kind`.

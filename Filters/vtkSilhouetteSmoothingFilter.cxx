@@ -158,7 +158,7 @@ std::string vtkSilhouetteSmoothingFilter::Internals::Rebuild(
   this->TooSmallPolygons = mesh.TooSmallPolygons;
   this->DistinctTriangles =
     static_cast<std::size_t>(std::count_if(mesh.Cells.begin(), mesh.Cells.end(),
-      [](const silsmooth::Triangle& t) { return t[0] != t[1] && t[1] != t[2] && t[0] != t[2]; }));
+      [](const silsmooth::Triangle& t) { return !silsmooth::hasRepeatedCorner(t); }));
   this->TriangleCell = std::move(mesh.CellIds);
   if (this->NonFinitePoints > 0)
   {
@@ -351,11 +351,6 @@ int vtkSilhouetteSmoothingFilter::RequestViewData(vtkInformation*,
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* lines = vtkPolyData::GetData(outputVector, 1);
-  if (!input || !output || !lines)
-  {
-    vtkErrorMacro("Missing input or output polydata.");
-    return 0;
-  }
 
   if (this->MinimumSamples > this->MaximumSamples)
   {

@@ -89,6 +89,18 @@ vtkMTimeType vtkSilhouetteViewAlgorithm::GetMTime()
 int vtkSilhouetteViewAlgorithm::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
+  // Checked once here for every view filter, so that RequestViewData may
+  // rely on it: polydata on the first input port and on every output.
+  bool havePolyData = vtkPolyData::GetData(inputVector[0]) != nullptr;
+  for (int port = 0; port < this->GetNumberOfOutputPorts(); ++port)
+  {
+    havePolyData = havePolyData && vtkPolyData::GetData(outputVector, port) != nullptr;
+  }
+  if (!havePolyData)
+  {
+    vtkErrorMacro("Missing input or output polydata.");
+    return 0;
+  }
   vtkSilhouetteFilterSupport::View view;
   switch (this->RequestView(view, this->WaitForRenderer))
   {

@@ -133,6 +133,8 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   /// The subclass's work for `view`, the view in the data's model coordinates.
+  /// The first input port and every output hold polydata (RequestData
+  /// checked them).
   virtual int RequestViewData(vtkInformation*, vtkInformationVector**, vtkInformationVector*,
     const vtkSilhouetteFilterSupport::View& view) = 0;
 

@@ -338,11 +338,6 @@ int vtkViewDependentLevelOfDetail::RequestViewData(vtkInformation*,
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  if (!input || !output)
-  {
-    vtkErrorMacro("Missing input or output polydata.");
-    return 0;
-  }
   const int built = this->EnsureHierarchy(input);
   if (built <= 0)
   {

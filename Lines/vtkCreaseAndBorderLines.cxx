@@ -32,14 +32,13 @@ vtkSilhouetteGuardedProcessRequestMacro(vtkCreaseAndBorderLines);
 int vtkCreaseAndBorderLines::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = nullptr;
-  vtkPolyData* output = nullptr;
-  vtkSilhouetteFilterSupport::Triangles triangles;
-  if (!vtkSilhouetteFilterSupport::ReadSurface(
-        this, inputVector, outputVector, input, output, triangles))
+  std::optional<vtkSilhouetteFilterSupport::Surface> surface =
+    vtkSilhouetteFilterSupport::ReadSurface(this, inputVector, outputVector);
+  if (!surface)
   {
     return 0;
   }
+  auto& [input, output, triangles] = *surface;
   this->UpdateProgress(0.2);
 
   silsmooth::SurfaceEdgeLineParameters parameters;

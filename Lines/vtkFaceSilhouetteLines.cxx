@@ -47,11 +47,6 @@ int vtkFaceSilhouetteLines::RequestViewData(vtkInformation*, vtkInformationVecto
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  if (!input || !output)
-  {
-    vtkErrorMacro("Missing input or output polydata.");
-    return 0;
-  }
 
   Internals& internal = *this->Internal;
   if (!internal.Mesh || internal.CachedInput != input ||

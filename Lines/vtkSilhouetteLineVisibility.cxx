@@ -213,11 +213,6 @@ int vtkSilhouetteLineVisibility::RequestViewData(vtkInformation*,
   vtkPolyData* lines = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* surface = vtkPolyData::GetData(inputVector[1]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  if (!lines || !output)
-  {
-    vtkErrorMacro("Missing input or output polydata.");
-    return 0;
-  }
   const std::string settingsError = this->CheckSettings();
   if (!settingsError.empty())
   {

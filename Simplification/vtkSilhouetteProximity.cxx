@@ -29,21 +29,16 @@ vtkSilhouetteProximity::~vtkSilhouetteProximity() = default;
 int vtkSilhouetteProximity::RequestViewData(vtkInformation*, vtkInformationVector** inputVector,
   vtkInformationVector* outputVector, const vtkSilhouetteFilterSupport::View& view)
 {
-  vtkPolyData* input = nullptr;
-  vtkPolyData* output = nullptr;
-  vtkSilhouetteFilterSupport::Triangles mesh;
-  if (!vtkSilhouetteFilterSupport::ReadSurface(
-        this, inputVector, outputVector, input, output, mesh))
+  std::optional<vtkSilhouetteFilterSupport::Surface> surface =
+    vtkSilhouetteFilterSupport::ReadSurface(this, inputVector, outputVector);
+  if (!surface)
   {
     return 0;
   }
-  const vtkIdType numPoints = input->GetNumberOfPoints();
-  std::vector<glm::dvec3>& points = mesh.Points;
-  std::vector<silsmooth::Triangle>& triangles = mesh.Cells;
-  std::vector<vtkIdType>& triangleCell = mesh.CellIds;
-
+  auto& [input, output, mesh] = *surface;
   const silsmooth::ProximityGrid grid =
-    silsmooth::silhouetteProximity(points, triangles, view.Geometry, this->Resolution);
+    silsmooth::silhouetteProximity(mesh.Points, mesh.Cells, view.Geometry, this->Resolution);
+  const vtkIdType numPoints = input->GetNumberOfPoints();
 
   output->ShallowCopy(input);
   vtkNew<vtkDoubleArray> pointDistance;
@@ -62,9 +57,9 @@ int vtkSilhouetteProximity::RequestViewData(vtkInformation*, vtkInformationVecto
   cellDistance->Fill(-1.0);
   // A polygon's or strip's label: the least over its triangles, -1 if any is -1.
   std::vector<char> seen(static_cast<std::size_t>(numCells), 0);
-  for (std::size_t t = 0; t < triangles.size(); ++t)
+  for (std::size_t t = 0; t < mesh.Cells.size(); ++t)
   {
-    const vtkIdType c = triangleCell[t];
+    const vtkIdType c = mesh.CellIds[t];
     const double d = grid.TriangleDistance[t];
     const double old = cellDistance->GetValue(c);
     if (!seen[static_cast<std::size_t>(c)])

@@ -42,14 +42,13 @@ void vtkSilhouetteQuadricDecimation::SetDistanceArrayName(const std::string& nam
 int vtkSilhouetteQuadricDecimation::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = nullptr;
-  vtkPolyData* output = nullptr;
-  vtkSilhouetteFilterSupport::Triangles mesh;
-  if (!vtkSilhouetteFilterSupport::ReadSurface(
-        this, inputVector, outputVector, input, output, mesh))
+  std::optional<vtkSilhouetteFilterSupport::Surface> surface =
+    vtkSilhouetteFilterSupport::ReadSurface(this, inputVector, outputVector);
+  if (!surface)
   {
     return 0;
   }
+  auto& [input, output, mesh] = *surface;
   const vtkIdType numPoints = input->GetNumberOfPoints();
   std::vector<glm::dvec3>& points = mesh.Points;
   std::vector<silsmooth::Triangle>& triangles = mesh.Cells;

@@ -37,10 +37,6 @@ int vtkStylizedStrokeFilter::RequestViewData(vtkInformation*, vtkInformationVect
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  if (!input || !output)
-  {
-    return 0;
-  }
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> lines;

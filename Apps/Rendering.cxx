@@ -31,6 +31,7 @@
 #include <vtkSilhouetteSmoothingFilter.h>
 #include <vtkSilhouetteSmoothingMapper.h>
 #include <vtkStylizedStrokeFilter.h>
+#include <vtkTrivialProducer.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
@@ -101,12 +102,9 @@ vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithmOutput* source)
 
 vtkSmartPointer<vtkActor> MakeActor(vtkPolyData* mesh)
 {
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(mesh);
-  mapper->ScalarVisibilityOff();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  return actor;
+  vtkNew<vtkTrivialProducer> producer;
+  producer->SetOutput(mesh);
+  return MakeActor(producer->GetOutputPort());
 }
 
 // The face-based silhouette of `input` (vtkFaceSilhouetteLines, Xing's Fig.

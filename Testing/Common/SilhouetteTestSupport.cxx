@@ -1,17 +1,25 @@
 #include "SilhouetteTestSupport.h"
 
+#include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCommand.h"
+#include "vtkExecutive.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkDataArray.h"
 #include "vtkIcosphereSource.h"
+#include "vtkLookupTable.h"
 #include "vtkMath.h"
 #include "vtkOBJReader.h"
 #include "vtkPLYReader.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkSTLReader.h"
+#include "vtkTestErrorObserver.h"
 #include "vtkXMLPolyDataReader.h"
 #include <vtksys/SystemTools.hxx>
 
@@ -251,6 +259,64 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->ShallowCopy(reader->GetOutputDataObject(0));
   return mesh->GetNumberOfPoints() > 0 ? mesh : nullptr;
+}
+
+vtkSmartPointer<vtkPolyData> MeshNamingAMissingPoint()
+{
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType ids[3] = { 0, 1, 7 };
+  polys->InsertNextCell(3, ids);
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  return mesh;
+}
+
+int UpdateReportingError(vtkAlgorithm* filter, std::string& message)
+{
+  vtkNew<vtkTest::ErrorObserver> errors;
+  vtkNew<vtkTest::ErrorObserver> executiveErrors;
+  const unsigned long onFilter = filter->AddObserver(vtkCommand::ErrorEvent, errors);
+  const unsigned long onExecutive =
+    filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executiveErrors);
+  const int result = filter->GetExecutive()->Update();
+  message = errors->GetError() ? errors->GetErrorMessage() : "";
+  filter->RemoveObserver(onFilter);
+  filter->GetExecutive()->RemoveObserver(onExecutive);
+  return result;
+}
+
+void StyleImageActor(vtkPolyDataMapper* mapper, vtkActor* actor, int newGeometryKinds)
+{
+  if (newGeometryKinds <= 0)
+  {
+    mapper->ScalarVisibilityOff();
+    actor->GetProperty()->SetColor(0.75, 0.78, 0.85);
+    actor->GetProperty()->SetSpecular(0.3);
+    actor->GetProperty()->SetSpecularPower(30);
+    return;
+  }
+  const double rgb[3][3] = { { 0.25, 0.25, 0.25 }, { 0.9, 0.0, 0.0 }, { 0.0, 0.3, 0.9 } };
+  const int values = std::min(newGeometryKinds, 2) + 1;
+  vtkNew<vtkLookupTable> colors;
+  colors->SetNumberOfTableValues(values);
+  for (int k = 0; k < values; ++k)
+  {
+    colors->SetTableValue(k, rgb[k][0], rgb[k][1], rgb[k][2]);
+  }
+  colors->SetTableRange(0, values - 1);
+  colors->Build();
+  mapper->SetScalarModeToUseCellFieldData();
+  mapper->SetColorModeToMapScalars(); // unsigned char would be read as colours
+  mapper->SelectColorArray("NewGeometry");
+  mapper->SetLookupTable(colors);
+  mapper->SetScalarRange(0, values - 1);
+  mapper->ScalarVisibilityOn();
+  actor->GetProperty()->SetRepresentationToWireframe();
+  actor->GetProperty()->LightingOff();
 }
 
 } // namespace silhouette_test

@@ -19,6 +19,10 @@
 
 #include "vtkSmartPointer.h"
 
+class vtkActor;
+class vtkAlgorithm;
+class vtkPolyDataMapper;
+
 #include <array>
 #include <string>
 #include <vector>
@@ -84,5 +88,19 @@ std::string AssetModelsFolder();
 
 /// Reads a mesh by extension (.ply .vtp .obj .stl .vtk); nullptr on failure.
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path);
+
+/// Two points and one triangle that names a third point, which does not exist.
+vtkSmartPointer<vtkPolyData> MeshNamingAMissingPoint();
+
+/// Updates `filter` with error observers on it and on its executive (so the
+/// error is not printed as a failure); returns the update's result and sets
+/// `message` to the filter's error, or "" when it reported none.
+int UpdateReportingError(vtkAlgorithm* filter, std::string& message);
+
+/// The image tests' two looks of a smoothed mesh. With `newGeometryKinds` > 0:
+/// unlit wireframe coloured by the cell array NewGeometry, value 0 grey, 1
+/// red, 2 blue (the first `newGeometryKinds` + 1 of them). Else: shaded light
+/// grey-blue with a highlight.
+void StyleImageActor(vtkPolyDataMapper* mapper, vtkActor* actor, int newGeometryKinds);
 
 } // namespace silhouette_test

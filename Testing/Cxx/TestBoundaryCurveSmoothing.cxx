@@ -8,18 +8,13 @@
 // triangles must be marked.
 #include "vtkBoundaryCurveSmoothingFilter.h"
 #include "vtkCamera.h"
-#include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
-#include "vtkCommand.h"
 #include "vtkDataArray.h"
-#include "vtkExecutive.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPNTriangleFilter.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkTestErrorObserver.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "SilhouetteTestSupport.h"
@@ -164,32 +159,16 @@ bool CheckAwkwardInput()
   curves->Update();
   CHECK(curves->GetOutput()->GetNumberOfPoints() == 0, "empty in, empty out");
 
-  vtkNew<vtkPolyData> bad;
-  vtkNew<vtkPoints> points;
-  points->InsertNextPoint(0, 0, 0);
-  points->InsertNextPoint(1, 0, 0);
-  bad->SetPoints(points);
-  vtkNew<vtkCellArray> polys;
-  const vtkIdType ids[3] = { 0, 1, 7 };
-  polys->InsertNextCell(3, ids);
-  bad->SetPolys(polys);
-  vtkNew<vtkTest::ErrorObserver> errors;
-  vtkNew<vtkTest::ErrorObserver> executiveErrors;
   vtkNew<vtkPNTriangleFilter> pn;
-  pn->AddObserver(vtkCommand::ErrorEvent, errors);
-  pn->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executiveErrors);
-  pn->SetInputData(bad);
-  pn->Update();
-  CHECK(errors->GetError() &&
-      errors->GetErrorMessage().find("points that do not exist") != std::string::npos,
+  pn->SetInputData(silhouette_test::MeshNamingAMissingPoint());
+  std::string message;
+  CHECK(silhouette_test::UpdateReportingError(pn, message) == 0 &&
+      message.find("points that do not exist") != std::string::npos,
     "PN: cells naming missing points are an error");
-  errors->Clear();
   vtkNew<vtkBoundaryCurveSmoothingFilter> noCamera;
-  noCamera->AddObserver(vtkCommand::ErrorEvent, errors);
-  noCamera->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executiveErrors);
   noCamera->SetInputData(silhouette_test::Icosphere(1));
-  noCamera->Update();
-  CHECK(errors->GetError() && errors->GetErrorMessage().find("No camera") != std::string::npos,
+  CHECK(silhouette_test::UpdateReportingError(noCamera, message) == 0 &&
+      message.find("No camera") != std::string::npos,
     "2003: a missing camera is an error");
   return true;
 }

@@ -19,13 +19,11 @@
 #include "vtkCleanPolyData.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
-#include "vtkLookupTable.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -336,31 +334,7 @@ void AddPanel(vtkRenderWindow* window, vtkPolyData* mesh, int row, int column, b
   mapper->SetInputConnection(smoother->GetOutputPort());
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
-  if (newGeometry)
-  {
-    vtkNew<vtkLookupTable> colors;
-    colors->SetNumberOfTableValues(3);
-    colors->SetTableValue(0, 0.25, 0.25, 0.25);
-    colors->SetTableValue(1, 0.9, 0.0, 0.0);
-    colors->SetTableValue(2, 0.0, 0.3, 0.9);
-    colors->SetTableRange(0, 2);
-    colors->Build();
-    mapper->SetScalarModeToUseCellFieldData();
-    mapper->SetColorModeToMapScalars();
-    mapper->SelectColorArray("NewGeometry");
-    mapper->SetLookupTable(colors);
-    mapper->SetScalarRange(0, 2);
-    mapper->ScalarVisibilityOn();
-    actor->GetProperty()->SetRepresentationToWireframe();
-    actor->GetProperty()->LightingOff();
-  }
-  else
-  {
-    mapper->ScalarVisibilityOff();
-    actor->GetProperty()->SetColor(0.75, 0.78, 0.85);
-    actor->GetProperty()->SetSpecular(0.3);
-    actor->GetProperty()->SetSpecularPower(30);
-  }
+  silhouette_test::StyleImageActor(mapper, actor, newGeometry ? 2 : 0);
   renderer->AddActor(actor);
   renderer->ResetCamera(mesh->GetBounds());
   renderer->GetActiveCamera()->Elevation(35);

@@ -5,11 +5,9 @@
 // normals stays flat, on a sphere with exact normals the patches are nearer
 // the sphere than flat subdivision (ShapeFactor 0), the options, and bad
 // input (NaN points, cells naming missing points) failing the request.
-#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
-#include "vtkExecutive.h"
 #include "vtkIdTypeArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -18,7 +16,6 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkTestErrorObserver.h"
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -280,14 +277,8 @@ bool CheckBadInput()
 {
   auto run = [](vtkPolyData* input, std::string& message) {
     vtkNew<vtkPhongTessellationFilter> phong;
-    vtkNew<vtkTest::ErrorObserver> errors;
-    vtkNew<vtkTest::ErrorObserver> executiveErrors;
-    phong->AddObserver(vtkCommand::ErrorEvent, errors);
-    phong->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executiveErrors);
     phong->SetInputData(input);
-    const int result = phong->GetExecutive()->Update();
-    message = errors->GetError() ? errors->GetErrorMessage() : "";
-    return result;
+    return silhouette_test::UpdateReportingError(phong, message);
   };
   std::string message;
   auto sphere = silhouette_test::Icosphere(1);
@@ -299,16 +290,7 @@ bool CheckBadInput()
   CHECK(message.find("1 points with NaN or infinite coordinates") != std::string::npos,
     "the NaN points are named");
 
-  vtkNew<vtkPolyData> missing;
-  vtkNew<vtkPoints> points;
-  points->InsertNextPoint(0, 0, 0);
-  points->InsertNextPoint(1, 0, 0);
-  missing->SetPoints(points);
-  vtkNew<vtkCellArray> polys;
-  const vtkIdType ids[3] = { 0, 1, 7 };
-  polys->InsertNextCell(3, ids);
-  missing->SetPolys(polys);
-  CHECK(run(missing, message) == 0 && message.find("points that do not exist") != std::string::npos,
+  CHECK(run(silhouette_test::MeshNamingAMissingPoint(), message) == 0 && message.find("points that do not exist") != std::string::npos,
     "cells naming missing points are an error");
 
   vtkNew<vtkPolyData> empty;

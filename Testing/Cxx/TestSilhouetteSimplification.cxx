@@ -4,16 +4,13 @@
 // of the bunny simplified with and without the proximity labels, measured
 // against the original's outline from the same camera; pipeline and errors.
 #include "vtkCamera.h"
-#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkTestErrorObserver.h"
 
 #include "vtkSilhouetteProximity.h"
 #include "vtkSilhouetteQuadricDecimation.h"
@@ -155,36 +152,17 @@ bool CheckPipelineAndErrors()
   proximity->Update();
   CHECK(proximity->GetOutput()->GetFieldData()->GetArray("ProximityGridSize"), "grid size");
 
-  vtkNew<vtkTest::ErrorObserver> errors;
-  vtkNew<vtkTest::ErrorObserver> executive;
+  std::string message;
   vtkNew<vtkSilhouetteProximity> noCamera;
-  noCamera->AddObserver(vtkCommand::ErrorEvent, errors);
-  noCamera->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, executive);
   noCamera->SetInputData(sphere);
-  CHECK(noCamera->GetExecutive()->Update() == 0, "no camera fails");
-  CHECK(errors->GetError() &&
-      std::string(errors->GetErrorMessage()).find("No camera") != std::string::npos,
-    "the missing camera is named");
+  CHECK(silhouette_test::UpdateReportingError(noCamera, message) == 0, "no camera fails");
+  CHECK(message.find("No camera") != std::string::npos, "the missing camera is named");
 
-  vtkNew<vtkPolyData> bad;
-  vtkNew<vtkPoints> points;
-  points->InsertNextPoint(0, 0, 0);
-  points->InsertNextPoint(1, 0, 0);
-  bad->SetPoints(points);
-  vtkNew<vtkCellArray> polys;
-  const vtkIdType ids[3] = { 0, 1, 7 };
-  polys->InsertNextCell(3, ids);
-  bad->SetPolys(polys);
-  vtkNew<vtkTest::ErrorObserver> decimateErrors;
-  vtkNew<vtkTest::ErrorObserver> decimateExecutive;
   vtkNew<vtkSilhouetteQuadricDecimation> decimate;
-  decimate->AddObserver(vtkCommand::ErrorEvent, decimateErrors);
-  decimate->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, decimateExecutive);
-  decimate->SetInputData(bad);
-  CHECK(decimate->GetExecutive()->Update() == 0, "a cell naming a missing point fails");
-  CHECK(decimateErrors->GetError() &&
-      std::string(decimateErrors->GetErrorMessage()).find("do not exist") != std::string::npos,
-    "the missing points are named");
+  decimate->SetInputData(silhouette_test::MeshNamingAMissingPoint());
+  CHECK(silhouette_test::UpdateReportingError(decimate, message) == 0,
+    "a cell naming a missing point fails");
+  CHECK(message.find("do not exist") != std::string::npos, "the missing points are named");
   vtkNew<vtkPolyData> empty;
   decimate->SetInputData(empty);
   CHECK(decimate->GetExecutive()->Update() == 1, "an empty mesh passes");

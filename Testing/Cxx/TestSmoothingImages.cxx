@@ -6,11 +6,9 @@
 #include "vtkCamera.h"
 #include "vtkCellData.h"
 #include "vtkIcosphereSource.h"
-#include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
-#include "vtkProperty.h"
 #include "vtkRegressionTestImage.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -39,30 +37,7 @@ void AddPanel(vtkRenderWindow* window, vtkPolyData* mesh, int row, int column, d
   mapper->SetInputConnection(smoother->GetOutputPort());
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
-  if (newGeometry)
-  {
-    vtkNew<vtkLookupTable> colors;
-    colors->SetNumberOfTableValues(2);
-    colors->SetTableValue(0, 0.25, 0.25, 0.25);
-    colors->SetTableValue(1, 0.9, 0.0, 0.0);
-    colors->SetTableRange(0, 1);
-    colors->Build();
-    mapper->SetScalarModeToUseCellFieldData();
-    mapper->SetColorModeToMapScalars(); // unsigned char would be read as colours
-    mapper->SelectColorArray("NewGeometry");
-    mapper->SetLookupTable(colors);
-    mapper->SetScalarRange(0, 1);
-    mapper->ScalarVisibilityOn();
-    actor->GetProperty()->SetRepresentationToWireframe();
-    actor->GetProperty()->LightingOff();
-  }
-  else
-  {
-    mapper->ScalarVisibilityOff();
-    actor->GetProperty()->SetColor(0.75, 0.78, 0.85);
-    actor->GetProperty()->SetSpecular(0.3);
-    actor->GetProperty()->SetSpecularPower(30);
-  }
+  silhouette_test::StyleImageActor(mapper, actor, newGeometry ? 1 : 0);
   renderer->AddActor(actor);
   renderer->ResetCamera(mesh->GetBounds());
   renderer->GetActiveCamera()->Azimuth(azimuth);

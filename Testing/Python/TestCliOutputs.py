@@ -9,9 +9,9 @@ normal seams) and on a vtkCubeSource box (flat-shaded normals), then checks:
 Usage: TestCliOutputs.py SILHOUETTE_PROGRAM WORK_DIR
 """
 import os
-import subprocess
 import sys
 
+import cli_checks  # beside this script
 from vtkmodules.vtkFiltersSources import vtkCubeSource
 from vtkmodules.vtkIOPLY import vtkPLYReader
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
@@ -19,18 +19,12 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
 program, work = sys.argv[1], sys.argv[2]
 os.makedirs(work, exist_ok=True)
 spider = "/usr/share/assimp/models/OBJ/spider.obj"
-failures = []
-
-
-def check(condition, message):
-    print(("ok: " if condition else "FAILED: ") + message)
-    if not condition:
-        failures.append(message)
+failures = cli_checks.failures
+check = cli_checks.check
 
 
 def run(*args):
-    done = subprocess.run([program, *args], capture_output=True, text=True, timeout=300)
-    return done.returncode, done.stdout, done.stderr
+    return cli_checks.run(program, *args)
 
 
 def read(path):

@@ -28,6 +28,7 @@ import subprocess
 import sys
 import xml.etree.ElementTree as ElementTree
 
+import cli_checks  # beside this script
 from vtkmodules.vtkFiltersCore import vtkAppendPolyData
 from vtkmodules.vtkFiltersSources import vtkCubeSource
 from vtkmodules.vtkIOImage import vtkPNGReader
@@ -39,21 +40,15 @@ from silhouette_smoothing import (vtkCreaseAndBorderLines, vtkSilhouetteLineVisi
 
 program, data, work = sys.argv[1], sys.argv[2], sys.argv[3]
 os.makedirs(work, exist_ok=True)
-failures = []
+failures = cli_checks.failures
+check = cli_checks.check
 SVG = "{http://www.w3.org/2000/svg}"
 MAXIMUM_STRAY = 0.004
 RADIUS = 2
 
 
-def check(condition, message):
-    print(("ok: " if condition else "FAILED: ") + message)
-    if not condition:
-        failures.append(message)
-
-
 def run(*args):
-    done = subprocess.run([program, *args], capture_output=True, text=True, timeout=300)
-    return done.returncode, done.stdout, done.stderr
+    return cli_checks.run(program, *args)
 
 
 def paths(svg_file):

@@ -78,43 +78,224 @@ struct Verdicts
   long Grazing = 0;  ///< not judged
 };
 
-} // namespace
-
-int main(int argc, char* argv[])
+struct Options
 {
-  int width = 800;
-  int height = 600;
-  int largestRing = 320;
+  int Width = 800;
+  int Height = 600;
+  int LargestRing = 320;
+};
+
+// Returns false after saying what is wrong.
+bool ParseOptions(int argc, char* argv[], Options& options)
+{
   for (int i = 1; i < argc; ++i)
   {
     if (!std::strcmp(argv[i], "--size") && i + 1 < argc)
     {
-      if (std::sscanf(argv[++i], "%dx%d", &width, &height) != 2 || width < 16 || height < 16)
+      if (std::sscanf(argv[++i], "%dx%d", &options.Width, &options.Height) != 2 ||
+        options.Width < 16 || options.Height < 16)
       {
         std::fprintf(stderr, "line_visibility_benchmark: --size needs WxH, 16 or more\n");
-        return 2;
+        return false;
       }
     }
     else if (!std::strcmp(argv[i], "--largest-ring") && i + 1 < argc)
     {
-      largestRing = std::atoi(argv[++i]);
-      if (largestRing < 8)
+      options.LargestRing = std::atoi(argv[++i]);
+      if (options.LargestRing < 8)
       {
         std::fprintf(stderr, "line_visibility_benchmark: --largest-ring needs 8 or more\n");
-        return 2;
+        return false;
       }
     }
     else
     {
       std::fprintf(stderr, "usage: line_visibility_benchmark [--size WxH] [--largest-ring N]\n");
-      return 2;
+      return false;
     }
   }
+  return true;
+}
 
+// The ray casts (vtkSilhouetteLineVisibility), five timed runs; the lines
+// split at the visibility changes with their Visible array stay in `rays`.
+std::vector<double> TimeRayCasts(
+  vtkSilhouetteLineVisibility* rays, vtkPolyData* lines, vtkPolyData* surface, vtkCamera* camera)
+{
+  rays->SetInputData(lines);
+  rays->SetSurfaceData(surface);
+  rays->SetCamera(camera);
+  std::vector<double> times;
+  for (int run = 0; run < 5; ++run)
+  {
+    rays->Modified();
+    times.push_back(benchmark_timing::Milliseconds([&] { rays->Update(); }));
+  }
+  return times;
+}
+
+// Reads visibility off a rendered depth buffer: a line point is visible when
+// it is nearer than the drawn depth (less a bias) at its pixel or one of its
+// 8 neighbours.
+struct DepthProbe
+{
+  vtkRenderer* Renderer;
+  const float* Z;
+  int Width;
+  int Height;
+  double Eye[3];
+  double Direction[3];
+  double Near;
+  double Far;
+  double Bias;
+
+  DepthProbe(vtkRenderer* renderer, const float* z, int width, int height, double bias)
+    : Renderer(renderer)
+    , Z(z)
+    , Width(width)
+    , Height(height)
+    , Bias(bias)
+  {
+    vtkCamera* camera = renderer->GetActiveCamera();
+    camera->GetPosition(this->Eye);
+    camera->GetDirectionOfProjection(this->Direction);
+    camera->GetClippingRange(this->Near, this->Far);
+  }
+
+  // Window depth to distance along the view direction (perspective).
+  double Distance(double windowDepth) const
+  {
+    const double ndc = 2.0 * windowDepth - 1.0;
+    return 2.0 * this->Near * this->Far / (this->Far + this->Near - ndc * (this->Far - this->Near));
+  }
+
+  bool Visible(const double x[3]) const
+  {
+    this->Renderer->SetWorldPoint(x[0], x[1], x[2], 1.0);
+    this->Renderer->WorldToDisplay();
+    const double* d = this->Renderer->GetDisplayPoint();
+    const double toPoint[3] = { x[0] - this->Eye[0], x[1] - this->Eye[1], x[2] - this->Eye[2] };
+    const double own = vtkMath::Dot(toPoint, this->Direction);
+    const int px = static_cast<int>(std::floor(d[0]));
+    const int py = static_cast<int>(std::floor(d[1]));
+    for (int dy = -1; dy <= 1; ++dy)
+    {
+      for (int dx = -1; dx <= 1; ++dx)
+      {
+        const int qx = px + dx;
+        const int qy = py + dy;
+        if (qx < 0 || qy < 0 || qx >= this->Width || qy >= this->Height)
+        {
+          return true; // off the window: nothing drawn there
+        }
+        const float w = this->Z[static_cast<std::size_t>(qy) * this->Width + qx];
+        if (w >= 1.0f || this->Distance(w) >= own - this->Bias)
+        {
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+};
+
+// The depth buffer's verdicts, five timed runs (each uploads the surface
+// anew, renders it and reads the depth back).
+std::vector<double> TimeDepthBuffer(vtkRenderWindow* window, vtkRenderer* renderer,
+  vtkPolyData* surface, vtkPolyData* lines, std::vector<unsigned char>& visible)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(surface);
+  mapper->ScalarVisibilityOff();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  renderer->RemoveAllViewProps();
+  renderer->AddActor(actor);
+  vtkNew<vtkFloatArray> depth;
+  const vtkIdType count = lines->GetNumberOfPoints();
+  visible.assign(static_cast<std::size_t>(count), 1);
+  double clipping[2];
+  renderer->GetActiveCamera()->GetClippingRange(clipping);
+  const double bias = 1e-3 * (clipping[1] - clipping[0]);
+  const int* size = window->GetSize();
+  const int width = size[0];
+  const int height = size[1];
+  std::vector<double> times;
+  for (int run = 0; run < 5; ++run)
+  {
+    surface->Modified(); // a new surface every frame: upload it
+    times.push_back(benchmark_timing::Milliseconds([&] {
+      window->Render();
+      window->GetZbufferData(0, 0, width - 1, height - 1, depth);
+      const DepthProbe probe(renderer, depth->GetPointer(0), width, height, bias);
+      for (vtkIdType p = 0; p < count; ++p)
+      {
+        double x[3];
+        lines->GetPoint(p, x);
+        visible[static_cast<std::size_t>(p)] = probe.Visible(x) ? 1 : 0;
+      }
+    }));
+  }
+  return times;
+}
+
+// Both methods' verdicts against the exact torus, point by point; returns
+// how many points the two methods disagree on. The ray casts' output holds
+// the input's points in order; they are matched by position.
+long JudgeAgainstTorus(vtkPolyData* lines, vtkPolyData* split,
+  const std::vector<unsigned char>& bufferVisible, const double eye[3], Verdicts& rayVerdicts,
+  Verdicts& bufferVerdicts)
+{
+  auto* splitVisible =
+    vtkUnsignedCharArray::SafeDownCast(split->GetPointData()->GetArray("Visible"));
+  long disagree = 0;
+  vtkIdType out = 0;
+  for (vtkIdType p = 0; p < lines->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    lines->GetPoint(p, x);
+    // The next output point at this position (change points are skipped).
+    bool rayVisible = true;
+    for (; out < split->GetNumberOfPoints(); ++out)
+    {
+      double y[3];
+      split->GetPoint(out, y);
+      if (vtkMath::Distance2BetweenPoints(x, y) == 0.0)
+      {
+        rayVisible = splitVisible->GetValue(out) != 0;
+        ++out;
+        break;
+      }
+    }
+    const bool bufferSays = bufferVisible[static_cast<std::size_t>(p)] != 0;
+    disagree += rayVisible != bufferSays ? 1 : 0;
+    const double lowest = Lowest(x, eye);
+    if (std::abs(lowest) < 0.04)
+    {
+      ++rayVerdicts.Grazing;
+      ++bufferVerdicts.Grazing;
+      continue;
+    }
+    const bool exactVisible = lowest > 0.0;
+    (rayVisible == exactVisible ? rayVerdicts.Agree : rayVerdicts.Disagree) += 1;
+    (bufferSays == exactVisible ? bufferVerdicts.Agree : bufferVerdicts.Disagree) += 1;
+  }
+  return disagree;
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  Options options;
+  if (!ParseOptions(argc, argv, options))
+  {
+    return 2;
+  }
   vtkNew<vtkRenderWindow> window;
   window->SetOffScreenRendering(1);
   window->SetMultiSamples(0);
-  window->SetSize(width, height);
+  window->SetSize(options.Width, options.Height);
   vtkNew<vtkRenderer> renderer;
   window->AddRenderer(renderer);
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -122,16 +303,14 @@ int main(int argc, char* argv[])
   camera->SetFocalPoint(0.0, 0.0, 0.0);
   camera->SetViewUp(0.0, 0.0, 1.0);
   camera->SetClippingRange(1.0, 10.0);
-  const double* eye = camera->GetPosition();
-  double direction[3];
-  camera->GetDirectionOfProjection(direction);
 
   std::printf("| triangles | line points | ray casts ms | depth buffer ms | ray casts wrong | "
               "depth buffer wrong | judged | methods disagree |\n");
   std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   // ring x ring / 2 quads: about 1k, 10k and 100k triangles for 320.
-  const std::vector<int> rings{ std::max(8, largestRing / 10), std::max(8, largestRing * 10 / 32),
-    largestRing };
+  const int largest = options.LargestRing;
+  const std::vector<int> rings{ std::max(8, largest / 10), std::max(8, largest * 10 / 32),
+    largest };
   for (const int ring : rings)
   {
     vtkNew<vtkTorusSurfaceSource> torus;
@@ -140,139 +319,27 @@ int main(int argc, char* argv[])
     vtkNew<vtkSilhouetteSmoothingFilter> smoother;
     smoother->SetInputConnection(torus->GetOutputPort());
     smoother->SetCamera(camera);
-    smoother->SetViewportSize(width, height);
+    smoother->SetViewportSize(options.Width, options.Height);
     smoother->Update();
     vtkNew<vtkPolyData> surface;
     surface->ShallowCopy(smoother->GetOutput(0));
     vtkNew<vtkPolyData> lines;
     lines->ShallowCopy(smoother->GetOutput(1));
 
-    // Ray casts.
     vtkNew<vtkSilhouetteLineVisibility> rays;
-    rays->SetInputData(lines);
-    rays->SetSurfaceData(surface);
-    rays->SetCamera(camera);
-    std::vector<double> rayTimes;
-    for (int run = 0; run < 5; ++run)
-    {
-      rays->Modified();
-      rayTimes.push_back(benchmark_timing::Milliseconds([&] { rays->Update(); }));
-    }
-    // Per input point: the ray casts' verdict (each input vertex is in the
-    // output, in order, with change points between).
-    vtkPolyData* split = rays->GetOutput();
-    auto* splitVisible =
-      vtkUnsignedCharArray::SafeDownCast(split->GetPointData()->GetArray("Visible"));
-
-    // The depth buffer.
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(surface);
-    mapper->ScalarVisibilityOff();
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    renderer->RemoveAllViewProps();
-    renderer->AddActor(actor);
-    vtkNew<vtkFloatArray> depth;
-    const vtkIdType count = lines->GetNumberOfPoints();
-    std::vector<unsigned char> bufferVisible(static_cast<std::size_t>(count), 1);
-    double clipping[2];
-    camera->GetClippingRange(clipping);
-    const double bias = 1e-3 * (clipping[1] - clipping[0]);
-    std::vector<double> bufferTimes;
-    for (int run = 0; run < 5; ++run)
-    {
-      surface->Modified(); // a new surface every frame: upload it
-      bufferTimes.push_back(benchmark_timing::Milliseconds([&] {
-        window->Render();
-        window->GetZbufferData(0, 0, width - 1, height - 1, depth);
-        const float* z = depth->GetPointer(0);
-        double near = 0.0;
-        double far = 0.0;
-        camera->GetClippingRange(near, far);
-        // Window depth to distance along the view direction (perspective).
-        auto distance = [&](double windowDepth) {
-          const double ndc = 2.0 * windowDepth - 1.0;
-          return 2.0 * near * far / (far + near - ndc * (far - near));
-        };
-        for (vtkIdType p = 0; p < count; ++p)
-        {
-          double x[3];
-          lines->GetPoint(p, x);
-          renderer->SetWorldPoint(x[0], x[1], x[2], 1.0);
-          renderer->WorldToDisplay();
-          const double* d = renderer->GetDisplayPoint();
-          const double toPoint[3] = { x[0] - eye[0], x[1] - eye[1], x[2] - eye[2] };
-          const double own = vtkMath::Dot(toPoint, direction);
-          const int px = static_cast<int>(std::floor(d[0]));
-          const int py = static_cast<int>(std::floor(d[1]));
-          bool visible = false;
-          const int reach = std::getenv("SIL_BLOCK1") ? 0 : 1;
-          for (int dy = -reach; dy <= reach && !visible; ++dy)
-          {
-            for (int dx = -reach; dx <= reach && !visible; ++dx)
-            {
-              const int qx = px + dx;
-              const int qy = py + dy;
-              if (qx < 0 || qy < 0 || qx >= width || qy >= height)
-              {
-                visible = true; // off the window: nothing drawn there
-                continue;
-              }
-              const float w = z[static_cast<std::size_t>(qy) * width + qx];
-              visible = w >= 1.0f || distance(w) >= own - bias;
-            }
-          }
-          bufferVisible[static_cast<std::size_t>(p)] = visible ? 1 : 0;
-        }
-      }));
-    }
-
-    // Both against the exact torus, point by point. The ray casts' output
-    // holds the input's points in order; match them by position.
+    const std::vector<double> rayTimes = TimeRayCasts(rays, lines, surface, camera);
+    std::vector<unsigned char> bufferVisible;
+    const std::vector<double> bufferTimes =
+      TimeDepthBuffer(window, renderer, surface, lines, bufferVisible);
     Verdicts rayVerdicts;
     Verdicts bufferVerdicts;
-    long disagree = 0;
-    vtkIdType out = 0;
-    for (vtkIdType p = 0; p < count; ++p)
-    {
-      double x[3];
-      lines->GetPoint(p, x);
-      // The next output point at this position (change points are skipped).
-      bool rayVisible = true;
-      for (; out < split->GetNumberOfPoints(); ++out)
-      {
-        double y[3];
-        split->GetPoint(out, y);
-        if (vtkMath::Distance2BetweenPoints(x, y) == 0.0)
-        {
-          rayVisible = splitVisible->GetValue(out) != 0;
-          ++out;
-          break;
-        }
-      }
-      const bool bufferSays = bufferVisible[static_cast<std::size_t>(p)] != 0;
-      disagree += rayVisible != bufferSays ? 1 : 0;
-      const double lowest = Lowest(x, eye);
-      if (std::abs(lowest) < 0.04)
-      {
-        ++rayVerdicts.Grazing;
-        ++bufferVerdicts.Grazing;
-        continue;
-      }
-      const bool exactVisible = lowest > 0.0;
-      (rayVisible == exactVisible ? rayVerdicts.Agree : rayVerdicts.Disagree) += 1;
-      if (std::getenv("SIL_DEBUG") && rayVisible != exactVisible)
-      {
-        std::printf("  ray casts wrong at (%.4f %.4f %.4f): %s, lowest %.4f\n", x[0], x[1], x[2],
-          rayVisible ? "visible" : "hidden", lowest);
-      }
-      (bufferSays == exactVisible ? bufferVerdicts.Agree : bufferVerdicts.Disagree) += 1;
-    }
+    const long disagree = JudgeAgainstTorus(
+      lines, rays->GetOutput(), bufferVisible, camera->GetPosition(), rayVerdicts, bufferVerdicts);
     std::printf("| %lld | %lld | %.2f | %.2f | %ld | %ld | %ld | %ld |\n",
-      static_cast<long long>(surface->GetNumberOfPolys()), static_cast<long long>(count),
-      benchmark_timing::Median(rayTimes), benchmark_timing::Median(bufferTimes),
-      rayVerdicts.Disagree, bufferVerdicts.Disagree, rayVerdicts.Agree + rayVerdicts.Disagree,
-      disagree);
+      static_cast<long long>(surface->GetNumberOfPolys()),
+      static_cast<long long>(lines->GetNumberOfPoints()), benchmark_timing::Median(rayTimes),
+      benchmark_timing::Median(bufferTimes), rayVerdicts.Disagree, bufferVerdicts.Disagree,
+      rayVerdicts.Agree + rayVerdicts.Disagree, disagree);
   }
   return EXIT_SUCCESS;
 }

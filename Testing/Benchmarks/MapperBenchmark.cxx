@@ -33,6 +33,7 @@
 
 #include "BenchmarkTiming.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -43,14 +44,12 @@
 namespace
 {
 
-struct Variant
+struct Options
 {
-  const char* Name;
-  vtkNew<vtkRenderWindow> Window;
-  vtkNew<vtkRenderer> Renderer;
-  vtkNew<vtkActor> Actor;
-  std::vector<double> FrameMs;
-  std::vector<double> PrepareMs;
+  int Frames = 20;
+  std::vector<int> Levels{ 6, 7, 8 };
+  int Width = 1024;
+  int Height = 768;
 };
 
 void Usage()
@@ -59,14 +58,9 @@ void Usage()
   std::exit(2);
 }
 
-} // namespace
-
-int main(int argc, char* argv[])
+Options ParseOptions(int argc, char* argv[])
 {
-  int frames = 20;
-  std::vector<int> levels{ 6, 7, 8 };
-  int width = 1024;
-  int height = 768;
+  Options options;
   for (int i = 1; i < argc; ++i)
   {
     const std::string option = argv[i];
@@ -77,21 +71,21 @@ int main(int argc, char* argv[])
     const std::string value = argv[++i];
     if (option == "--frames")
     {
-      frames = std::atoi(value.c_str());
+      options.Frames = std::atoi(value.c_str());
     }
     else if (option == "--levels")
     {
-      levels.clear();
+      options.Levels.clear();
       std::stringstream list(value);
       std::string item;
       while (std::getline(list, item, ','))
       {
-        levels.push_back(std::atoi(item.c_str()));
+        options.Levels.push_back(std::atoi(item.c_str()));
       }
     }
     else if (option == "--size")
     {
-      if (std::sscanf(value.c_str(), "%dx%d", &width, &height) != 2)
+      if (std::sscanf(value.c_str(), "%dx%d", &options.Width, &options.Height) != 2)
       {
         Usage();
       }
@@ -101,163 +95,208 @@ int main(int argc, char* argv[])
       Usage();
     }
   }
-  if (frames < 1 || levels.empty() || width < 16 || height < 16)
+  if (options.Frames < 1 || options.Levels.empty() || options.Width < 16 || options.Height < 16)
   {
     Usage();
   }
+  return options;
+}
 
-  std::printf(
-    "%d frames of a 2-degree orbit, %dx%d offscreen; medians in ms\n", frames, width, height);
+// One window of the comparison: offscreen, no multisampling, the camera
+// fitted to the mesh and raised 20 degrees; rendered once (uploads, and a
+// filter's first run).
+struct Scene
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkActor> Actor;
+
+  void SetUp(vtkPolyData* mesh, const Options& options)
+  {
+    this->Window->SetSize(options.Width, options.Height);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetOffScreenRendering(1);
+    this->Window->AddRenderer(this->Renderer);
+    this->Renderer->AddActor(this->Actor);
+    this->Renderer->ResetCamera(mesh->GetBounds());
+    this->Renderer->GetActiveCamera()->Elevation(20.0);
+    this->Renderer->GetActiveCamera()->OrthogonalizeViewUp();
+    this->Window->Render();
+    this->Window->WaitForCompletion();
+  }
+};
+
+struct Variant : Scene
+{
+  const char* Name;
+  std::vector<double> FrameMs;
+  std::vector<double> PrepareMs;
+
+  explicit Variant(const char* name)
+    : Name(name)
+  {
+  }
+};
+
+// The orbit: plain, mapper and filter + mapper, frame by frame in turn.
+void MeasureOrbit(vtkPolyData* mesh, const Options& options)
+{
+  Variant plain("plain");
+  Variant mapper("mapper");
+  Variant filtered("filter");
+  vtkNew<vtkPolyDataMapper> plainMapper;
+  plainMapper->SetInputData(mesh);
+  plainMapper->ScalarVisibilityOff();
+  plain.Actor->SetMapper(plainMapper);
+  vtkNew<vtkSilhouetteSmoothingMapper> smoothingMapper;
+  smoothingMapper->SetInputData(mesh);
+  smoothingMapper->ScalarVisibilityOff();
+  mapper.Actor->SetMapper(smoothingMapper);
+  vtkNew<vtkSilhouetteSmoothingFilter> filter;
+  filter->SetInputData(mesh);
+  filter->SetRenderer(filtered.Renderer);
+  filter->SetProp3D(filtered.Actor);
+  vtkNew<vtkPolyDataMapper> filterMapper;
+  filterMapper->SetInputConnection(filter->GetOutputPort());
+  filterMapper->ScalarVisibilityOff();
+  filtered.Actor->SetMapper(filterMapper);
+  Variant* variants[3] = { &plain, &mapper, &filtered };
+  for (Variant* v : variants)
+  {
+    v->SetUp(mesh, options);
+  }
+  for (int f = 0; f < options.Frames; ++f)
+  {
+    for (Variant* v : variants)
+    {
+      double prepare = 0.0;
+      const double frame = benchmark_timing::Milliseconds([&]() {
+        v->Renderer->GetActiveCamera()->Azimuth(2.0);
+        if (v == &filtered)
+        {
+          prepare = benchmark_timing::Milliseconds([&]() { filter->Update(); });
+        }
+        v->Window->Render();
+        v->Window->WaitForCompletion();
+      });
+      if (v == &mapper)
+      {
+        prepare = 1000.0 * smoothingMapper->GetLastPrepareSeconds();
+      }
+      v->FrameMs.push_back(frame);
+      v->PrepareMs.push_back(prepare);
+    }
+  }
+  const double plainMs = benchmark_timing::Median(plain.FrameMs);
+  for (Variant* v : variants)
+  {
+    const double ms = benchmark_timing::Median(v->FrameMs);
+    char smoothing[32] = "-";
+    if (v != &plain)
+    {
+      std::snprintf(smoothing, sizeof(smoothing), "%.2f", benchmark_timing::Median(v->PrepareMs));
+    }
+    std::printf("%10lld  %-7s %10.1f %10.2f %12s\n",
+      static_cast<long long>(mesh->GetNumberOfPolys()), v->Name, ms, ms / plainMs, smoothing);
+  }
+  std::printf("%10s  mapper: %lld triangles replaced by %lld in the last frame\n", "",
+    static_cast<long long>(smoothingMapper->GetReplacedTriangleCount()),
+    static_cast<long long>(smoothingMapper->GetPatchTriangleCount()));
+  std::fflush(stdout);
+}
+
+// The deforming mesh: each variant moves the points of its own copy.
+struct Deforming : Scene
+{
+  const char* Name;
+  bool Rebuild;
+  vtkNew<vtkPolyData> Mesh;
+  std::vector<double> FrameMs;
+
+  Deforming(const char* name, bool rebuild)
+    : Name(name)
+    , Rebuild(rebuild)
+  {
+  }
+
+  // Stretches the copy along x by `scale` and renders it; with Rebuild, the
+  // cells count as changed too.
+  double Frame(double scale)
+  {
+    return benchmark_timing::Milliseconds([&]() {
+      vtkPoints* points = this->Mesh->GetPoints();
+      for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+      {
+        double x[3];
+        points->GetPoint(p, x);
+        points->SetPoint(p, x[0] * scale, x[1], x[2]);
+      }
+      points->Modified();
+      if (this->Rebuild)
+      {
+        this->Mesh->GetPolys()->Modified();
+      }
+      this->Window->Render();
+      this->Window->WaitForCompletion();
+    });
+  }
+};
+
+void MeasureDeforming(vtkPolyData* mesh, const Options& options)
+{
+  Deforming still("plain", false);
+  Deforming moving("mapper", false);
+  Deforming anew("anew", true);
+  Deforming* deforming[3] = { &still, &moving, &anew };
+  vtkNew<vtkPolyDataMapper> stillMapper;
+  vtkNew<vtkSilhouetteSmoothingMapper> movingMapper;
+  vtkNew<vtkSilhouetteSmoothingMapper> anewMapper;
+  vtkPolyDataMapper* mappers[3] = { stillMapper, movingMapper, anewMapper };
+  for (int k = 0; k < 3; ++k)
+  {
+    Deforming* d = deforming[k];
+    d->Mesh->DeepCopy(mesh);
+    mappers[k]->SetInputData(d->Mesh);
+    mappers[k]->ScalarVisibilityOff();
+    d->Actor->SetMapper(mappers[k]);
+    d->SetUp(mesh, options);
+  }
+  const int deformFrames = std::max(3, options.Frames / 2);
+  for (int f = 0; f < deformFrames; ++f)
+  {
+    const double scale = f % 2 == 0 ? 1.01 : 1.0 / 1.01;
+    for (Deforming* d : deforming)
+    {
+      d->FrameMs.push_back(d->Frame(scale));
+    }
+  }
+  const double anewMs = benchmark_timing::Median(anew.FrameMs);
+  const double stillMs = benchmark_timing::Median(still.FrameMs);
+  for (Deforming* d : deforming)
+  {
+    const double ms = benchmark_timing::Median(d->FrameMs);
+    std::printf("%10lld  %-7s %10.1f %10.2f   deforming; / anew %.2f\n",
+      static_cast<long long>(mesh->GetNumberOfPolys()), d->Name, ms, ms / stillMs, ms / anewMs);
+  }
+  std::fflush(stdout);
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+  const Options options = ParseOptions(argc, argv);
+  std::printf("%d frames of a 2-degree orbit, %dx%d offscreen; medians in ms\n", options.Frames,
+    options.Width, options.Height);
   std::printf(
     "%10s  %-7s %10s %10s %12s\n", "triangles", "variant", "frame", "/ plain", "smoothing");
-  for (const int level : levels)
+  for (const int level : options.Levels)
   {
     vtkNew<vtkIcosphereSource> sphere;
     sphere->SetSubdivisionLevel(level);
     sphere->Update();
-    vtkPolyData* mesh = sphere->GetOutput();
-
-    Variant plain{ "plain" };
-    Variant mapper{ "mapper" };
-    Variant filtered{ "filter" };
-    vtkNew<vtkPolyDataMapper> plainMapper;
-    plainMapper->SetInputData(mesh);
-    plainMapper->ScalarVisibilityOff();
-    plain.Actor->SetMapper(plainMapper);
-    vtkNew<vtkSilhouetteSmoothingMapper> smoothingMapper;
-    smoothingMapper->SetInputData(mesh);
-    smoothingMapper->ScalarVisibilityOff();
-    mapper.Actor->SetMapper(smoothingMapper);
-    vtkNew<vtkSilhouetteSmoothingFilter> filter;
-    filter->SetInputData(mesh);
-    filter->SetRenderer(filtered.Renderer);
-    filter->SetProp3D(filtered.Actor);
-    vtkNew<vtkPolyDataMapper> filterMapper;
-    filterMapper->SetInputConnection(filter->GetOutputPort());
-    filterMapper->ScalarVisibilityOff();
-    filtered.Actor->SetMapper(filterMapper);
-    Variant* variants[3] = { &plain, &mapper, &filtered };
-    for (Variant* v : variants)
-    {
-      v->Window->SetSize(width, height);
-      v->Window->SetMultiSamples(0);
-      v->Window->SetOffScreenRendering(1);
-      v->Window->AddRenderer(v->Renderer);
-      v->Renderer->AddActor(v->Actor);
-      v->Renderer->ResetCamera(mesh->GetBounds());
-      v->Renderer->GetActiveCamera()->Elevation(20.0);
-      v->Renderer->GetActiveCamera()->OrthogonalizeViewUp();
-      v->Window->Render(); // uploads, and the filter's first run
-      v->Window->WaitForCompletion();
-    }
-    for (int f = 0; f < frames; ++f)
-    {
-      for (Variant* v : variants)
-      {
-        double prepare = 0.0;
-        const double frame = benchmark_timing::Milliseconds([&]() {
-          v->Renderer->GetActiveCamera()->Azimuth(2.0);
-          if (v == &filtered)
-          {
-            prepare = benchmark_timing::Milliseconds([&]() { filter->Update(); });
-          }
-          v->Window->Render();
-          v->Window->WaitForCompletion();
-        });
-        if (v == &mapper)
-        {
-          prepare = 1000.0 * smoothingMapper->GetLastPrepareSeconds();
-        }
-        v->FrameMs.push_back(frame);
-        v->PrepareMs.push_back(prepare);
-      }
-    }
-    const double plainMs = benchmark_timing::Median(plain.FrameMs);
-    for (Variant* v : variants)
-    {
-      const double ms = benchmark_timing::Median(v->FrameMs);
-      char smoothing[32] = "-";
-      if (v != &plain)
-      {
-        std::snprintf(smoothing, sizeof(smoothing), "%.2f", benchmark_timing::Median(v->PrepareMs));
-      }
-      std::printf("%10lld  %-7s %10.1f %10.2f %12s\n",
-        static_cast<long long>(mesh->GetNumberOfPolys()), v->Name, ms, ms / plainMs, smoothing);
-    }
-    std::printf("%10s  mapper: %lld triangles replaced by %lld in the last frame\n", "",
-      static_cast<long long>(smoothingMapper->GetReplacedTriangleCount()),
-      static_cast<long long>(smoothingMapper->GetPatchTriangleCount()));
-    std::fflush(stdout);
-
-    // The deforming mesh: each variant moves the points of its own copy.
-    struct Deforming
-    {
-      const char* Name;
-      bool Rebuild;
-      vtkNew<vtkPolyData> Mesh;
-      vtkNew<vtkRenderWindow> Window;
-      vtkNew<vtkRenderer> Renderer;
-      vtkNew<vtkActor> Actor;
-      std::vector<double> FrameMs;
-    };
-    Deforming still{ "plain", false };
-    Deforming moving{ "mapper", false };
-    Deforming anew{ "anew", true };
-    Deforming* deforming[3] = { &still, &moving, &anew };
-    vtkNew<vtkPolyDataMapper> stillMapper;
-    vtkNew<vtkSilhouetteSmoothingMapper> movingMapper;
-    vtkNew<vtkSilhouetteSmoothingMapper> anewMapper;
-    vtkPolyDataMapper* mappers[3] = { stillMapper, movingMapper, anewMapper };
-    for (int k = 0; k < 3; ++k)
-    {
-      Deforming* d = deforming[k];
-      d->Mesh->DeepCopy(mesh);
-      mappers[k]->SetInputData(d->Mesh);
-      mappers[k]->ScalarVisibilityOff();
-      d->Actor->SetMapper(mappers[k]);
-      d->Window->SetSize(width, height);
-      d->Window->SetMultiSamples(0);
-      d->Window->SetOffScreenRendering(1);
-      d->Window->AddRenderer(d->Renderer);
-      d->Renderer->AddActor(d->Actor);
-      d->Renderer->ResetCamera(mesh->GetBounds());
-      d->Renderer->GetActiveCamera()->Elevation(20.0);
-      d->Window->Render();
-      d->Window->WaitForCompletion();
-    }
-    const int deformFrames = std::max(3, frames / 2);
-    for (int f = 0; f < deformFrames; ++f)
-    {
-      const double scale = f % 2 == 0 ? 1.01 : 1.0 / 1.01;
-      for (Deforming* d : deforming)
-      {
-        d->FrameMs.push_back(benchmark_timing::Milliseconds([&]() {
-          vtkPoints* points = d->Mesh->GetPoints();
-          for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
-          {
-            double x[3];
-            points->GetPoint(p, x);
-            points->SetPoint(p, x[0] * scale, x[1], x[2]);
-          }
-          points->Modified();
-          if (d->Rebuild)
-          {
-            d->Mesh->GetPolys()->Modified();
-          }
-          d->Window->Render();
-          d->Window->WaitForCompletion();
-        }));
-      }
-    }
-    const double anewMs = benchmark_timing::Median(anew.FrameMs);
-    const double stillMs = benchmark_timing::Median(still.FrameMs);
-    for (Deforming* d : deforming)
-    {
-      const double ms = benchmark_timing::Median(d->FrameMs);
-      std::printf("%10lld  %-7s %10.1f %10.2f   deforming; / anew %.2f\n",
-        static_cast<long long>(mesh->GetNumberOfPolys()), d->Name, ms, ms / stillMs, ms / anewMs);
-    }
-    std::fflush(stdout);
+    MeasureOrbit(sphere->GetOutput(), options);
+    MeasureDeforming(sphere->GetOutput(), options);
   }
   return 0;
 }

@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace silsmooth
 {
@@ -19,7 +20,12 @@ public:
     : Mesh(mesh)
     , Frame(frame)
     , PointCount(static_cast<Id>(mesh.Points.size()))
+    , RemeshedMask(mesh.Triangles.size(), false)
   {
+    for (const Id t : frame.Remeshed)
+    {
+      this->RemeshedMask[static_cast<std::size_t>(t)] = true;
+    }
   }
 
   // Where input point p was moved to, or nullptr.
@@ -74,18 +80,15 @@ public:
       c, input, this->normal(ids[0]) + this->normal(ids[1]) + this->normal(ids[2]));
   }
 
-  /// The entry of Remeshed for input triangle t, or -1 when t is kept.
-  long remeshedIndex(Id t) const
-  {
-    const auto it = std::lower_bound(this->Frame.Remeshed.begin(), this->Frame.Remeshed.end(), t);
-    return it != this->Frame.Remeshed.end() && *it == t
-      ? static_cast<long>(it - this->Frame.Remeshed.begin())
-      : -1;
-  }
+  /// Whether input triangle t is re-meshed in this frame: a bit per input
+  /// triangle, since the check asks it of every candidate near every new
+  /// triangle.
+  bool isRemeshed(Id t) const { return this->RemeshedMask[static_cast<std::size_t>(t)]; }
 
   const FoldGuardMesh& Mesh;
   const FoldGuardFrame& Frame;
   const Id PointCount;
+  std::vector<bool> RemeshedMask;
 };
 
 // A triangle to check: a replacement (Index into Replacements) or a kept
@@ -177,7 +180,7 @@ private:
       for (const Id t : candidates)
       {
         const Triangle& tri = this->Mesh.Triangles[static_cast<std::size_t>(t)];
-        if ((tri[0] == p || tri[1] == p || tri[2] == p) && this->Geometry.remeshedIndex(t) < 0)
+        if ((tri[0] == p || tri[1] == p || tri[2] == p) && !this->Geometry.isRemeshed(t))
         {
           around.push_back(t);
         }
@@ -257,21 +260,86 @@ private:
     }
   }
 
+  // Items in runs that share one query of the prepared grid: the new
+  // triangles of one input triangle lie close together, and one query with
+  // their joint box, narrowed to each one's box, finds what a query per item
+  // would (the grid's query is most of a check's cost).
+  void groupItems()
+  {
+    this->GroupStarts.clear();
+    for (std::size_t k = 0; k < this->Items.size(); ++k)
+    {
+      const bool sameRun = k > 0 && this->Items[k].Remeshed >= 0 &&
+        this->Items[k].Remeshed == this->Items[k - 1].Remeshed;
+      if (!sameRun)
+      {
+        this->GroupStarts.push_back(k);
+      }
+    }
+    this->GroupStarts.push_back(this->Items.size());
+  }
+
   // 0: fine, 1: turned over, 2: cuts through another; and per item, the
   // changed triangles it cuts, which fold too.
   void judgeItems(const FoldGuardParallelFor& parallelFor)
   {
     this->Verdict.assign(this->Items.size(), 0);
     this->CutItems.assign(this->Items.size(), {});
-    parallelFor(this->Items.size(), [this](std::size_t begin, std::size_t end) {
+    this->groupItems();
+    parallelFor(this->GroupStarts.size() - 1, [this](std::size_t begin, std::size_t end) {
+      std::vector<Id> near;
       std::vector<Id> candidates;
-      for (std::size_t k = begin; k < end; ++k)
+      for (std::size_t g = begin; g < end; ++g)
       {
-        this->judge(k, candidates);
+        this->judgeGroup(this->GroupStarts[g], this->GroupStarts[g + 1], near, candidates);
       }
     });
   }
 
+  void judgeGroup(
+    std::size_t begin, std::size_t end, std::vector<Id>& near, std::vector<Id>& candidates)
+  {
+    // An item's own query would find nothing for a box that is not finite.
+    auto finiteBox = [this](std::size_t k) {
+      const glm::dvec3 d = this->Highs[k] - this->Lows[k];
+      return std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.z);
+    };
+    glm::dvec3 low(HUGE_VAL);
+    glm::dvec3 high(-HUGE_VAL);
+    bool any = false;
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      if (this->ToCheck[k] && finiteBox(k))
+      {
+        low = glm::min(low, this->Lows[k]);
+        high = glm::max(high, this->Highs[k]);
+        any = true;
+      }
+    }
+    near.clear();
+    if (any)
+    {
+      this->Mesh.Grid.query(low, high, near);
+    }
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      candidates.clear();
+      if (this->ToCheck[k] && finiteBox(k))
+      {
+        for (const Id t : near)
+        {
+          if (this->Mesh.Grid.meets(t, this->Lows[k], this->Highs[k]))
+          {
+            candidates.push_back(t);
+          }
+        }
+      }
+      this->judge(k, candidates);
+    }
+  }
+
+  // Judges item k; `candidates` holds the prepared grid's triangles whose
+  // boxes meet its box, and is used as scratch afterwards.
   void judge(std::size_t k, std::vector<Id>& candidates)
   {
     const Item& item = this->Items[k];
@@ -294,12 +362,11 @@ private:
     };
     bool cuts = false;
     // Kept, unmoved triangles: where the prepared grid has them.
-    this->Mesh.Grid.query(this->Lows[k], this->Highs[k], candidates);
     for (std::size_t c = 0; c < candidates.size() && !cuts; ++c)
     {
       const Id other = candidates[c];
       const Triangle& y = this->Mesh.Triangles[static_cast<std::size_t>(other)];
-      if (other != item.Source && !hasRepeatedCorner(y) && geometry.remeshedIndex(other) < 0 &&
+      if (other != item.Source && !hasRepeatedCorner(y) && !geometry.isRemeshed(other) &&
         !this->hasMovedCorner(y))
       {
         cuts = cutBy(geometry.current(y), other);
@@ -371,6 +438,8 @@ private:
   TriangleGrid Changed;
   std::vector<unsigned char> Verdict;
   std::vector<std::vector<std::size_t>> CutItems;
+  /// Items [GroupStarts[g], GroupStarts[g + 1]) share one grid query.
+  std::vector<std::size_t> GroupStarts;
 };
 
 } // namespace

@@ -34,6 +34,15 @@ public:
   /// [low, high], each once, in no particular order.
   void query(const glm::dvec3& low, const glm::dvec3& high, std::vector<Id>& out) const;
 
+  /// Whether entry t's box meets the box [low, high]: the test query()
+  /// applies, for narrowing a query's result to a smaller box.
+  bool meets(Id t, const glm::dvec3& low, const glm::dvec3& high) const
+  {
+    const std::size_t i = static_cast<std::size_t>(t);
+    return this->Low[i].x <= high.x && low.x <= this->High[i].x && this->Low[i].y <= high.y &&
+      low.y <= this->High[i].y && this->Low[i].z <= high.z && low.z <= this->High[i].z;
+  }
+
   bool empty() const { return this->Offsets.empty(); }
 
   /// The edge length of the grid's cubic cells.

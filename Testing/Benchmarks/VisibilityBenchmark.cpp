@@ -34,6 +34,95 @@ using namespace silsmooth;
 
 using namespace benchmark_meshes;
 
+namespace
+{
+
+// One row of the table: the mesh's visibility both ways, and with `frame`
+// its whole pass both ways. False after saying so when the two ways differ.
+bool MeasureMesh(const Mesh& input, int views, bool frame)
+{
+  std::unique_ptr<PreparedMesh> prepared;
+  const double prepare = benchmark_timing::Milliseconds([&] {
+    prepared = std::make_unique<PreparedMesh>(input.Points, input.Triangles, input.Normals);
+  });
+  const PreparedMesh& mesh = *prepared;
+  const double build = benchmark_timing::Milliseconds([&] { mesh.visibilityHierarchy(); });
+  std::mt19937_64 random(1);
+  std::vector<double> plainMs, treeMs, framePlainMs, frameTreeMs;
+  double decided = 0.0;
+  double checksum = 0.0;
+  for (int v = 0; v < views; ++v)
+  {
+    const ViewGeometry view = randomView(random, v % 2 == 1);
+    std::vector<double> a;
+    std::vector<double> b;
+    // Alternate which goes first, so that neither always finds warm caches.
+    for (int k = 0; k < 2; ++k)
+    {
+      if ((k + v / 2) % 2 == 0)
+      {
+        plainMs.push_back(benchmark_timing::Milliseconds(
+          [&] { a = vertexVisibility(mesh, view, VisibilityMethod::PerVertex); }));
+      }
+      else
+      {
+        treeMs.push_back(benchmark_timing::Milliseconds(
+          [&] { b = vertexVisibility(mesh, view, VisibilityMethod::Hierarchical); }));
+      }
+    }
+    for (std::size_t i = 0; i < a.size(); ++i)
+    {
+      if ((a[i] >= 0.0) != (b[i] >= 0.0))
+      {
+        std::fprintf(stderr, "%s: decisions differ at vertex %zu\n", input.Name.c_str(), i);
+        return false;
+      }
+    }
+    VisibilityHierarchy::Statistics statistics;
+    mesh.visibilityHierarchy().classify(view, b, nullptr, &statistics);
+    decided += static_cast<double>(statistics.DecidedVertices) / std::max<std::size_t>(1, a.size());
+    if (frame)
+    {
+      for (int k = 0; k < 2; ++k)
+      {
+        SmoothingParameters parameters;
+        const bool plainNow = (k + v / 2) % 2 == 0;
+        parameters.Visibility =
+          plainNow ? VisibilityMethod::PerVertex : VisibilityMethod::Hierarchical;
+        double added = 0.0;
+        const double ms = benchmark_timing::Milliseconds([&] {
+          added = static_cast<double>(smoothSilhouettes(mesh, view, parameters).NewPoints.size());
+        });
+        (plainNow ? framePlainMs : frameTreeMs).push_back(ms);
+        checksum += plainNow ? added : -added;
+      }
+    }
+  }
+  if (checksum != 0.0)
+  {
+    std::fprintf(stderr, "%s: the two passes added different points\n", input.Name.c_str());
+    return false;
+  }
+  const double plain = benchmark_timing::Median(plainMs);
+  const double tree = benchmark_timing::Median(treeMs);
+  std::printf("| %s | %zu | %.1f | %.1f | %.3f | %.3f | %.2f | %.1f |", input.Name.c_str(),
+    input.Triangles.size(), prepare, build, plain, tree, tree / plain, 100.0 * decided / views);
+  if (frame)
+  {
+    const double fp = benchmark_timing::Median(framePlainMs);
+    const double ft = benchmark_timing::Median(frameTreeMs);
+    std::printf(" %.2f | %.2f | %.2f |\n", fp, ft, ft / fp);
+  }
+  else
+  {
+    std::printf(" - | - | - |\n");
+  }
+  std::fflush(stdout);
+  return true;
+}
+
+} // namespace
+
 int main(int argc, char* argv[])
 {
   int views = 40;
@@ -106,84 +195,10 @@ int main(int argc, char* argv[])
   std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const Mesh& input : meshes)
   {
-    std::unique_ptr<PreparedMesh> prepared;
-    const double prepare = benchmark_timing::Milliseconds([&] {
-      prepared = std::make_unique<PreparedMesh>(input.Points, input.Triangles, input.Normals);
-    });
-    const PreparedMesh& mesh = *prepared;
-    const double build = benchmark_timing::Milliseconds([&] { mesh.visibilityHierarchy(); });
-    std::mt19937_64 random(1);
-    std::vector<double> plainMs, treeMs, framePlainMs, frameTreeMs;
-    double decided = 0.0;
-    double checksum = 0.0;
-    for (int v = 0; v < views; ++v)
+    if (!MeasureMesh(input, views, frame))
     {
-      const ViewGeometry view = randomView(random, v % 2 == 1);
-      std::vector<double> a;
-      std::vector<double> b;
-      // Alternate which goes first, so that neither always finds warm caches.
-      for (int k = 0; k < 2; ++k)
-      {
-        if ((k + v / 2) % 2 == 0)
-        {
-          plainMs.push_back(benchmark_timing::Milliseconds(
-            [&] { a = vertexVisibility(mesh, view, VisibilityMethod::PerVertex); }));
-        }
-        else
-        {
-          treeMs.push_back(benchmark_timing::Milliseconds(
-            [&] { b = vertexVisibility(mesh, view, VisibilityMethod::Hierarchical); }));
-        }
-      }
-      for (std::size_t i = 0; i < a.size(); ++i)
-      {
-        if ((a[i] >= 0.0) != (b[i] >= 0.0))
-        {
-          std::fprintf(stderr, "%s: decisions differ at vertex %zu\n", input.Name.c_str(), i);
-          return 1;
-        }
-      }
-      VisibilityHierarchy::Statistics statistics;
-      mesh.visibilityHierarchy().classify(view, b, nullptr, &statistics);
-      decided +=
-        static_cast<double>(statistics.DecidedVertices) / std::max<std::size_t>(1, a.size());
-      if (frame)
-      {
-        for (int k = 0; k < 2; ++k)
-        {
-          SmoothingParameters parameters;
-          const bool plainNow = (k + v / 2) % 2 == 0;
-          parameters.Visibility =
-            plainNow ? VisibilityMethod::PerVertex : VisibilityMethod::Hierarchical;
-          double added = 0.0;
-          const double ms = benchmark_timing::Milliseconds([&] {
-            added = static_cast<double>(smoothSilhouettes(mesh, view, parameters).NewPoints.size());
-          });
-          (plainNow ? framePlainMs : frameTreeMs).push_back(ms);
-          checksum += plainNow ? added : -added;
-        }
-      }
-    }
-    if (checksum != 0.0)
-    {
-      std::fprintf(stderr, "%s: the two passes added different points\n", input.Name.c_str());
       return 1;
     }
-    const double plain = benchmark_timing::Median(plainMs);
-    const double tree = benchmark_timing::Median(treeMs);
-    std::printf("| %s | %zu | %.1f | %.1f | %.3f | %.3f | %.2f | %.1f |", input.Name.c_str(),
-      input.Triangles.size(), prepare, build, plain, tree, tree / plain, 100.0 * decided / views);
-    if (frame)
-    {
-      const double fp = benchmark_timing::Median(framePlainMs);
-      const double ft = benchmark_timing::Median(frameTreeMs);
-      std::printf(" %.2f | %.2f | %.2f |\n", fp, ft, ft / fp);
-    }
-    else
-    {
-      std::printf(" - | - | - |\n");
-    }
-    std::fflush(stdout);
   }
   return 0;
 }

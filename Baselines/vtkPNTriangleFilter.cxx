@@ -11,8 +11,6 @@
 
 vtkStandardNewMacro(vtkPNTriangleFilter);
 
-vtkSilhouetteGuardedProcessRequestMacro(vtkPNTriangleFilter);
-
 namespace support = vtkSilhouetteFilterSupport;
 
 int vtkPNTriangleFilter::RequestData(

@@ -23,21 +23,15 @@
 #define vtkPNTriangleFilter_h
 
 #include "SilhouetteSmoothingFiltersBaselinesModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkSilhouettePolyDataAlgorithm.h"            // For the superclass
 
-class SILHOUETTESMOOTHINGFILTERSBASELINES_EXPORT vtkPNTriangleFilter : public vtkPolyDataAlgorithm
+class SILHOUETTESMOOTHINGFILTERSBASELINES_EXPORT vtkPNTriangleFilter
+  : public vtkSilhouettePolyDataAlgorithm
 {
 public:
   static vtkPNTriangleFilter* New();
-  vtkTypeMacro(vtkPNTriangleFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkPNTriangleFilter, vtkSilhouettePolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  /**
-   * The superclass's, except that no exception leaves it: std::bad_alloc or
-   * any other becomes an error, emptied outputs and a failed request.
-   */
-  vtkTypeBool ProcessRequest(
-    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
 
   ///@{
   /**

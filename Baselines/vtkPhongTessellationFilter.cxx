@@ -13,8 +13,6 @@ vtkStandardNewMacro(vtkPhongTessellationFilter);
 
 vtkSilhouetteCheckedSetterMacro(vtkPhongTessellationFilter, ShapeFactor, double, 0.0, 1.0);
 
-vtkSilhouetteGuardedProcessRequestMacro(vtkPhongTessellationFilter);
-
 namespace support = vtkSilhouetteFilterSupport;
 
 int vtkPhongTessellationFilter::RequestData(

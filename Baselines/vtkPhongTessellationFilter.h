@@ -27,22 +27,15 @@
 #define vtkPhongTessellationFilter_h
 
 #include "SilhouetteSmoothingFiltersBaselinesModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkSilhouettePolyDataAlgorithm.h"            // For the superclass
 
 class SILHOUETTESMOOTHINGFILTERSBASELINES_EXPORT vtkPhongTessellationFilter
-  : public vtkPolyDataAlgorithm
+  : public vtkSilhouettePolyDataAlgorithm
 {
 public:
   static vtkPhongTessellationFilter* New();
-  vtkTypeMacro(vtkPhongTessellationFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkPhongTessellationFilter, vtkSilhouettePolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  /**
-   * The superclass's, except that no exception leaves it: std::bad_alloc or
-   * any other becomes an error, emptied outputs and a failed request.
-   */
-  vtkTypeBool ProcessRequest(
-    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
 
   ///@{
   /**

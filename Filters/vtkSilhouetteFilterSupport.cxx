@@ -358,50 +358,6 @@ std::string MismatchedArrayError(vtkPolyData* input)
   return {};
 }
 
-int GuardRequest(vtkAlgorithm* self, vtkInformation* request, vtkInformationVector** inputs,
-  vtkInformationVector* outputs, const std::function<int()>& process)
-{
-  if (request && request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()) && inputs &&
-    self->GetNumberOfInputPorts() > 0)
-  {
-    if (vtkPolyData* input = vtkPolyData::GetData(inputs[0]))
-    {
-      const std::string error = MismatchedArrayError(input);
-      if (!error.empty())
-      {
-        vtkErrorWithObjectMacro(self, << error);
-        return 0;
-      }
-    }
-  }
-  std::string failure;
-  try
-  {
-    return process();
-  }
-  catch (const std::bad_alloc&)
-  {
-    failure = "Out of memory: the request needs more memory than the system gives.";
-  }
-  catch (const std::exception& error)
-  {
-    failure = std::string("The request failed: ") + error.what();
-  }
-  catch (...)
-  {
-    failure = "The request failed with an unknown exception.";
-  }
-  for (int i = 0; outputs && i < outputs->GetNumberOfInformationObjects(); ++i)
-  {
-    if (vtkDataObject* output = outputs->GetInformationObject(i)->Get(vtkDataObject::DATA_OBJECT()))
-    {
-      output->Initialize();
-    }
-  }
-  vtkErrorWithObjectMacro(self, << failure);
-  return 0;
-}
-
 void WriteMesh(vtkPolyData* input, vtkPolyData* output, const std::vector<glm::dvec3>& inputNormals,
   const std::vector<glm::dvec3>& addedPoints, const std::vector<glm::dvec3>& addedNormals,
   const std::vector<PointSource>& addedSources, const std::vector<silsmooth::Triangle>& triangles,

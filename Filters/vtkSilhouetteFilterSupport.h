@@ -122,27 +122,6 @@ PassedCells PassVertsAndLines(vtkPolyData* input);
 /// that would make the output's arrays garbage), else "".
 std::string MismatchedArrayError(vtkPolyData* input);
 
-/// For a filter's ProcessRequest: runs `process` (the superclass's
-/// ProcessRequest) so that no exception leaves the filter. std::bad_alloc
-/// and any other exception become an error (vtkErrorMacro), emptied outputs
-/// and a failed request, so one too-large request cannot end the program.
-/// Before a data request it also refuses, with an error, a polygonal input
-/// whose arrays have the wrong number of tuples (MismatchedArrayError).
-int GuardRequest(vtkAlgorithm* self, vtkInformation* request, vtkInformationVector** inputs,
-  vtkInformationVector* outputs, const std::function<int()>& process);
-
-/// Defines Class::ProcessRequest as its superclass's under GuardRequest (no
-/// exception leaves it). Used as a statement, with a `;`.
-#define vtkSilhouetteGuardedProcessRequestMacro(Class)                                             \
-  vtkTypeBool Class::ProcessRequest(                                                               \
-    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)         \
-  {                                                                                                \
-    return vtkSilhouetteFilterSupport::GuardRequest(this, request, inputs, outputs, [&] {          \
-      return static_cast<int>(this->Superclass::ProcessRequest(request, inputs, outputs));         \
-    });                                                                                            \
-  }                                                                                                \
-  static_assert(true, "")
-
 /// An added point as a weighted sum of input points (weights sum to one).
 struct PointSource
 {

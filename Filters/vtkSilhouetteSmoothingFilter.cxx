@@ -358,7 +358,7 @@ int vtkSilhouetteSmoothingFilter::RequestViewData(vtkInformation*,
                                      << this->MaximumSamples << ").");
     return 0;
   }
-  // (Arrays of the wrong length were refused before: GuardRequest.)
+  // (Arrays of the wrong length were refused before: vtkSilhouettePolyDataAlgorithm.)
 
   Internals& internal = *this->Internal;
   bool rebuilt = false;

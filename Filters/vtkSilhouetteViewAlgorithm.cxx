@@ -153,7 +153,6 @@ vtkSilhouetteViewAlgorithm::ViewStatus vtkSilhouetteViewAlgorithm::RequestView(
   return VIEW_READY;
 }
 
-vtkSilhouetteGuardedProcessRequestMacro(vtkSilhouetteViewAlgorithm);
 void vtkSilhouetteViewAlgorithm::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);

@@ -39,8 +39,8 @@
 #define vtkSilhouetteViewAlgorithm_h
 
 #include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
-#include "vtkWeakPointer.h" // For the renderer and prop
+#include "vtkSilhouettePolyDataAlgorithm.h"             // For the superclass
+#include "vtkWeakPointer.h"                             // For the renderer and prop
 
 #include <memory> // For the view tracker
 
@@ -55,18 +55,11 @@ struct View;
 }
 
 class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkSilhouetteViewAlgorithm
-  : public vtkPolyDataAlgorithm
+  : public vtkSilhouettePolyDataAlgorithm
 {
 public:
-  vtkTypeMacro(vtkSilhouetteViewAlgorithm, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSilhouetteViewAlgorithm, vtkSilhouettePolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  /**
-   * The superclass's, except that no exception leaves it: std::bad_alloc or
-   * any other becomes an error, emptied outputs and a failed request.
-   */
-  vtkTypeBool ProcessRequest(
-    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
 
   ///@{
   /**

@@ -27,8 +27,6 @@ vtkCreaseAndBorderLines::~vtkCreaseAndBorderLines() = default;
 vtkSilhouetteCheckedSetterMacro(vtkCreaseAndBorderLines, NormalJumpAngle, double, 0.0, 180.0);
 vtkSilhouetteCheckedSetterMacro(vtkCreaseAndBorderLines, FeatureAngle, double, 0.0, 180.0);
 
-vtkSilhouetteGuardedProcessRequestMacro(vtkCreaseAndBorderLines);
-
 int vtkCreaseAndBorderLines::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {

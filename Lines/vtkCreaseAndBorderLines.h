@@ -34,21 +34,15 @@
 #define vtkCreaseAndBorderLines_h
 
 #include "SilhouetteSmoothingFiltersLinesModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkSilhouettePolyDataAlgorithm.h"        // For the superclass
 
-class SILHOUETTESMOOTHINGFILTERSLINES_EXPORT vtkCreaseAndBorderLines : public vtkPolyDataAlgorithm
+class SILHOUETTESMOOTHINGFILTERSLINES_EXPORT vtkCreaseAndBorderLines
+  : public vtkSilhouettePolyDataAlgorithm
 {
 public:
   static vtkCreaseAndBorderLines* New();
-  vtkTypeMacro(vtkCreaseAndBorderLines, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkCreaseAndBorderLines, vtkSilhouettePolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  /**
-   * The superclass's, except that no exception leaves it: std::bad_alloc or
-   * any other becomes an error, emptied outputs and a failed request.
-   */
-  vtkTypeBool ProcessRequest(
-    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
 
   ///@{
   /**

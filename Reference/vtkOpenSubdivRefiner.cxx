@@ -37,8 +37,6 @@ vtkStandardNewMacro(vtkOpenSubdivRefiner);
 
 vtkSilhouetteCheckedSetterMacro(vtkOpenSubdivRefiner, FeatureAngle, double, 0.0, 180.0);
 
-vtkSilhouetteGuardedProcessRequestMacro(vtkOpenSubdivRefiner);
-
 namespace
 {
 

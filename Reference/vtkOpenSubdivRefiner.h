@@ -80,21 +80,15 @@
 #define vtkOpenSubdivRefiner_h
 
 #include "SilhouetteSmoothingFiltersReferenceModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkSilhouettePolyDataAlgorithm.h"            // For the superclass
 
-class SILHOUETTESMOOTHINGFILTERSREFERENCE_EXPORT vtkOpenSubdivRefiner : public vtkPolyDataAlgorithm
+class SILHOUETTESMOOTHINGFILTERSREFERENCE_EXPORT vtkOpenSubdivRefiner
+  : public vtkSilhouettePolyDataAlgorithm
 {
 public:
   static vtkOpenSubdivRefiner* New();
-  vtkTypeMacro(vtkOpenSubdivRefiner, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkOpenSubdivRefiner, vtkSilhouettePolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  /**
-   * The superclass's, except that no exception leaves it: std::bad_alloc or
-   * any other becomes an error, emptied outputs and a failed request.
-   */
-  vtkTypeBool ProcessRequest(
-    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
 
   ///@{
   /**

@@ -28,8 +28,6 @@ vtkSilhouetteCheckedSetterMacro(
 vtkSilhouetteCheckedSetterMacro(
   vtkSilhouetteQuadricDecimation, NearFactor, double, 0.0, VTK_DOUBLE_MAX);
 
-vtkSilhouetteGuardedProcessRequestMacro(vtkSilhouetteQuadricDecimation);
-
 void vtkSilhouetteQuadricDecimation::SetDistanceArrayName(const std::string& name)
 {
   if (this->DistanceArrayName != name)

@@ -40,24 +40,17 @@
 #define vtkSilhouetteQuadricDecimation_h
 
 #include "SilhouetteSmoothingFiltersSimplificationModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkSilhouettePolyDataAlgorithm.h"                 // For the superclass
 
 #include <string> // For the array name
 
 class SILHOUETTESMOOTHINGFILTERSSIMPLIFICATION_EXPORT vtkSilhouetteQuadricDecimation
-  : public vtkPolyDataAlgorithm
+  : public vtkSilhouettePolyDataAlgorithm
 {
 public:
   static vtkSilhouetteQuadricDecimation* New();
-  vtkTypeMacro(vtkSilhouetteQuadricDecimation, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSilhouetteQuadricDecimation, vtkSilhouettePolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  /**
-   * The superclass's, except that no exception leaves it: std::bad_alloc or
-   * any other becomes an error, emptied outputs and a failed request.
-   */
-  vtkTypeBool ProcessRequest(
-    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
 
   ///@{
   /** Stop at this many triangles or fewer (at least 4). Default 1000. */

@@ -23,8 +23,6 @@ vtkStandardNewMacro(vtkProgressiveMeshFilter);
 
 vtkSilhouetteCheckedSetterMacro(vtkProgressiveMeshFilter, Fraction, double, 0.0, 1.0);
 
-vtkSilhouetteGuardedProcessRequestMacro(vtkProgressiveMeshFilter);
-
 struct vtkProgressiveMeshFilter::Internal
 {
   std::optional<silsmooth::ProgressiveMesh> Mesh;

@@ -29,24 +29,17 @@
 #define vtkProgressiveMeshFilter_h
 
 #include "SilhouetteSmoothingFiltersStrokesModule.h" // For export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkSilhouettePolyDataAlgorithm.h"          // For the superclass
 
 #include <memory> // For std::unique_ptr
 
 class SILHOUETTESMOOTHINGFILTERSSTROKES_EXPORT vtkProgressiveMeshFilter
-  : public vtkPolyDataAlgorithm
+  : public vtkSilhouettePolyDataAlgorithm
 {
 public:
   static vtkProgressiveMeshFilter* New();
-  vtkTypeMacro(vtkProgressiveMeshFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkProgressiveMeshFilter, vtkSilhouettePolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  /**
-   * The superclass's, except that no exception leaves it: std::bad_alloc or
-   * any other becomes an error, emptied outputs and a failed request.
-   */
-  vtkTypeBool ProcessRequest(
-    vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs) override;
 
   ///@{
   /** Triangles wanted; negative (the default, -1) uses Fraction. */

@@ -447,7 +447,7 @@ bool ArraysOfTheWrongLength()
     Run run(mesh, Camera(0, 0, 5));
     CHECK(run.Failed(), "an array one tuple short fails the request");
     CHECK(run.Error().find("'Temperature' has") != std::string::npos, "the error names it");
-    // The other filters refuse it the same way (GuardRequest).
+    // The other filters refuse it the same way (vtkSilhouettePolyDataAlgorithm).
     vtkNew<vtkPNTriangleFilter> pn;
     vtkNew<vtkTest::ErrorObserver> pnErrors;
     pn->AddObserver(vtkCommand::ErrorEvent, pnErrors);

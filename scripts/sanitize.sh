@@ -27,7 +27,7 @@ cmake -S "$here" -B "$build" -DSILHOUETTE_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWith
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
   -DSILHOUETTE_REAL_MESHES_DIR="$meshes" \
   >"$build/sanitize-configure.log" 2>&1 || { cat "$build/sanitize-configure.log" >&2; exit 1; }
-cmake --build "$build" -j "$jobs" --target silhouette_core_tests visibility_benchmark SilhouetteModuleTests silhouette MeasureRun \
+cmake --build "$build" -j "$jobs" --target silhouette_core_tests visibility_benchmark fold_guard_benchmark SilhouetteModuleTests silhouette MeasureRun \
   >"$build/sanitize-build.log" 2>&1 || { tail -50 "$build/sanitize-build.log" >&2; exit 1; }
 echo "sanitize: built in $((SECONDS - started)) s"
 

@@ -2,11 +2,12 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
-#include "vtkCommand.h"
-#include "vtkExecutive.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkExecutive.h"
 #include "vtkIcosphereSource.h"
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
@@ -259,6 +260,43 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->ShallowCopy(reader->GetOutputDataObject(0));
   return mesh->GetNumberOfPoints() > 0 ? mesh : nullptr;
+}
+
+vtkSmartPointer<vtkPolyData> FlatGrid()
+{
+  const int columns = 4;
+  const int rows = 3;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  for (int j = 0; j <= rows; ++j)
+  {
+    for (int i = 0; i <= columns; ++i)
+    {
+      points->InsertNextPoint(-1.0 + 2.0 * i / columns, -1.0 + 2.5 * j / rows, 0.0);
+      normals->InsertNextTuple3(0.0, 0.0, 1.0);
+    }
+  }
+  vtkNew<vtkCellArray> polys;
+  for (int j = 0; j < rows; ++j)
+  {
+    for (int i = 0; i < columns; ++i)
+    {
+      const vtkIdType a = j * (columns + 1) + i;
+      const vtkIdType b = a + 1;
+      const vtkIdType c = a + columns + 1;
+      const vtkIdType lower[3] = { a, b, c + 1 };
+      const vtkIdType upper[3] = { a, c + 1, c };
+      polys->InsertNextCell(3, lower);
+      polys->InsertNextCell(3, upper);
+    }
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  mesh->GetPointData()->SetNormals(normals);
+  return mesh;
 }
 
 vtkSmartPointer<vtkPolyData> MeshNamingAMissingPoint()

@@ -89,6 +89,11 @@ std::string AssetModelsFolder();
 /// Reads a mesh by extension (.ply .vtp .obj .stl .vtk); nullptr on failure.
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path);
 
+/// A flat, open mesh in the plane z = 0: a 4 x 3 grid of quads over
+/// [-1, 1] x [-1, 1.5], each cut in two (24 triangles, 14 boundary edges),
+/// with the plane's normal as every point's normal.
+vtkSmartPointer<vtkPolyData> FlatGrid();
+
 /// Two points and one triangle that names a third point, which does not exist.
 vtkSmartPointer<vtkPolyData> MeshNamingAMissingPoint();
 

@@ -8,11 +8,9 @@
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
 #include "vtkPNTriangleFilter.h"
-#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkTriangleFilter.h"
 
 #include "SilhouetteTestSupport.h"
 
@@ -55,16 +53,7 @@ bool Run()
   }
 
   // A flat mesh with the plane's normal everywhere stays in the plane.
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetResolution(4, 3);
-  plane->SetOrigin(-1.0, -1.0, 0.0);
-  plane->SetPoint1(1.0, -1.0, 0.0);
-  plane->SetPoint2(-1.0, 1.5, 0.0);
-  vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputConnection(plane->GetOutputPort());
-  triangulate->Update();
-  vtkNew<vtkPolyData> flat;
-  flat->DeepCopy(triangulate->GetOutput());
+  vtkSmartPointer<vtkPolyData> flat = silhouette_test::FlatGrid();
   vtkNew<vtkPNTriangleFilter> pnFlat;
   pnFlat->SetInputData(flat);
   pnFlat->SetLevel(3);

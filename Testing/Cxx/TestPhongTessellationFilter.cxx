@@ -12,11 +12,9 @@
 #include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPhongTessellationFilter.h"
-#include "vtkPlaneSource.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 
 #include "SilhouetteTestSupport.h"
@@ -209,16 +207,7 @@ bool CheckAttributes()
 // linear field carried as point data matches the output points.
 bool CheckFlat()
 {
-  vtkNew<vtkPlaneSource> plane;
-  plane->SetResolution(4, 3);
-  plane->SetOrigin(-1.0, -1.0, 0.0);
-  plane->SetPoint1(1.0, -1.0, 0.0);
-  plane->SetPoint2(-1.0, 1.5, 0.0);
-  vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputConnection(plane->GetOutputPort());
-  triangulate->Update();
-  vtkNew<vtkPolyData> flat;
-  flat->DeepCopy(triangulate->GetOutput());
+  vtkSmartPointer<vtkPolyData> flat = silhouette_test::FlatGrid();
   vtkNew<vtkDoubleArray> field;
   field->SetName("Linear");
   for (vtkIdType i = 0; i < flat->GetNumberOfPoints(); ++i)
@@ -290,7 +279,8 @@ bool CheckBadInput()
   CHECK(message.find("1 points with NaN or infinite coordinates") != std::string::npos,
     "the NaN points are named");
 
-  CHECK(run(silhouette_test::MeshNamingAMissingPoint(), message) == 0 && message.find("points that do not exist") != std::string::npos,
+  CHECK(run(silhouette_test::MeshNamingAMissingPoint(), message) == 0 &&
+      message.find("points that do not exist") != std::string::npos,
     "cells naming missing points are an error");
 
   vtkNew<vtkPolyData> empty;

@@ -133,13 +133,6 @@ private:
                            : this->Mesh.Triangles[static_cast<std::size_t>(item.Source)];
   }
 
-  static bool overlap(const glm::dvec3& aLow, const glm::dvec3& aHigh, const glm::dvec3& bLow,
-    const glm::dvec3& bHigh)
-  {
-    return aLow.x <= bHigh.x && bLow.x <= aHigh.x && aLow.y <= bHigh.y && bLow.y <= aHigh.y &&
-      aLow.z <= bHigh.z && bLow.z <= aHigh.z;
-  }
-
   bool hasMovedCorner(const Triangle& t) const
   {
     return !this->Frame.Moved.empty() &&
@@ -253,7 +246,7 @@ private:
     out.clear();
     for (std::size_t j = 0; j < this->Items.size(); ++j)
     {
-      if (overlap(this->Lows[k], this->Highs[k], this->Lows[j], this->Highs[j]))
+      if (boxesMeet(this->Lows[k], this->Highs[k], this->Lows[j], this->Highs[j]))
       {
         out.push_back(static_cast<Id>(j));
       }
@@ -299,10 +292,13 @@ private:
   void judgeGroup(
     std::size_t begin, std::size_t end, std::vector<Id>& near, std::vector<Id>& candidates)
   {
-    // An item's own query would find nothing for a box that is not finite.
-    auto finiteBox = [this](std::size_t k) {
-      const glm::dvec3 d = this->Highs[k] - this->Lows[k];
-      return std::isfinite(d.x) && std::isfinite(d.y) && std::isfinite(d.z);
+    // An item's own query would find nothing for a box with a corner that
+    // is not finite (TriangleGrid::query).
+    auto finitePoint = [](const glm::dvec3& p) {
+      return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+    };
+    auto finiteBox = [&](std::size_t k) {
+      return finitePoint(this->Lows[k]) && finitePoint(this->Highs[k]);
     };
     glm::dvec3 low(HUGE_VAL);
     glm::dvec3 high(-HUGE_VAL);
@@ -380,7 +376,7 @@ private:
     {
       const std::size_t j = static_cast<std::size_t>(candidate);
       if (j != k && !hasRepeatedCorner(this->idsOf(this->Items[j])) &&
-        overlap(this->Lows[k], this->Highs[k], this->Lows[j], this->Highs[j]) &&
+        boxesMeet(this->Lows[k], this->Highs[k], this->Lows[j], this->Highs[j]) &&
         cutBy(this->Corners[j], this->Items[j].Source))
       {
         cuts = true;

@@ -186,9 +186,7 @@ void TriangleGrid::query(const glm::dvec3& low, const glm::dvec3& high, std::vec
           // query cover.
           const std::array<int, 3>& first = this->FirstCell[t];
           if (i == std::max(i0, first[0]) && j == std::max(j0, first[1]) &&
-            k == std::max(k0, first[2]) && this->Low[t].x <= high.x && low.x <= this->High[t].x &&
-            this->Low[t].y <= high.y && low.y <= this->High[t].y && this->Low[t].z <= high.z &&
-            low.z <= this->High[t].z)
+            k == std::max(k0, first[2]) && this->meets(static_cast<Id>(t), low, high))
           {
             out.push_back(this->Entries[e]);
           }

@@ -21,6 +21,15 @@
 namespace silsmooth
 {
 
+/// Whether the boxes [aLow, aHigh] and [bLow, bHigh] meet (closed boxes:
+/// touching counts).
+inline bool boxesMeet(
+  const glm::dvec3& aLow, const glm::dvec3& aHigh, const glm::dvec3& bLow, const glm::dvec3& bHigh)
+{
+  return aLow.x <= bHigh.x && bLow.x <= aHigh.x && aLow.y <= bHigh.y && bLow.y <= aHigh.y &&
+    aLow.z <= bHigh.z && bLow.z <= aHigh.z;
+}
+
 class TriangleGrid
 {
 public:
@@ -39,8 +48,7 @@ public:
   bool meets(Id t, const glm::dvec3& low, const glm::dvec3& high) const
   {
     const std::size_t i = static_cast<std::size_t>(t);
-    return this->Low[i].x <= high.x && low.x <= this->High[i].x && this->Low[i].y <= high.y &&
-      low.y <= this->High[i].y && this->Low[i].z <= high.z && low.z <= this->High[i].z;
+    return boxesMeet(this->Low[i], this->High[i], low, high);
   }
 
   bool empty() const { return this->Offsets.empty(); }

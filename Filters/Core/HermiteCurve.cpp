@@ -47,4 +47,20 @@ HermiteCurve makeCircleApproximatingCurve(
   return curve;
 }
 
+double chordDeviationBound(const HermiteCurve& curve)
+{
+  const glm::dvec3 chord = curve.P1 - curve.P0;
+  const double chordSquared = glm::dot(chord, chord);
+  if (!(chordSquared > 0.0))
+  {
+    return 0.0;
+  }
+  const auto across = [&](const glm::dvec3& tangent) {
+    return glm::length(tangent - (glm::dot(tangent, chord) / chordSquared) * chord);
+  };
+  // The across-chord deviation is h10(u) T0_perp + h11(u) T1_perp, and
+  // |h10(u)| + |h11(u)| = u (1 - u) <= 1/4.
+  return 0.25 * std::max(across(curve.T0), across(curve.T1));
+}
+
 } // namespace silsmooth

@@ -29,7 +29,24 @@ struct HermiteCurve
 glm::dvec3 circleTangent(const glm::dvec3& normal, const glm::dvec3& chord);
 
 /// The Hermite curve from p0 to p1 with unit normals n0, n1 at the ends.
+///
+/// No overshoot (the bulge invariant). Write c = p1 - p0 and T_perp for the
+/// part of an end tangent across the chord; eq. 4 gives
+/// |T_perp| = 2|c| tan(theta / 2) with theta <= 90 degrees. Then every point of
+/// the curve
+/// - projects onto the chord's line between p0 and p1 (the curve never runs
+///   past its ends), and
+/// - lies within chordDeviationBound(curve) = max |T_perp| / 4
+///   = (|c| / 2) tan(theta_max / 2) of the chord.
+/// For end data taken from a circular arc, that bound is the arc's own
+/// sagitta: a bridge or segment never bulges beyond the circle its ends'
+/// normals imply, and whatever the normals never beyond half its chord (a
+/// semicircle). Frustum culling (SilhouettePass::cullOutsideFrustum) relies on it.
 HermiteCurve makeCircleApproximatingCurve(
   const glm::dvec3& p0, const glm::dvec3& n0, const glm::dvec3& p1, const glm::dvec3& n1);
+
+/// The largest distance of `curve` from its chord that the bulge invariant
+/// above allows: a quarter of the larger end tangent's part across the chord.
+double chordDeviationBound(const HermiteCurve& curve);
 
 } // namespace silsmooth

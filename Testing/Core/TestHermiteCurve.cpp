@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 using silsmooth::HermiteCurve;
 using silsmooth::makeCircleApproximatingCurve;
@@ -90,4 +91,104 @@ TEST(HermiteCurve, ChordAlongTheNormalFallsBackToTheChord)
   // Zero normals and a zero chord stay finite too.
   const HermiteCurve none = makeCircleApproximatingCurve({ 1, 1, 1 }, {}, { 1, 1, 1 }, {});
   EXPECT_EQ(none.evaluate(0.5), glm::dvec3(1, 1, 1));
+}
+
+namespace
+{
+
+struct ChordDeviation
+{
+  double Excess = -1.0;   // largest (distance from the chord) - chordDeviationBound
+  bool PastAnEnd = false; // some point projects outside [p0, p1] on the chord's line
+};
+
+ChordDeviation measureChordDeviation(const HermiteCurve& curve)
+{
+  const glm::dvec3 chord = curve.P1 - curve.P0;
+  const double chordSquared = glm::dot(chord, chord);
+  const double bound = silsmooth::chordDeviationBound(curve);
+  // Rounding of points far from the origin, relative to the chord.
+  const double slack = 1e-14 *
+    (glm::length(curve.P0) + glm::length(curve.T0) + glm::length(curve.T1) +
+      std::sqrt(chordSquared));
+  const double alongSlack = slack / std::sqrt(chordSquared);
+  ChordDeviation result;
+  for (int i = 0; i <= 200; ++i)
+  {
+    const glm::dvec3 offset = curve.evaluate(i / 200.0) - curve.P0;
+    const double along = glm::dot(offset, chord) / chordSquared;
+    result.PastAnEnd = result.PastAnEnd || along < -alongSlack || along > 1.0 + alongSlack;
+    const double across = glm::length(offset - along * chord);
+    result.Excess = std::max(result.Excess, across - bound - slack);
+  }
+  return result;
+}
+
+glm::dvec3 randomUnitVector(std::mt19937& random)
+{
+  std::normal_distribution<double> gauss;
+  glm::dvec3 v(gauss(random), gauss(random), gauss(random));
+  return glm::normalize(v);
+}
+
+} // namespace
+
+TEST(HermiteCurve, NeverBulgesBeyondTheCircleItsEndsImply)
+{
+  // The bulge invariant of HermiteCurve.h, over arbitrary normals and chords:
+  // within the bound, never past the ends, and the bound at most half the chord.
+  std::mt19937 random(2008);
+  std::uniform_real_distribution<double> scale(1e-3, 1e3);
+  int curved = 0;
+  for (int i = 0; i < 20000; ++i)
+  {
+    const glm::dvec3 p0 = scale(random) * randomUnitVector(random);
+    const glm::dvec3 p1 = p0 + scale(random) * randomUnitVector(random);
+    const HermiteCurve curve =
+      makeCircleApproximatingCurve(p0, randomUnitVector(random), p1, randomUnitVector(random));
+    const ChordDeviation deviation = measureChordDeviation(curve);
+    ASSERT_LE(deviation.Excess, 0.0) << "curve " << i;
+    ASSERT_FALSE(deviation.PastAnEnd) << "curve " << i;
+    const double half = 0.5 * glm::distance(p0, p1);
+    ASSERT_LE(silsmooth::chordDeviationBound(curve), half * (1.0 + 1e-12)) << "curve " << i;
+    curved += silsmooth::chordDeviationBound(curve) > 0.1 * half;
+  }
+  EXPECT_GT(curved, 10000); // the draws exercise the bound, not straight chords
+}
+
+TEST(HermiteCurve, ChordDeviationBoundIsTheArcsSagitta)
+{
+  // For an arc of angle phi of the unit circle the sagitta is 1 - cos(phi / 2),
+  // and the cubic's largest distance from the chord lies within 3e-4 of it.
+  for (double phi : { 0.3, 1.0, M_PI / 2.0, 2.5 })
+  {
+    const glm::dvec3 n0(1.0, 0.0, 0.0);
+    const glm::dvec3 n1(std::cos(phi), std::sin(phi), 0.0);
+    const HermiteCurve curve = makeCircleApproximatingCurve(n0, n0, n1, n1);
+    EXPECT_NEAR(silsmooth::chordDeviationBound(curve), 1.0 - std::cos(phi / 2.0), 1e-12) << phi;
+    EXPECT_LE(measureChordDeviation(curve).Excess, 0.0);
+    EXPECT_GT(measureChordDeviation(curve).Excess, -3e-4 * (phi > 2.0 ? 10.0 : 1.0)) << phi;
+  }
+}
+
+TEST(HermiteCurve, OtherTangentsBreakTheBulgeInvariant)
+{
+  // The checks above can fail. Tangents as long as the chord's run along them
+  // (L = |c| / cos(theta)) bulge without bound; tangents whose direction lost
+  // its sign (pointing away from the other end) run past the ends.
+  const glm::dvec3 p0(0.0), p1(1.0, 0.0, 0.0);
+  const glm::dvec3 steep = glm::normalize(glm::dvec3(-1.0, 0.0, 0.05)); // theta near 90 degrees
+  HermiteCurve tooLong = makeCircleApproximatingCurve(p0, steep, p1, steep);
+  ASSERT_LE(measureChordDeviation(tooLong).Excess, 0.0);
+  const double along = glm::dot(glm::normalize(tooLong.T0), p1 - p0);
+  tooLong.T0 = glm::normalize(tooLong.T0) / along;
+  tooLong.T1 = glm::normalize(tooLong.T1) / along;
+  EXPECT_GT(silsmooth::chordDeviationBound(tooLong), 0.5);
+
+  const glm::dvec3 gentle = glm::normalize(glm::dvec3(-0.2, 0.0, 1.0));
+  HermiteCurve reversed = makeCircleApproximatingCurve(p0, gentle, p1, gentle);
+  ASSERT_FALSE(measureChordDeviation(reversed).PastAnEnd);
+  reversed.T0 = -reversed.T0;
+  reversed.T1 = -reversed.T1;
+  EXPECT_TRUE(measureChordDeviation(reversed).PastAnEnd);
 }

@@ -191,13 +191,13 @@ private:
   void placeItems()
   {
     const std::size_t n = this->Items.size();
-    this->Corners.resize(n);
+    this->Shapes.resize(n);
     this->Lows.resize(n);
     this->Highs.resize(n);
     for (std::size_t k = 0; k < n; ++k)
     {
-      const TriangleCorners& c = this->Corners[k] =
-        this->Geometry.current(this->idsOf(this->Items[k]));
+      this->Shapes[k] = shapeOf(this->Geometry.current(this->idsOf(this->Items[k])));
+      const TriangleCorners& c = this->Shapes[k].Corners;
       this->Lows[k] = glm::min(c.P[0], glm::min(c.P[1], c.P[2]));
       this->Highs[k] = glm::max(c.P[0], glm::max(c.P[1], c.P[2]));
     }
@@ -236,17 +236,18 @@ private:
     }
   }
 
-  void changedCandidates(std::size_t k, std::vector<Id>& out) const
+  // The changed triangles whose boxes meet the box [low, high].
+  void changedCandidates(const glm::dvec3& low, const glm::dvec3& high, std::vector<Id>& out) const
   {
     if (!this->Scan)
     {
-      this->Changed.query(this->Lows[k], this->Highs[k], out);
+      this->Changed.query(low, high, out);
       return;
     }
     out.clear();
     for (std::size_t j = 0; j < this->Items.size(); ++j)
     {
-      if (boxesMeet(this->Lows[k], this->Highs[k], this->Lows[j], this->Highs[j]))
+      if (boxesMeet(low, high, this->Lows[j], this->Highs[j]))
       {
         out.push_back(static_cast<Id>(j));
       }
@@ -280,17 +281,25 @@ private:
     this->CutItems.assign(this->Items.size(), {});
     this->groupItems();
     parallelFor(this->GroupStarts.size() - 1, [this](std::size_t begin, std::size_t end) {
-      std::vector<Id> near;
-      std::vector<Id> candidates;
+      GroupScratch scratch;
       for (std::size_t g = begin; g < end; ++g)
       {
-        this->judgeGroup(this->GroupStarts[g], this->GroupStarts[g + 1], near, candidates);
+        this->judgeGroup(this->GroupStarts[g], this->GroupStarts[g + 1], scratch);
       }
     });
   }
 
-  void judgeGroup(
-    std::size_t begin, std::size_t end, std::vector<Id>& near, std::vector<Id>& candidates)
+  // A group's candidates from the two grids, and one item's.
+  struct GroupScratch
+  {
+    std::vector<Id> Near; // kept candidates of the group (keptCandidates)
+    std::vector<TriangleShape> NearShapes;
+    std::vector<Id> NearChanged;
+    std::vector<Id> Kept;
+    std::vector<Id> Changed;
+  };
+
+  void judgeGroup(std::size_t begin, std::size_t end, GroupScratch& scratch)
   {
     // An item's own query would find nothing for a box with a corner that
     // is not finite (TriangleGrid::query).
@@ -312,31 +321,100 @@ private:
         any = true;
       }
     }
-    near.clear();
+    scratch.Near.clear();
+    scratch.NearChanged.clear();
     if (any)
     {
-      this->Mesh.Grid.query(low, high, near);
+      this->Mesh.Grid.query(low, high, scratch.Near);
+      this->keptCandidates(begin, end, scratch.Near, scratch.NearShapes);
+      this->changedCandidates(low, high, scratch.NearChanged);
     }
     for (std::size_t k = begin; k < end; ++k)
     {
-      candidates.clear();
+      scratch.Kept.clear();
+      scratch.Changed.clear();
       if (this->ToCheck[k] && finiteBox(k))
       {
-        for (const Id t : near)
+        for (std::size_t c = 0; c < scratch.Near.size(); ++c)
         {
-          if (this->Mesh.Grid.meets(t, this->Lows[k], this->Highs[k]))
+          if (this->Mesh.Grid.meets(scratch.Near[c], this->Lows[k], this->Highs[k]))
           {
-            candidates.push_back(t);
+            scratch.Kept.push_back(static_cast<Id>(c));
+          }
+        }
+        for (const Id j : scratch.NearChanged)
+        {
+          const std::size_t i = static_cast<std::size_t>(j);
+          if (boxesMeet(this->Lows[k], this->Highs[k], this->Lows[i], this->Highs[i]))
+          {
+            scratch.Changed.push_back(j);
           }
         }
       }
-      this->judge(k, candidates);
+      this->judge(k, scratch, scratch.Changed);
     }
   }
 
-  // Judges item k; `candidates` holds the prepared grid's triangles whose
-  // boxes meet its box, and is used as scratch afterwards.
-  void judge(std::size_t k, std::vector<Id>& candidates)
+  // Keeps in `near` the kept, unmoved triangles that a checked item of the
+  // group [begin, end) may cut, and puts their shapes in `shapes`. Dropped
+  // besides the changed and degenerate ones: those every corner of those
+  // items lies strictly on one side of, but for corners at the triangle's
+  // own corners. An item then meets that plane at most at a shared corner,
+  // which is inside neither triangle, so trianglesIntersect would find no
+  // cut item by item (on a smooth mesh most of a group's neighbours pass
+  // this test).
+  void keptCandidates(std::size_t begin, std::size_t end, std::vector<Id>& near,
+    std::vector<TriangleShape>& shapes) const
+  {
+    const auto separated = [&](const TriangleCorners& y) {
+      const glm::dvec3 normal = glm::cross(y.P[1] - y.P[0], y.P[2] - y.P[0]);
+      int side = 0;
+      for (std::size_t k = begin; k < end; ++k)
+      {
+        if (!this->ToCheck[k])
+        {
+          continue;
+        }
+        for (const glm::dvec3& p : this->Shapes[k].Corners.P)
+        {
+          if (p == y.P[0] || p == y.P[1] || p == y.P[2])
+          {
+            continue;
+          }
+          const double d = glm::dot(normal, p - y.P[0]);
+          const int s = d > 0.0 ? 1 : (d < 0.0 ? -1 : 0);
+          if (s == 0 || (side != 0 && s != side))
+          {
+            return false;
+          }
+          side = s;
+        }
+      }
+      return side != 0;
+    };
+    shapes.clear();
+    std::size_t kept = 0;
+    for (const Id t : near)
+    {
+      const Triangle& ids = this->Mesh.Triangles[static_cast<std::size_t>(t)];
+      if (hasRepeatedCorner(ids) || this->Geometry.isRemeshed(t) || this->hasMovedCorner(ids))
+      {
+        continue;
+      }
+      const TriangleCorners y = this->Geometry.prepared(t);
+      if (!separated(y))
+      {
+        near[kept++] = t;
+        shapes.push_back(shapeOf(y));
+      }
+    }
+    near.resize(kept);
+  }
+
+  // Judges item k; group.Kept holds the entries of group.Near (the kept
+  // candidates) whose boxes meet its box, `changed` the changed triangles
+  // whose boxes meet it.
+  void judge(std::size_t k, const GroupScratch& group, const std::vector<Id>& changed)
   {
     const Item& item = this->Items[k];
     const Triangle& ids = this->idsOf(item);
@@ -345,39 +423,33 @@ private:
       return;
     }
     const FrameGeometry& geometry = this->Geometry;
-    const TriangleCorners& x = this->Corners[k];
+    const TriangleShape& x = this->Shapes[k];
     const TriangleCorners source = geometry.prepared(item.Source);
     // Turned over or not, the cuts are looked for: the triangles it cuts
     // fold too, and a partial check may not look at them.
-    const bool turned = geometry.turnedOver(x, ids, source);
+    const bool turned = geometry.turnedOver(x.Corners, ids, source);
     // Whether y (of input triangle `other`) cuts x where the inputs do not
     // already touch; the touch test, the dearest, comes last.
-    auto cutBy = [&](const TriangleCorners& y, Id other) {
+    auto cutBy = [&](const TriangleShape& y, Id other) {
       return trianglesIntersect(x, y) &&
         (other == item.Source || !trianglesTouch(source, geometry.prepared(other)));
     };
     bool cuts = false;
     // Kept, unmoved triangles: where the prepared grid has them.
-    for (std::size_t c = 0; c < candidates.size() && !cuts; ++c)
+    for (std::size_t c = 0; c < group.Kept.size() && !cuts; ++c)
     {
-      const Id other = candidates[c];
-      const Triangle& y = this->Mesh.Triangles[static_cast<std::size_t>(other)];
-      if (other != item.Source && !hasRepeatedCorner(y) && !geometry.isRemeshed(other) &&
-        !this->hasMovedCorner(y))
-      {
-        cuts = cutBy(geometry.current(y), other);
-      }
+      const std::size_t entry = static_cast<std::size_t>(group.Kept[c]);
+      const Id other = group.Near[entry];
+      cuts = other != item.Source && cutBy(group.NearShapes[entry], other);
     }
     // Changed triangles (new ones, and kept ones with a moved corner): all
     // of those it cuts, since each of them folds too (a whole check would
     // find that from there; a partial one may not look there).
-    this->changedCandidates(k, candidates);
-    for (const Id candidate : candidates)
+    for (const Id candidate : changed)
     {
       const std::size_t j = static_cast<std::size_t>(candidate);
       if (j != k && !hasRepeatedCorner(this->idsOf(this->Items[j])) &&
-        boxesMeet(this->Lows[k], this->Highs[k], this->Lows[j], this->Highs[j]) &&
-        cutBy(this->Corners[j], this->Items[j].Source))
+        cutBy(this->Shapes[j], this->Items[j].Source))
       {
         cuts = true;
         this->CutItems[k].push_back(j);
@@ -426,7 +498,7 @@ private:
   const FoldGuardFrame& Frame;
   const FrameGeometry Geometry;
   std::vector<Item> Items;
-  std::vector<TriangleCorners> Corners;
+  std::vector<TriangleShape> Shapes; // of the items where they are now
   std::vector<glm::dvec3> Lows;
   std::vector<glm::dvec3> Highs;
   std::vector<unsigned char> ToCheck;

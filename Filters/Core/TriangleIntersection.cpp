@@ -128,10 +128,12 @@ bool hasNoInterior(const TriangleCorners& t)
   return !(glm::length(glm::cross(t.P[1] - t.P[0], t.P[2] - t.P[0])) > 1e-12 * side * side);
 }
 
-bool meet(const TriangleCorners& a, const TriangleCorners& b, const Tolerances& tolerances)
+bool meet(const TriangleShape& shapeA, const TriangleShape& shapeB, const Tolerances& tolerances)
 {
-  const Plane planeA = planeOf(a);
-  const Plane planeB = planeOf(b);
+  const TriangleCorners& a = shapeA.Corners;
+  const TriangleCorners& b = shapeB.Corners;
+  const Plane planeA{ shapeA.UnitNormal, shapeA.Area2 };
+  const Plane planeB{ shapeB.UnitNormal, shapeB.Area2 };
   // Each corner's distance to the other's plane, once; a triangle whose
   // corners all lie on one side of the other's plane (beyond the tolerance)
   // has no side that crosses the other.
@@ -154,13 +156,13 @@ bool meet(const TriangleCorners& a, const TriangleCorners& b, const Tolerances& 
   if (tolerances.Plane >= 0.0)
   {
     const double below =
-      tolerances.Plane * (1.0 - 1e-12) * std::max(longestAxisSpan(a), longestAxisSpan(b));
+      tolerances.Plane * (1.0 - 1e-12) * std::max(shapeA.AxisSpan, shapeB.AxisSpan);
     if (!straddles(toA, below) && !straddles(toB, below))
     {
       return false;
     }
   }
-  if (hasNoInterior(a) || hasNoInterior(b))
+  if (shapeA.NoInterior || shapeB.NoInterior)
   {
     return false; // a needle, a line or a point: no interior to cut or be cut
   }
@@ -169,7 +171,7 @@ bool meet(const TriangleCorners& a, const TriangleCorners& b, const Tolerances& 
   {
     return false;
   }
-  const double scale = std::max(longestSide(a), longestSide(b));
+  const double scale = std::max(shapeA.LongestSide, shapeB.LongestSide);
   const double tolerance = tolerances.Plane * scale;
   const bool aSides = straddles(toB, tolerance); // a's sides may cross b
   const bool bSides = straddles(toA, tolerance);
@@ -208,14 +210,32 @@ bool segmentCrossesTriangle(const glm::dvec3& u, const glm::dvec3& v, const Tria
   return crosses(u, v, t, std::max(longestSide(t), glm::length(v - u)));
 }
 
-bool trianglesIntersect(const TriangleCorners& a, const TriangleCorners& b)
+TriangleShape shapeOf(const TriangleCorners& t)
+{
+  TriangleShape shape;
+  shape.Corners = t;
+  const Plane plane = planeOf(t);
+  shape.UnitNormal = plane.Unit;
+  shape.Area2 = plane.Area2;
+  shape.AxisSpan = longestAxisSpan(t);
+  shape.LongestSide = longestSide(t);
+  shape.NoInterior = hasNoInterior(t);
+  return shape;
+}
+
+bool trianglesIntersect(const TriangleShape& a, const TriangleShape& b)
 {
   return meet(a, b, Strict);
 }
 
+bool trianglesIntersect(const TriangleCorners& a, const TriangleCorners& b)
+{
+  return meet(shapeOf(a), shapeOf(b), Strict);
+}
+
 bool trianglesTouch(const TriangleCorners& a, const TriangleCorners& b)
 {
-  return meet(a, b, Lenient);
+  return meet(shapeOf(a), shapeOf(b), Lenient);
 }
 
 bool turnedOverAgainst(

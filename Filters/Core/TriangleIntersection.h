@@ -36,8 +36,24 @@ struct TriangleCorners
   glm::dvec3 P[3];
 };
 
+/// What the rule needs of a triangle, computed once for a triangle tested
+/// against many (shapeOf).
+struct TriangleShape
+{
+  TriangleCorners Corners;
+  glm::dvec3 UnitNormal{ 0.0 }; // zero when the corners span no area
+  double Area2 = 0.0;           // twice the area
+  double AxisSpan = 0.0;        // the largest coordinate difference along a side
+  double LongestSide = 0.0;
+  bool NoInterior = true; // a needle or a line (the rule above)
+};
+
+TriangleShape shapeOf(const TriangleCorners& t);
+
 /// Whether a and b cut through each other (the rule above).
 bool trianglesIntersect(const TriangleCorners& a, const TriangleCorners& b);
+/// The same for shapes made by shapeOf, with the same answer.
+bool trianglesIntersect(const TriangleShape& a, const TriangleShape& b);
 
 /// How near (relative to the triangles' size) trianglesTouch lets triangles
 /// come.

@@ -304,6 +304,21 @@ const TriangleGrid& PreparedMesh::triangleGrid() const
   return this->Grid->Grid;
 }
 
+bool PreparedMesh::findSilhouetteTriangles(
+  const ViewGeometry& view, const ParallelFor& parallelFor, std::vector<Id>& out) const
+{
+  LazyTriangleHierarchy& lazy = *this->TriangleHierarchies[view.Parallel ? 0 : 1];
+  if (lazy.Searches.fetch_add(1) == 0)
+  {
+    return false; // the first search scans: maybe the only one
+  }
+  std::call_once(lazy.Once, [&] {
+    lazy.Tree =
+      SilhouetteTriangleHierarchy(this->Points, this->Normals, this->Triangles, !view.Parallel);
+  });
+  return lazy.Tree.find(view, this->Points, this->Normals, this->Triangles, parallelFor, out);
+}
+
 const VisibilityHierarchy& PreparedMesh::visibilityHierarchy() const
 {
   std::call_once(this->Hierarchy->Once,

@@ -9,6 +9,7 @@
 #include "MeshTopology.h"
 #include "ParallelFor.h"
 #include "ShadingNormals.h"
+#include "SilhouetteTriangleHierarchy.h"
 #include "SurfaceWelding.h" // NormalSeamAngleDegrees
 #include "TriangleGrid.h"
 #include "ViewGeometry.h"
@@ -16,6 +17,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <atomic>
 #include <memory>
 #include <mutex>
 #include <utility>
@@ -110,6 +112,13 @@ public:
   /// The grid of the triangles' boxes for the fold guard, built on first use
   /// (thread-safe); copies of the mesh share it.
   const TriangleGrid& triangleGrid() const;
+  /// The silhouette triangles of `view` from the triangle hierarchy of its
+  /// projection (SilhouetteTriangleHierarchy.h), built on the second call
+  /// for that projection (thread-safe; copies of the mesh share it). False,
+  /// with `out` untouched, on the first call and when the tree cannot
+  /// answer: the caller then scans the triangles.
+  bool findSilhouetteTriangles(
+    const ViewGeometry& view, const ParallelFor& parallelFor, std::vector<Id>& out) const;
 
 private:
   // The constructor's steps, in order.
@@ -148,6 +157,16 @@ private:
     TriangleGrid Grid;
   };
   std::shared_ptr<LazyGrid> Grid = std::make_shared<LazyGrid>();
+  struct LazyTriangleHierarchy
+  {
+    std::atomic<int> Searches{ 0 };
+    std::once_flag Once;
+    SilhouetteTriangleHierarchy Tree;
+  };
+  /// For parallel views ([0]) and perspective ones ([1]).
+  std::shared_ptr<LazyTriangleHierarchy> TriangleHierarchies[2] = {
+    std::make_shared<LazyTriangleHierarchy>(), std::make_shared<LazyTriangleHierarchy>()
+  };
 };
 
 /// The visibility value g of every point (parallel over points).

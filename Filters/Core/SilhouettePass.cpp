@@ -25,7 +25,6 @@ namespace detail
 
 SmoothingResult SilhouettePass::run()
 {
-  this->G = vertexVisibility(this->Mesh, this->View, this->Parameters.Visibility, this->For);
   this->findSilhouetteTriangles();
   // Each round re-meshes the whole frame with the fallbacks decided so far;
   // a round that finds no fold, or no fallback left to take, is the last.

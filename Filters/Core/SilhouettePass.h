@@ -83,11 +83,21 @@ private:
   // (ascending): the folding ones, and those it re-meshes differently.
   bool takeFallbacks(const FoldFindings& findings, std::vector<Id>& changed);
 
+  // Whether point v faces the viewer: from G when the frame computed it,
+  // directly otherwise (the triangle hierarchy's frames compute no G; both
+  // give the same sign, VisibilityCones.h).
+  bool visibleAt(Id v) const
+  {
+    const std::size_t i = static_cast<std::size_t>(v);
+    return this->G.empty()
+      ? isVisible(this->View.visibility(this->Mesh.points()[i], this->Mesh.normals()[i]))
+      : isVisible(this->G[i]);
+  }
+
   // An edge whose ends differ in visibility: it holds a silhouette point.
   bool isMixed(const Edge& edge) const
   {
-    return isVisible(this->G[static_cast<std::size_t>(edge.low)]) !=
-      isVisible(this->G[static_cast<std::size_t>(edge.high)]);
+    return this->visibleAt(edge.low) != this->visibleAt(edge.high);
   }
 
   bool mayBeSeam(Id e) const
@@ -128,6 +138,7 @@ private:
   }
 
   void findSilhouetteTriangles();
+  void scanForSilhouetteTriangles();
 
   // SmoothingParameters::FrozenTriangles.
   bool isFrozen(Id t) const
@@ -217,9 +228,9 @@ private:
   // The corner that differs in visibility from the other two.
   int loneCorner(const Triangle& tri) const
   {
-    const bool v0 = isVisible(this->G[static_cast<std::size_t>(tri[0])]);
-    const bool v1 = isVisible(this->G[static_cast<std::size_t>(tri[1])]);
-    return (v0 == v1) ? 2 : (isVisible(this->G[static_cast<std::size_t>(tri[2])]) == v0 ? 1 : 0);
+    const bool v0 = this->visibleAt(tri[0]);
+    const bool v1 = this->visibleAt(tri[1]);
+    return (v0 == v1) ? 2 : (this->visibleAt(tri[2]) == v0 ? 1 : 0);
   }
 
   // Samples the silhouette segment from P to Q across the triangle with
@@ -263,6 +274,8 @@ private:
   int SampleCap = 0; // applySampleBudget
   std::atomic<bool> SampleCapBit{ false };
   const ParallelFor& For;
+  /// g of every point, or empty when the triangle hierarchy found the
+  /// silhouette triangles (visibleAt).
   std::vector<double> G;
   std::size_t Culled = 0; // silhouette triangles outside the frustum
   std::vector<Id> Silhouette;

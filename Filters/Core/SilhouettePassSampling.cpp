@@ -25,6 +25,27 @@ namespace detail
 
 void SilhouettePass::findSilhouetteTriangles()
 {
+  if (!(this->Parameters.SilhouetteTriangleHierarchy &&
+        this->Mesh.findSilhouetteTriangles(this->View, this->For, this->Silhouette)))
+  {
+    this->G = vertexVisibility(this->Mesh, this->View, this->Parameters.Visibility, this->For);
+    this->scanForSilhouetteTriangles();
+  }
+  if (this->Parameters.CullOutsideFrustum)
+  {
+    this->cullOutsideFrustum();
+  }
+  if (this->Parameters.FrozenTriangles)
+  {
+    this->Silhouette.erase(std::remove_if(this->Silhouette.begin(), this->Silhouette.end(),
+                             [this](Id t) { return this->isFrozen(t); }),
+      this->Silhouette.end());
+  }
+}
+
+// Every triangle, with G of every point.
+void SilhouettePass::scanForSilhouetteTriangles()
+{
   const std::vector<Triangle>& triangles = this->Mesh.triangles();
   // Each vertex's side as a byte: the triangle pass reads three per
   // triangle at random, and bytes stay in cache where doubles do not.
@@ -61,16 +82,6 @@ void SilhouettePass::findSilhouetteTriangles()
   for (const auto& range : ranges)
   {
     this->Silhouette.insert(this->Silhouette.end(), range.second.begin(), range.second.end());
-  }
-  if (this->Parameters.CullOutsideFrustum)
-  {
-    this->cullOutsideFrustum();
-  }
-  if (this->Parameters.FrozenTriangles)
-  {
-    this->Silhouette.erase(std::remove_if(this->Silhouette.begin(), this->Silhouette.end(),
-                             [this](Id t) { return this->isFrozen(t); }),
-      this->Silhouette.end());
   }
 }
 

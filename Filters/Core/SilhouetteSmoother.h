@@ -44,6 +44,15 @@ struct SmoothingParameters
   /// smoothed curve is not blocked (see VertexPerturbation.h).
   bool PerturbConcaveSilhouettes = true;
   VisibilityMethod Visibility = VisibilityMethod::PerVertex;
+  /// Find the silhouette triangles through the prepared mesh's triangle
+  /// hierarchy (SilhouetteTriangleHierarchy.h) instead of scanning every
+  /// triangle, once the mesh has been searched before for a view of the
+  /// same projection (the second search builds the tree: a mesh smoothed for
+  /// one view, or with new points every frame, never pays for it). The
+  /// triangles found, and so the output, are the same either way
+  /// (core.SilhouetteTriangleHierarchy compares them); Visibility then
+  /// matters only for the scans.
+  bool SilhouetteTriangleHierarchy = true;
   /// Re-mesh folding triangles again, more conservatively, until none folds
   /// (FoldGuard.h): a silhouette triangle whose new triangles turn over or
   /// cut through another output triangle is re-meshed along the chord

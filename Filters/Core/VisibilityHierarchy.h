@@ -31,6 +31,7 @@
 #pragma once
 
 #include "ViewGeometry.h"
+#include "VisibilityCones.h"
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -80,21 +81,12 @@ public:
   }
 
 private:
-  struct Node
-  {
-    glm::dvec4 Axis{ 0.0 };
-    double HalfAngle = 4.0; // > pi: never decided
-    std::uint32_t Begin = 0;
-    std::uint32_t End = 0;
-    std::int32_t FirstChild = -1; // children FirstChild and FirstChild + 1; -1 for a leaf
-  };
-
   // One tree over the clustered vertices, which it stores in its own order
   // (original id, normal and, for perspective, point) so that leaves read
   // memory in order.
   struct Tree
   {
-    std::vector<Node> Nodes;
+    std::vector<visibility_cones::ConeNode> Nodes;
     /// Roots of the subtrees handed to parallel workers, covering the tree.
     std::vector<std::int32_t> Tasks;
     std::vector<std::uint32_t> Order;
@@ -111,9 +103,8 @@ private:
   std::vector<std::uint32_t> Direct;
   std::vector<glm::dvec3> DirectPoints;
   std::vector<glm::dvec3> DirectNormals;
-  /// Perspective conditioning: v = (V - Centre) * InverseScale.
-  glm::dvec3 Centre{ 0.0 };
-  double InverseScale = 1.0;
+  /// The map of vertices to S^3 (perspective conditioning).
+  visibility_cones::Conditioning Map;
   Tree Parallel;
   Tree Perspective;
 };

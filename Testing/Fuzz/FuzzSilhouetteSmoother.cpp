@@ -6,6 +6,7 @@
 // triangles that repeat an id, or a fold its fold guard leaves unresolved.
 #include "FuzzBytes.h"
 #include "SilhouetteSmoother.h"
+#include "SilhouetteTriangleHierarchy.h"
 #include "WeldedSurface.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -150,6 +151,26 @@ void CheckSmoothing(const silsmooth::PreparedMesh& mesh, const silsmooth::ViewGe
   for (std::size_t i = 0; i < plain.size(); ++i)
   {
     require((plain[i] >= 0.0) == (clustered[i] >= 0.0));
+  }
+  // The triangle hierarchy finds exactly the triangles a scan finds.
+  std::vector<Id> scanned;
+  for (std::size_t t = 0; t < mesh.triangles().size(); ++t)
+  {
+    const Triangle& tri = mesh.triangles()[t];
+    const bool v0 = plain[static_cast<std::size_t>(tri[0])] >= 0.0;
+    const bool v1 = plain[static_cast<std::size_t>(tri[1])] >= 0.0;
+    const bool v2 = plain[static_cast<std::size_t>(tri[2])] >= 0.0;
+    if (!hasRepeatedCorner(tri) && (v0 != v1 || v1 != v2))
+    {
+      scanned.push_back(static_cast<Id>(t));
+    }
+  }
+  const SilhouetteTriangleHierarchy tree(
+    mesh.points(), mesh.normals(), mesh.triangles(), !view.Parallel);
+  std::vector<Id> found;
+  if (tree.find(view, mesh.points(), mesh.normals(), mesh.triangles(), serialFor, found))
+  {
+    require(found == scanned);
   }
 
   const Id prepared = static_cast<Id>(mesh.points().size());

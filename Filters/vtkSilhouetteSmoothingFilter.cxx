@@ -514,20 +514,13 @@ int vtkSilhouetteSmoothingFilter::BuildChanges(vtkPolyData* input, vtkCamera* ca
   Internals& internal = *this->Internal;
   const silsmooth::SmoothingResult result = internal.Smooth(this, input, view, false);
   const silsmooth::SurfaceFrame frame = internal.Surface->assembleChanges(result);
-  std::vector<vtkIdType> used;
-  used.reserve(frame.Triangles.size() * 3);
-  for (const silsmooth::Triangle& t : frame.Triangles)
-  {
-    used.insert(used.end(), t.begin(), t.end());
-  }
-  std::sort(used.begin(), used.end());
-  used.erase(std::unique(used.begin(), used.end()), used.end());
+  const UsedPoints used(frame.Triangles, internal.Surface->outputPointCount() + frame.Added.size());
   changes->Initialize();
   BuildChangedCells(input, changes, internal.TriangleCell, frame, used);
   changes->SetPoints(BuildPoints(input, OutputPointType(input, this->OutputPointsPrecision),
-    *internal.Surface, result, frame, &used));
+    *internal.Surface, result, frame, &used.ids()));
   BuildPointData(input->GetPointData(), changes->GetPointData(), input->GetNumberOfPoints(),
-    *internal.Surface, result, frame, &used);
+    *internal.Surface, result, frame, &used.ids());
   replacedTriangles->SetNumberOfComponents(1);
   replacedTriangles->SetNumberOfValues(static_cast<vtkIdType>(frame.ReplacedTriangles.size()));
   std::copy(frame.ReplacedTriangles.begin(), frame.ReplacedTriangles.end(),

@@ -32,6 +32,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bitset>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -117,6 +118,12 @@ void CellDataFrom(vtkCellData* in, vtkCellData* out, const std::vector<vtkIdType
   }
   out->AddArray(newGeometry);
   out->AddArray(originalCellId);
+}
+
+// The number of zero bits below the lowest set bit of bits (not 0).
+std::size_t countTrailingZeros(std::uint64_t bits)
+{
+  return std::bitset<64>((bits & (~bits + 1)) - 1).count();
 }
 
 } // namespace
@@ -359,9 +366,40 @@ silsmooth::SurfaceFrame BuildCells(vtkPolyData* input, vtkPolyData* output,
   return frame;
 }
 
+UsedPoints::UsedPoints(const std::vector<silsmooth::Triangle>& triangles, std::size_t pointCount)
+  : Bits((pointCount + 63) / 64, 0)
+  , Before(this->Bits.size(), 0)
+{
+  for (const silsmooth::Triangle& t : triangles)
+  {
+    for (const silsmooth::Id v : t)
+    {
+      const std::size_t i = static_cast<std::size_t>(v);
+      this->Bits[i / 64] |= std::uint64_t{ 1 } << (i % 64);
+    }
+  }
+  vtkIdType count = 0;
+  for (std::size_t w = 0; w < this->Bits.size(); ++w)
+  {
+    this->Before[w] = count;
+    for (std::uint64_t bits = this->Bits[w]; bits != 0; bits &= bits - 1)
+    {
+      this->Ids.push_back(static_cast<vtkIdType>(w * 64 + countTrailingZeros(bits)));
+      ++count;
+    }
+  }
+}
+
+vtkIdType UsedPoints::indexOf(silsmooth::Id id) const
+{
+  const std::size_t i = static_cast<std::size_t>(id);
+  const std::uint64_t below = this->Bits[i / 64] & ((std::uint64_t{ 1 } << (i % 64)) - 1);
+  return this->Before[i / 64] + static_cast<vtkIdType>(std::bitset<64>(below).count());
+}
+
 void BuildChangedCells(vtkPolyData* input, vtkPolyData* changes,
   const std::vector<vtkIdType>& triangleCell, const silsmooth::SurfaceFrame& frame,
-  const std::vector<vtkIdType>& used)
+  const UsedPoints& used)
 {
   const vtkIdType count = static_cast<vtkIdType>(frame.Triangles.size());
   vtkNew<vtkIdTypeArray> offsets;
@@ -373,8 +411,7 @@ void BuildChangedCells(vtkPolyData* input, vtkPolyData* changes,
   {
     for (const silsmooth::Id v : t)
     {
-      *ids++ = static_cast<vtkIdType>(
-        std::lower_bound(used.begin(), used.end(), static_cast<vtkIdType>(v)) - used.begin());
+      *ids++ = used.indexOf(v);
     }
   }
   for (vtkIdType t = 0; t <= count; ++t)

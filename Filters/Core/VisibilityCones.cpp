@@ -25,16 +25,18 @@ ConeTree buildConeTree(const std::vector<glm::dvec4>& keys, const std::vector<do
     return tree;
   }
   // The keys travel with their item through the splits (sequential memory).
+  // 48 bytes without padding: with a 4-byte index the swaps of the splits
+  // copied the struct in overlapping pieces that stalled on the stack.
   struct Item
   {
     glm::dvec4 U;
     double Radius;
-    std::uint32_t Index;
+    std::uint64_t Index;
   };
   std::vector<Item> items(n);
   for (std::size_t k = 0; k < n; ++k)
   {
-    items[k] = { keys[k], radii.empty() ? 0.0 : radii[k], static_cast<std::uint32_t>(k) };
+    items[k] = { keys[k], radii.empty() ? 0.0 : radii[k], k };
   }
   tree.Nodes.emplace_back();
   tree.Nodes[0].Begin = 0;
@@ -147,7 +149,7 @@ ConeTree buildConeTree(const std::vector<glm::dvec4>& keys, const std::vector<do
   tree.Items.resize(n);
   for (std::size_t k = 0; k < n; ++k)
   {
-    tree.Items[k] = items[k].Index;
+    tree.Items[k] = static_cast<std::uint32_t>(items[k].Index);
   }
   return tree;
 }

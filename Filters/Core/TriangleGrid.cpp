@@ -109,10 +109,10 @@ void TriangleGrid::build()
   }
   const std::size_t cellCount = static_cast<std::size_t>(this->Cells[0]) *
     static_cast<std::size_t>(this->Cells[1]) * static_cast<std::size_t>(this->Cells[2]);
-  // Two passes over the triangles: count per cell (and note each triangle's
-  // first cell), then fill (compressed rows, each cell's triangles in
-  // ascending order).
-  this->FirstCell.assign(count, { { 0, 0, 0 } });
+  // Two passes over the triangles: count per cell, then fill (compressed
+  // rows, each cell's triangles in ascending order). An entry is the
+  // triangle's id shifted left by 3 over three bits: whether the cell is the
+  // first of the triangle's cells along x, y and z.
   this->Offsets.assign(cellCount + 1, 0);
   auto forEachCell = [this](std::size_t t, auto&& visit) {
     const int i0 = this->cellIndex(this->Low[t].x, 0);
@@ -130,17 +130,18 @@ void TriangleGrid::build()
           this->Cells[0];
         for (int i = i0; i <= i1; ++i)
         {
-          visit(row + static_cast<std::size_t>(i));
+          visit(row + static_cast<std::size_t>(i),
+            (i == i0 ? FirstAlongX : 0) | (j == j0 ? FirstAlongY : 0) |
+              (k == k0 ? FirstAlongZ : 0));
         }
       }
     }
-    return std::array<int, 3>{ { i0, j0, k0 } };
   };
   for (std::size_t t = 0; t < count; ++t)
   {
     if (this->Low[t].x <= this->High[t].x)
     {
-      this->FirstCell[t] = forEachCell(t, [this](std::size_t c) { ++this->Offsets[c + 1]; });
+      forEachCell(t, [this](std::size_t c, Id) { ++this->Offsets[c + 1]; });
     }
   }
   for (std::size_t c = 1; c <= cellCount; ++c)
@@ -153,7 +154,9 @@ void TriangleGrid::build()
   {
     if (this->Low[t].x <= this->High[t].x)
     {
-      forEachCell(t, [&](std::size_t c) { this->Entries[next[c]++] = static_cast<Id>(t); });
+      forEachCell(t, [&](std::size_t c, Id first) {
+        this->Entries[next[c]++] = static_cast<Id>(t) << 3 | first;
+      });
     }
   }
 }
@@ -181,14 +184,16 @@ void TriangleGrid::query(const glm::dvec3& low, const glm::dvec3& high, std::vec
           (static_cast<std::size_t>(k) * this->Cells[1] + j) * this->Cells[0] + i;
         for (std::size_t e = this->Offsets[c]; e < this->Offsets[c + 1]; ++e)
         {
-          const std::size_t t = static_cast<std::size_t>(this->Entries[e]);
           // Each triangle once: from the first cell that both it and the
-          // query cover.
-          const std::array<int, 3>& first = this->FirstCell[t];
-          if (i == std::max(i0, first[0]) && j == std::max(j0, first[1]) &&
-            k == std::max(k0, first[2]) && this->meets(static_cast<Id>(t), low, high))
+          // query cover. Along x that is the triangle's first cell, or the
+          // query's first when the triangle starts before it (and so for y
+          // and z); the entry says which cells are the triangle's first.
+          const Id entry = this->Entries[e];
+          const Id t = entry >> 3;
+          if (((entry & FirstAlongX) != 0 || i == i0) && ((entry & FirstAlongY) != 0 || j == j0) &&
+            ((entry & FirstAlongZ) != 0 || k == k0) && this->meets(t, low, high))
           {
-            out.push_back(this->Entries[e]);
+            out.push_back(t);
           }
         }
       }

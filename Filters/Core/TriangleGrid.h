@@ -78,13 +78,16 @@ private:
   int Cells[3] = { 0, 0, 0 };
   /// Triangles of cell c: Entries[Offsets[c] .. Offsets[c + 1]).
   std::vector<std::size_t> Offsets;
+  /// Per (cell, triangle): the triangle's id << 3 with the bits below
+  /// (queries report a triangle once, from the first cell it shares with
+  /// the query, without reading anything but the entry).
   std::vector<Id> Entries;
+  static constexpr Id FirstAlongX = 1; // the cell is the triangle's first along x
+  static constexpr Id FirstAlongY = 2;
+  static constexpr Id FirstAlongZ = 4;
   /// Each triangle's box, to drop candidates that share a cell only.
   std::vector<glm::dvec3> Low;
   std::vector<glm::dvec3> High;
-  /// The cell of each triangle's low corner (queries report a triangle
-  /// once, from the first cell it shares with the query).
-  std::vector<std::array<int, 3>> FirstCell;
 };
 
 } // namespace silsmooth

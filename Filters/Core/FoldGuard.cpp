@@ -169,7 +169,8 @@ private:
     for (const Id p : aroundPoints)
     {
       const glm::dvec3& at = this->Mesh.Points[static_cast<std::size_t>(p)];
-      this->Mesh.Grid.query(at, at, candidates);
+      const glm::dvec3 slack(this->Mesh.GridSlack);
+      this->Mesh.Grid.query(at - slack, at + slack, candidates);
       for (const Id t : candidates)
       {
         const Triangle& tri = this->Mesh.Triangles[static_cast<std::size_t>(t)];
@@ -294,6 +295,8 @@ private:
   {
     std::vector<Id> Near; // kept candidates of the group (keptCandidates)
     std::vector<TriangleShape> NearShapes;
+    std::vector<glm::dvec3> NearLows; // their boxes where they are now
+    std::vector<glm::dvec3> NearHighs;
     std::vector<Id> NearChanged;
     std::vector<Id> Kept;
     std::vector<Id> Changed;
@@ -325,8 +328,17 @@ private:
     scratch.NearChanged.clear();
     if (any)
     {
-      this->Mesh.Grid.query(low, high, scratch.Near);
+      const glm::dvec3 slack(this->Mesh.GridSlack);
+      this->Mesh.Grid.query(low - slack, high + slack, scratch.Near);
       this->keptCandidates(begin, end, scratch.Near, scratch.NearShapes);
+      scratch.NearLows.clear();
+      scratch.NearHighs.clear();
+      for (const TriangleShape& y : scratch.NearShapes)
+      {
+        const glm::dvec3* p = y.Corners.P;
+        scratch.NearLows.push_back(glm::min(p[0], glm::min(p[1], p[2])));
+        scratch.NearHighs.push_back(glm::max(p[0], glm::max(p[1], p[2])));
+      }
       this->changedCandidates(low, high, scratch.NearChanged);
     }
     for (std::size_t k = begin; k < end; ++k)
@@ -337,7 +349,7 @@ private:
       {
         for (std::size_t c = 0; c < scratch.Near.size(); ++c)
         {
-          if (this->Mesh.Grid.meets(scratch.Near[c], this->Lows[k], this->Highs[k]))
+          if (boxesMeet(scratch.NearLows[c], scratch.NearHighs[c], this->Lows[k], this->Highs[k]))
           {
             scratch.Kept.push_back(static_cast<Id>(c));
           }

@@ -58,6 +58,10 @@ struct FoldGuardMesh
   const std::vector<glm::dvec3>& Normals;
   const std::vector<Triangle>& Triangles;
   const TriangleGrid& Grid;
+  /// How far a triangle's box may lie from its box in Grid (a grid built for
+  /// earlier positions, PreparedMesh::triangleGridSlack): queries are widened
+  /// by it, and candidates are narrowed by their boxes where they are now.
+  double GridSlack = 0.0;
 };
 
 /// One frame's output: the re-meshed input triangles (ascending) with their

@@ -299,9 +299,35 @@ std::vector<double> vertexVisibility(
 
 const TriangleGrid& PreparedMesh::triangleGrid() const
 {
-  std::call_once(
-    this->Grid->Once, [this] { this->Grid->Grid = TriangleGrid(this->Points, this->Triangles); });
+  std::call_once(this->Grid->Once, [this] {
+    this->Grid->Grid = TriangleGrid(this->Points, this->Triangles);
+    this->Grid->Built = true;
+  });
   return this->Grid->Grid;
+}
+
+bool PreparedMesh::adoptTriangleGrid(const PreparedMesh& earlier)
+{
+  if (!earlier.Grid->Built || earlier.Grid->Grid.empty() ||
+    earlier.Points.size() != this->Points.size() || earlier.Triangles != this->Triangles)
+  {
+    return false;
+  }
+  double moved = 0.0;
+  for (std::size_t i = 0; i < this->Points.size(); ++i)
+  {
+    const glm::dvec3 d = glm::abs(this->Points[i] - earlier.Points[i]);
+    moved = std::max({ moved, d.x, d.y, d.z });
+  }
+  const double slack = earlier.GridSlack + moved;
+  // Not finite (a point went to infinity or NaN) fails the test too.
+  if (!(slack <= 0.5 * earlier.Grid->Grid.cellSize()))
+  {
+    return false;
+  }
+  this->Grid = earlier.Grid;
+  this->GridSlack = slack;
+  return true;
 }
 
 bool PreparedMesh::findSilhouetteTriangles(

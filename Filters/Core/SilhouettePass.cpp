@@ -174,7 +174,7 @@ FoldFindings SilhouettePass::findFrameFolds(
     normals.push_back(p.Normal);
   }
   const FoldGuardMesh mesh{ this->Mesh.points(), this->Mesh.normals(), this->Mesh.triangles(),
-    this->Mesh.triangleGrid() };
+    this->Mesh.triangleGrid(), this->Mesh.triangleGridSlack() };
   const FoldGuardFrame frame{ this->Result.RemeshedTriangles, this->Result.ReplacementOffsets,
     this->Result.Replacements, positions, normals, this->Result.MovedPoints, checkSources,
     checkPoints };

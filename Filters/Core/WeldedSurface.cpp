@@ -378,6 +378,9 @@ bool WeldedSurface::movePoints(std::vector<glm::dvec3> points,
   {
     return false;
   }
+  // The fold guard's grid of the triangles' boxes serves again while the
+  // points move little (PreparedMesh::adoptTriangleGrid).
+  prepared->adoptTriangleGrid(*this->Prepared);
   this->Prepared = std::move(prepared);
   this->Statistics = statistics;
   return true;

@@ -15,9 +15,14 @@
 // series gives), with the camera still: the plain mapper; the mapper, which
 // keeps the topology (WeldedSurface::movePoints) and its index buffers; and
 // the mapper made to build everything anew every frame (its cells touched
-// too), which is what every such frame cost before.
+// too), which is what every such frame cost before. Each frame stretches
+// the mesh along x by 1 + S and back, S = --deform-step (0.01 unless given):
+// a small step lets the fold guard keep its grid of the triangles' boxes
+// from frame to frame (PreparedMesh::adoptTriangleGrid), a large one does
+// not.
 //
 // Usage: mapper_benchmark [--frames N] [--levels L1,L2,...] [--size WxH]
+//                         [--deform-step S]
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
@@ -50,11 +55,13 @@ struct Options
   std::vector<int> Levels{ 6, 7, 8 };
   int Width = 1024;
   int Height = 768;
+  double DeformStep = 0.01;
 };
 
 void Usage()
 {
-  std::fprintf(stderr, "usage: mapper_benchmark [--frames N] [--levels 6,7,8] [--size WxH]\n");
+  std::fprintf(stderr,
+    "usage: mapper_benchmark [--frames N] [--levels 6,7,8] [--size WxH] [--deform-step S]\n");
   std::exit(2);
 }
 
@@ -83,6 +90,10 @@ Options ParseOptions(int argc, char* argv[])
         options.Levels.push_back(std::atoi(item.c_str()));
       }
     }
+    else if (option == "--deform-step")
+    {
+      options.DeformStep = std::atof(value.c_str());
+    }
     else if (option == "--size")
     {
       if (std::sscanf(value.c_str(), "%dx%d", &options.Width, &options.Height) != 2)
@@ -95,7 +106,8 @@ Options ParseOptions(int argc, char* argv[])
       Usage();
     }
   }
-  if (options.Frames < 1 || options.Levels.empty() || options.Width < 16 || options.Height < 16)
+  if (options.Frames < 1 || options.Levels.empty() || options.Width < 16 || options.Height < 16 ||
+    !(options.DeformStep > 0.0 && options.DeformStep < 1.0))
   {
     Usage();
   }
@@ -264,7 +276,7 @@ void MeasureDeforming(vtkPolyData* mesh, const Options& options)
   const int deformFrames = std::max(3, options.Frames / 2);
   for (int f = 0; f < deformFrames; ++f)
   {
-    const double scale = f % 2 == 0 ? 1.01 : 1.0 / 1.01;
+    const double scale = f % 2 == 0 ? 1.0 + options.DeformStep : 1.0 / (1.0 + options.DeformStep);
     for (Deforming* d : deforming)
     {
       d->FrameMs.push_back(d->Frame(scale));
@@ -286,8 +298,9 @@ void MeasureDeforming(vtkPolyData* mesh, const Options& options)
 int main(int argc, char* argv[])
 {
   const Options options = ParseOptions(argc, argv);
-  std::printf("%d frames of a 2-degree orbit, %dx%d offscreen; medians in ms\n", options.Frames,
-    options.Width, options.Height);
+  std::printf("%d frames of a 2-degree orbit, %dx%d offscreen; deforming frames stretch by %g;"
+              " medians in ms\n",
+    options.Frames, options.Width, options.Height, options.DeformStep);
   std::printf(
     "%10s  %-7s %10s %10s %12s\n", "triangles", "variant", "frame", "/ plain", "smoothing");
   for (const int level : options.Levels)

@@ -14,33 +14,23 @@ constexpr std::size_t LeafSize = 32;
 /// Subtrees of about this many nodes' depth become the parallel tasks.
 constexpr int TaskDepth = 6;
 
-} // namespace
-
-ConeTree buildConeTree(const std::vector<glm::dvec4>& keys, const std::vector<double>& radii)
+// The keys travel with their item through the splits (sequential memory).
+// 48 bytes without padding: with a 4-byte index the swaps of the splits
+// copied the struct in overlapping pieces that stalled on the stack.
+struct Item
 {
-  ConeTree tree;
-  const std::size_t n = keys.size();
-  if (n == 0)
-  {
-    return tree;
-  }
-  // The keys travel with their item through the splits (sequential memory).
-  // 48 bytes without padding: with a 4-byte index the swaps of the splits
-  // copied the struct in overlapping pieces that stalled on the stack.
-  struct Item
-  {
-    glm::dvec4 U;
-    double Radius;
-    std::uint64_t Index;
-  };
-  std::vector<Item> items(n);
-  for (std::size_t k = 0; k < n; ++k)
-  {
-    items[k] = { keys[k], radii.empty() ? 0.0 : radii[k], k };
-  }
+  glm::dvec4 U;
+  double Radius;
+  std::uint64_t Index;
+};
+
+// Median splits along the widest coordinate, breadth first, down to leaves
+// of at most LeafSize items; the depth of every node.
+std::vector<int> splitNodes(std::vector<Item>& items, ConeTree& tree)
+{
   tree.Nodes.emplace_back();
   tree.Nodes[0].Begin = 0;
-  tree.Nodes[0].End = static_cast<std::uint32_t>(n);
+  tree.Nodes[0].End = static_cast<std::uint32_t>(items.size());
   std::vector<int> depth{ 0 };
   for (std::size_t index = 0; index < tree.Nodes.size(); ++index)
   {
@@ -90,11 +80,15 @@ ConeTree buildConeTree(const std::vector<glm::dvec4>& keys, const std::vector<do
     depth.push_back(depth[index] + 1);
     depth.push_back(depth[index] + 1);
   }
+  return depth;
+}
 
-  // Bounding cones, bottom-up (children follow their parent): the axis is the
-  // mean direction. A leaf's half-angle is the largest angle to a member's
-  // cap; a parent's bounds the children's cones (angles obey the triangle
-  // inequality on the sphere), looser than from the members but linear time.
+// Bounding cones, bottom-up (children follow their parent): the axis is the
+// mean direction. A leaf's half-angle is the largest angle to a member's
+// cap; a parent's bounds the children's cones (angles obey the triangle
+// inequality on the sphere), looser than from the members but linear time.
+void boundCones(const std::vector<Item>& items, ConeTree& tree)
+{
   std::vector<glm::dvec4> sums(tree.Nodes.size(), glm::dvec4(0.0));
   for (std::size_t index = tree.Nodes.size(); index-- > 0;)
   {
@@ -136,7 +130,25 @@ ConeTree buildConeTree(const std::vector<glm::dvec4>& keys, const std::vector<do
     }
     node.HalfAngle = halfAngle;
   }
+}
 
+} // namespace
+
+ConeTree buildConeTree(const std::vector<glm::dvec4>& keys, const std::vector<double>& radii)
+{
+  ConeTree tree;
+  const std::size_t n = keys.size();
+  if (n == 0)
+  {
+    return tree;
+  }
+  std::vector<Item> items(n);
+  for (std::size_t k = 0; k < n; ++k)
+  {
+    items[k] = { keys[k], radii.empty() ? 0.0 : radii[k], k };
+  }
+  const std::vector<int> depth = splitNodes(items, tree);
+  boundCones(items, tree);
   // Nodes are in breadth-first order: the tasks are the nodes at TaskDepth
   // and the leaves above it.
   for (std::size_t index = 0; index < tree.Nodes.size(); ++index)

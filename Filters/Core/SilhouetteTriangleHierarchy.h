@@ -35,7 +35,8 @@ class SilhouetteTriangleHierarchy
 public:
   SilhouetteTriangleHierarchy() = default;
   /// One tree, for perspective views or for parallel ones. The mesh's arrays
-  /// are read here and again by find(), which must be given the same ones.
+  /// are read here and again by find(), which must be given the same ones;
+  /// every corner must index `points` (as a prepared mesh's do).
   SilhouetteTriangleHierarchy(const std::vector<glm::dvec3>& points,
     const std::vector<glm::dvec3>& normals, const std::vector<Triangle>& triangles,
     bool perspective);

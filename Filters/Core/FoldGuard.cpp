@@ -330,7 +330,7 @@ private:
     {
       const glm::dvec3 slack(this->Mesh.GridSlack);
       this->Mesh.Grid.query(low - slack, high + slack, scratch.Near);
-      this->keptCandidates(begin, end, scratch.Near, scratch.NearShapes);
+      this->keptCandidates(scratch.Near, scratch.NearShapes);
       scratch.NearLows.clear();
       scratch.NearHighs.clear();
       for (const TriangleShape& y : scratch.NearShapes)
@@ -367,43 +367,14 @@ private:
     }
   }
 
-  // Keeps in `near` the kept, unmoved triangles that a checked item of the
-  // group [begin, end) may cut, and puts their shapes in `shapes`. Dropped
-  // besides the changed and degenerate ones: those every corner of those
-  // items lies strictly on one side of, but for corners at the triangle's
-  // own corners. An item then meets that plane at most at a shared corner,
-  // which is inside neither triangle, so trianglesIntersect would find no
-  // cut item by item (on a smooth mesh most of a group's neighbours pass
-  // this test).
-  void keptCandidates(std::size_t begin, std::size_t end, std::vector<Id>& near,
-    std::vector<TriangleShape>& shapes) const
+  // Keeps in `near` the kept, unmoved triangles without a repeated corner
+  // (the only ones judge() tests), and puts their shapes in `shapes`, once
+  // for the whole group. (Dropping here the neighbours that the group's
+  // corners lie strictly on one side of was tried: in floating point it can
+  // disagree with trianglesIntersect for a sliver nearly in the neighbour's
+  // plane, and with the shapes cached it saved nothing measurable.)
+  void keptCandidates(std::vector<Id>& near, std::vector<TriangleShape>& shapes) const
   {
-    const auto separated = [&](const TriangleCorners& y) {
-      const glm::dvec3 normal = glm::cross(y.P[1] - y.P[0], y.P[2] - y.P[0]);
-      int side = 0;
-      for (std::size_t k = begin; k < end; ++k)
-      {
-        if (!this->ToCheck[k])
-        {
-          continue;
-        }
-        for (const glm::dvec3& p : this->Shapes[k].Corners.P)
-        {
-          if (p == y.P[0] || p == y.P[1] || p == y.P[2])
-          {
-            continue;
-          }
-          const double d = glm::dot(normal, p - y.P[0]);
-          const int s = d > 0.0 ? 1 : (d < 0.0 ? -1 : 0);
-          if (s == 0 || (side != 0 && s != side))
-          {
-            return false;
-          }
-          side = s;
-        }
-      }
-      return side != 0;
-    };
     shapes.clear();
     std::size_t kept = 0;
     for (const Id t : near)
@@ -413,12 +384,8 @@ private:
       {
         continue;
       }
-      const TriangleCorners y = this->Geometry.prepared(t);
-      if (!separated(y))
-      {
-        near[kept++] = t;
-        shapes.push_back(shapeOf(y));
-      }
+      near[kept++] = t;
+      shapes.push_back(shapeOf(this->Geometry.prepared(t)));
     }
     near.resize(kept);
   }

@@ -313,18 +313,20 @@ bool PreparedMesh::adoptTriangleGrid(const PreparedMesh& earlier)
   {
     return false;
   }
+  // Each coordinate's move must be known to be small: a NaN (a point that
+  // was or is not finite, which the grid left out or would) refuses.
+  const double limit = 0.5 * earlier.Grid->Grid.cellSize() - earlier.GridSlack;
   double moved = 0.0;
   for (std::size_t i = 0; i < this->Points.size(); ++i)
   {
     const glm::dvec3 d = glm::abs(this->Points[i] - earlier.Points[i]);
+    if (!(d.x <= limit && d.y <= limit && d.z <= limit))
+    {
+      return false;
+    }
     moved = std::max({ moved, d.x, d.y, d.z });
   }
   const double slack = earlier.GridSlack + moved;
-  // Not finite (a point went to infinity or NaN) fails the test too.
-  if (!(slack <= 0.5 * earlier.Grid->Grid.cellSize()))
-  {
-    return false;
-  }
   this->Grid = earlier.Grid;
   this->GridSlack = slack;
   return true;

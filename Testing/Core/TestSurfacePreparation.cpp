@@ -663,6 +663,30 @@ TEST(TriangleGrid, AGridOfEarlierBoxesNeedsItsSlack)
   EXPECT_EQ(found, std::vector<Id>{ 0 });
 }
 
+TEST(PreparedMesh, AGridIsNotAdoptedAcrossAPointThatWasNotFinite)
+{
+  // The grid leaves out triangles with a corner that is not finite; a mesh
+  // whose point became finite again must build its own.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::torus(12, 6, 0.35, points, triangles);
+  std::vector<glm::dvec3> broken = points;
+  broken[5] = glm::dvec3(std::nan(""), 0.0, 0.0);
+  const PreparedMesh before(broken, triangles, {});
+  before.triangleGrid();
+  PreparedMesh after(points, triangles, {});
+  EXPECT_FALSE(after.adoptTriangleGrid(before));
+  EXPECT_EQ(after.triangleGridSlack(), 0.0);
+  // The same mesh a hair away adopts it.
+  const PreparedMesh finite(points, triangles, {});
+  finite.triangleGrid();
+  std::vector<glm::dvec3> nudged = points;
+  nudged[5].x += 1e-6;
+  PreparedMesh next(nudged, triangles, {});
+  EXPECT_TRUE(next.adoptTriangleGrid(finite));
+  EXPECT_GT(next.triangleGridSlack(), 0.0);
+}
+
 TEST(WeldedSurface, MovedPointsThatMakeANewCreaseAskForARebuild)
 {
   // A flat strip folded to a right angle: with flat creases detected, the

@@ -167,6 +167,7 @@ FoldCount CountFolds(vtkPolyData* input, vtkPolyData* output)
       continue;
     }
     grid.query(lows[a], highs[a], candidates);
+    const silsmooth::TriangleShape shapeA = silsmooth::shapeOf(corners[a]);
     for (const silsmooth::Id candidate : candidates)
     {
       // Each pair once: a changed pair from its lower index.
@@ -175,7 +176,7 @@ FoldCount CountFolds(vtkPolyData* input, vtkPolyData* output)
       {
         continue;
       }
-      if (!silsmooth::trianglesIntersect(corners[a], corners[b]))
+      if (!silsmooth::trianglesIntersect(shapeA, silsmooth::shapeOf(corners[b])))
       {
         continue;
       }

@@ -363,7 +363,7 @@ private:
           }
         }
       }
-      this->judge(k, scratch, scratch.Changed);
+      this->judge(k, scratch);
     }
   }
 
@@ -391,9 +391,9 @@ private:
   }
 
   // Judges item k; group.Kept holds the entries of group.Near (the kept
-  // candidates) whose boxes meet its box, `changed` the changed triangles
-  // whose boxes meet it.
-  void judge(std::size_t k, const GroupScratch& group, const std::vector<Id>& changed)
+  // candidates) whose boxes meet its box, group.Changed the changed
+  // triangles whose boxes meet it.
+  void judge(std::size_t k, const GroupScratch& group)
   {
     const Item& item = this->Items[k];
     const Triangle& ids = this->idsOf(item);
@@ -424,7 +424,7 @@ private:
     // Changed triangles (new ones, and kept ones with a moved corner): all
     // of those it cuts, since each of them folds too (a whole check would
     // find that from there; a partial one may not look there).
-    for (const Id candidate : changed)
+    for (const Id candidate : group.Changed)
     {
       const std::size_t j = static_cast<std::size_t>(candidate);
       if (j != k && !hasRepeatedCorner(this->idsOf(this->Items[j])) &&

@@ -56,8 +56,6 @@ public:
     const std::vector<glm::dvec3>& normals, const std::vector<Triangle>& triangles,
     const ParallelFor& parallelFor, std::vector<Id>& out, Statistics* statistics = nullptr) const;
 
-  bool built() const { return this->Built; }
-
 private:
   void findInSubtree(std::int32_t root, const ViewGeometry& view, const glm::dvec4& query,
     const std::vector<glm::dvec3>& points, const std::vector<glm::dvec3>& normals,

@@ -219,7 +219,9 @@ TriangleShape shapeOf(const TriangleCorners& t)
   shape.Area2 = plane.Area2;
   shape.AxisSpan = longestAxisSpan(t);
   shape.LongestSide = longestSide(t);
-  shape.NoInterior = hasNoInterior(t);
+  // hasNoInterior's rule, from the plane's area and the side already at hand.
+  shape.NoInterior = t.P[0] == t.P[1] || t.P[1] == t.P[2] || t.P[2] == t.P[0] ||
+    !(shape.Area2 > 1e-12 * shape.LongestSide * shape.LongestSide);
   return shape;
 }
 

@@ -61,6 +61,19 @@ constexpr double FlatNeighbourDegrees = 0.5;
 std::vector<FeatureEdge> flatSidedCreases(const std::vector<glm::dvec3>& points,
   const std::vector<Triangle>& triangles, double angleDegrees, const EdgeTable* table = nullptr);
 
+/// The cosine of every edge's dihedral angle (between its two triangles'
+/// normals, both the right way up), indexed by the edge ids of `table`, the
+/// edge table of `triangles`; NaN for an edge that is not between exactly
+/// two triangles of non-zero area. Both tests above start from these: a
+/// caller asking both computes them once and passes them to the forms
+/// below, which give the same edges.
+std::vector<double> dihedralCosines(const std::vector<glm::dvec3>& points,
+  const std::vector<Triangle>& triangles, const EdgeTable& table);
+std::vector<FeatureEdge> featureEdgesByAngle(
+  const std::vector<double>& cosines, const EdgeTable& table, double angleDegrees);
+std::vector<FeatureEdge> flatSidedCreases(const std::vector<double>& cosines,
+  std::size_t triangleCount, const EdgeTable& table, double angleDegrees);
+
 /// The end tangent along `chord` whose unit direction is `direction`, with the
 /// length that makes the Hermite segment approximate a circular arc. A zero
 /// direction gives the chord itself (a straight end).

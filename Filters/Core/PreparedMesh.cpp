@@ -63,6 +63,58 @@ PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle>
   this->chooseNormals(normals, cornerNormals, weighting);
 }
 
+std::unique_ptr<PreparedMesh> PreparedMesh::moved(PreparedMesh& earlier,
+  std::vector<glm::dvec3>&& points, const std::vector<glm::dvec3>& normals,
+  const std::vector<FeatureEdge>& featureEdges, const std::vector<glm::dvec3>& cornerNormals,
+  const EdgeTable& edges, NormalWeighting weighting)
+{
+  if (points.size() != earlier.InputPointCount)
+  {
+    return nullptr;
+  }
+  // The features as the constructor keeps them (FeatureCurves also drops
+  // ids beyond the input's points, which no edge of the table has).
+  const bool sameSplit = featureEdges.empty()
+    ? earlier.Features.empty()
+    : featureEdgesOfTriangles(featureEdges, {}, &edges) == earlier.Features.edges();
+  if (!sameSplit)
+  {
+    return nullptr;
+  }
+  return std::unique_ptr<PreparedMesh>(
+    new PreparedMesh(earlier, std::move(points), normals, cornerNormals, weighting));
+}
+
+PreparedMesh::PreparedMesh(PreparedMesh& earlier, std::vector<glm::dvec3> points,
+  const std::vector<glm::dvec3>& normals, const std::vector<glm::dvec3>& cornerNormals,
+  NormalWeighting weighting)
+  : Points(std::move(points))
+  , InputPointCount(earlier.InputPointCount)
+{
+  if (!earlier.Features.empty())
+  {
+    this->Features = FeatureCurves(this->Points, earlier.Features.edges());
+  }
+  for (const Id source : earlier.CopySources)
+  {
+    this->Points.push_back(this->Points[static_cast<std::size_t>(source)]);
+  }
+  // Before the triangles are taken: adopting compares the points with
+  // earlier's.
+  this->adoptTriangleGridOfMoved(earlier);
+  this->Triangles = std::move(earlier.Triangles);
+  this->Edges = std::move(earlier.Edges);
+  this->CopySources = std::move(earlier.CopySources);
+  this->OnFeature = std::move(earlier.OnFeature);
+  this->OnBoundary = std::move(earlier.OnBoundary);
+  this->BoundaryEdges = std::move(earlier.BoundaryEdges);
+  this->NeighbourOffsets = std::move(earlier.NeighbourOffsets);
+  this->Neighbours = std::move(earlier.Neighbours);
+  // Which feature edges are smoothed depends on the positions.
+  this->indexFeatureEdges();
+  this->chooseNormals(normals, cornerNormals, weighting);
+}
+
 void PreparedMesh::splitAtFeatures()
 {
   if (this->Features.empty())
@@ -308,8 +360,13 @@ const TriangleGrid& PreparedMesh::triangleGrid() const
 
 bool PreparedMesh::adoptTriangleGrid(const PreparedMesh& earlier)
 {
+  return earlier.Triangles == this->Triangles && this->adoptTriangleGridOfMoved(earlier);
+}
+
+bool PreparedMesh::adoptTriangleGridOfMoved(const PreparedMesh& earlier)
+{
   if (!earlier.Grid->Built || earlier.Grid->Grid.empty() ||
-    earlier.Points.size() != this->Points.size() || earlier.Triangles != this->Triangles)
+    earlier.Points.size() != this->Points.size())
   {
     return false;
   }

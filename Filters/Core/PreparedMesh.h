@@ -61,6 +61,21 @@ public:
     const std::vector<glm::dvec3>& cornerNormals = {}, const EdgeTable* edges = nullptr,
     NormalWeighting weighting = NormalWeighting::Angle);
 
+  /// For a deforming mesh: the mesh the constructor above makes from these
+  /// arguments and the triangles `earlier` was made from (the caller's to
+  /// ensure), with `points` moved. It takes earlier's triangles, split,
+  /// edge table, boundaries and neighbours (earlier is left empty, to be
+  /// dropped), makes the feature curves (their tangents, and which are
+  /// smoothed) and the normals again, builds the hierarchies anew on use,
+  /// and adopts the grid of triangle boxes as adoptTriangleGrid() would.
+  /// Null, with earlier and `points` untouched, when `points` are not one per input
+  /// point or the feature edges would split the mesh elsewhere; the caller
+  /// then builds the mesh anew. `edges` is the table of the triangles.
+  static std::unique_ptr<PreparedMesh> moved(PreparedMesh& earlier,
+    std::vector<glm::dvec3>&& points, const std::vector<glm::dvec3>& normals,
+    const std::vector<FeatureEdge>& featureEdges, const std::vector<glm::dvec3>& cornerNormals,
+    const EdgeTable& edges, NormalWeighting weighting);
+
   /// Input points, then the copies made by splitting feature points.
   const std::vector<glm::dvec3>& points() const { return this->Points; }
   const std::vector<Triangle>& triangles() const { return this->Triangles; }
@@ -132,6 +147,12 @@ public:
     const ViewGeometry& view, const ParallelFor& parallelFor, std::vector<Id>& out) const;
 
 private:
+  /// moved()'s: takes earlier's topology.
+  PreparedMesh(PreparedMesh& earlier, std::vector<glm::dvec3> points,
+    const std::vector<glm::dvec3>& normals, const std::vector<glm::dvec3>& cornerNormals,
+    NormalWeighting weighting);
+  /// adoptTriangleGrid() once the triangles are known to be the same.
+  bool adoptTriangleGridOfMoved(const PreparedMesh& earlier);
   // The constructor's steps, in order.
   void splitAtFeatures();
   void findBoundaries();

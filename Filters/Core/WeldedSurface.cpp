@@ -245,7 +245,7 @@ WeldedSurface::GivenNormals WeldedSurface::examineNormals(const std::vector<glm:
 std::unique_ptr<PreparedMesh> WeldedSurface::prepareGeometry(std::vector<glm::dvec3> points,
   const std::vector<glm::dvec3>& normals, const GivenNormals& given,
   const std::vector<FeatureEdge>& markedFeatures, const SurfaceOptions& options,
-  SurfaceStatistics& statistics) const
+  SurfaceStatistics& statistics, PreparedMesh* reusable, bool* reused) const
 {
   statistics.FlatShadedNormals = given.FlatShaded;
   const std::vector<Triangle>& welded = this->Welded;
@@ -320,30 +320,42 @@ std::unique_ptr<PreparedMesh> WeldedSurface::prepareGeometry(std::vector<glm::dv
     features.insert(features.end(), given.Seams.begin(), given.Seams.end());
   }
   statistics.FlatCreaseEdgeCount = 0;
+  // Both tests read the dihedral angles: computed once (a sixth of a
+  // deforming mesh's frame at 1.3M triangles when computed for each).
+  const std::vector<double> cosines = options.DetectFlatCreases || options.DetectFeatures
+    ? dihedralCosines(points, welded, this->Table)
+    : std::vector<double>{};
   if (options.DetectFlatCreases)
   {
     const std::vector<FeatureEdge> creases =
-      flatSidedCreases(points, welded, options.FlatCreaseAngleDegrees, &this->Table);
+      flatSidedCreases(cosines, welded.size(), this->Table, options.FlatCreaseAngleDegrees);
     statistics.FlatCreaseEdgeCount = creases.size();
     features.insert(features.end(), creases.begin(), creases.end());
   }
   if (options.DetectFeatures)
   {
     const std::vector<FeatureEdge> sharp =
-      featureEdgesByAngle(points, welded, options.FeatureAngleDegrees, &this->Table);
+      featureEdgesByAngle(cosines, this->Table, options.FeatureAngleDegrees);
     features.insert(features.end(), sharp.begin(), sharp.end());
   }
   const bool cornersMatter = given.Use &&
     (statistics.WeldedPointCount > 0 || statistics.ReversedTriangleCount > 0 || normalsReversed);
-  if (cornersMatter)
-  {
-    return std::make_unique<PreparedMesh>(std::move(points), welded, std::vector<glm::dvec3>{},
-      std::move(features), preparedCornerNormals, &this->Table, options.Normals);
-  }
   // Nothing welded or reversed: the per-point normals are the corners'.
-  return std::make_unique<PreparedMesh>(std::move(points), welded,
-    given.Use ? normals : std::vector<glm::dvec3>{}, std::move(features), std::vector<glm::dvec3>{},
-    &this->Table, options.Normals);
+  const std::vector<glm::dvec3> none;
+  const std::vector<glm::dvec3>& pointNormals = given.Use && !cornersMatter ? normals : none;
+  const std::vector<glm::dvec3>& cornerNormals = cornersMatter ? preparedCornerNormals : none;
+  if (reusable)
+  {
+    std::unique_ptr<PreparedMesh> moved = PreparedMesh::moved(*reusable, std::move(points),
+      pointNormals, features, cornerNormals, this->Table, options.Normals);
+    *reused = moved != nullptr;
+    if (moved)
+    {
+      return moved;
+    }
+  }
+  return std::make_unique<PreparedMesh>(std::move(points), welded, pointNormals,
+    std::move(features), cornerNormals, &this->Table, options.Normals);
 }
 
 bool WeldedSurface::movePoints(std::vector<glm::dvec3> points,
@@ -369,18 +381,24 @@ bool WeldedSurface::movePoints(std::vector<glm::dvec3> points,
   // orientation): only for meshes with welded points and normals.
   const GivenNormals given = this->examineNormals(points, normals, nullptr, nullptr);
   SurfaceStatistics statistics = this->Statistics;
-  std::unique_ptr<PreparedMesh> prepared =
-    this->prepareGeometry(std::move(points), normals, given, markedFeatures, options, statistics);
+  bool reused = false;
+  std::unique_ptr<PreparedMesh> prepared = this->prepareGeometry(std::move(points), normals, given,
+    markedFeatures, options, statistics, this->Prepared.get(), &reused);
   // The output's points and their copies follow from the prepared
   // triangles; where the features moved, so did they: build anew.
-  if (prepared->triangles() != this->Prepared->triangles() ||
-    prepared->points().size() != this->Prepared->points().size())
+  if (!reused &&
+    (prepared->triangles() != this->Prepared->triangles() ||
+      prepared->points().size() != this->Prepared->points().size()))
   {
     return false;
   }
   // The fold guard's grid of the triangles' boxes serves again while the
-  // points move little (PreparedMesh::adoptTriangleGrid).
-  prepared->adoptTriangleGrid(*this->Prepared);
+  // points move little (PreparedMesh::adoptTriangleGrid; a reused mesh has
+  // done so).
+  if (!reused)
+  {
+    prepared->adoptTriangleGrid(*this->Prepared);
+  }
   this->Prepared = std::move(prepared);
   this->Statistics = statistics;
   return true;

@@ -195,11 +195,14 @@ private:
   // it (OutputsOffsets, OutputsOf, PreparedHome).
   void indexOutputsByPrepared();
   // Everything that depends on the points' positions and the normals, on
-  // the kept welding, orientation and edge table.
+  // the kept welding, orientation and edge table. With `reusable` (the
+  // prepared mesh of earlier positions), its topology is taken when the
+  // features split the mesh as before (PreparedMesh::moved; `*reused` says
+  // whether it was, and reusable is then empty).
   std::unique_ptr<PreparedMesh> prepareGeometry(std::vector<glm::dvec3> points,
     const std::vector<glm::dvec3>& normals, const GivenNormals& given,
     const std::vector<FeatureEdge>& markedFeatures, const SurfaceOptions& options,
-    SurfaceStatistics& statistics) const;
+    SurfaceStatistics& statistics, PreparedMesh* reusable = nullptr, bool* reused = nullptr) const;
   Id outputOfPreparedCorner(std::size_t t, Id prepared) const;
   /// assemble() over the prepared triangles `only` (ascending), or over all
   /// of them when `only` is null.

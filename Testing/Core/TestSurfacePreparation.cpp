@@ -687,6 +687,126 @@ TEST(PreparedMesh, AGridIsNotAdoptedAcrossAPointThatWasNotFinite)
   EXPECT_GT(next.triangleGridSlack(), 0.0);
 }
 
+namespace
+{
+
+// Every part of a prepared mesh that the passes read, compared exactly.
+void expectSamePreparedMesh(const PreparedMesh& a, const PreparedMesh& b)
+{
+  EXPECT_EQ(a.points(), b.points());
+  EXPECT_EQ(a.triangles(), b.triangles());
+  EXPECT_EQ(a.normals(), b.normals());
+  ASSERT_EQ(a.inputPointCount(), b.inputPointCount());
+  ASSERT_EQ(a.edges().edgeCount(), b.edges().edgeCount());
+  for (Id e = 0; e < static_cast<Id>(a.edges().edgeCount()); ++e)
+  {
+    EXPECT_EQ(a.edges().edge(e).low, b.edges().edge(e).low);
+    EXPECT_EQ(a.edges().edge(e).high, b.edges().edge(e).high);
+    EXPECT_EQ(a.isBoundaryEdge(e), b.isBoundaryEdge(e));
+    EXPECT_EQ(a.edgeFeature(e), b.edgeFeature(e));
+  }
+  for (Id t = 0; t < static_cast<Id>(a.triangles().size()); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      EXPECT_EQ(a.edges().sideEdge(t, k), b.edges().sideEdge(t, k));
+    }
+  }
+  for (Id p = 0; p < static_cast<Id>(a.points().size()); ++p)
+  {
+    EXPECT_EQ(a.sourcePoint(p), b.sourcePoint(p));
+    EXPECT_EQ(a.onFeature(p), b.onFeature(p));
+    EXPECT_EQ(a.onBoundary(p), b.onBoundary(p));
+  }
+  ASSERT_EQ(a.features().edges(), b.features().edges());
+  for (Id f = 0; f < static_cast<Id>(a.features().edges().size()); ++f)
+  {
+    EXPECT_EQ(a.features().isCurved(f), b.features().isCurved(f));
+    EXPECT_EQ(a.features().curve(f).P0, b.features().curve(f).P0);
+    EXPECT_EQ(a.features().curve(f).P1, b.features().curve(f).P1);
+    EXPECT_EQ(a.features().curve(f).T0, b.features().curve(f).T0);
+    EXPECT_EQ(a.features().curve(f).T1, b.features().curve(f).T1);
+  }
+  EXPECT_EQ(a.featureTriangles(), b.featureTriangles());
+  EXPECT_EQ(a.featureSideTriangles(), b.featureSideTriangles());
+  EXPECT_EQ(a.neighbourOffsets(), b.neighbourOffsets());
+  EXPECT_EQ(a.neighbours(), b.neighbours());
+}
+
+} // namespace
+
+TEST(PreparedMesh, AMovedMeshIsTheMeshBuiltAnew)
+{
+  // An open torus (a few quads cut out) with two marked feature rings that
+  // cross, split into smooth groups; one point of the outer ring is pulled
+  // up far enough to make corners there, which changes the curves'
+  // tangents and which ring edges are smoothed. Taking the earlier mesh's
+  // topology must give the mesh built from the moved points, part for part.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::torus(24, 12, 0.35, points, triangles);
+  triangles.erase(triangles.begin() + 200, triangles.begin() + 206);
+  auto at = [](int i, int j) {
+    return static_cast<Id>((i % 24) * 12 + j % 12);
+  };
+  std::vector<FeatureEdge> features;
+  for (int i = 0; i < 24; ++i)
+  {
+    features.emplace_back(at(i, 0), at(i + 1, 0)); // the outer equator
+  }
+  for (int j = 0; j < 12; ++j)
+  {
+    features.emplace_back(at(0, j), at(0, j + 1)); // around the tube
+  }
+  const EdgeTable table(triangles);
+  const auto weighting = NormalWeighting::Area;
+  PreparedMesh earlier(points, triangles, {}, features, {}, &table, weighting);
+  const PreparedMesh before(points, triangles, {}, features, {}, &table, weighting);
+  earlier.triangleGrid();
+  std::vector<glm::dvec3> pulled = points;
+  pulled[static_cast<std::size_t>(at(6, 0))].z += 2.0;
+  for (glm::dvec3& p : pulled)
+  {
+    p.z *= 1.1;
+  }
+  const std::unique_ptr<PreparedMesh> moved =
+    PreparedMesh::moved(earlier, std::move(pulled), {}, features, {}, table, weighting);
+  ASSERT_TRUE(moved);
+  pulled = points;
+  pulled[static_cast<std::size_t>(at(6, 0))].z += 2.0;
+  for (glm::dvec3& p : pulled)
+  {
+    p.z *= 1.1;
+  }
+  const PreparedMesh fresh(pulled, triangles, {}, features, {}, &table, weighting);
+  ASSERT_GT(fresh.features().curvedCount(), 0u);
+  EXPECT_GT(fresh.points().size(), points.size()); // split into smooth groups
+  expectSamePreparedMesh(*moved, fresh);
+  // What a move that kept the earlier curves or their smoothed edges would
+  // get wrong: the pull changes both.
+  EXPECT_NE(before.featureTriangles(), fresh.featureTriangles());
+  EXPECT_NE(before.features().curvedCount(), fresh.features().curvedCount());
+  // The pull is far beyond half a grid cell: the grid is not adopted.
+  EXPECT_EQ(moved->triangleGridSlack(), 0.0);
+
+  // Other features, or another point count: null, and the earlier mesh is
+  // left as it was.
+  PreparedMesh second(points, triangles, {}, features, {}, &table, weighting);
+  std::vector<FeatureEdge> fewer(features.begin(), features.end() - 3);
+  std::vector<glm::dvec3> same = points;
+  EXPECT_FALSE(PreparedMesh::moved(second, std::move(same), {}, fewer, {}, table, weighting));
+  EXPECT_EQ(same, points);
+  EXPECT_FALSE(PreparedMesh::moved(
+    second, std::vector<glm::dvec3>(points.size() - 1), {}, features, {}, table, weighting));
+  expectSamePreparedMesh(second, before);
+  // Feature edges that are no edge of the triangles do not count, as the
+  // constructor drops them.
+  std::vector<FeatureEdge> extra = features;
+  extra.emplace_back(at(3, 0), at(9, 5));
+  EXPECT_TRUE(
+    PreparedMesh::moved(second, std::vector<glm::dvec3>(points), {}, extra, {}, table, weighting));
+}
+
 TEST(WeldedSurface, MovedPointsThatMakeANewCreaseAskForARebuild)
 {
   // A flat strip folded to a right angle: with flat creases detected, the

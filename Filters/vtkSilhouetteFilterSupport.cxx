@@ -7,6 +7,7 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDemandDrivenPipeline.h"
+#include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
@@ -169,24 +170,72 @@ std::string MakeViewGeometry(vtkCamera* camera, const double model[16], std::arr
   return std::string();
 }
 
-std::string ReadTriangles(vtkPolyData* input, Triangles& out)
+namespace
+{
+
+// A data array's first three components per tuple, as dvec3s: directly from
+// float and double arrays (a deforming mesh reads its points every frame),
+// through GetTuple otherwise.
+void ReadVectors(vtkDataArray* array, vtkIdType count, std::vector<glm::dvec3>& out)
+{
+  out.resize(static_cast<std::size_t>(count));
+  auto copy = [&](const auto* values) {
+    for (vtkIdType i = 0; i < count; ++i)
+    {
+      const auto* v = values + 3 * i;
+      out[static_cast<std::size_t>(i)] = glm::dvec3(v[0], v[1], v[2]);
+    }
+  };
+  if (array->GetNumberOfComponents() == 3 && vtkDoubleArray::FastDownCast(array))
+  {
+    copy(vtkDoubleArray::FastDownCast(array)->GetPointer(0));
+    return;
+  }
+  if (array->GetNumberOfComponents() == 3 && vtkFloatArray::FastDownCast(array))
+  {
+    copy(vtkFloatArray::FastDownCast(array)->GetPointer(0));
+    return;
+  }
+  for (vtkIdType i = 0; i < count; ++i)
+  {
+    double v[3];
+    array->GetTuple(i, v);
+    out[static_cast<std::size_t>(i)] = glm::dvec3(v[0], v[1], v[2]);
+  }
+}
+
+} // namespace
+
+void ReadPoints(vtkPolyData* input, Triangles& out)
 {
   const vtkIdType numPoints = input->GetNumberOfPoints();
   out = Triangles();
-  out.Points.resize(static_cast<std::size_t>(numPoints));
+  if (numPoints > 0)
+  {
+    ReadVectors(input->GetPoints()->GetData(), numPoints, out.Points);
+  }
   for (vtkIdType i = 0; i < numPoints; ++i)
   {
-    double p[3];
-    input->GetPoint(i, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    const glm::dvec3& p = out.Points[static_cast<std::size_t>(i)];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
     {
       if (out.NonFinitePoints++ == 0)
       {
         out.FirstNonFinitePoint = i;
       }
     }
-    out.Points[static_cast<std::size_t>(i)] = glm::dvec3(p[0], p[1], p[2]);
   }
+  vtkDataArray* given = input->GetPointData()->GetNormals();
+  if (given && given->GetNumberOfComponents() == 3 && given->GetNumberOfTuples() == numPoints)
+  {
+    ReadVectors(given, numPoints, out.Normals);
+  }
+}
+
+std::string ReadTriangles(vtkPolyData* input, Triangles& out)
+{
+  ReadPoints(input, out);
+  const vtkIdType numPoints = input->GetNumberOfPoints();
   vtkIdType npts = 0;
   const vtkIdType* pts = nullptr;
   vtkIdType cellId = input->GetNumberOfVerts() + input->GetNumberOfLines();
@@ -241,17 +290,6 @@ std::string ReadTriangles(vtkPolyData* input, Triangles& out)
           return "Input cells refer to points that do not exist.";
         }
       }
-    }
-  }
-  vtkDataArray* given = input->GetPointData()->GetNormals();
-  if (given && given->GetNumberOfComponents() == 3 && given->GetNumberOfTuples() == numPoints)
-  {
-    out.Normals.resize(static_cast<std::size_t>(numPoints));
-    for (vtkIdType i = 0; i < numPoints; ++i)
-    {
-      double n[3];
-      given->GetTuple(i, n);
-      out.Normals[static_cast<std::size_t>(i)] = glm::dvec3(n[0], n[1], n[2]);
     }
   }
   return std::string();

@@ -84,6 +84,9 @@ struct Triangles
 /// Returns an empty string, or the error to report (cells naming missing
 /// points).
 std::string ReadTriangles(vtkPolyData* input, Triangles& out);
+/// ReadTriangles' points, normals and non-finite count only, leaving the
+/// cells empty: for a mesh whose cells are known to be those read before.
+void ReadPoints(vtkPolyData* input, Triangles& out);
 
 /// What a filter of one surface reads first: its input and output polydata
 /// and the input's triangles.

@@ -181,8 +181,10 @@ bool vtkSilhouetteSmoothingFilter::Internals::MovePoints(
     return false;
   }
   vtkSilhouetteFilterSupport::Triangles mesh;
-  if (!vtkSilhouetteFilterSupport::ReadTriangles(input, mesh).empty() || mesh.NonFinitePoints > 0 ||
-    mesh.CellIds != this->TriangleCell)
+  // The cells are those read when the surface was built (checked above):
+  // only the points and normals are read again.
+  vtkSilhouetteFilterSupport::ReadPoints(input, mesh);
+  if (mesh.NonFinitePoints > 0)
   {
     return false;
   }

@@ -314,21 +314,55 @@ bool OcclusionMesh::hides(const ViewGeometry& view, const glm::dvec3& point, dou
     [](Id, double) { return true; });
 }
 
+double OcclusionMesh::toleranceAt(
+  const glm::dvec3& point, const LineVisibilityParameters& rule) const
+{
+  if (!(rule.LocalToleranceFactor > 0.0) || !(rule.Contact > 0.0) ||
+    !(rule.Contact < rule.Tolerance) || !finite(point))
+  {
+    return rule.Tolerance;
+  }
+  std::vector<Id> candidates;
+  this->Grid.query(point - glm::dvec3(rule.Contact), point + glm::dvec3(rule.Contact), candidates);
+  double longest = 0.0;
+  for (const Id c : candidates)
+  {
+    if (this->distanceTo(point, c) <= rule.Contact)
+    {
+      const Triangle& t = this->Triangles[static_cast<std::size_t>(c)];
+      for (int k = 0; k < 3; ++k)
+      {
+        longest = std::max(longest,
+          glm::length(this->Points[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])] -
+            this->Points[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 1) % 3)])]));
+      }
+    }
+  }
+  if (!(longest > 0.0) || !std::isfinite(longest))
+  {
+    return rule.Tolerance; // on no triangle: the plain rule
+  }
+  // Never down to the contact distance, within which every hit is ignored.
+  return std::max(
+    std::min(rule.Tolerance, rule.LocalToleranceFactor * longest), 2.0 * rule.Contact);
+}
+
 bool OcclusionMesh::hides(
   const ViewGeometry& view, const glm::dvec3& point, const LineVisibilityParameters& rule) const
 {
+  const double tolerance = this->toleranceAt(point, rule);
   // A hit beyond the tolerance hides the point whatever the triangle.
-  if (this->hides(view, point, rule.Tolerance))
+  if (this->hides(view, point, tolerance))
   {
     return true;
   }
-  if (!(rule.Contact > 0.0) || !(rule.Contact < rule.Tolerance) || !finite(point))
+  if (!(rule.Contact > 0.0) || !(rule.Contact < tolerance) || !finite(point))
   {
     return false;
   }
   // The nearer hits; the sheet is worked out only when there are some.
   std::vector<Id> near;
-  this->anyHit(view, point, rule.Contact, rule.Tolerance, [&](Id triangle, double) {
+  this->anyHit(view, point, rule.Contact, tolerance, [&](Id triangle, double) {
     near.push_back(triangle);
     return false;
   });
@@ -336,7 +370,7 @@ bool OcclusionMesh::hides(
   {
     return false;
   }
-  const std::vector<Id> sheet = this->localSheet(point, rule.Contact, rule.Tolerance);
+  const std::vector<Id> sheet = this->localSheet(point, rule.Contact, tolerance);
   if (sheet.empty())
   {
     return false; // not on the surface: the plain rule's answer

@@ -6,20 +6,26 @@
 // that may hide it. The lines a drawing has lie on the surface: silhouettes,
 // creases and borders. A silhouette grazes it, so the triangles around the
 // point (the sheet it lies on) meet its ray at short distances without
-// hiding it. The rule:
-//   - a hit farther than `Tolerance` (a length in the mesh's units, scaled to
-//     the mesh: forMesh takes the mean edge length) always hides the point;
-//   - a hit nearer than that hides it unless the triangle belongs to the
+// hiding it. The rule, with the point's tolerance t: `Tolerance` (a length
+// in the mesh's units, scaled to the mesh: forMesh takes the mean edge
+// length), or, when less, `LocalToleranceFactor` times the longest side of
+// the triangles the point lies on (within `Contact`). A grazing ray leaves
+// the surface within about a triangle of the point, and a mesh's small
+// triangles are where its thin parts are (a spider's legs: with the mean
+// edge length alone, their far silhouettes, up to 0.025 of the diagonal
+// behind their near side, were drawn):
+//   - a hit farther than t always hides the point;
+//   - a hit nearer than t hides it unless the triangle belongs to the
 //     point's local sheet: the triangles connected to the ones the point lies
 //     on (within `Contact`) through shared vertices, without leaving the ball
-//     of radius Tolerance around the point. Vertices are shared where points
+//     of radius t around the point. Vertices are shared where points
 //     have one position and, when the surface has point normals, one normal:
 //     a crease (one normal per side) bounds a sheet, so a plate's face hides
 //     the silhouette of a bore that runs into it, however near;
 //   - a point that lies on no triangle (a line off the surface) keeps the
 //     plain rule: no hit nearer than Tolerance hides it.
-// The price: an occluder of the same sheet nearer than Tolerance (a fold of
-// the surface over itself) is missed.
+// The price: an occluder of the same sheet nearer than t (a fold of the
+// surface over itself) is missed.
 //
 // Each polyline is split into pieces that are wholly visible or wholly
 // hidden: every vertex is classified, and so are probes every `SampleSpacing`
@@ -57,6 +63,10 @@ struct LineVisibilityParameters
   /// Points within this distance of a triangle lie on it (the seeds of their
   /// local sheet); 0 turns the local-sheet rule off.
   double Contact = 0.0;
+  /// A point's tolerance is at most this times the longest side of the
+  /// triangles it lies on (see the header; 1.5 measured best on real meshes:
+  /// docs/line-drawings.md); 0 keeps Tolerance everywhere.
+  double LocalToleranceFactor = 1.5;
   /// Pieces shorter than this (along the line) join their neighbours, taking
   /// their state (mergeShortPieces); 0 keeps every piece. For lines that lie
   /// on the surface exactly, a visible stub as long as the tolerance remains
@@ -94,6 +104,8 @@ private:
   template<typename Counts>
   bool anyHit(
     const ViewGeometry& view, const glm::dvec3& point, double from, double to, Counts counts) const;
+  /// The point's tolerance (see the header's rule).
+  double toleranceAt(const glm::dvec3& point, const LineVisibilityParameters& rule) const;
   /// The point's local sheet (sorted triangle ids), or empty when the point
   /// lies on no triangle.
   std::vector<Id> localSheet(const glm::dvec3& point, double contact, double radius) const;

@@ -414,6 +414,64 @@ TEST(LineVisibility, AFaceOnTheBoundingBoxIsNotMissed)
   EXPECT_EQ(visible, 0);
 }
 
+TEST(LineVisibility, AThinFoldHidesItsFarSideBeyondTheLocalTolerance)
+{
+  // A U of fine triangles (sides 0.1): a back sheet at z = 0 and a front
+  // sheet at z = 0.3 over x in [0, 2], y in [0, 1], joined by a wall along
+  // y = 0, seen from above. A coarse mesh elsewhere makes the mesh-wide
+  // tolerance 2, beyond the gap: the front sheet, connected to the back one
+  // through the wall within the ball, would be the point's own sheet. With
+  // the tolerance at a point capped at 1.5 times the longest side of the
+  // triangles it lies on (0.21 here), the front sheet, 0.3 away, hides the
+  // back one; with the cap off (the wrong variant), it does not.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  auto grid = [&](auto at, int nu, int nv) {
+    const Id first = static_cast<Id>(points.size());
+    for (int j = 0; j <= nv; ++j)
+    {
+      for (int i = 0; i <= nu; ++i)
+      {
+        points.push_back(at(i, j));
+      }
+    }
+    auto id = [&](int i, int j) {
+      return first + static_cast<Id>(j * (nu + 1) + i);
+    };
+    for (int j = 0; j < nv; ++j)
+    {
+      for (int i = 0; i < nu; ++i)
+      {
+        triangles.push_back({ { id(i, j), id(i + 1, j), id(i + 1, j + 1) } });
+        triangles.push_back({ { id(i, j), id(i + 1, j + 1), id(i, j + 1) } });
+      }
+    }
+  };
+  grid([](int i, int j) { return glm::dvec3(0.1 * i, 0.1 * j, 0.0); }, 20, 10);     // back
+  grid([](int i, int j) { return glm::dvec3(0.1 * i, 0.1 * j, 0.1 * 3); }, 20, 10); // front
+  grid([](int i, int j) { return glm::dvec3(0.1 * i, 0.0, 0.1 * j); }, 20, 3);      // wall
+  ViewGeometry view;
+  view.Parallel = true;
+  view.TowardViewer = glm::dvec3(0, 0, 1);
+  LineVisibilityParameters rule;
+  rule.Tolerance = 2.0;
+  rule.Precision = 1e-9;
+  rule.Contact = 1e-7;
+  // The wall's points duplicate the sheets' along the folds (the front at
+  // 0.1 * 3, the wall's top row, not 0.3); without normals, points at one
+  // position are one vertex, so the U is one sheet.
+  const OcclusionMesh fold(points, triangles);
+  const glm::dvec3 behind(1.03, 0.55, 0.0); // on the back sheet, under the front
+  EXPECT_TRUE(fold.hides(view, behind, rule));
+  const glm::dvec3 onFront(1.03, 0.55, 0.3);
+  EXPECT_FALSE(fold.hides(view, onFront, rule));
+  LineVisibilityParameters meshWide = rule;
+  meshWide.LocalToleranceFactor = 0.0;
+  EXPECT_FALSE(fold.hides(view, behind, meshWide));
+  // A point on no triangle keeps the mesh-wide tolerance.
+  EXPECT_FALSE(fold.hides(view, glm::dvec3(1.03, 0.55, 0.05), rule));
+}
+
 TEST(LineVisibility, ACreaseBoundsTheLocalSheet)
 {
   // An L: a floor (z = 0, x in [0, 2]) and a wall (x = 0, z in [0, 2]) meeting

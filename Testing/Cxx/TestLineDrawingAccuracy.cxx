@@ -48,7 +48,7 @@
 // pixels / outline drawn / wrong variant's strays:
 //   bunny_coarse  view 1:   20 of 2979 px (0.67%) / 99.4% /   74 of  3062 (2.4%)
 //                 view 2:   31 of 2842 px (1.09%) / 97.3% / 1123 of  4099 (27%)
-//   spider        view 1:  136 of 6659 px (2.04%) / 96.8% / 2407 of  9996 (24%)
+//   spider        view 1:   89 of 6592 px (1.35%) / 96.7% / 2407 of  9996 (24%)
 //                 view 2:   30 of 6217 px (0.48%) / 96.9% / 3208 of 10366 (31%)
 //   bracket       view 1:    0 of 7554 px         / 100%  / 3205 of 10971 (29%)
 //                 view 2:    0 of 5099 px         / 100%  / 5176 of 10466 (49%)
@@ -59,12 +59,16 @@
 // behind the surface at its pixels, from the drawing's own depth buffer) is
 // a silhouette hidden by its own sheet within the visibility tolerance (the
 // mean edge length, 0.034 of the diagonal on the bunny, 0.031 on the
-// spider), which the rule of Lines/Core/LineVisibility.h cannot tell from
-// the grazing of the sheet it lies on: the bunny's right ear tip in view 1,
-// where the silhouette passes 4 px inside the outline, about 0.01 diagonal
-// behind a facet facing the eye, and ends of inner contours in view 2; the
-// spider's thin legs, whose far silhouettes run up to 3 px off the outline,
-// 0.008 to 0.025 diagonal behind their own near side.
+// spider, or 1.5 times the longest side of the triangles the point lies on
+// where that is less), which the rule of Lines/Core/LineVisibility.h cannot
+// tell from the grazing of the sheet it lies on: the bunny's right ear tip
+// in view 1, where the silhouette passes 4 px inside the outline, about
+// 0.01 diagonal behind a facet facing the eye, and ends of inner contours
+// in view 2; the spider's thin legs, whose far silhouettes run up to 3 px
+// off the outline behind their own near side. With the mean edge length
+// alone as the tolerance (before 2026-12-03) the spider's view 1 strayed
+// 136 px, up to 5.8 px off the outline (limit then 170), its other views
+// and the bunny's as now.
 // Before the local-sheet rule and the probes along segments (2026-12-02) the
 // bracket strayed 334 and 264 px and the spider 151 and 101: the bores'
 // silhouettes ran 7 to 26 px past the holes' rims, up to 0.15 diagonal
@@ -586,7 +590,7 @@ int TestLineDrawingAccuracy(int argc, char* argv[])
 
   const Case bunny[2] = { { "view 1 (azimuth 0, elevation 20)", 0.0, 20.0, 30 },
     { "view 2 (azimuth 120, elevation -15)", 120.0, -15.0, 45 } };
-  const Case spider[2] = { { "view 1 (azimuth 0, elevation 20)", 0.0, 20.0, 170 },
+  const Case spider[2] = { { "view 1 (azimuth 0, elevation 20)", 0.0, 20.0, 110 },
     { "view 2 (azimuth 120, elevation -15)", 120.0, -15.0, 40 } };
   const Case bracket[2] = { { "view 1 (azimuth 0, elevation 20)", 0.0, 20.0, 0 },
     { "view 2 (azimuth 120, elevation -15)", 120.0, -15.0, 0 } };

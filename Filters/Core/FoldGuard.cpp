@@ -100,6 +100,87 @@ struct Item
   long Index = -1;
 };
 
+// The triangles of the mesh whose boxes meet each of the boxes [lows[b],
+// highs[b]] (ascending ids per box; a box with a corner that is not finite
+// meets none): from the mesh's grid (each box widened by its slack), or by
+// one pass over the triangles against a grid of the boxes. Triangles with a
+// repeated or non-finite corner are left out either way, as the grid leaves
+// them out.
+std::vector<std::vector<Id>> trianglesMeeting(const FoldGuardMesh& mesh,
+  const std::vector<glm::dvec3>& lows, const std::vector<glm::dvec3>& highs,
+  const FoldGuardParallelFor& parallelFor)
+{
+  auto finitePoint = [](const glm::dvec3& p) {
+    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+  };
+  const std::size_t count = lows.size();
+  std::vector<std::vector<Id>> found(count);
+  if (mesh.Grid)
+  {
+    const glm::dvec3 slack(mesh.GridSlack);
+    parallelFor(count, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t b = begin; b < end; ++b)
+      {
+        if (finitePoint(lows[b]) && finitePoint(highs[b]))
+        {
+          mesh.Grid->query(lows[b] - slack, highs[b] + slack, found[b]);
+          std::sort(found[b].begin(), found[b].end());
+        }
+      }
+    });
+    return found;
+  }
+  if (count == 0)
+  {
+    return found;
+  }
+  // Leaves out boxes that are not finite. Cells up to one per 8 triangles:
+  // few boxes are asked about by every triangle, and smaller cells than 4
+  // per box hold fewer boxes that a triangle's query must test.
+  const TriangleGrid boxes(lows, highs, mesh.Triangles.size() / 8);
+  // Fixed blocks, joined in order: the lists do not depend on the split.
+  constexpr std::size_t Block = 1 << 14;
+  const std::size_t triangleCount = mesh.Triangles.size();
+  const std::size_t blocks = (triangleCount + Block - 1) / Block;
+  std::vector<std::vector<std::pair<Id, Id>>> pairs(blocks); // (box, triangle)
+  parallelFor(blocks, [&](std::size_t begin, std::size_t end) {
+    std::vector<Id> meeting;
+    for (std::size_t k = begin; k < end; ++k)
+    {
+      for (std::size_t t = k * Block; t < std::min(triangleCount, (k + 1) * Block); ++t)
+      {
+        const Triangle& tri = mesh.Triangles[t];
+        if (hasRepeatedCorner(tri))
+        {
+          continue;
+        }
+        const glm::dvec3& a = mesh.Points[static_cast<std::size_t>(tri[0])];
+        const glm::dvec3& b = mesh.Points[static_cast<std::size_t>(tri[1])];
+        const glm::dvec3& c = mesh.Points[static_cast<std::size_t>(tri[2])];
+        if (!finitePoint(a) || !finitePoint(b) || !finitePoint(c))
+        {
+          continue;
+        }
+        const glm::dvec3 low = glm::min(a, glm::min(b, c));
+        const glm::dvec3 high = glm::max(a, glm::max(b, c));
+        boxes.query(low, high, meeting);
+        for (const Id box : meeting)
+        {
+          pairs[k].emplace_back(box, static_cast<Id>(t));
+        }
+      }
+    }
+  });
+  for (const auto& block : pairs)
+  {
+    for (const auto& [box, triangle] : block)
+    {
+      found[static_cast<std::size_t>(box)].push_back(triangle);
+    }
+  }
+  return found;
+}
+
 } // namespace
 
 namespace
@@ -119,7 +200,7 @@ public:
 
   FoldFindings run(const FoldGuardParallelFor& parallelFor)
   {
-    this->collectItems();
+    this->collectItems(parallelFor);
     this->placeItems();
     this->chooseItemsToCheck();
     this->judgeItems(parallelFor);
@@ -143,7 +224,7 @@ private:
   // The replacements, and the kept triangles around moved points (in a
   // partial check also around the points whose move changed: a triangle
   // that moved back is changed too).
-  void collectItems()
+  void collectItems(const FoldGuardParallelFor& parallelFor)
   {
     const FoldGuardFrame& frame = this->Frame;
     for (std::size_t i = 0; i < frame.Remeshed.size(); ++i)
@@ -165,13 +246,18 @@ private:
       aroundPoints.erase(std::unique(aroundPoints.begin(), aroundPoints.end()), aroundPoints.end());
     }
     std::vector<Id> around;
-    std::vector<Id> candidates;
+    std::vector<glm::dvec3> at;
     for (const Id p : aroundPoints)
     {
-      const glm::dvec3& at = this->Mesh.Points[static_cast<std::size_t>(p)];
-      const glm::dvec3 slack(this->Mesh.GridSlack);
-      this->Mesh.Grid.query(at - slack, at + slack, candidates);
-      for (const Id t : candidates)
+      at.push_back(this->Mesh.Points[static_cast<std::size_t>(p)]);
+    }
+    const std::vector<std::vector<Id>> candidates = aroundPoints.empty()
+      ? std::vector<std::vector<Id>>{}
+      : trianglesMeeting(this->Mesh, at, at, parallelFor);
+    for (std::size_t i = 0; i < aroundPoints.size(); ++i)
+    {
+      const Id p = aroundPoints[i];
+      for (const Id t : candidates[i])
       {
         const Triangle& tri = this->Mesh.Triangles[static_cast<std::size_t>(t)];
         if ((tri[0] == p || tri[1] == p || tri[2] == p) && !this->Geometry.isRemeshed(t))
@@ -281,11 +367,12 @@ private:
     this->Verdict.assign(this->Items.size(), 0);
     this->CutItems.assign(this->Items.size(), {});
     this->groupItems();
+    this->findKeptCandidates(parallelFor);
     parallelFor(this->GroupStarts.size() - 1, [this](std::size_t begin, std::size_t end) {
       GroupScratch scratch;
       for (std::size_t g = begin; g < end; ++g)
       {
-        this->judgeGroup(this->GroupStarts[g], this->GroupStarts[g + 1], scratch);
+        this->judgeGroup(g, scratch);
       }
     });
   }
@@ -302,34 +389,63 @@ private:
     std::vector<Id> Changed;
   };
 
-  void judgeGroup(std::size_t begin, std::size_t end, GroupScratch& scratch)
+  // An item's own query would find nothing for a box with a corner that is
+  // not finite (TriangleGrid::query).
+  bool finiteBox(std::size_t k) const
   {
-    // An item's own query would find nothing for a box with a corner that
-    // is not finite (TriangleGrid::query).
     auto finitePoint = [](const glm::dvec3& p) {
       return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
     };
-    auto finiteBox = [&](std::size_t k) {
-      return finitePoint(this->Lows[k]) && finitePoint(this->Highs[k]);
-    };
-    glm::dvec3 low(HUGE_VAL);
-    glm::dvec3 high(-HUGE_VAL);
-    bool any = false;
-    for (std::size_t k = begin; k < end; ++k)
+    return finitePoint(this->Lows[k]) && finitePoint(this->Highs[k]);
+  }
+
+  // Each group's joint box (of its items to check, with finite boxes; empty,
+  // its low above its high, when there are none), and the kept triangles
+  // whose boxes meet it, all groups at once (trianglesMeeting).
+  void findKeptCandidates(const FoldGuardParallelFor& parallelFor)
+  {
+    const std::size_t groups = this->GroupStarts.size() - 1;
+    this->GroupLows.assign(groups, glm::dvec3(HUGE_VAL));
+    this->GroupHighs.assign(groups, glm::dvec3(-HUGE_VAL));
+    std::vector<glm::dvec3> lows;
+    std::vector<glm::dvec3> highs;
+    std::vector<std::size_t> asked; // the groups with a box
+    for (std::size_t g = 0; g < groups; ++g)
     {
-      if (this->ToCheck[k] && finiteBox(k))
+      for (std::size_t k = this->GroupStarts[g]; k < this->GroupStarts[g + 1]; ++k)
       {
-        low = glm::min(low, this->Lows[k]);
-        high = glm::max(high, this->Highs[k]);
-        any = true;
+        if (this->ToCheck[k] && this->finiteBox(k))
+        {
+          this->GroupLows[g] = glm::min(this->GroupLows[g], this->Lows[k]);
+          this->GroupHighs[g] = glm::max(this->GroupHighs[g], this->Highs[k]);
+        }
+      }
+      if (this->GroupLows[g].x <= this->GroupHighs[g].x)
+      {
+        asked.push_back(g);
+        lows.push_back(this->GroupLows[g]);
+        highs.push_back(this->GroupHighs[g]);
       }
     }
+    std::vector<std::vector<Id>> found = trianglesMeeting(this->Mesh, lows, highs, parallelFor);
+    this->GroupNear.assign(groups, {});
+    for (std::size_t i = 0; i < asked.size(); ++i)
+    {
+      this->GroupNear[asked[i]] = std::move(found[i]);
+    }
+  }
+
+  void judgeGroup(std::size_t g, GroupScratch& scratch)
+  {
+    const std::size_t begin = this->GroupStarts[g];
+    const std::size_t end = this->GroupStarts[g + 1];
+    const glm::dvec3& low = this->GroupLows[g];
+    const glm::dvec3& high = this->GroupHighs[g];
     scratch.Near.clear();
     scratch.NearChanged.clear();
-    if (any)
+    if (low.x <= high.x)
     {
-      const glm::dvec3 slack(this->Mesh.GridSlack);
-      this->Mesh.Grid.query(low - slack, high + slack, scratch.Near);
+      scratch.Near = std::move(this->GroupNear[g]); // each group is judged once
       this->keptCandidates(scratch.Near, scratch.NearShapes);
       scratch.NearLows.clear();
       scratch.NearHighs.clear();
@@ -345,7 +461,7 @@ private:
     {
       scratch.Kept.clear();
       scratch.Changed.clear();
-      if (this->ToCheck[k] && finiteBox(k))
+      if (this->ToCheck[k] && this->finiteBox(k))
       {
         for (std::size_t c = 0; c < scratch.Near.size(); ++c)
         {
@@ -485,8 +601,12 @@ private:
   TriangleGrid Changed;
   std::vector<unsigned char> Verdict;
   std::vector<std::vector<std::size_t>> CutItems;
-  /// Items [GroupStarts[g], GroupStarts[g + 1]) share one grid query.
+  /// Items [GroupStarts[g], GroupStarts[g + 1]) share one search for kept
+  /// candidates, with their joint box.
   std::vector<std::size_t> GroupStarts;
+  std::vector<glm::dvec3> GroupLows;
+  std::vector<glm::dvec3> GroupHighs;
+  std::vector<std::vector<Id>> GroupNear;
 };
 
 } // namespace

@@ -358,6 +358,16 @@ const TriangleGrid& PreparedMesh::triangleGrid() const
   return this->Grid->Grid;
 }
 
+const TriangleGrid* PreparedMesh::foldGuardGridForFrame() const
+{
+  const int earlierFrames = this->Grid->Frames.fetch_add(1);
+  if (!this->Grid->Built && (earlierFrames == 0 || this->Grid->Outrun))
+  {
+    return nullptr; // the first frame scans: maybe the only one
+  }
+  return &this->triangleGrid();
+}
+
 bool PreparedMesh::adoptTriangleGrid(const PreparedMesh& earlier)
 {
   return earlier.Triangles == this->Triangles && this->adoptTriangleGridOfMoved(earlier);
@@ -365,8 +375,24 @@ bool PreparedMesh::adoptTriangleGrid(const PreparedMesh& earlier)
 
 bool PreparedMesh::adoptTriangleGridOfMoved(const PreparedMesh& earlier)
 {
-  if (!earlier.Grid->Built || earlier.Grid->Grid.empty() ||
-    earlier.Points.size() != this->Points.size())
+  if (earlier.Points.size() != this->Points.size())
+  {
+    return false;
+  }
+  if (this->takeTriangleGrid(earlier))
+  {
+    return true;
+  }
+  // A deforming mesh's frames are one sequence: the count goes on, and a
+  // grid the moves outran is not built again (scanning costs less).
+  this->Grid->Frames = earlier.Grid->Frames.load();
+  this->Grid->Outrun = earlier.Grid->Outrun || earlier.Grid->Built;
+  return false;
+}
+
+bool PreparedMesh::takeTriangleGrid(const PreparedMesh& earlier)
+{
+  if (!earlier.Grid->Built || earlier.Grid->Grid.empty())
   {
     return false;
   }

@@ -131,12 +131,25 @@ public:
   /// query widened by the slack finds every triangle a fresh grid would.
   const TriangleGrid& triangleGrid() const;
   double triangleGridSlack() const { return this->GridSlack; }
+  /// Whether the grid is there (built, or adopted).
+  bool hasTriangleGrid() const { return this->Grid->Built; }
+  /// The grid for a frame's fold checks (FoldGuardMesh::Grid): call once
+  /// per frame that checks folds. Null on the mesh's first such frame,
+  /// unless the grid is there already (built, or adopted): the fold guard
+  /// then scans the triangles, which costs less than building the grid, so a
+  /// mesh smoothed once (a filter's run) never builds it. From the second
+  /// frame on, the grid (built then). The frames of a deforming mesh count
+  /// as one mesh's (adoptTriangleGrid carries the count): its second frame
+  /// builds the grid, later ones adopt it while the points move little, and
+  /// once the moves outrun it, they scan.
+  const TriangleGrid* foldGuardGridForFrame() const;
   /// Takes `earlier`'s grid, if it has been built, when this mesh has the
   /// same triangles over moved points (a deforming mesh) and the points
   /// moved little: the slack (earlier's plus the largest coordinate change
   /// of any point) stays under half a grid cell, so queries stay about as
   /// cheap. Building the grid was most of a deforming frame's fold check
-  /// (about 150 ms at 1.3M triangles). False, and nothing taken, otherwise.
+  /// (about 150 ms at 1.3M triangles). False otherwise, with only the count
+  /// of frames taken over (foldGuardGridForFrame).
   bool adoptTriangleGrid(const PreparedMesh& earlier);
   /// The silhouette triangles of `view` from the triangle hierarchy of its
   /// projection (SilhouetteTriangleHierarchy.h), built on the second call
@@ -153,6 +166,8 @@ private:
     NormalWeighting weighting);
   /// adoptTriangleGrid() once the triangles are known to be the same.
   bool adoptTriangleGridOfMoved(const PreparedMesh& earlier);
+  /// Its grid part: takes earlier's grid when built and the moves allow.
+  bool takeTriangleGrid(const PreparedMesh& earlier);
   // The constructor's steps, in order.
   void splitAtFeatures();
   void findBoundaries();
@@ -187,6 +202,8 @@ private:
   {
     std::once_flag Once;
     std::atomic<bool> Built{ false };
+    std::atomic<int> Frames{ 0 };      // foldGuardGridForFrame's calls
+    std::atomic<bool> Outrun{ false }; // moves outran an earlier grid
     TriangleGrid Grid;
   };
   std::shared_ptr<LazyGrid> Grid = std::make_shared<LazyGrid>();

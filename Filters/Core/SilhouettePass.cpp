@@ -162,8 +162,13 @@ void SilhouettePass::remeshFrame()
 }
 
 FoldFindings SilhouettePass::findFrameFolds(
-  const std::vector<Id>* checkSources, const std::vector<Id>* checkPoints) const
+  const std::vector<Id>* checkSources, const std::vector<Id>* checkPoints)
 {
+  if (!this->FoldGridAsked)
+  {
+    this->FoldGrid = this->Mesh.foldGuardGridForFrame();
+    this->FoldGridAsked = true;
+  }
   std::vector<glm::dvec3> positions;
   std::vector<glm::dvec3> normals;
   positions.reserve(this->Result.NewPoints.size());
@@ -174,7 +179,7 @@ FoldFindings SilhouettePass::findFrameFolds(
     normals.push_back(p.Normal);
   }
   const FoldGuardMesh mesh{ this->Mesh.points(), this->Mesh.normals(), this->Mesh.triangles(),
-    this->Mesh.triangleGrid(), this->Mesh.triangleGridSlack() };
+    this->FoldGrid, this->FoldGrid ? this->Mesh.triangleGridSlack() : 0.0 };
   const FoldGuardFrame frame{ this->Result.RemeshedTriangles, this->Result.ReplacementOffsets,
     this->Result.Replacements, positions, normals, this->Result.MovedPoints, checkSources,
     checkPoints };

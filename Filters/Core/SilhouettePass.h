@@ -75,7 +75,7 @@ private:
   void remeshFrame();
 
   FoldFindings findFrameFolds(
-    const std::vector<Id>* checkSources, const std::vector<Id>* checkPoints) const;
+    const std::vector<Id>* checkSources, const std::vector<Id>* checkPoints);
 
   // Raises the fallback level of every folding silhouette triangle and pins
   // every folding moved point; false when none could be taken. `changed`
@@ -278,6 +278,10 @@ private:
   /// silhouette triangles (visibleAt).
   std::vector<double> G;
   std::size_t Culled = 0; // silhouette triangles outside the frustum
+  /// The fold checks' grid (PreparedMesh::foldGuardGridForFrame), asked for
+  /// at the frame's first check.
+  bool FoldGridAsked = false;
+  const TriangleGrid* FoldGrid = nullptr;
   std::vector<Id> Silhouette;
   std::vector<unsigned char> MovedMark; // keepOutputFacingOut's, all 0 between calls
   std::vector<EdgeSilhouettePoint> EdgePoints;

@@ -44,7 +44,8 @@ TriangleGrid::TriangleGrid(
   this->build();
 }
 
-TriangleGrid::TriangleGrid(std::vector<glm::dvec3> low, std::vector<glm::dvec3> high)
+TriangleGrid::TriangleGrid(
+  std::vector<glm::dvec3> low, std::vector<glm::dvec3> high, std::size_t cellBudget)
   : Low(std::move(low))
   , High(std::move(high))
 {
@@ -57,10 +58,10 @@ TriangleGrid::TriangleGrid(std::vector<glm::dvec3> low, std::vector<glm::dvec3> 
       this->High[t] = glm::dvec3(-HUGE_VAL);
     }
   }
-  this->build();
+  this->build(cellBudget);
 }
 
-void TriangleGrid::build()
+void TriangleGrid::build(std::size_t cellBudget)
 {
   const std::size_t count = this->Low.size();
   glm::dvec3 low(HUGE_VAL);
@@ -91,7 +92,8 @@ void TriangleGrid::build()
     cell = largest > 0.0 ? largest : 1.0;
   }
   // At most about 4 cells per triangle.
-  const double budget = 4.0 * static_cast<double>(used) + 1.0;
+  const double budget =
+    std::max(4.0 * static_cast<double>(used) + 1.0, static_cast<double>(cellBudget));
   auto cellsFor = [&](double c) {
     return (std::floor(size.x / c) + 1) * (std::floor(size.y / c) + 1) *
       (std::floor(size.z / c) + 1);

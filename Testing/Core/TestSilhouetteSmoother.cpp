@@ -433,6 +433,29 @@ bool sameResult(const SmoothingResult& a, const SmoothingResult& b)
 
 } // namespace
 
+namespace
+{
+
+// Splits [0, count) over `threads` std::threads, the way a thread pool would
+// (ThreadSanitizer sees these threads start and join).
+ParallelFor threadedFor(unsigned threads)
+{
+  return [threads](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
+    std::vector<std::thread> pool;
+    const std::size_t chunk = (count + threads - 1) / threads;
+    for (std::size_t begin = 0; begin < count; begin += chunk)
+    {
+      pool.emplace_back(body, begin, std::min(count, begin + chunk));
+    }
+    for (std::thread& t : pool)
+    {
+      t.join();
+    }
+  };
+}
+
+} // namespace
+
 TEST(SilhouetteSmoother, FoldGuardLeavesNoFoldAndIncrementalChecksChangeNothing)
 {
   const PreparedMesh mesh = noisySphere(50.0);
@@ -466,10 +489,18 @@ TEST(SilhouetteSmoother, FoldGuardLeavesNoFoldAndIncrementalChecksChangeNothing)
       normals.push_back(p.Normal);
     }
     const FoldGuardMesh guardMesh{ mesh.points(), mesh.normals(), mesh.triangles(),
-      mesh.triangleGrid() };
+      &mesh.triangleGrid() };
     const FoldGuardFrame frame{ u.RemeshedTriangles, u.ReplacementOffsets, u.Replacements,
       positions, normals, u.MovedPoints };
     const FoldFindings found = findFolds(guardMesh, frame, serialFor);
+    // Without the grid, the check scans the triangles once: the same
+    // findings, item for item.
+    const FoldGuardMesh scanned{ mesh.points(), mesh.normals(), mesh.triangles(), nullptr };
+    const FoldFindings byScan = findFolds(scanned, frame, threadedFor(3));
+    EXPECT_EQ(byScan.Turned, found.Turned) << "view " << v;
+    EXPECT_EQ(byScan.Cutting, found.Cutting) << "view " << v;
+    EXPECT_EQ(byScan.FoldingRemeshed, found.FoldingRemeshed) << "view " << v;
+    EXPECT_EQ(byScan.FoldingMovedPoints, found.FoldingMovedPoints) << "view " << v;
     const bool fellBack =
       r.ChordFallbackTriangles + r.StraightSilhouettePoints + r.PinnedPoints > 0;
     EXPECT_EQ(found.any(), fellBack) << "view " << v;
@@ -480,29 +511,6 @@ TEST(SilhouetteSmoother, FoldGuardLeavesNoFoldAndIncrementalChecksChangeNothing)
   EXPECT_GT(fallbacks, 0u);
   EXPECT_GT(extraRounds, 40u) << "fallbacks " << fallbacks << ", folds " << unguardedFolds;
 }
-
-namespace
-{
-
-// Splits [0, count) over `threads` std::threads, the way a thread pool would
-// (ThreadSanitizer sees these threads start and join).
-ParallelFor threadedFor(unsigned threads)
-{
-  return [threads](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
-    std::vector<std::thread> pool;
-    const std::size_t chunk = (count + threads - 1) / threads;
-    for (std::size_t begin = 0; begin < count; begin += chunk)
-    {
-      pool.emplace_back(body, begin, std::min(count, begin + chunk));
-    }
-    for (std::thread& t : pool)
-    {
-      t.join();
-    }
-  };
-}
-
-} // namespace
 
 TEST(SilhouetteSmoother, ThreadsGiveTheSerialResult)
 {

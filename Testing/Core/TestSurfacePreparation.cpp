@@ -615,7 +615,10 @@ TEST(WeldedSurface, SmallMovesKeepTheFoldGuardsGridAndSmoothAsAFreshSurface)
   coretest::torus(48, 24, 0.35, points, triangles);
   WeldedSurface moving(points, triangles, {}, {}, plainOptions());
   const ViewGeometry view = coretest::perspectiveFrom(glm::dvec3(0.3, -2.5, 1.4));
-  smoothSilhouettes(moving.prepared(), view, {}); // builds the grid
+  smoothSilhouettes(moving.prepared(), view, {}); // scans for the fold checks
+  EXPECT_FALSE(moving.prepared().hasTriangleGrid());
+  smoothSilhouettes(moving.prepared(), view, {}); // the second frame builds the grid
+  EXPECT_TRUE(moving.prepared().hasTriangleGrid());
   int adopted = 0;
   for (int frame = 1; frame <= 6; ++frame)
   {
@@ -643,6 +646,21 @@ TEST(WeldedSurface, SmallMovesKeepTheFoldGuardsGridAndSmoothAsAFreshSurface)
   }
   ASSERT_TRUE(moving.movePoints(far, {}, {}, plainOptions()));
   EXPECT_EQ(moving.prepared().triangleGridSlack(), 0.0);
+  // Moves that outran the grid: later frames scan instead of building it
+  // again, and smooth as a fresh surface does.
+  for (int frame = 0; frame < 2; ++frame)
+  {
+    for (glm::dvec3& p : far)
+    {
+      p *= 1.2;
+    }
+    ASSERT_TRUE(moving.movePoints(far, {}, {}, plainOptions()));
+    const SurfaceFrame a = moving.assemble(smoothSilhouettes(moving.prepared(), view, {}));
+    EXPECT_FALSE(moving.prepared().hasTriangleGrid());
+    const WeldedSurface fresh(far, triangles, {}, {}, plainOptions());
+    const SurfaceFrame b = fresh.assemble(smoothSilhouettes(fresh.prepared(), view, {}));
+    EXPECT_EQ(a.Triangles, b.Triangles) << "outrun frame " << frame;
+  }
 }
 
 TEST(TriangleGrid, AGridOfEarlierBoxesNeedsItsSlack)

@@ -173,11 +173,16 @@ std::string MakeViewGeometry(vtkCamera* camera, const double model[16], std::arr
 namespace
 {
 
-// A data array's first three components per tuple, as dvec3s: directly from
+// A data array of three components per tuple, as dvec3s: directly from
 // float and double arrays (a deforming mesh reads its points every frame),
-// through GetTuple otherwise.
+// through GetTuple otherwise. The callers check the component count.
 void ReadVectors(vtkDataArray* array, vtkIdType count, std::vector<glm::dvec3>& out)
 {
+  if (array->GetNumberOfComponents() != 3)
+  {
+    out.assign(static_cast<std::size_t>(count), glm::dvec3(std::nan("")));
+    return;
+  }
   out.resize(static_cast<std::size_t>(count));
   auto copy = [&](const auto* values) {
     for (vtkIdType i = 0; i < count; ++i)
@@ -186,12 +191,12 @@ void ReadVectors(vtkDataArray* array, vtkIdType count, std::vector<glm::dvec3>& 
       out[static_cast<std::size_t>(i)] = glm::dvec3(v[0], v[1], v[2]);
     }
   };
-  if (array->GetNumberOfComponents() == 3 && vtkDoubleArray::FastDownCast(array))
+  if (vtkDoubleArray::FastDownCast(array))
   {
     copy(vtkDoubleArray::FastDownCast(array)->GetPointer(0));
     return;
   }
-  if (array->GetNumberOfComponents() == 3 && vtkFloatArray::FastDownCast(array))
+  if (vtkFloatArray::FastDownCast(array))
   {
     copy(vtkFloatArray::FastDownCast(array)->GetPointer(0));
     return;

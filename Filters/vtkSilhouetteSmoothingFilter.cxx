@@ -81,6 +81,14 @@ std::vector<silsmooth::FeatureEdge> MarkedFeatures(vtkPolyData* input, bool useL
 
 // The input's cell arrays (which objects, and their times) and its point
 // count: what must stay for a change to be one of the points only.
+// The core's loops on vtkSMPTools.
+void SMPFor(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body)
+{
+  vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&body](vtkIdType begin, vtkIdType end) {
+    body(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
+  });
+}
+
 std::array<vtkMTimeType, 9> CellsOf(vtkPolyData* input)
 {
   vtkCellArray* cells[4] = { input->GetVerts(), input->GetLines(), input->GetPolys(),
@@ -165,7 +173,7 @@ std::string vtkSilhouetteSmoothingFilter::Internals::Rebuild(
     return std::string(); // reported by the caller, on every request
   }
   this->Surface = std::make_unique<silsmooth::WeldedSurface>(std::move(mesh.Points),
-    std::move(mesh.Cells), mesh.Normals, MarkedFeatures(input, useLines), options);
+    std::move(mesh.Cells), mesh.Normals, MarkedFeatures(input, useLines), options, SMPFor);
   this->CachedInput = input;
   this->CachedInputTime = input->GetMTime();
   this->CachedCells = CellsOf(input);
@@ -189,7 +197,7 @@ bool vtkSilhouetteSmoothingFilter::Internals::MovePoints(
     return false;
   }
   if (!this->Surface->movePoints(
-        std::move(mesh.Points), mesh.Normals, MarkedFeatures(input, useLines), options))
+        std::move(mesh.Points), mesh.Normals, MarkedFeatures(input, useLines), options, SMPFor))
   {
     return false;
   }
@@ -310,14 +318,8 @@ silsmooth::SmoothingResult vtkSilhouetteSmoothingFilter::Internals::Smooth(
     1e5, std::min(self->NewPointBudget * static_cast<double>(input->GetNumberOfPoints()), 1e15)));
   sampling.Rule = self->SamplingRule == WANG_EQUATION_8 ? silsmooth::SamplingRule::WangEquation8
                                                         : silsmooth::SamplingRule::SecondDifference;
-  const silsmooth::ParallelFor smpFor =
-    [](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
-      vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&body](vtkIdType begin, vtkIdType end) {
-        body(static_cast<std::size_t>(begin), static_cast<std::size_t>(end));
-      });
-    };
   silsmooth::SmoothingResult result =
-    silsmooth::smoothSilhouettes(this->Surface->prepared(), view, parameters, smpFor);
+    silsmooth::smoothSilhouettes(this->Surface->prepared(), view, parameters, SMPFor);
   if (result.SampleBudgetMaximum > 0)
   {
     vtkWarningWithObjectMacro(self,

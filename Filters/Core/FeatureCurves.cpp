@@ -40,60 +40,77 @@ double cosineOfDegrees(double degrees)
 
 } // namespace
 
+EdgeSides edgeSidesOf(const std::vector<Triangle>& triangles, const EdgeTable& table)
+{
+  EdgeSides sides;
+  sides.First.assign(table.edgeCount(), { { -1, -1 } });
+  sides.Count.assign(table.edgeCount(), 0);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const std::size_t e = static_cast<std::size_t>(table.sideEdge(static_cast<Id>(t), k));
+      const unsigned char seen = sides.Count[e];
+      if (seen < 2)
+      {
+        sides.First[e][seen] = static_cast<Id>(t) * 3 + k;
+      }
+      sides.Count[e] = static_cast<unsigned char>(std::min(seen + 1, 3));
+    }
+  }
+  return sides;
+}
+
 std::vector<double> dihedralCosines(const std::vector<glm::dvec3>& points,
   const std::vector<Triangle>& triangles, const EdgeTable& table)
 {
+  return dihedralCosines(points, triangles, edgeSidesOf(triangles, table));
+}
+
+std::vector<double> dihedralCosines(const std::vector<glm::dvec3>& points,
+  const std::vector<Triangle>& triangles, const EdgeSides& sides, const ParallelFor& parallelFor)
+{
   // Each triangle's unit normal once (an edge's two triangles each have
-  // three edges).
+  // three edges); NaN-free zero for a triangle that cannot be used.
   std::vector<glm::dvec3> faceNormals(triangles.size());
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-  {
-    const Triangle& tri = triangles[t];
-    const glm::dvec3& a = points[static_cast<std::size_t>(tri[0])];
-    faceNormals[t] = safeNormalize(glm::cross(
-      points[static_cast<std::size_t>(tri[1])] - a, points[static_cast<std::size_t>(tri[2])] - a));
-  }
-  // One pass over the sides, in triangle order: an edge's cosine is taken
-  // when its second side comes, against its first, and dropped if a third
-  // comes. (A pass over the edges reading both triangles of each was twice
-  // as slow at 1.3M triangles: two scattered reads per edge instead of one.)
-  const std::size_t edgeCount = table.edgeCount();
-  std::vector<Id> firstSide(edgeCount, -1);
-  std::vector<unsigned char> sides(edgeCount, 0); // counted up to 3
-  std::vector<double> cosines(edgeCount, std::nan(""));
-  for (std::size_t t = 0; t < triangles.size(); ++t)
-  {
-    const Triangle& b = triangles[t];
-    const bool usable = !hasRepeatedCorner(b) && faceNormals[t] != glm::dvec3(0.0);
-    for (int kb = 0; kb < 3; ++kb)
+  parallelFor(triangles.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
     {
-      const std::size_t e = static_cast<std::size_t>(table.sideEdge(static_cast<Id>(t), kb));
-      const unsigned char seen = sides[e];
-      sides[e] = static_cast<unsigned char>(std::min(seen + 1, 3));
-      if (seen == 0)
+      const Triangle& tri = triangles[t];
+      const glm::dvec3& a = points[static_cast<std::size_t>(tri[0])];
+      faceNormals[t] = hasRepeatedCorner(tri)
+        ? glm::dvec3(0.0)
+        : safeNormalize(glm::cross(points[static_cast<std::size_t>(tri[1])] - a,
+            points[static_cast<std::size_t>(tri[2])] - a));
+    }
+  });
+  const std::size_t edgeCount = sides.Count.size();
+  std::vector<double> cosines(edgeCount);
+  parallelFor(edgeCount, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t e = begin; e < end; ++e)
+    {
+      cosines[e] = std::nan("");
+      if (sides.Count[e] != 2)
       {
-        firstSide[e] = usable ? static_cast<Id>(t) * 3 + kb : -1;
         continue;
       }
-      if (seen == 2)
-      {
-        cosines[e] = std::nan(""); // not between exactly two triangles
-      }
-      if (seen != 1 || !usable || firstSide[e] < 0)
+      const Id first = sides.First[e][0];
+      const Id second = sides.First[e][1];
+      const std::size_t t0 = static_cast<std::size_t>(first / 3);
+      const std::size_t t1 = static_cast<std::size_t>(second / 3);
+      const glm::dvec3& n0 = faceNormals[t0];
+      const glm::dvec3& n1 = faceNormals[t1];
+      if (n0 == glm::dvec3(0.0) || n1 == glm::dvec3(0.0))
       {
         continue;
       }
-      const std::size_t t0 = static_cast<std::size_t>(firstSide[e] / 3);
-      const int ka = static_cast<int>(firstSide[e] % 3);
       // Both triangles walking the edge the same way means one of them is
       // turned over: compare it the right way up, or every edge would count.
-      const glm::dvec3 n1 =
-        triangles[t0][static_cast<std::size_t>(ka)] == b[static_cast<std::size_t>(kb)]
-        ? -faceNormals[t]
-        : faceNormals[t];
-      cosines[e] = glm::dot(faceNormals[t0], n1);
+      const bool sameWay = triangles[t0][static_cast<std::size_t>(first % 3)] ==
+        triangles[t1][static_cast<std::size_t>(second % 3)];
+      cosines[e] = glm::dot(n0, sameWay ? -n1 : n1);
     }
-  }
+  });
   return cosines;
 }
 
@@ -125,42 +142,38 @@ std::vector<FeatureEdge> flatSidedCreases(const std::vector<glm::dvec3>& points,
 {
   const EdgeTable built = given ? EdgeTable() : EdgeTable(triangles);
   const EdgeTable& table = given ? *given : built;
-  return flatSidedCreases(
-    dihedralCosines(points, triangles, table), triangles.size(), table, angleDegrees);
+  const EdgeSides sides = edgeSidesOf(triangles, table);
+  return flatSidedCreases(dihedralCosines(points, triangles, sides), sides, table, angleDegrees);
 }
 
 std::vector<FeatureEdge> flatSidedCreases(const std::vector<double>& cosines,
-  std::size_t triangleCount, const EdgeTable& table, double angleDegrees)
+  const EdgeSides& sides, const EdgeTable& table, double angleDegrees,
+  const ParallelFor& parallelFor)
 {
   const double cosLimit = cosineOfDegrees(angleDegrees);
   const double cosFlat = cosineOfDegrees(FlatNeighbourDegrees);
   // Triangles lying flat against a neighbour across some edge.
+  const std::size_t triangleCount = table.sideCount() / 3;
   std::vector<unsigned char> flat(triangleCount, 0);
-  for (std::size_t t = 0; t < triangleCount; ++t)
-  {
-    for (int k = 0; k < 3; ++k)
+  parallelFor(triangleCount, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
     {
-      if (cosines[static_cast<std::size_t>(table.sideEdge(static_cast<Id>(t), k))] >= cosFlat)
+      for (int k = 0; k < 3; ++k)
       {
-        flat[t] = 1;
+        if (cosines[static_cast<std::size_t>(table.sideEdge(static_cast<Id>(t), k))] >= cosFlat)
+        {
+          flat[t] = 1;
+        }
       }
     }
-  }
-  std::vector<unsigned char> sharp(table.edgeCount(), 0);
-  std::vector<int> flatSides(table.edgeCount(), 0);
-  for (std::size_t t = 0; t < triangleCount; ++t)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const std::size_t e = static_cast<std::size_t>(table.sideEdge(static_cast<Id>(t), k));
-      sharp[e] = cosines[e] < cosLimit ? 1 : 0;
-      flatSides[e] += flat[t];
-    }
-  }
+  });
+  // Sharp edges between two flat triangles (a cosine is NaN unless the edge
+  // has exactly two sides).
   std::vector<FeatureEdge> result;
   for (std::size_t e = 0; e < table.edgeCount(); ++e)
   {
-    if (sharp[e] && flatSides[e] == 2)
+    if (cosines[e] < cosLimit && flat[static_cast<std::size_t>(sides.First[e][0] / 3)] &&
+      flat[static_cast<std::size_t>(sides.First[e][1] / 3)])
     {
       result.emplace_back(table.edge(static_cast<Id>(e)).low, table.edge(static_cast<Id>(e)).high);
     }

@@ -22,9 +22,11 @@
 
 #include "HermiteCurve.h"
 #include "MeshTopology.h"
+#include "ParallelFor.h"
 
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <utility>
 #include <vector>
 
@@ -61,18 +63,34 @@ constexpr double FlatNeighbourDegrees = 0.5;
 std::vector<FeatureEdge> flatSidedCreases(const std::vector<glm::dvec3>& points,
   const std::vector<Triangle>& triangles, double angleDegrees, const EdgeTable* table = nullptr);
 
+/// Each edge's first two sides (3t + k, in triangle order; -1 where there
+/// are fewer) and how many sides it has, counted up to 3: the topology the
+/// dihedral angles read, kept by a caller that asks for them again over
+/// moved points.
+struct EdgeSides
+{
+  std::vector<std::array<Id, 2>> First;
+  std::vector<unsigned char> Count;
+};
+EdgeSides edgeSidesOf(const std::vector<Triangle>& triangles, const EdgeTable& table);
+
 /// The cosine of every edge's dihedral angle (between its two triangles'
 /// normals, both the right way up), indexed by the edge ids of `table`, the
-/// edge table of `triangles`; NaN for an edge that is not between exactly
-/// two triangles of non-zero area. Both tests above start from these: a
-/// caller asking both computes them once and passes them to the forms
-/// below, which give the same edges.
+/// edge table of `triangles` (or of the table `sides` was made from); NaN
+/// for an edge that is not between exactly two triangles of non-zero area.
+/// Both tests above start from these: a caller asking both computes them
+/// once and passes them to the forms below, which give the same edges.
+/// The same values whatever parallelFor's split.
 std::vector<double> dihedralCosines(const std::vector<glm::dvec3>& points,
   const std::vector<Triangle>& triangles, const EdgeTable& table);
+std::vector<double> dihedralCosines(const std::vector<glm::dvec3>& points,
+  const std::vector<Triangle>& triangles, const EdgeSides& sides,
+  const ParallelFor& parallelFor = serialFor);
 std::vector<FeatureEdge> featureEdgesByAngle(
   const std::vector<double>& cosines, const EdgeTable& table, double angleDegrees);
 std::vector<FeatureEdge> flatSidedCreases(const std::vector<double>& cosines,
-  std::size_t triangleCount, const EdgeTable& table, double angleDegrees);
+  const EdgeSides& sides, const EdgeTable& table, double angleDegrees,
+  const ParallelFor& parallelFor = serialFor);
 
 /// The end tangent along `chord` whose unit direction is `direction`, with the
 /// length that makes the Hermite segment approximate a circular arc. A zero

@@ -29,10 +29,11 @@
 // any amount). The kept ones come from the prepared mesh's TriangleGrid
 // when it has one; without it, from one pass over the triangles against a
 // grid of the boxes the check asks about, which costs less than building
-// the mesh's grid (about a sixth at 1.3M triangles) and so serves a mesh
-// smoothed once (a filter's run, a deforming mesh's frame). Either way a
-// box's candidates are the same set, taken in ascending order, so the
-// findings do not depend on which.
+// the mesh's grid and so serves a mesh smoothed once (a filter's run, a
+// deforming mesh's frame). Each item's candidates are then narrowed to the
+// triangles whose boxes, where they are now, meet its own (a grid of
+// earlier positions answers with a slack), so both ways give every item the
+// same candidates, in ascending order, and the same findings.
 //
 // Invariant the pass builds on: an output in which every re-meshed triangle
 // is cut along the chord between silhouette points on its straight edges,

@@ -33,6 +33,8 @@ public:
   const Edge& edge(Id e) const { return this->Edges[static_cast<std::size_t>(e)]; }
   /// Edge id of side k of triangle t; side k joins corner k to corner (k+1)%3.
   Id sideEdge(Id t, int k) const { return this->SideEdges[static_cast<std::size_t>(t) * 3 + k]; }
+  /// Three per triangle.
+  std::size_t sideCount() const { return this->SideEdges.size(); }
 
   /// The table of the same triangles with those marked in `reversed` turned
   /// over as oriented() turns them (corners 1 and 2 exchanged): the same

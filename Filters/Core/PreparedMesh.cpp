@@ -379,40 +379,30 @@ bool PreparedMesh::adoptTriangleGridOfMoved(const PreparedMesh& earlier)
   {
     return false;
   }
-  if (this->takeTriangleGrid(earlier))
-  {
-    return true;
-  }
-  // A deforming mesh's frames are one sequence: the count goes on, and a
-  // grid the moves outran is not built again (scanning costs less).
-  this->Grid->Frames = earlier.Grid->Frames.load();
-  this->Grid->Outrun = earlier.Grid->Outrun || earlier.Grid->Built;
-  return false;
-}
-
-bool PreparedMesh::takeTriangleGrid(const PreparedMesh& earlier)
-{
-  if (!earlier.Grid->Built || earlier.Grid->Grid.empty())
-  {
-    return false;
-  }
-  // Each coordinate's move must be known to be small: a NaN (a point that
-  // was or is not finite, which the grid left out or would) refuses.
-  const double limit = 0.5 * earlier.Grid->Grid.cellSize() - earlier.GridSlack;
-  double moved = 0.0;
-  for (std::size_t i = 0; i < this->Points.size(); ++i)
+  const LazyGrid& before = *earlier.Grid;
+  double step = 0.0; // the largest coordinate change of any point; NaN for a non-finite one
+  for (std::size_t i = 0; i < this->Points.size() && !std::isnan(step); ++i)
   {
     const glm::dvec3 d = glm::abs(this->Points[i] - earlier.Points[i]);
-    if (!(d.x <= limit && d.y <= limit && d.z <= limit))
-    {
-      return false;
-    }
-    moved = std::max({ moved, d.x, d.y, d.z });
+    step = std::isnan(d.x + d.y + d.z) ? std::nan("") : std::max({ step, d.x, d.y, d.z });
   }
-  const double slack = earlier.GridSlack + moved;
-  this->Grid = earlier.Grid;
-  this->GridSlack = slack;
-  return true;
+  const bool built = before.Built && !before.Grid.empty();
+  const double half = built ? 0.5 * before.Grid.cellSize() : 0.0;
+  // Each coordinate's move must be known to be small: a NaN (a point that
+  // was or is not finite, which the grid left out or would) refuses.
+  if (built && step <= half - earlier.GridSlack)
+  {
+    this->Grid = earlier.Grid;
+    this->GridSlack = earlier.GridSlack + step;
+    return true;
+  }
+  // Not adopted. A deforming mesh's frames are one sequence: the count goes
+  // on; a grid that this one move outran is not built again (scanning
+  // costs less), one that the moves outran only added up is.
+  this->Grid = std::make_shared<LazyGrid>(); // never a copy's shared state
+  this->Grid->Frames = before.Frames.load();
+  this->Grid->Outrun = built ? !(step <= half) : before.Outrun.load();
+  return false;
 }
 
 bool PreparedMesh::findSilhouetteTriangles(

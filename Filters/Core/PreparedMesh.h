@@ -140,16 +140,18 @@ public:
   /// mesh smoothed once (a filter's run) never builds it. From the second
   /// frame on, the grid (built then). The frames of a deforming mesh count
   /// as one mesh's (adoptTriangleGrid carries the count): its second frame
-  /// builds the grid, later ones adopt it while the points move little, and
-  /// once the moves outrun it, they scan.
+  /// builds the grid, later ones adopt it while the points move little; when
+  /// the moves added up outrun it, the next frame builds it anew, and when a
+  /// single move outruns it, the frames scan from then on.
   const TriangleGrid* foldGuardGridForFrame() const;
   /// Takes `earlier`'s grid, if it has been built, when this mesh has the
   /// same triangles over moved points (a deforming mesh) and the points
   /// moved little: the slack (earlier's plus the largest coordinate change
   /// of any point) stays under half a grid cell, so queries stay about as
   /// cheap. Building the grid was most of a deforming frame's fold check
-  /// (about 150 ms at 1.3M triangles). False otherwise, with only the count
-  /// of frames taken over (foldGuardGridForFrame).
+  /// (about 150 ms at 1.3M triangles). False otherwise, taking over only
+  /// the count of frames and whether a single move outran a grid
+  /// (foldGuardGridForFrame).
   bool adoptTriangleGrid(const PreparedMesh& earlier);
   /// The silhouette triangles of `view` from the triangle hierarchy of its
   /// projection (SilhouetteTriangleHierarchy.h), built on the second call
@@ -166,8 +168,6 @@ private:
     NormalWeighting weighting);
   /// adoptTriangleGrid() once the triangles are known to be the same.
   bool adoptTriangleGridOfMoved(const PreparedMesh& earlier);
-  /// Its grid part: takes earlier's grid when built and the moves allow.
-  bool takeTriangleGrid(const PreparedMesh& earlier);
   // The constructor's steps, in order.
   void splitAtFeatures();
   void findBoundaries();
@@ -203,7 +203,7 @@ private:
     std::once_flag Once;
     std::atomic<bool> Built{ false };
     std::atomic<int> Frames{ 0 };      // foldGuardGridForFrame's calls
-    std::atomic<bool> Outrun{ false }; // moves outran an earlier grid
+    std::atomic<bool> Outrun{ false }; // a single move outran an earlier grid
     TriangleGrid Grid;
   };
   std::shared_ptr<LazyGrid> Grid = std::make_shared<LazyGrid>();

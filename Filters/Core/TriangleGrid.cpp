@@ -87,13 +87,15 @@ void TriangleGrid::build(std::size_t cellBudget)
   const glm::dvec3 size = high - low;
   double cell = extentSum / static_cast<double>(used);
   const double largest = std::max({ size.x, size.y, size.z });
-  if (!(cell > 0.0) || !std::isfinite(cell))
-  {
-    cell = largest > 0.0 ? largest : 1.0;
-  }
   // At most about 4 cells per triangle.
   const double budget =
     std::max(4.0 * static_cast<double>(used) + 1.0, static_cast<double>(cellBudget));
+  if (!(cell > 0.0) || !std::isfinite(cell))
+  {
+    // Boxes without extent (points): cells as small as the budget allows,
+    // not one cell for the whole extent (every query would test every box).
+    cell = largest > 0.0 ? largest / std::cbrt(budget) : 1.0;
+  }
   auto cellsFor = [&](double c) {
     return (std::floor(size.x / c) + 1) * (std::floor(size.y / c) + 1) *
       (std::floor(size.z / c) + 1);

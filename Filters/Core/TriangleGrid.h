@@ -63,7 +63,8 @@ public:
 private:
   void build(std::size_t cellBudget = 0);
   /// The cell along `axis` that coordinate x falls in, clamped to the grid.
-  /// Monotonic in x (a product with a positive constant, then floor), which
+  /// Monotonic in x (a product with a positive constant, then truncation of
+  /// a value that is not negative), which
   /// is all that queries need: a box that meets another has a cell range
   /// that meets the other's.
   int cellIndex(double x, int axis) const

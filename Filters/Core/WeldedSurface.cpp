@@ -50,13 +50,13 @@ bool hasFaceNormals(const std::vector<glm::dvec3>& points, const std::vector<Tri
 
 WeldedSurface::WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
   const std::vector<glm::dvec3>& normals, const std::vector<FeatureEdge>& markedFeatures,
-  const SurfaceOptions& options)
+  const SurfaceOptions& options, const ParallelFor& parallelFor)
   : InputPointCount(points.size())
   , InputTriangles(std::move(triangles))
 {
   const GivenNormals given = this->weldAndOrient(points, normals, options);
   this->Prepared = this->prepareGeometry(
-    std::move(points), normals, given, markedFeatures, options, this->Statistics);
+    std::move(points), normals, given, markedFeatures, options, this->Statistics, parallelFor);
   this->mapOutputPoints();
   this->indexOutputsByPrepared();
 }
@@ -119,6 +119,7 @@ WeldedSurface::GivenNormals WeldedSurface::weldAndOrient(const std::vector<glm::
   }
   this->Welded = std::move(welded);
   this->Table = std::move(table);
+  this->Sides = edgeSidesOf(this->Welded, this->Table);
   return given;
 }
 
@@ -245,7 +246,8 @@ WeldedSurface::GivenNormals WeldedSurface::examineNormals(const std::vector<glm:
 std::unique_ptr<PreparedMesh> WeldedSurface::prepareGeometry(std::vector<glm::dvec3> points,
   const std::vector<glm::dvec3>& normals, const GivenNormals& given,
   const std::vector<FeatureEdge>& markedFeatures, const SurfaceOptions& options,
-  SurfaceStatistics& statistics, PreparedMesh* reusable, bool* reused) const
+  SurfaceStatistics& statistics, const ParallelFor& parallelFor, PreparedMesh* reusable,
+  bool* reused) const
 {
   statistics.FlatShadedNormals = given.FlatShaded;
   const std::vector<Triangle>& welded = this->Welded;
@@ -323,12 +325,12 @@ std::unique_ptr<PreparedMesh> WeldedSurface::prepareGeometry(std::vector<glm::dv
   // Both tests read the dihedral angles: computed once (a sixth of a
   // deforming mesh's frame at 1.3M triangles when computed for each).
   const std::vector<double> cosines = options.DetectFlatCreases || options.DetectFeatures
-    ? dihedralCosines(points, welded, this->Table)
+    ? dihedralCosines(points, welded, this->Sides, parallelFor)
     : std::vector<double>{};
   if (options.DetectFlatCreases)
   {
-    const std::vector<FeatureEdge> creases =
-      flatSidedCreases(cosines, welded.size(), this->Table, options.FlatCreaseAngleDegrees);
+    const std::vector<FeatureEdge> creases = flatSidedCreases(
+      cosines, this->Sides, this->Table, options.FlatCreaseAngleDegrees, parallelFor);
     statistics.FlatCreaseEdgeCount = creases.size();
     features.insert(features.end(), creases.begin(), creases.end());
   }
@@ -360,7 +362,7 @@ std::unique_ptr<PreparedMesh> WeldedSurface::prepareGeometry(std::vector<glm::dv
 
 bool WeldedSurface::movePoints(std::vector<glm::dvec3> points,
   const std::vector<glm::dvec3>& normals, const std::vector<FeatureEdge>& markedFeatures,
-  const SurfaceOptions& options)
+  const SurfaceOptions& options, const ParallelFor& parallelFor)
 {
   const std::size_t n = this->InputPointCount;
   if (points.size() != n || (!normals.empty() && normals.size() != n) ||
@@ -383,7 +385,7 @@ bool WeldedSurface::movePoints(std::vector<glm::dvec3> points,
   SurfaceStatistics statistics = this->Statistics;
   bool reused = false;
   std::unique_ptr<PreparedMesh> prepared = this->prepareGeometry(std::move(points), normals, given,
-    markedFeatures, options, statistics, this->Prepared.get(), &reused);
+    markedFeatures, options, statistics, parallelFor, this->Prepared.get(), &reused);
   // The output's points and their copies follow from the prepared
   // triangles; where the features moved, so did they: build anew.
   if (!reused &&

@@ -112,9 +112,11 @@ class WeldedSurface
 public:
   /// `normals` one per point or empty; `markedFeatures` pairs of point ids
   /// (line cells along triangle edges). Points must be finite.
+  /// `parallelFor` runs the feature tests' loops (the same surface whatever
+  /// its split).
   WeldedSurface(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
     const std::vector<glm::dvec3>& normals, const std::vector<FeatureEdge>& markedFeatures,
-    const SurfaceOptions& options);
+    const SurfaceOptions& options, const ParallelFor& parallelFor = serialFor);
 
   /// The same surface with its points moved, for a deforming mesh (a time
   /// series: new points, the same cells): the welding, the orientation and
@@ -129,7 +131,8 @@ public:
   /// surface is the one the constructor makes from the same arguments, as
   /// long as the orientation it chose still holds (it is not checked).
   bool movePoints(std::vector<glm::dvec3> points, const std::vector<glm::dvec3>& normals,
-    const std::vector<FeatureEdge>& markedFeatures, const SurfaceOptions& options);
+    const std::vector<FeatureEdge>& markedFeatures, const SurfaceOptions& options,
+    const ParallelFor& parallelFor = serialFor);
 
   const PreparedMesh& prepared() const { return *this->Prepared; }
   const SurfaceStatistics& statistics() const { return this->Statistics; }
@@ -202,7 +205,8 @@ private:
   std::unique_ptr<PreparedMesh> prepareGeometry(std::vector<glm::dvec3> points,
     const std::vector<glm::dvec3>& normals, const GivenNormals& given,
     const std::vector<FeatureEdge>& markedFeatures, const SurfaceOptions& options,
-    SurfaceStatistics& statistics, PreparedMesh* reusable = nullptr, bool* reused = nullptr) const;
+    SurfaceStatistics& statistics, const ParallelFor& parallelFor, PreparedMesh* reusable = nullptr,
+    bool* reused = nullptr) const;
   Id outputOfPreparedCorner(std::size_t t, Id prepared) const;
   /// assemble() over the prepared triangles `only` (ascending), or over all
   /// of them when `only` is null.
@@ -227,6 +231,7 @@ private:
   std::vector<Id> Vertex;
   std::vector<Triangle> Welded;
   EdgeTable Table;
+  EdgeSides Sides; // of Table, for the dihedral angles of every move
   std::vector<Id> Components;
   std::unique_ptr<PreparedMesh> Prepared;
   SurfaceStatistics Statistics;

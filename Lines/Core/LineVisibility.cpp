@@ -342,9 +342,10 @@ double OcclusionMesh::toleranceAt(
   {
     return rule.Tolerance; // on no triangle: the plain rule
   }
-  // Never down to the contact distance, within which every hit is ignored.
-  return std::max(
-    std::min(rule.Tolerance, rule.LocalToleranceFactor * longest), 2.0 * rule.Contact);
+  // Never down to the contact distance, within which every hit is ignored,
+  // and never above the mesh-wide tolerance.
+  return std::min(
+    rule.Tolerance, std::max(rule.LocalToleranceFactor * longest, 2.0 * rule.Contact));
 }
 
 bool OcclusionMesh::hides(

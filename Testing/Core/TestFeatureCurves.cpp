@@ -8,9 +8,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <map>
 #include <random>
 #include <set>
+#include <thread>
 
 using namespace silsmooth;
 
@@ -320,4 +322,68 @@ TEST(FeatureCurves, WithoutFeaturesNothingIsSplit)
   EXPECT_EQ(mesh.points().size(), points.size());
   EXPECT_TRUE(mesh.featureTriangles().empty());
   EXPECT_EQ(mesh.triangles(), triangles);
+}
+
+TEST(FeatureCurves, DihedralAnglesAreTheSameOnAnySplit)
+{
+  // A bumpy, partly flipped sphere with repeated and degenerate triangles
+  // and a flat patch: the cosines (bit for bit, NaN where an edge is not
+  // between two usable triangles) and the flat-sided creases do not depend
+  // on how the loops are split over threads.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> bump(-0.02, 0.02);
+  const int rings = 24;
+  const int sectors = 48;
+  for (int r = 0; r <= rings; ++r)
+  {
+    for (int k = 0; k < sectors; ++k)
+    {
+      const double theta = 3.14159265358979 * r / rings;
+      const double phi = 2.0 * 3.14159265358979 * k / sectors;
+      const double radius = r < 6 ? 1.0 : 1.0 + bump(rng); // a smooth cap, a bumpy rest
+      points.emplace_back(radius * std::sin(theta) * std::cos(phi),
+        radius * std::sin(theta) * std::sin(phi), r < 3 ? 0.9 : radius * std::cos(theta));
+    }
+  }
+  auto at = [&](int r, int k) {
+    return static_cast<Id>(r * sectors + (k % sectors));
+  };
+  for (int r = 0; r < rings; ++r)
+  {
+    for (int k = 0; k < sectors; ++k)
+    {
+      triangles.push_back({ { at(r, k), at(r + 1, k), at(r + 1, k + 1) } });
+      triangles.push_back({ { at(r, k), at(r + 1, k + 1), at(r, k + 1) } });
+    }
+  }
+  for (std::size_t t = 0; t < triangles.size(); t += 11)
+  {
+    std::swap(triangles[t][1], triangles[t][2]);
+  }
+  triangles.push_back(triangles[40]);
+  triangles[77][2] = triangles[77][0];
+  const EdgeTable table(triangles);
+  const EdgeSides sides = edgeSidesOf(triangles, table);
+  auto threaded = [](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
+    std::vector<std::thread> pool;
+    const std::size_t chunk = count / 3 + 1;
+    for (std::size_t begin = 0; begin < count; begin += chunk)
+    {
+      pool.emplace_back(body, begin, std::min(count, begin + chunk));
+    }
+    for (std::thread& t : pool)
+    {
+      t.join();
+    }
+  };
+  const std::vector<double> serial = dihedralCosines(points, triangles, table);
+  const std::vector<double> split = dihedralCosines(points, triangles, sides, threaded);
+  ASSERT_EQ(serial.size(), split.size());
+  EXPECT_EQ(std::memcmp(serial.data(), split.data(), serial.size() * sizeof(double)), 0);
+  EXPECT_GT(std::count_if(serial.begin(), serial.end(), [](double c) { return std::isnan(c); }), 0);
+  const std::vector<FeatureEdge> creases = flatSidedCreases(points, triangles, 20.0, &table);
+  EXPECT_EQ(flatSidedCreases(split, sides, table, 20.0, threaded), creases);
+  EXPECT_FALSE(creases.empty()); // the flat cap's rim
 }

@@ -608,8 +608,9 @@ TEST(WeldedSurface, SmallMovesKeepTheFoldGuardsGridAndSmoothAsAFreshSurface)
   // A torus deformed a little each frame, as a time series is: the moved
   // surface keeps the fold guard's grid (with a slack) while the points
   // move under half a grid cell in all, and every frame smooths exactly as a
-  // surface built from the moved points (whose grid is fresh). A large move
-  // builds the grid anew.
+  // surface built from the moved points (whose grid is fresh). When the
+  // small moves add up past half a cell, the next frame builds the grid
+  // anew; after a single large move, frames scan instead.
   std::vector<glm::dvec3> points;
   std::vector<Triangle> triangles;
   coretest::torus(48, 24, 0.35, points, triangles);
@@ -620,7 +621,8 @@ TEST(WeldedSurface, SmallMovesKeepTheFoldGuardsGridAndSmoothAsAFreshSurface)
   smoothSilhouettes(moving.prepared(), view, {}); // the second frame builds the grid
   EXPECT_TRUE(moving.prepared().hasTriangleGrid());
   int adopted = 0;
-  for (int frame = 1; frame <= 6; ++frame)
+  int rebuilt = 0;
+  for (int frame = 1; frame <= 20; ++frame)
   {
     std::vector<glm::dvec3> moved = points;
     for (glm::dvec3& p : moved)
@@ -629,16 +631,20 @@ TEST(WeldedSurface, SmallMovesKeepTheFoldGuardsGridAndSmoothAsAFreshSurface)
         0.004 * frame * glm::dvec3(std::sin(5.0 * p.y), std::cos(4.0 * p.x), std::sin(3.0 * p.x));
     }
     ASSERT_TRUE(moving.movePoints(moved, {}, {}, plainOptions()));
-    adopted += moving.prepared().triangleGridSlack() > 0.0 ? 1 : 0;
+    const bool adopting = moving.prepared().triangleGridSlack() > 0.0;
+    adopted += adopting ? 1 : 0;
     const WeldedSurface fresh(moved, triangles, {}, {}, plainOptions());
     EXPECT_EQ(fresh.prepared().triangleGridSlack(), 0.0);
     const SurfaceFrame a = moving.assemble(smoothSilhouettes(moving.prepared(), view, {}));
+    EXPECT_TRUE(moving.prepared().hasTriangleGrid()) << "frame " << frame;
+    rebuilt += adopting ? 0 : 1;
     const SurfaceFrame b = fresh.assemble(smoothSilhouettes(fresh.prepared(), view, {}));
     ASSERT_EQ(a.Triangles, b.Triangles) << "frame " << frame;
     EXPECT_EQ(a.Moved, b.Moved);
     EXPECT_GT(a.Added.size(), 0u);
   }
   EXPECT_GE(adopted, 2); // the first small moves keep the grid
+  EXPECT_GE(rebuilt, 1); // and they add up past it
   std::vector<glm::dvec3> far = points;
   for (glm::dvec3& p : far)
   {
@@ -661,6 +667,25 @@ TEST(WeldedSurface, SmallMovesKeepTheFoldGuardsGridAndSmoothAsAFreshSurface)
     const SurfaceFrame b = fresh.assemble(smoothSilhouettes(fresh.prepared(), view, {}));
     EXPECT_EQ(a.Triangles, b.Triangles) << "outrun frame " << frame;
   }
+}
+
+TEST(TriangleGrid, BoxesWithoutExtentGetSmallCells)
+{
+  // Points as boxes (the fold guard asks about the triangles around moved
+  // points): cells as small as the budget of 4 per box allows, not one cell
+  // for the whole extent, where every query would test every box.
+  std::vector<glm::dvec3> points;
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int i = 0; i < 1000; ++i)
+  {
+    points.emplace_back(u(rng), u(rng), u(rng));
+  }
+  const TriangleGrid grid(points, points);
+  EXPECT_LT(grid.cellSize(), 0.1); // about 1 / cbrt(4001)
+  std::vector<Id> found;
+  grid.query(points[17], points[17], found);
+  EXPECT_EQ(found, std::vector<Id>{ 17 });
 }
 
 TEST(TriangleGrid, AGridOfEarlierBoxesNeedsItsSlack)

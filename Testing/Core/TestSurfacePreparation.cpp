@@ -812,15 +812,9 @@ TEST(PreparedMesh, AMovedMeshIsTheMeshBuiltAnew)
   {
     p.z *= 1.1;
   }
-  const std::unique_ptr<PreparedMesh> moved =
-    PreparedMesh::moved(earlier, std::move(pulled), {}, features, {}, table, weighting);
+  const std::unique_ptr<PreparedMesh> moved = PreparedMesh::moved(
+    earlier, std::vector<glm::dvec3>(pulled), {}, features, {}, table, weighting);
   ASSERT_TRUE(moved);
-  pulled = points;
-  pulled[static_cast<std::size_t>(at(6, 0))].z += 2.0;
-  for (glm::dvec3& p : pulled)
-  {
-    p.z *= 1.1;
-  }
   const PreparedMesh fresh(pulled, triangles, {}, features, {}, &table, weighting);
   ASSERT_GT(fresh.features().curvedCount(), 0u);
   EXPECT_GT(fresh.points().size(), points.size()); // split into smooth groups

@@ -669,6 +669,58 @@ TEST(WeldedSurface, SmallMovesKeepTheFoldGuardsGridAndSmoothAsAFreshSurface)
   }
 }
 
+TEST(EdgeTable, EdgesAreTheSortedDistinctSidesWhateverTheIds)
+{
+  // The table numbers the distinct (low, high) sides in sorted order, and
+  // gives every side its edge. Checked against a map on random triangles
+  // (repeated corners among them) with point ids of a mesh's range (the
+  // bucketed path), with a negative id and with a huge one (the sorted
+  // path).
+  std::mt19937 rng(11);
+  for (const Id offset : { Id{ 0 }, Id{ -5 }, Id{ 3000000000 } })
+  {
+    std::uniform_int_distribution<Id> id(0, 60);
+    std::vector<Triangle> triangles;
+    for (int t = 0; t < 400; ++t)
+    {
+      triangles.push_back({ { id(rng), id(rng), id(rng) } });
+    }
+    triangles[7][2] = offset; // one corner out of the common range
+    const EdgeTable table(triangles);
+    std::map<std::pair<Id, Id>, Id> numbers;
+    for (const Triangle& t : triangles)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const Id a = t[static_cast<std::size_t>(k)];
+        const Id b = t[static_cast<std::size_t>((k + 1) % 3)];
+        numbers.emplace(std::make_pair(std::min(a, b), std::max(a, b)), 0);
+      }
+    }
+    Id next = 0;
+    for (auto& [key, number] : numbers)
+    {
+      number = next++;
+    }
+    ASSERT_EQ(table.edgeCount(), numbers.size()) << "offset " << offset;
+    for (const auto& [key, number] : numbers)
+    {
+      EXPECT_EQ(table.edge(number).low, key.first);
+      EXPECT_EQ(table.edge(number).high, key.second);
+    }
+    for (std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const Id a = triangles[t][static_cast<std::size_t>(k)];
+        const Id b = triangles[t][static_cast<std::size_t>((k + 1) % 3)];
+        EXPECT_EQ(table.sideEdge(static_cast<Id>(t), k),
+          numbers.at(std::make_pair(std::min(a, b), std::max(a, b))));
+      }
+    }
+  }
+}
+
 TEST(TriangleGrid, BoxesWithoutExtentGetSmallCells)
 {
   // Points as boxes (the fold guard asks about the triangles around moved

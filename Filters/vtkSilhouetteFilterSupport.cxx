@@ -191,14 +191,14 @@ void ReadVectors(vtkDataArray* array, vtkIdType count, std::vector<glm::dvec3>& 
       out[static_cast<std::size_t>(i)] = glm::dvec3(v[0], v[1], v[2]);
     }
   };
-  if (vtkDoubleArray::FastDownCast(array))
+  if (vtkDoubleArray* doubles = vtkDoubleArray::FastDownCast(array))
   {
-    copy(vtkDoubleArray::FastDownCast(array)->GetPointer(0));
+    copy(doubles->GetPointer(0));
     return;
   }
-  if (vtkFloatArray::FastDownCast(array))
+  if (vtkFloatArray* floats = vtkFloatArray::FastDownCast(array))
   {
-    copy(vtkFloatArray::FastDownCast(array)->GetPointer(0));
+    copy(floats->GetPointer(0));
     return;
   }
   for (vtkIdType i = 0; i < count; ++i)

@@ -100,19 +100,21 @@ struct Item
   long Index = -1;
 };
 
+bool finitePoint(const glm::dvec3& p)
+{
+  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+}
+
 // The triangles of the mesh whose boxes meet each of the boxes [lows[b],
 // highs[b]] (ascending ids per box; a box with a corner that is not finite
 // meets none): from the mesh's grid (each box widened by its slack), or by
 // one pass over the triangles against a grid of the boxes. Triangles with a
-// repeated or non-finite corner are left out either way, as the grid leaves
-// them out.
+// repeated or non-finite corner are left out either way
+// (TriangleGrid::boxOf).
 std::vector<std::vector<Id>> trianglesMeeting(const FoldGuardMesh& mesh,
   const std::vector<glm::dvec3>& lows, const std::vector<glm::dvec3>& highs,
   const FoldGuardParallelFor& parallelFor)
 {
-  auto finitePoint = [](const glm::dvec3& p) {
-    return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-  };
   const std::size_t count = lows.size();
   std::vector<std::vector<Id>> found(count);
   if (mesh.Grid)
@@ -149,20 +151,12 @@ std::vector<std::vector<Id>> trianglesMeeting(const FoldGuardMesh& mesh,
     {
       for (std::size_t t = k * Block; t < std::min(triangleCount, (k + 1) * Block); ++t)
       {
-        const Triangle& tri = mesh.Triangles[t];
-        if (hasRepeatedCorner(tri))
+        glm::dvec3 low;
+        glm::dvec3 high;
+        if (!TriangleGrid::boxOf(mesh.Points, mesh.Triangles[t], low, high))
         {
           continue;
         }
-        const glm::dvec3& a = mesh.Points[static_cast<std::size_t>(tri[0])];
-        const glm::dvec3& b = mesh.Points[static_cast<std::size_t>(tri[1])];
-        const glm::dvec3& c = mesh.Points[static_cast<std::size_t>(tri[2])];
-        if (!finitePoint(a) || !finitePoint(b) || !finitePoint(c))
-        {
-          continue;
-        }
-        const glm::dvec3 low = glm::min(a, glm::min(b, c));
-        const glm::dvec3 high = glm::max(a, glm::max(b, c));
         boxes.query(low, high, meeting);
         for (const Id box : meeting)
         {
@@ -393,9 +387,6 @@ private:
   // not finite (TriangleGrid::query).
   bool finiteBox(std::size_t k) const
   {
-    auto finitePoint = [](const glm::dvec3& p) {
-      return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-    };
     return finitePoint(this->Lows[k]) && finitePoint(this->Highs[k]);
   }
 

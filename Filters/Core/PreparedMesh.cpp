@@ -380,13 +380,15 @@ bool PreparedMesh::adoptTriangleGridOfMoved(const PreparedMesh& earlier)
     return false;
   }
   const LazyGrid& before = *earlier.Grid;
-  double step = 0.0; // the largest coordinate change of any point; NaN for a non-finite one
-  for (std::size_t i = 0; i < this->Points.size() && !std::isnan(step); ++i)
+  const bool built = before.Built && !before.Grid.empty();
+  // The largest coordinate change of any point (NaN for a non-finite one),
+  // which only a grid to adopt asks for.
+  double step = 0.0;
+  for (std::size_t i = 0; built && i < this->Points.size() && !std::isnan(step); ++i)
   {
     const glm::dvec3 d = glm::abs(this->Points[i] - earlier.Points[i]);
     step = std::isnan(d.x + d.y + d.z) ? std::nan("") : std::max({ step, d.x, d.y, d.z });
   }
-  const bool built = before.Built && !before.Grid.empty();
   const double half = built ? 0.5 * before.Grid.cellSize() : 0.0;
   // Each coordinate's move must be known to be small: a NaN (a point that
   // was or is not finite, which the grid left out or would) refuses.

@@ -19,6 +19,25 @@ bool finite(const glm::dvec3& p)
 
 } // namespace
 
+bool TriangleGrid::boxOf(
+  const std::vector<glm::dvec3>& points, const Triangle& t, glm::dvec3& low, glm::dvec3& high)
+{
+  if (hasRepeatedCorner(t))
+  {
+    return false;
+  }
+  const glm::dvec3& a = points[static_cast<std::size_t>(t[0])];
+  const glm::dvec3& b = points[static_cast<std::size_t>(t[1])];
+  const glm::dvec3& c = points[static_cast<std::size_t>(t[2])];
+  if (!finite(a) || !finite(b) || !finite(c))
+  {
+    return false;
+  }
+  low = glm::min(a, glm::min(b, c));
+  high = glm::max(a, glm::max(b, c));
+  return true;
+}
+
 TriangleGrid::TriangleGrid(
   const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles)
   : Low(triangles.size(), glm::dvec3(HUGE_VAL))
@@ -26,20 +45,7 @@ TriangleGrid::TriangleGrid(
 {
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
-    const Triangle& tri = triangles[t];
-    if (hasRepeatedCorner(tri))
-    {
-      continue;
-    }
-    const glm::dvec3& a = points[static_cast<std::size_t>(tri[0])];
-    const glm::dvec3& b = points[static_cast<std::size_t>(tri[1])];
-    const glm::dvec3& c = points[static_cast<std::size_t>(tri[2])];
-    if (!finite(a) || !finite(b) || !finite(c))
-    {
-      continue;
-    }
-    this->Low[t] = glm::min(a, glm::min(b, c));
-    this->High[t] = glm::max(a, glm::max(b, c));
+    boxOf(points, triangles[t], this->Low[t], this->High[t]); // left empty when false
   }
   this->build();
 }

@@ -43,6 +43,12 @@ public:
   TriangleGrid(
     std::vector<glm::dvec3> low, std::vector<glm::dvec3> high, std::size_t cellBudget = 0);
 
+  /// The box a grid keeps for triangle `t` over `points`; false, and
+  /// `low` and `high` untouched, for a triangle with a repeated or
+  /// non-finite corner, which grids leave out.
+  static bool boxOf(
+    const std::vector<glm::dvec3>& points, const Triangle& t, glm::dvec3& low, glm::dvec3& high);
+
   /// Appends to `out` (cleared first) every triangle (or box) whose box meets the box
   /// [low, high], each once, in no particular order.
   void query(const glm::dvec3& low, const glm::dvec3& high, std::vector<Id>& out) const;

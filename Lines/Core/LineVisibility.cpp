@@ -218,19 +218,24 @@ double OcclusionMesh::distanceTo(const glm::dvec3& point, Id triangle) const
       this->Points[static_cast<std::size_t>(t[1])], this->Points[static_cast<std::size_t>(t[2])]));
 }
 
-std::vector<Id> OcclusionMesh::localSheet(
-  const glm::dvec3& point, double contact, double radius) const
+std::vector<Id> OcclusionMesh::trianglesUnder(const glm::dvec3& point, double contact) const
 {
-  std::vector<Id> sheet;
+  std::vector<Id> under;
   std::vector<Id> candidates;
   this->Grid.query(point - glm::dvec3(contact), point + glm::dvec3(contact), candidates);
   for (const Id c : candidates)
   {
     if (this->distanceTo(point, c) <= contact)
     {
-      sheet.push_back(c);
+      under.push_back(c);
     }
   }
+  return under;
+}
+
+std::vector<Id> OcclusionMesh::localSheet(
+  const glm::dvec3& point, std::vector<Id> sheet, double radius) const
+{
   // Breadth first through shared vertices, within the ball.
   std::unordered_set<Id> seen(sheet.begin(), sheet.end());
   for (std::size_t next = 0; next < sheet.size(); ++next)
@@ -315,32 +320,22 @@ bool OcclusionMesh::hides(const ViewGeometry& view, const glm::dvec3& point, dou
 }
 
 double OcclusionMesh::toleranceAt(
-  const glm::dvec3& point, const LineVisibilityParameters& rule) const
+  const std::vector<Id>& under, const LineVisibilityParameters& rule) const
 {
-  if (!(rule.LocalToleranceFactor > 0.0) || !(rule.Contact > 0.0) ||
-    !(rule.Contact < rule.Tolerance) || !finite(point))
-  {
-    return rule.Tolerance;
-  }
-  std::vector<Id> candidates;
-  this->Grid.query(point - glm::dvec3(rule.Contact), point + glm::dvec3(rule.Contact), candidates);
   double longest = 0.0;
-  for (const Id c : candidates)
+  for (const Id c : under)
   {
-    if (this->distanceTo(point, c) <= rule.Contact)
+    const Triangle& t = this->Triangles[static_cast<std::size_t>(c)];
+    for (int k = 0; k < 3; ++k)
     {
-      const Triangle& t = this->Triangles[static_cast<std::size_t>(c)];
-      for (int k = 0; k < 3; ++k)
-      {
-        longest = std::max(longest,
-          glm::length(this->Points[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])] -
-            this->Points[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 1) % 3)])]));
-      }
+      longest = std::max(longest,
+        glm::length(this->Points[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])] -
+          this->Points[static_cast<std::size_t>(t[static_cast<std::size_t>((k + 1) % 3)])]));
     }
   }
-  if (!(longest > 0.0) || !std::isfinite(longest))
+  if (!(rule.LocalToleranceFactor > 0.0) || !(longest > 0.0) || !std::isfinite(longest))
   {
-    return rule.Tolerance; // on no triangle: the plain rule
+    return rule.Tolerance; // no cap, or on no triangle: the plain rule
   }
   // Never down to the contact distance, within which every hit is ignored,
   // and never above the mesh-wide tolerance.
@@ -351,13 +346,18 @@ double OcclusionMesh::toleranceAt(
 bool OcclusionMesh::hides(
   const ViewGeometry& view, const glm::dvec3& point, const LineVisibilityParameters& rule) const
 {
-  const double tolerance = this->toleranceAt(point, rule);
+  // The triangles the point lies on: they cap its tolerance and seed its
+  // local sheet.
+  const bool onSurfaceRule = rule.Contact > 0.0 && rule.Contact < rule.Tolerance && finite(point);
+  std::vector<Id> under =
+    onSurfaceRule ? this->trianglesUnder(point, rule.Contact) : std::vector<Id>{};
+  const double tolerance = this->toleranceAt(under, rule);
   // A hit beyond the tolerance hides the point whatever the triangle.
   if (this->hides(view, point, tolerance))
   {
     return true;
   }
-  if (!(rule.Contact > 0.0) || !(rule.Contact < tolerance) || !finite(point))
+  if (!onSurfaceRule || !(rule.Contact < tolerance))
   {
     return false;
   }
@@ -371,7 +371,7 @@ bool OcclusionMesh::hides(
   {
     return false;
   }
-  const std::vector<Id> sheet = this->localSheet(point, rule.Contact, tolerance);
+  const std::vector<Id> sheet = this->localSheet(point, std::move(under), tolerance);
   if (sheet.empty())
   {
     return false; // not on the surface: the plain rule's answer

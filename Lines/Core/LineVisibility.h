@@ -104,11 +104,14 @@ private:
   template<typename Counts>
   bool anyHit(
     const ViewGeometry& view, const glm::dvec3& point, double from, double to, Counts counts) const;
-  /// The point's tolerance (see the header's rule).
-  double toleranceAt(const glm::dvec3& point, const LineVisibilityParameters& rule) const;
-  /// The point's local sheet (sorted triangle ids), or empty when the point
-  /// lies on no triangle.
-  std::vector<Id> localSheet(const glm::dvec3& point, double contact, double radius) const;
+  /// The triangles within `contact` of the point: the ones it lies on.
+  std::vector<Id> trianglesUnder(const glm::dvec3& point, double contact) const;
+  /// The tolerance of a point lying on the triangles `under` (see the
+  /// header's rule).
+  double toleranceAt(const std::vector<Id>& under, const LineVisibilityParameters& rule) const;
+  /// The local sheet (sorted triangle ids) of a point lying on the
+  /// triangles `under`, or empty when there are none.
+  std::vector<Id> localSheet(const glm::dvec3& point, std::vector<Id> under, double radius) const;
   double distanceTo(const glm::dvec3& point, Id triangle) const;
   void weldVertices(const std::vector<glm::dvec3>& normals);
 

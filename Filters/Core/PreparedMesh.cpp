@@ -45,7 +45,7 @@ std::vector<FeatureEdge> featureEdgesOfTriangles(std::vector<FeatureEdge> featur
 
 PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle> triangles,
   const std::vector<glm::dvec3>& normals, std::vector<FeatureEdge> featureEdges,
-  const std::vector<glm::dvec3>& cornerNormals, const EdgeTable* edges, NormalWeighting weighting)
+  const CornerNormals& cornerNormals, const EdgeTable* edges, NormalWeighting weighting)
   : Points(std::move(points))
   , Triangles(std::move(triangles))
   , InputPointCount(this->Points.size())
@@ -65,7 +65,7 @@ PreparedMesh::PreparedMesh(std::vector<glm::dvec3> points, std::vector<Triangle>
 
 std::unique_ptr<PreparedMesh> PreparedMesh::moved(PreparedMesh& earlier,
   std::vector<glm::dvec3>&& points, const std::vector<glm::dvec3>& normals,
-  const std::vector<FeatureEdge>& featureEdges, const std::vector<glm::dvec3>& cornerNormals,
+  const std::vector<FeatureEdge>& featureEdges, const CornerNormals& cornerNormals,
   const EdgeTable& edges, NormalWeighting weighting)
 {
   if (points.size() != earlier.InputPointCount)
@@ -86,7 +86,7 @@ std::unique_ptr<PreparedMesh> PreparedMesh::moved(PreparedMesh& earlier,
 }
 
 PreparedMesh::PreparedMesh(PreparedMesh& earlier, std::vector<glm::dvec3> points,
-  const std::vector<glm::dvec3>& normals, const std::vector<glm::dvec3>& cornerNormals,
+  const std::vector<glm::dvec3>& normals, const CornerNormals& cornerNormals,
   NormalWeighting weighting)
   : Points(std::move(points))
   , InputPointCount(earlier.InputPointCount)
@@ -232,11 +232,11 @@ void PreparedMesh::findNeighbours()
 // Given normals for the input's points; feature points (and their copies)
 // and points with no usable given normal get the computed ones.
 void PreparedMesh::chooseNormals(const std::vector<glm::dvec3>& normals,
-  const std::vector<glm::dvec3>& cornerNormals, NormalWeighting weighting)
+  const CornerNormals& cornerNormals, NormalWeighting weighting)
 {
   std::vector<glm::dvec3> computed;
   bool needComputed = normals.size() != this->InputPointCount || !this->Features.empty();
-  if (cornerNormals.size() == this->Triangles.size() * 3 && !this->Triangles.empty())
+  if (cornerNormals.covers(this->Triangles.size()))
   {
     this->Normals = this->normalsFromCorners(cornerNormals);
     needComputed = true;
@@ -271,8 +271,7 @@ void PreparedMesh::chooseNormals(const std::vector<glm::dvec3>& normals,
   }
 }
 
-std::vector<glm::dvec3> PreparedMesh::normalsFromCorners(
-  const std::vector<glm::dvec3>& cornerNormals) const
+std::vector<glm::dvec3> PreparedMesh::normalsFromCorners(const CornerNormals& cornerNormals) const
 {
   const std::size_t count = this->Points.size();
   std::vector<glm::dvec3> first(count, glm::dvec3(0.0));
@@ -283,7 +282,7 @@ std::vector<glm::dvec3> PreparedMesh::normalsFromCorners(
     for (std::size_t k = 0; k < 3; ++k)
     {
       const std::size_t p = static_cast<std::size_t>(this->Triangles[t][k]);
-      const glm::dvec3 n = safeNormalize(cornerNormals[t * 3 + k]);
+      const glm::dvec3 n = safeNormalize(cornerNormals(t, k));
       if (n == glm::dvec3(0.0))
       {
         continue;

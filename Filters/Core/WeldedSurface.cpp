@@ -255,19 +255,13 @@ std::unique_ptr<PreparedMesh> WeldedSurface::prepareGeometry(std::vector<glm::dv
   auto inputCorner = [this](std::size_t t, std::size_t k) -> std::size_t {
     return this->Reversed[t] && k != 0 ? 3 - k : k;
   };
-  std::vector<glm::dvec3> preparedCornerNormals;
-  if (given.Use)
-  {
-    preparedCornerNormals.resize(welded.size() * 3);
-    for (std::size_t t = 0; t < welded.size(); ++t)
-    {
-      for (std::size_t k = 0; k < 3; ++k)
-      {
-        preparedCornerNormals[t * 3 + k] =
-          normals[static_cast<std::size_t>(this->InputTriangles[t][inputCorner(t, k)])];
-      }
-    }
-  }
+  // The given normal at prepared corner k of triangle t (read in place: a
+  // per-corner copy is made only when the prepared mesh needs one, below).
+  auto givenCornerNormal = [&](std::size_t t, std::size_t k) -> const glm::dvec3& {
+    return normals[static_cast<std::size_t>(this->InputTriangles[t][inputCorner(t, k)])];
+  };
+  // Per component: whether its given normals are reversed.
+  std::vector<unsigned char> reversedComponent;
   bool normalsReversed = false;
   if (options.Orient && given.Use && !this->Components.empty())
   {
@@ -288,24 +282,22 @@ std::unique_ptr<PreparedMesh> WeldedSurface::prepareGeometry(std::vector<glm::dv
         points[static_cast<std::size_t>(welded[t][2])] - a);
       for (std::size_t k = 0; k < 3; ++k)
       {
-        const glm::dvec3& normal = preparedCornerNormals[t * 3 + k];
+        const glm::dvec3& normal = givenCornerNormal(t, k);
         if (std::isfinite(normal.x) && std::isfinite(normal.y) && std::isfinite(normal.z))
         {
           agreement[static_cast<std::size_t>(this->Components[t])] += glm::dot(areaNormal, normal);
         }
       }
     }
-    for (std::size_t t = 0; t < welded.size(); ++t)
+    reversedComponent.resize(agreement.size(), 0);
+    for (std::size_t c = 0; c < agreement.size(); ++c)
     {
-      if (this->Components[t] >= 0 &&
-        agreement[static_cast<std::size_t>(this->Components[t])] < 0.0)
-      {
-        for (std::size_t k = 0; k < 3; ++k)
-        {
-          preparedCornerNormals[t * 3 + k] = -preparedCornerNormals[t * 3 + k];
-        }
-        normalsReversed = true;
-      }
+      reversedComponent[c] = agreement[c] < 0.0 ? 1 : 0;
+    }
+    for (std::size_t t = 0; t < welded.size() && !normalsReversed; ++t)
+    {
+      normalsReversed = this->Components[t] >= 0 &&
+        reversedComponent[static_cast<std::size_t>(this->Components[t])];
     }
   }
 
@@ -342,10 +334,24 @@ std::unique_ptr<PreparedMesh> WeldedSurface::prepareGeometry(std::vector<glm::dv
   }
   const bool cornersMatter = given.Use &&
     (statistics.WeldedPointCount > 0 || statistics.ReversedTriangleCount > 0 || normalsReversed);
+  // The given normals per prepared corner, read in place (a copy would be
+  // three per triangle: at 1.3M triangles 94 MB of fresh memory every frame
+  // of a deforming mesh).
+  CornerNormals cornerNormals;
+  if (cornersMatter)
+  {
+    cornerNormals = CornerNormals(
+      [&](std::size_t t, std::size_t k) {
+        const glm::dvec3& normal = givenCornerNormal(t, k);
+        const bool reverse = !reversedComponent.empty() && this->Components[t] >= 0 &&
+          reversedComponent[static_cast<std::size_t>(this->Components[t])];
+        return reverse ? -normal : normal;
+      },
+      welded.size());
+  }
   // Nothing welded or reversed: the per-point normals are the corners'.
   const std::vector<glm::dvec3> none;
   const std::vector<glm::dvec3>& pointNormals = given.Use && !cornersMatter ? normals : none;
-  const std::vector<glm::dvec3>& cornerNormals = cornersMatter ? preparedCornerNormals : none;
   if (reusable)
   {
     std::unique_ptr<PreparedMesh> moved = PreparedMesh::moved(*reusable, std::move(points),

@@ -19,7 +19,10 @@
 // the mesh along x by 1 + S and back, S = --deform-step (0.01 unless given):
 // a small step lets the fold guard keep its grid of the triangles' boxes
 // from frame to frame (PreparedMesh::adoptTriangleGrid), a large one does
-// not.
+// not. Besides the whole frame and its ratio to building anew, it prints the
+// smoothing mappers' own work before drawing (GetLastPrepareSeconds: the
+// preparation and the view's changes; the upload is the drawing's) and its
+// ratio to that of building anew.
 //
 // Usage: mapper_benchmark [--frames N] [--levels L1,L2,...] [--size WxH]
 //                         [--deform-step S]
@@ -223,7 +226,9 @@ struct Deforming : Scene
   const char* Name;
   bool Rebuild;
   vtkNew<vtkPolyData> Mesh;
+  vtkSilhouetteSmoothingMapper* Smoothing = nullptr; // null for the plain mapper
   std::vector<double> FrameMs;
+  std::vector<double> PrepareMs;
 
   Deforming(const char* name, bool rebuild)
     : Name(name)
@@ -235,7 +240,7 @@ struct Deforming : Scene
   // cells count as changed too.
   double Frame(double scale)
   {
-    return benchmark_timing::Milliseconds([&]() {
+    const double ms = benchmark_timing::Milliseconds([&]() {
       vtkPoints* points = this->Mesh->GetPoints();
       for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
       {
@@ -251,6 +256,11 @@ struct Deforming : Scene
       this->Window->Render();
       this->Window->WaitForCompletion();
     });
+    if (this->Smoothing)
+    {
+      this->PrepareMs.push_back(1000.0 * this->Smoothing->GetLastPrepareSeconds());
+    }
+    return ms;
   }
 };
 
@@ -270,6 +280,7 @@ void MeasureDeforming(vtkPolyData* mesh, const Options& options)
     d->Mesh->DeepCopy(mesh);
     mappers[k]->SetInputData(d->Mesh);
     mappers[k]->ScalarVisibilityOff();
+    d->Smoothing = vtkSilhouetteSmoothingMapper::SafeDownCast(mappers[k]);
     d->Actor->SetMapper(mappers[k]);
     d->SetUp(mesh, options);
   }
@@ -284,11 +295,22 @@ void MeasureDeforming(vtkPolyData* mesh, const Options& options)
   }
   const double anewMs = benchmark_timing::Median(anew.FrameMs);
   const double stillMs = benchmark_timing::Median(still.FrameMs);
+  const double anewPrepareMs = benchmark_timing::Median(anew.PrepareMs);
   for (Deforming* d : deforming)
   {
     const double ms = benchmark_timing::Median(d->FrameMs);
-    std::printf("%10lld  %-7s %10.1f %10.2f   deforming; / anew %.2f\n",
-      static_cast<long long>(mesh->GetNumberOfPolys()), d->Name, ms, ms / stillMs, ms / anewMs);
+    char smoothing[32] = "-";
+    char preparation[48] = "";
+    if (d->Smoothing)
+    {
+      const double prepareMs = benchmark_timing::Median(d->PrepareMs);
+      std::snprintf(smoothing, sizeof(smoothing), "%.2f", prepareMs);
+      std::snprintf(
+        preparation, sizeof(preparation), "; smoothing / anew's %.2f", prepareMs / anewPrepareMs);
+    }
+    std::printf("%10lld  %-7s %10.1f %10.2f %12s   deforming; / anew %.2f%s\n",
+      static_cast<long long>(mesh->GetNumberOfPolys()), d->Name, ms, ms / stillMs, smoothing,
+      ms / anewMs, preparation);
   }
   std::fflush(stdout);
 }

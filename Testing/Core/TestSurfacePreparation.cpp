@@ -377,6 +377,65 @@ TEST(WeldedSurface, ReversedInputKeepsItsWindingAndSmoothsAsTheOrientedMesh)
     a.SilhouetteTriangleCount);
 }
 
+// Given normals pointing into the surface are reversed per component, corner
+// by corner (they are read in place, not copied per corner): the shading
+// normals are those of the same surface given the outward normals, bit for
+// bit, on a welded sphere and on a soup of its triangles, built anew and
+// moved.
+TEST(WeldedSurface, InwardGivenNormalsShadeAsTheOutwardOnes)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::unitSphere(8, 12, points, triangles);
+  std::vector<glm::dvec3> soupPoints;
+  std::vector<Triangle> soupTriangles;
+  for (const Triangle& t : triangles)
+  {
+    Triangle corners;
+    for (int k = 0; k < 3; ++k)
+    {
+      corners[static_cast<std::size_t>(k)] = static_cast<Id>(soupPoints.size());
+      soupPoints.push_back(points[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])]);
+    }
+    soupTriangles.push_back(corners);
+  }
+  for (const bool soup : { false, true })
+  {
+    const std::vector<glm::dvec3>& p = soup ? soupPoints : points;
+    const std::vector<Triangle>& t = soup ? soupTriangles : triangles;
+    std::vector<glm::dvec3> outward = p;
+    std::vector<glm::dvec3> inward;
+    for (const glm::dvec3& n : outward)
+    {
+      inward.push_back(-n);
+    }
+    const WeldedSurface out(p, t, outward, {}, plainOptions());
+    WeldedSurface in(p, t, inward, {}, plainOptions());
+    EXPECT_EQ(in.prepared().normals(), out.prepared().normals()) << "soup " << soup;
+    // Moved: stretched along x, the normals with it.
+    std::vector<glm::dvec3> moved = p;
+    std::vector<glm::dvec3> movedInward = inward;
+    for (std::size_t i = 0; i < moved.size(); ++i)
+    {
+      moved[i].x *= 1.25;
+      movedInward[i].x /= 1.25;
+    }
+    ASSERT_TRUE(in.movePoints(moved, movedInward, {}, plainOptions()));
+    std::vector<glm::dvec3> movedOutward;
+    for (const glm::dvec3& n : movedInward)
+    {
+      movedOutward.push_back(-n);
+    }
+    const WeldedSurface anew(moved, t, movedOutward, {}, plainOptions());
+    EXPECT_EQ(in.prepared().normals(), anew.prepared().normals()) << "soup " << soup;
+    // The comparison can fail: left unoriented, the inward normals stay.
+    SurfaceOptions keep = plainOptions();
+    keep.Orient = false;
+    const WeldedSurface raw(p, t, inward, {}, keep);
+    EXPECT_NE(raw.prepared().normals(), out.prepared().normals()) << "soup " << soup;
+  }
+}
+
 TEST(WeldedSurface, CleanMeshIsThePreparedMeshItself)
 {
   std::vector<glm::dvec3> points;

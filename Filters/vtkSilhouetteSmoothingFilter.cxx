@@ -460,21 +460,32 @@ int vtkSilhouetteSmoothingFilter::BuildBaseMesh(vtkPolyData* input, vtkPolyData*
   }
   Internals& internal = *this->Internal;
   const silsmooth::SmoothingResult nothing;
+  // The same build of the surface as `base` holds (only points moved
+  // since): the same cells, so `base` keeps its cell arrays, and a renderer
+  // its index buffers; the points and every attribute are new.
+  const bool sameCells = base == internal.LastBase && internal.LastBaseBuild == internal.Builds &&
+    base->GetNumberOfPoints() == static_cast<vtkIdType>(internal.Surface->outputPointCount());
   vtkNew<vtkPolyData> fresh;
-  vtkIdType droppedCells = 0;
-  const silsmooth::SurfaceFrame frame =
-    BuildCells(input, fresh, internal.TriangleCell, *internal.Surface, nothing, droppedCells);
+  // A frame that re-meshes nothing adds and moves no point: only BuildCells'
+  // triangles, which the same cells need not build again, are in it.
+  silsmooth::SurfaceFrame frame;
+  if (sameCells)
+  {
+    BuildBaseCellData(input, fresh->GetCellData(), internal.TriangleCell);
+  }
+  else
+  {
+    vtkIdType droppedCells = 0;
+    frame =
+      BuildCells(input, fresh, internal.TriangleCell, *internal.Surface, nothing, droppedCells);
+  }
   fresh->SetPoints(BuildPoints(
     input, OutputPointType(input, this->OutputPointsPrecision), *internal.Surface, nothing, frame));
   BuildPointData(input->GetPointData(), fresh->GetPointData(), input->GetNumberOfPoints(),
     *internal.Surface, nothing, frame);
   fresh->GetFieldData()->PassData(input->GetFieldData());
-  if (base == internal.LastBase && internal.LastBaseBuild == internal.Builds &&
-    base->GetNumberOfPoints() == fresh->GetNumberOfPoints())
+  if (sameCells)
   {
-    // The same build of the surface (only points moved since): the same
-    // cells, so `base` keeps its cell arrays, and a renderer its index
-    // buffers; the points and every attribute are new.
     base->SetPoints(fresh->GetPoints());
     base->GetPointData()->ShallowCopy(fresh->GetPointData());
     base->GetCellData()->ShallowCopy(fresh->GetCellData());

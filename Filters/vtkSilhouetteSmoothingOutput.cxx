@@ -366,6 +366,18 @@ silsmooth::SurfaceFrame BuildCells(vtkPolyData* input, vtkPolyData* output,
   return frame;
 }
 
+void BuildBaseCellData(
+  vtkPolyData* input, vtkCellData* output, const std::vector<vtkIdType>& triangleCell)
+{
+  std::vector<vtkIdType> origin = vtkSilhouetteFilterSupport::PassVertsAndLines(input).CellIds;
+  origin.insert(origin.end(), triangleCell.begin(), triangleCell.end());
+  vtkNew<vtkUnsignedCharArray> newGeometry;
+  newGeometry->SetName("NewGeometry");
+  newGeometry->SetNumberOfValues(static_cast<vtkIdType>(origin.size()));
+  newGeometry->FillValue(0);
+  CellDataFrom(input->GetCellData(), output, origin, newGeometry);
+}
+
 UsedPoints::UsedPoints(const std::vector<silsmooth::Triangle>& triangles, std::size_t pointCount)
   : Bits((pointCount + 63) / 64, 0)
   , Before(this->Bits.size(), 0)

@@ -56,6 +56,13 @@ silsmooth::SurfaceFrame BuildCells(vtkPolyData* input, vtkPolyData* output,
   const std::vector<vtkIdType>& triangleCell, const silsmooth::WeldedSurface& surface,
   const silsmooth::SmoothingResult& result, vtkIdType& droppedCells);
 
+// The cell data BuildCells gives a frame that re-meshes nothing (the base
+// mesh: its verts and lines, then one triangle per input triangle, in input
+// order), without building the cells again: for a mesh whose points moved
+// and whose cells did not.
+void BuildBaseCellData(
+  vtkPolyData* input, vtkCellData* output, const std::vector<vtkIdType>& triangleCell);
+
 // The output points a frame's changed triangles use, ascending, and each
 // one's place among them: a bit per output point, ranked by counting bits.
 // Sorting the triangles' corners and searching the list for each corner

@@ -348,7 +348,7 @@ public:
    * view. It pays from about 50,000 triangles (visibility 1.5-2.5x faster
    * there, the whole frame up to 15-20% on spheres), costs more on coarse
    * meshes, and its one-off build is about 0.6x the input's preparation (see
-   * Filters/Core/VisibilityHierarchy.h, Testing/Benchmarks/VisibilityBenchmark.cpp).
+   * Common/Core/VisibilityHierarchy.h, Testing/Benchmarks/VisibilityBenchmark.cpp).
    */
   vtkSetClampMacro(VisibilityMethod, int, PER_VERTEX, HIERARCHICAL);
   vtkGetMacro(VisibilityMethod, int);

@@ -9,7 +9,7 @@
  * along the longer side of their projected bounding box (a cell is occupied
  * when a face overlaps it); unoccupied cells enclosed by the projection are
  * filled, so that only the external contour counts; a two-pass 3-4 chamfer
- * distance transform (Filters/Core/DistanceTransform.h says why that one)
+ * distance transform (Common/Core/DistanceTransform.h says why that one)
  * gives each occupied cell its distance in cells to the background; the
  * labels are back-projected to the mesh.
  *

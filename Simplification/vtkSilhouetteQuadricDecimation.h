@@ -10,7 +10,7 @@
  * error, f = NearFactor, where the others take e. With a triangle budget e is
  * not chosen up front: collapses are taken in order of cost (cost / f near
  * the contour) until the mesh has at most TargetTriangles triangles, and e is
- * the largest rank taken (Filters/Core/QuadricSimplifier.h has the details).
+ * the largest rank taken (Common/Core/QuadricSimplifier.h has the details).
  * Without the array, or with NearFactor 1, it is a plain quadric decimation.
  *
  * Errors are quadric errors: the sum of squared distances from a point to

@@ -1,5 +1,7 @@
 #include "SurfaceWelding.h"
 
+#include "FiniteVector.h"
+
 #include "DisjointSets.h"
 #include "ShadingNormals.h"
 
@@ -17,11 +19,6 @@ namespace silsmooth
 
 namespace
 {
-
-bool isFinite(const glm::dvec3& p)
-{
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
 
 std::vector<Id> weldExactly(const std::vector<glm::dvec3>& points)
 {

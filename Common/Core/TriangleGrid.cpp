@@ -1,5 +1,7 @@
 #include "TriangleGrid.h"
 
+#include "FiniteVector.h"
+
 #include <glm/common.hpp>
 
 #include <algorithm>
@@ -9,16 +11,6 @@
 
 namespace silsmooth
 {
-namespace
-{
-
-bool finite(const glm::dvec3& p)
-{
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
-} // namespace
-
 bool TriangleGrid::boxOf(
   const std::vector<glm::dvec3>& points, const Triangle& t, glm::dvec3& low, glm::dvec3& high)
 {
@@ -29,7 +21,7 @@ bool TriangleGrid::boxOf(
   const glm::dvec3& a = points[static_cast<std::size_t>(t[0])];
   const glm::dvec3& b = points[static_cast<std::size_t>(t[1])];
   const glm::dvec3& c = points[static_cast<std::size_t>(t[2])];
-  if (!finite(a) || !finite(b) || !finite(c))
+  if (!isFinite(a) || !isFinite(b) || !isFinite(c))
   {
     return false;
   }
@@ -57,8 +49,9 @@ TriangleGrid::TriangleGrid(
 {
   for (std::size_t t = 0; t < this->Low.size(); ++t)
   {
-    if (!finite(this->Low[t]) || !finite(this->High[t]) || !(this->Low[t].x <= this->High[t].x) ||
-      !(this->Low[t].y <= this->High[t].y) || !(this->Low[t].z <= this->High[t].z))
+    if (!isFinite(this->Low[t]) || !isFinite(this->High[t]) ||
+      !(this->Low[t].x <= this->High[t].x) || !(this->Low[t].y <= this->High[t].y) ||
+      !(this->Low[t].z <= this->High[t].z))
     {
       this->Low[t] = glm::dvec3(HUGE_VAL);
       this->High[t] = glm::dvec3(-HUGE_VAL);
@@ -174,7 +167,7 @@ void TriangleGrid::build(std::size_t cellBudget)
 void TriangleGrid::query(const glm::dvec3& low, const glm::dvec3& high, std::vector<Id>& out) const
 {
   out.clear();
-  if (this->Offsets.empty() || !finite(low) || !finite(high))
+  if (this->Offsets.empty() || !isFinite(low) || !isFinite(high))
   {
     return;
   }

@@ -14,6 +14,8 @@
 // orders of magnitude beyond the rounding of the direct dot product.
 #pragma once
 
+#include "FiniteVector.h"
+
 #include "ViewGeometry.h"
 
 #include <glm/geometric.hpp>
@@ -43,11 +45,6 @@ constexpr double LargestNormal = 1e100;
 constexpr double LargestCoordinate = 1e140;
 constexpr double SmallestHalfExtent = 1e-140;
 constexpr double HalfPi = 1.57079632679489661923;
-
-inline bool isFinite(const glm::dvec3& v)
-{
-  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-}
 
 inline double maxAbs(const glm::dvec3& v)
 {

@@ -1,5 +1,7 @@
 #include "FoldGuard.h"
 
+#include "FiniteVector.h"
+
 #include "TriangleIntersection.h"
 
 #include <glm/common.hpp>
@@ -100,11 +102,6 @@ struct Item
   long Index = -1;
 };
 
-bool finitePoint(const glm::dvec3& p)
-{
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
-
 // The triangles of the mesh whose boxes meet each of the boxes [lows[b],
 // highs[b]] (ascending ids per box; a box with a corner that is not finite
 // meets none): from the mesh's grid (each box widened by its slack), or by
@@ -123,7 +120,7 @@ std::vector<std::vector<Id>> trianglesMeeting(const FoldGuardMesh& mesh,
     parallelFor(count, [&](std::size_t begin, std::size_t end) {
       for (std::size_t b = begin; b < end; ++b)
       {
-        if (finitePoint(lows[b]) && finitePoint(highs[b]))
+        if (isFinite(lows[b]) && isFinite(highs[b]))
         {
           mesh.Grid->query(lows[b] - slack, highs[b] + slack, found[b]);
           std::sort(found[b].begin(), found[b].end());
@@ -387,7 +384,7 @@ private:
   // not finite (TriangleGrid::query).
   bool finiteBox(std::size_t k) const
   {
-    return finitePoint(this->Lows[k]) && finitePoint(this->Highs[k]);
+    return isFinite(this->Lows[k]) && isFinite(this->Highs[k]);
   }
 
   // Each group's joint box (of its items to check, with finite boxes; empty,

@@ -1,6 +1,7 @@
 #include "LineVisibility.h"
 
 #include "ClosestPoint.h"
+#include "FiniteVector.h"
 #include "PositionHash.h"
 
 #include <glm/common.hpp>
@@ -19,11 +20,6 @@ namespace silsmooth
 {
 namespace
 {
-
-bool finite(const glm::dvec3& p)
-{
-  return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
-}
 
 // Where the ray origin + t dir (dir a unit vector) meets triangle (a, b, c):
 // t, or -1 when it misses (Moller and Trumbore). Edges count as inside,
@@ -114,7 +110,7 @@ LineVisibilityParameters LineVisibilityParameters::forMesh(
         sum += length;
         ++sides;
       }
-      if (finite(a))
+      if (isFinite(a))
       {
         low = glm::min(low, a);
         high = glm::max(high, a);
@@ -146,7 +142,7 @@ OcclusionMesh::OcclusionMesh(std::vector<glm::dvec3> points, std::vector<Triangl
     for (const Id corner : t)
     {
       const glm::dvec3& p = this->Points[static_cast<std::size_t>(corner)];
-      if (finite(p))
+      if (isFinite(p))
       {
         this->Low = glm::min(this->Low, p);
         this->High = glm::max(this->High, p);
@@ -263,7 +259,7 @@ template<typename Counts>
 bool OcclusionMesh::anyHit(
   const ViewGeometry& view, const glm::dvec3& point, double from, double to, Counts counts) const
 {
-  if (this->Grid.empty() || !finite(point) || !(this->Step > 0.0))
+  if (this->Grid.empty() || !isFinite(point) || !(this->Step > 0.0))
   {
     return false;
   }
@@ -348,7 +344,7 @@ bool OcclusionMesh::hides(
 {
   // The triangles the point lies on: they cap its tolerance and seed its
   // local sheet.
-  const bool onSurfaceRule = rule.Contact > 0.0 && rule.Contact < rule.Tolerance && finite(point);
+  const bool onSurfaceRule = rule.Contact > 0.0 && rule.Contact < rule.Tolerance && isFinite(point);
   std::vector<Id> under =
     onSurfaceRule ? this->trianglesUnder(point, rule.Contact) : std::vector<Id>{};
   const double tolerance = this->toleranceAt(under, rule);

@@ -1,7 +1,6 @@
 #include "FoldGuard.h"
 
 #include "FiniteVector.h"
-
 #include "TriangleIntersection.h"
 
 #include <glm/common.hpp>

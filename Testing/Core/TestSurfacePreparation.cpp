@@ -389,16 +389,7 @@ TEST(WeldedSurface, InwardGivenNormalsShadeAsTheOutwardOnes)
   coretest::unitSphere(8, 12, points, triangles);
   std::vector<glm::dvec3> soupPoints;
   std::vector<Triangle> soupTriangles;
-  for (const Triangle& t : triangles)
-  {
-    Triangle corners;
-    for (int k = 0; k < 3; ++k)
-    {
-      corners[static_cast<std::size_t>(k)] = static_cast<Id>(soupPoints.size());
-      soupPoints.push_back(points[static_cast<std::size_t>(t[static_cast<std::size_t>(k)])]);
-    }
-    soupTriangles.push_back(corners);
-  }
+  makeSoup(points, triangles, soupPoints, soupTriangles);
   for (const bool soup : { false, true })
   {
     const std::vector<glm::dvec3>& p = soup ? soupPoints : points;

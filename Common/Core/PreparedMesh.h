@@ -35,9 +35,9 @@ class CornerNormals
 {
 public:
   CornerNormals() = default;
-  /// Not owned; must outlive the use (a constructor argument may be a
-  /// temporary).
-  CornerNormals(const std::vector<glm::dvec3>& perCorner)
+  /// A view: it keeps a pointer to `perCorner` (and `of` reads what its
+  /// captures refer to), so it is made for one call and never kept.
+  explicit CornerNormals(const std::vector<glm::dvec3>& perCorner)
     : PerCorner(&perCorner)
     , Triangles(perCorner.size() / 3)
   {

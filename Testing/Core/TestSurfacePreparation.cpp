@@ -380,8 +380,9 @@ TEST(WeldedSurface, ReversedInputKeepsItsWindingAndSmoothsAsTheOrientedMesh)
 // Given normals pointing into the surface are reversed per component, corner
 // by corner (they are read in place, not copied per corner): the shading
 // normals are those of the same surface given the outward normals, bit for
-// bit, on a welded sphere and on a soup of its triangles, built anew and
-// moved.
+// bit, built anew and moved, on a welded sphere, on a soup of its triangles,
+// and on the sphere with a third of its triangles turned over (each corner's
+// normal is then found through the turn).
 TEST(WeldedSurface, InwardGivenNormalsShadeAsTheOutwardOnes)
 {
   std::vector<glm::dvec3> points;
@@ -390,40 +391,57 @@ TEST(WeldedSurface, InwardGivenNormalsShadeAsTheOutwardOnes)
   std::vector<glm::dvec3> soupPoints;
   std::vector<Triangle> soupTriangles;
   makeSoup(points, triangles, soupPoints, soupTriangles);
-  for (const bool soup : { false, true })
+  std::vector<Triangle> mixed = triangles;
+  std::mt19937 random(7);
+  for (Triangle& t : mixed)
   {
-    const std::vector<glm::dvec3>& p = soup ? soupPoints : points;
-    const std::vector<Triangle>& t = soup ? soupTriangles : triangles;
-    std::vector<glm::dvec3> outward = p;
+    if (random() % 3 == 0)
+    {
+      t = oriented(t, true);
+    }
+  }
+  struct Case
+  {
+    const char* Name;
+    const std::vector<glm::dvec3>& Points;
+    const std::vector<Triangle>& Triangles; // given with the inward normals
+    const std::vector<Triangle>& Clean;     // the same surface, all wound outward
+  };
+  const Case cases[] = { { "welded", points, triangles, triangles },
+    { "soup", soupPoints, soupTriangles, soupTriangles }, { "turned", points, mixed, triangles } };
+  for (const Case& c : cases)
+  {
+    std::vector<glm::dvec3> outward = c.Points;
     std::vector<glm::dvec3> inward;
     for (const glm::dvec3& n : outward)
     {
       inward.push_back(-n);
     }
-    const WeldedSurface out(p, t, outward, {}, plainOptions());
-    WeldedSurface in(p, t, inward, {}, plainOptions());
-    EXPECT_EQ(in.prepared().normals(), out.prepared().normals()) << "soup " << soup;
+    const WeldedSurface out(c.Points, c.Clean, outward, {}, plainOptions());
+    WeldedSurface in(c.Points, c.Triangles, inward, {}, plainOptions());
+    EXPECT_EQ(in.statistics().ReversedTriangleCount > 0, c.Triangles != c.Clean) << c.Name;
+    EXPECT_EQ(in.prepared().normals(), out.prepared().normals()) << c.Name;
     // Moved: stretched along x, the normals with it.
-    std::vector<glm::dvec3> moved = p;
+    std::vector<glm::dvec3> moved = c.Points;
     std::vector<glm::dvec3> movedInward = inward;
     for (std::size_t i = 0; i < moved.size(); ++i)
     {
       moved[i].x *= 1.25;
       movedInward[i].x /= 1.25;
     }
-    ASSERT_TRUE(in.movePoints(moved, movedInward, {}, plainOptions()));
+    ASSERT_TRUE(in.movePoints(moved, movedInward, {}, plainOptions())) << c.Name;
     std::vector<glm::dvec3> movedOutward;
     for (const glm::dvec3& n : movedInward)
     {
       movedOutward.push_back(-n);
     }
-    const WeldedSurface anew(moved, t, movedOutward, {}, plainOptions());
-    EXPECT_EQ(in.prepared().normals(), anew.prepared().normals()) << "soup " << soup;
+    const WeldedSurface anew(moved, c.Clean, movedOutward, {}, plainOptions());
+    EXPECT_EQ(in.prepared().normals(), anew.prepared().normals()) << c.Name;
     // The comparison can fail: left unoriented, the inward normals stay.
     SurfaceOptions keep = plainOptions();
     keep.Orient = false;
-    const WeldedSurface raw(p, t, inward, {}, keep);
-    EXPECT_NE(raw.prepared().normals(), out.prepared().normals()) << "soup " << soup;
+    const WeldedSurface raw(c.Points, c.Triangles, inward, {}, keep);
+    EXPECT_NE(raw.prepared().normals(), out.prepared().normals()) << c.Name;
   }
 }
 

@@ -567,14 +567,35 @@ bool CheckDeformingMesh(vtkPolyData* bunny, vtkTexture* filterTexture, vtkTextur
   bool ok = true;
   vtkNew<vtkPolyData> deforming;
   deforming->DeepCopy(bunny);
+  // The base mesh is built from the same points and triangles with a vertex
+  // cell, a line and an empty line before them (passed through, and
+  // dropped), an input OriginalCellId and a cell scalar that changes.
+  vtkNew<vtkPolyData> built;
+  built->SetPoints(deforming->GetPoints()); // moved with it
+  built->SetPolys(deforming->GetPolys());
+  vtkNew<vtkCellArray> verts;
+  verts->InsertNextCell({ 0, 1 });
+  built->SetVerts(verts);
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell({ 2, 3, 4 });
+  lines->InsertNextCell(0);
+  built->SetLines(lines);
   vtkNew<vtkFloatArray> changing;
   changing->SetName("Changing");
-  changing->SetNumberOfValues(deforming->GetNumberOfCells());
+  changing->SetNumberOfValues(built->GetNumberOfCells());
   changing->FillValue(0.0f);
-  deforming->GetCellData()->AddArray(changing);
+  built->GetCellData()->AddArray(changing);
+  vtkNew<vtkIdTypeArray> originalIds;
+  originalIds->SetName("OriginalCellId");
+  originalIds->SetNumberOfValues(built->GetNumberOfCells());
+  for (vtkIdType c = 0; c < originalIds->GetNumberOfValues(); ++c)
+  {
+    originalIds->SetValue(c, 1000 + 2 * c);
+  }
+  built->GetCellData()->AddArray(originalIds);
   vtkNew<vtkSilhouetteSmoothingFilter> builder;
   vtkNew<vtkPolyData> base;
-  builder->BuildBaseMesh(deforming, base);
+  builder->BuildBaseMesh(built, base);
   vtkCellArray* cellsBefore = base->GetPolys();
   Scene viaFilter;
   vtkNew<vtkSilhouetteSmoothingFilter> filter;
@@ -610,19 +631,22 @@ bool CheckDeformingMesh(vtkPolyData* bunny, vtkTexture* filterTexture, vtkTextur
       points->SetPoint(p, x[0] * 1.03, x[1] + 0.02 * x[0], x[2]);
     }
     points->Modified();
-    builder->BuildBaseMesh(deforming, base);
+    builder->BuildBaseMesh(built, base);
     keptCells = keptCells && base->GetPolys() == cellsBefore;
     vtkNew<vtkSilhouetteSmoothingFilter> freshBuilder;
     vtkNew<vtkPolyData> fresh;
-    freshBuilder->BuildBaseMesh(deforming, fresh);
+    freshBuilder->BuildBaseMesh(built, fresh);
     const long differing = ValuesDiffering(base, fresh);
     baseDiffering = differing < 0 || baseDiffering < 0 ? -1 : baseDiffering + differing;
     worst = std::max(worst, Differing(viaMapper.Pixels(), viaFilter.Pixels()));
   }
+  const bool passedThrough = base->GetNumberOfVerts() == 1 && base->GetNumberOfLines() == 1;
   std::printf("deforming bunny: at most %ld pixels differ over 3 moves; the base mesh %s its "
-              "cell arrays, and differs from a fresh filter's in %ld values (-1: in its arrays)\n",
-    worst, keptCells ? "kept" : "did not keep", baseDiffering);
-  if (worst > MaximumDifferingPixels || !keptCells || baseDiffering != 0)
+              "cell arrays, passed %lld vertex and %lld line cells through (1 and 1 expected), "
+              "and differs from a fresh filter's in %ld values (-1: in its arrays)\n",
+    worst, keptCells ? "kept" : "did not keep", static_cast<long long>(base->GetNumberOfVerts()),
+    static_cast<long long>(base->GetNumberOfLines()), baseDiffering);
+  if (worst > MaximumDifferingPixels || !keptCells || baseDiffering != 0 || !passedThrough)
   {
     std::printf("FAIL: deforming bunny\n");
     ok = false;

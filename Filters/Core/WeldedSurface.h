@@ -129,7 +129,9 @@ public:
   /// smooth group, and so the output's points, would change); the caller
   /// then builds the surface anew. Invariant: after a true return the
   /// surface is the one the constructor makes from the same arguments, as
-  /// long as the orientation it chose still holds (it is not checked).
+  /// long as the orientation it chose still holds and no points that were
+  /// apart have come together (neither is checked: the constructor would
+  /// weld such points, a moved surface keeps them apart).
   bool movePoints(std::vector<glm::dvec3> points, const std::vector<glm::dvec3>& normals,
     const std::vector<FeatureEdge>& markedFeatures, const SurfaceOptions& options,
     const ParallelFor& parallelFor = serialFor);

@@ -4,6 +4,8 @@
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
 #include "vtkIdTypeArray.h"
 #include "vtkObjectFactory.h"
@@ -167,18 +169,100 @@ void vtkSilhouettePatchedMapper::BuildIBO(vtkRenderer* ren, vtkActor* act, vtkPo
     return;
   }
   this->Applied.clear();
-  this->LayoutKnown = false;
   // Surface and surface with edges share the triangle layout; the others
   // draw points or lines, and the input whole.
-  if (act->GetProperty()->GetRepresentation() == VTK_SURFACE)
+  const bool surface = act->GetProperty()->GetRepresentation() == VTK_SURFACE;
+  if (surface && this->LayoutKnown && this->LayoutUnchanged(poly))
+  {
+    // Only the points moved (a deforming mesh): the new buffer holds the
+    // recorded triangles, none of them hidden.
+    std::fill(this->TriangleHidden.begin(), this->TriangleHidden.end(), 0);
+    this->LayoutKnown = this->Pristine.size() == this->Primitives[PrimitiveTris].IBO->IndexCount;
+    return;
+  }
+  this->LayoutKnown = false;
+  if (surface)
   {
     this->RecordTriangleLayout(poly);
   }
 }
 
+namespace
+{
+
+// Whether the fan triangles of `polys` over `x` (three coordinates per
+// point) that the superclass keeps (those without coincident corners:
+// AppendTrianglesWorker in vtkOpenGLIndexBufferObject.cxx) are `pristine`,
+// in order.
+template<typename Coordinate>
+bool KeptTrianglesAre(
+  vtkCellArray* polys, const Coordinate* x, const std::vector<unsigned int>& pristine)
+{
+  auto same = [x](vtkIdType a, vtkIdType b) {
+    return x[3 * a] == x[3 * b] && x[3 * a + 1] == x[3 * b + 1] && x[3 * a + 2] == x[3 * b + 2];
+  };
+  std::size_t next = 0;
+  auto it = vtk::TakeSmartPointer(polys->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType i = 1; i + 1 < n; ++i)
+    {
+      if (same(ids[0], ids[i]) || same(ids[i + 1], ids[i]) || same(ids[i + 1], ids[0]))
+      {
+        continue;
+      }
+      if (next + 3 > pristine.size() || pristine[next] != static_cast<unsigned int>(ids[0]) ||
+        pristine[next + 1] != static_cast<unsigned int>(ids[i]) ||
+        pristine[next + 2] != static_cast<unsigned int>(ids[i + 1]))
+      {
+        return false;
+      }
+      next += 3;
+    }
+  }
+  return next == pristine.size();
+}
+
+} // namespace
+
+// Whether the superclass's new triangle buffer is the recorded one: the same
+// polygons (the same cell array, unmodified) whose kept triangles are the
+// recorded ones. A deforming mesh's points change every frame, and the
+// superclass then builds its buffer again (which triangles it leaves out
+// depends on the positions); recording the layout again each time cost
+// about a fifth of such a frame at 1.3M triangles. Points other than float
+// or double are not checked here (the layout is then recorded again).
+bool vtkSilhouettePatchedMapper::LayoutUnchanged(vtkPolyData* poly) const
+{
+  vtkCellArray* polys = poly->GetPolys();
+  vtkPoints* points = poly->GetPoints();
+  if (!polys || !points || polys != this->LayoutPolys ||
+    polys->GetMTime() != this->LayoutPolysTime ||
+    polys->GetNumberOfCells() != static_cast<vtkIdType>(this->FirstTriangle.size()))
+  {
+    return false;
+  }
+  vtkDataArray* data = points->GetData();
+  if (auto* doubles = vtkDoubleArray::FastDownCast(data))
+  {
+    return doubles->GetNumberOfComponents() == 3 &&
+      KeptTrianglesAre(polys, doubles->GetPointer(0), this->Pristine);
+  }
+  if (auto* floats = vtkFloatArray::FastDownCast(data))
+  {
+    return floats->GetNumberOfComponents() == 3 &&
+      KeptTrianglesAre(polys, floats->GetPointer(0), this->Pristine);
+  }
+  return false;
+}
+
 void vtkSilhouettePatchedMapper::RecordTriangleLayout(vtkPolyData* poly)
 {
   this->Pristine.clear();
+  this->LayoutPolys = nullptr;
   vtkCellArray* polys = poly->GetPolys();
   vtkPoints* points = poly->GetPoints();
   if (!points)
@@ -223,6 +307,8 @@ void vtkSilhouettePatchedMapper::RecordTriangleLayout(vtkPolyData* poly)
   vtkOpenGLIndexBufferObject* ibo = this->Primitives[PrimitiveTris].IBO;
   this->LayoutKnown = static_cast<std::size_t>(triangle) * 3 == this->Pristine.size() &&
     this->Pristine.size() == ibo->IndexCount;
+  this->LayoutPolys = polys;
+  this->LayoutPolysTime = polys ? polys->GetMTime() : 0;
   if (!this->LayoutKnown)
   {
     vtkWarningMacro("The triangle index buffer is not laid out as expected; the mesh is drawn "

@@ -83,6 +83,7 @@ private:
   bool PatchDrawn(vtkRenderer* ren, vtkActor* act);
   void ApplyHidden(vtkRenderer* ren, vtkActor* act);
   void RecordTriangleLayout(vtkPolyData* poly);
+  bool LayoutUnchanged(vtkPolyData* poly) const;
 
   // The triangle index buffer as the superclass uploaded it, and for each
   // polygon its first triangle there and how many it has (VTK leaves out
@@ -92,6 +93,10 @@ private:
   std::vector<int> TriangleCount;
   std::vector<unsigned char> TriangleHidden;
   bool LayoutKnown = false;
+  // The polygons the layout was recorded for (compared by address and
+  // modification time, never dereferenced unless they match the input's).
+  vtkCellArray* LayoutPolys = nullptr;
+  vtkMTimeType LayoutPolysTime = 0;
   std::vector<vtkIdType> Applied; // polygons degenerate in the buffer now
   std::vector<vtkIdType> Wanted;
 

@@ -557,7 +557,8 @@ long ValuesDiffering(vtkPolyData* a, vtkPolyData* b)
   return matched ? differing : -1;
 }
 
-// A deforming mesh (new points, the same cells, as a time series gives):
+// A deforming mesh (new points, the same cells, as a time series gives; in
+// the last move a triangle loses its area):
 // the filter keeps the base mesh's cell arrays (WeldedSurface::movePoints)
 // and makes only its points and attributes again (a cell scalar that changes
 // every frame shows it does: the base mesh equals a fresh filter's), and the
@@ -630,18 +631,34 @@ bool CheckDeformingMesh(vtkPolyData* bunny, vtkTexture* filterTexture, vtkTextur
       points->GetPoint(p, x);
       points->SetPoint(p, x[0] * 1.03, x[1] + 0.02 * x[0], x[2]);
     }
+    const bool collapse = step == 2;
+    if (collapse)
+    {
+      // The first triangle loses its area (a corner onto another), and the
+      // renderer's index buffer then leaves it out: every later triangle's
+      // place in it moves, which the mapper must see to hide the right ones.
+      // (A moved surface does not weld points that come together, where a
+      // fresh filter would: the base meshes are compared before this.)
+      vtkNew<vtkIdList> first;
+      deforming->GetPolys()->GetCellAtId(0, first);
+      points->SetPoint(first->GetId(1), points->GetPoint(first->GetId(0)));
+    }
     points->Modified();
     builder->BuildBaseMesh(built, base);
     keptCells = keptCells && base->GetPolys() == cellsBefore;
-    vtkNew<vtkSilhouetteSmoothingFilter> freshBuilder;
-    vtkNew<vtkPolyData> fresh;
-    freshBuilder->BuildBaseMesh(built, fresh);
-    const long differing = ValuesDiffering(base, fresh);
-    baseDiffering = differing < 0 || baseDiffering < 0 ? -1 : baseDiffering + differing;
+    if (!collapse)
+    {
+      vtkNew<vtkSilhouetteSmoothingFilter> freshBuilder;
+      vtkNew<vtkPolyData> fresh;
+      freshBuilder->BuildBaseMesh(built, fresh);
+      const long differing = ValuesDiffering(base, fresh);
+      baseDiffering = differing < 0 || baseDiffering < 0 ? -1 : baseDiffering + differing;
+    }
     worst = std::max(worst, Differing(viaMapper.Pixels(), viaFilter.Pixels()));
   }
   const bool passedThrough = base->GetNumberOfVerts() == 1 && base->GetNumberOfLines() == 1;
-  std::printf("deforming bunny: at most %ld pixels differ over 3 moves; the base mesh %s its "
+  std::printf("deforming bunny: at most %ld pixels differ over 3 moves (the last collapses a "
+              "triangle); the base mesh %s its "
               "cell arrays, passed %lld vertex and %lld line cells through (1 and 1 expected), "
               "and differs from a fresh filter's in %ld values (-1: in its arrays)\n",
     worst, keptCells ? "kept" : "did not keep", static_cast<long long>(base->GetNumberOfVerts()),

@@ -16,9 +16,10 @@ namespace support = vtkSilhouetteFilterSupport;
 int vtkPNTriangleFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  return support::RequestTessellation(
-    this, inputVector, outputVector, this->Level, [this](const support::Triangles& mesh) {
-      return silsmooth::tessellatePNTriangles(mesh.Points, mesh.Cells, mesh.Normals, this->Level);
+  return support::RequestTessellation(this, inputVector, outputVector, this->Level,
+    [this](const support::Triangles& mesh, const silsmooth::ProgressCallback& progress) {
+      return silsmooth::tessellatePNTriangles(
+        mesh.Points, mesh.Cells, mesh.Normals, this->Level, progress);
     });
 }
 

@@ -18,10 +18,10 @@ namespace support = vtkSilhouetteFilterSupport;
 int vtkPhongTessellationFilter::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  return support::RequestTessellation(
-    this, inputVector, outputVector, this->Level, [this](const support::Triangles& mesh) {
+  return support::RequestTessellation(this, inputVector, outputVector, this->Level,
+    [this](const support::Triangles& mesh, const silsmooth::ProgressCallback& progress) {
       return silsmooth::tessellatePhong(
-        mesh.Points, mesh.Cells, mesh.Normals, this->Level, this->ShapeFactor);
+        mesh.Points, mesh.Cells, mesh.Normals, this->Level, this->ShapeFactor, progress);
     });
 }
 

@@ -552,15 +552,23 @@ void WriteTessellation(vtkPolyData* input, vtkPolyData* output, const Triangles&
 
 int RequestTessellation(vtkAlgorithm* self, vtkInformationVector** inputVector,
   vtkInformationVector* outputVector, int level,
-  const std::function<silsmooth::TessellationResult(const Triangles&)>& tessellate)
+  const std::function<silsmooth::TessellationResult(
+    const Triangles&, const silsmooth::ProgressCallback&)>& tessellate)
 {
   const std::optional<Surface> surface = ReadSurface(self, inputVector, outputVector);
   if (!surface)
   {
     return 0;
   }
-  WriteTessellation(
-    surface->Input, surface->Output, surface->Mesh, tessellate(surface->Mesh), level);
+  const silsmooth::TessellationResult result = tessellate(surface->Mesh, [self](double done) {
+    self->UpdateProgress(done);
+    return !self->GetAbortExecute();
+  });
+  if (result.Aborted)
+  {
+    return 1; // the output stays empty
+  }
+  WriteTessellation(surface->Input, surface->Output, surface->Mesh, result, level);
   return 1;
 }
 

@@ -151,10 +151,13 @@ void WriteTessellation(vtkPolyData* input, vtkPolyData* output, const Triangles&
   const silsmooth::TessellationResult& result, int level);
 
 /// The whole RequestData of a uniform tessellation filter: ReadSurface, then
-/// `tessellate(mesh)`, written with WriteTessellation.
+/// `tessellate(mesh, progress)`, written with WriteTessellation. `progress`
+/// reports to `self` (UpdateProgress) and stops the work when `self` is
+/// asked to abort; the output then stays empty.
 int RequestTessellation(vtkAlgorithm* self, vtkInformationVector** inputVector,
   vtkInformationVector* outputVector, int level,
-  const std::function<silsmooth::TessellationResult(const Triangles&)>& tessellate);
+  const std::function<silsmooth::TessellationResult(
+    const Triangles&, const silsmooth::ProgressCallback&)>& tessellate);
 
 /// The cell array `LineKind` of the line filters (0 silhouette, 1 crease,
 /// 2 border: the kinds of a line drawing), `count` tuples of `kind`.

@@ -73,7 +73,8 @@ glm::dvec3 pnNormal(const std::array<glm::dvec3, 3>& p, const std::array<glm::dv
 }
 
 PNTriangleResult tessellatePNTriangles(const std::vector<glm::dvec3>& points,
-  const std::vector<Triangle>& triangles, const std::vector<glm::dvec3>& normals, int level)
+  const std::vector<Triangle>& triangles, const std::vector<glm::dvec3>& normals, int level,
+  const ProgressCallback& progress)
 {
   TessellationPatch patch;
   patch.Position = pnPosition;
@@ -82,7 +83,7 @@ PNTriangleResult tessellatePNTriangles(const std::vector<glm::dvec3>& points,
   // one reads only the edge's data (and keeps the output as it always was).
   patch.EdgePosition = edgePosition;
   patch.EdgeNormal = edgeNormalAt;
-  return tessellateUniformly(points, triangles, normals, level, patch);
+  return tessellateUniformly(points, triangles, normals, level, patch, progress);
 }
 
 } // namespace silsmooth

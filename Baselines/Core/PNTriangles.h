@@ -41,8 +41,10 @@ glm::dvec3 pnNormal(const std::array<glm::dvec3, 3>& p, const std::array<glm::dv
 
 /// Tessellates every triangle at `level` (k >= 0) points per edge. `normals`
 /// may be empty or hold zero vectors: those are replaced by angle-weighted
-/// normals. Triangles that repeat a corner are copied unchanged.
+/// normals. Triangles that repeat a corner are copied unchanged. `progress`
+/// as in tessellateUniformly.
 PNTriangleResult tessellatePNTriangles(const std::vector<glm::dvec3>& points,
-  const std::vector<Triangle>& triangles, const std::vector<glm::dvec3>& normals, int level);
+  const std::vector<Triangle>& triangles, const std::vector<glm::dvec3>& normals, int level,
+  const ProgressCallback& progress = {});
 
 } // namespace silsmooth

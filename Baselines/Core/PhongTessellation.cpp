@@ -25,7 +25,7 @@ glm::dvec3 phongNormal(const std::array<glm::dvec3, 3>& n, double u, double v, d
 
 PhongTessellationResult tessellatePhong(const std::vector<glm::dvec3>& points,
   const std::vector<Triangle>& triangles, const std::vector<glm::dvec3>& normals, int level,
-  double shapeFactor)
+  double shapeFactor, const ProgressCallback& progress)
 {
   TessellationPatch patch;
   patch.Position = [shapeFactor](const TriangleCorners& p, const TriangleCorners& n, double u,
@@ -46,7 +46,7 @@ PhongTessellationResult tessellatePhong(const std::vector<glm::dvec3>& points,
                        const glm::dvec3& n1, double t) {
     return phongNormal({ { n0, n1, n1 } }, 1.0 - t, t, 0.0);
   };
-  return tessellateUniformly(points, triangles, normals, level, patch);
+  return tessellateUniformly(points, triangles, normals, level, patch, progress);
 }
 
 } // namespace silsmooth

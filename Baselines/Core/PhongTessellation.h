@@ -49,9 +49,9 @@ glm::dvec3 phongNormal(const std::array<glm::dvec3, 3>& n, double u, double v, d
 /// Phong patch. `normals` may be empty or hold zero vectors: those are
 /// replaced by angle-weighted normals. Triangles that repeat a corner are
 /// copied unchanged. `shapeFactor` is used as given (the paper keeps it in
-/// [0, 1]).
+/// [0, 1]). `progress` as in tessellateUniformly.
 PhongTessellationResult tessellatePhong(const std::vector<glm::dvec3>& points,
   const std::vector<Triangle>& triangles, const std::vector<glm::dvec3>& normals, int level,
-  double shapeFactor = PhongDefaultShapeFactor);
+  double shapeFactor = PhongDefaultShapeFactor, const ProgressCallback& progress = {});
 
 } // namespace silsmooth

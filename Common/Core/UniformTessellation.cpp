@@ -7,9 +7,23 @@
 namespace silsmooth
 {
 
+namespace
+{
+
+constexpr std::size_t ProgressEvery = 4096; // edges or triangles between reports
+
+TessellationResult aborted()
+{
+  TessellationResult result;
+  result.Aborted = true;
+  return result;
+}
+
+} // namespace
+
 TessellationResult tessellateUniformly(const std::vector<glm::dvec3>& points,
   const std::vector<Triangle>& triangles, const std::vector<glm::dvec3>& normals, int level,
-  const TessellationPatch& patch)
+  const TessellationPatch& patch, const ProgressCallback& progress)
 {
   TessellationResult result;
   const int k = std::max(0, level);
@@ -32,8 +46,14 @@ TessellationResult tessellateUniformly(const std::vector<glm::dvec3>& points,
   // of the edge then name the same points (no cracks from rounding).
   const EdgeTable edges(triangles);
   std::vector<Id> edgeFirst(edges.edgeCount(), -1); // id of the edge's first inner point
+  // The work: each edge once, then each triangle.
+  const double steps = static_cast<double>(edges.edgeCount() + triangles.size()) + 1.0;
   for (std::size_t e = 0; e < edges.edgeCount() && k > 0; ++e)
   {
+    if (e % ProgressEvery == 0 && !reportProgress(progress, static_cast<double>(e) / steps))
+    {
+      return aborted();
+    }
     const Edge& edge = edges.edge(static_cast<Id>(e));
     if (edge.low == edge.high)
     {
@@ -56,6 +76,11 @@ TessellationResult tessellateUniformly(const std::vector<glm::dvec3>& points,
   std::vector<Id> lattice;
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
+    if (t % ProgressEvery == 0 &&
+      !reportProgress(progress, static_cast<double>(edges.edgeCount() + t) / steps))
+    {
+      return aborted();
+    }
     const Triangle& tri = triangles[t];
     if (hasRepeatedCorner(tri) || k == 0)
     {

@@ -21,6 +21,7 @@
 #pragma once
 
 #include "MeshTopology.h"
+#include "Progress.h"
 
 #include <glm/vec3.hpp>
 
@@ -44,6 +45,8 @@ struct TessellationResult
   std::vector<Triangle> Triangles;
   /// The input triangle of each output triangle.
   std::vector<Id> TriangleSource;
+  /// Stopped by the progress callback: everything above is empty.
+  bool Aborted = false;
 };
 
 /// One triangle's corner positions or normals, in its corner order.
@@ -69,9 +72,11 @@ struct TessellationPatch
 };
 
 /// Tessellates every triangle at `level` (k >= 0, less is 0) points per edge
-/// on `patch`, by the rules above.
+/// on `patch`, by the rules above. `progress` hears the fraction of the
+/// edges and triangles done, every 4,096 of them; when it returns false the
+/// result is empty and Aborted.
 TessellationResult tessellateUniformly(const std::vector<glm::dvec3>& points,
   const std::vector<Triangle>& triangles, const std::vector<glm::dvec3>& normals, int level,
-  const TessellationPatch& patch);
+  const TessellationPatch& patch, const ProgressCallback& progress = {});
 
 } // namespace silsmooth

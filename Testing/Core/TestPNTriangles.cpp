@@ -1,11 +1,14 @@
 // Curved PN triangles (Vlachos et al. 2001): counts, corners kept, flat stays
 // flat, watertight on a closed input, and a sphere's normals give a rounder
-// surface.
+// surface; progress is reported and a stop leaves nothing.
 #include "PNTriangles.h"
+
+#include "CoreTestMeshes.h"
 
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -115,4 +118,35 @@ TEST(PNTriangles, SphereNormalsRoundTheOctahedron)
     EXPECT_NEAR(glm::length(r.Normals[i]), 1.0, 1e-12);
     EXPECT_GT(glm::dot(r.Normals[i], r.Points[i]), 0.0);
   }
+}
+
+TEST(PNTriangles, ProgressRisesAndAStopLeavesNothing)
+{
+  // A sphere of about 8,000 triangles: reports every 4,096 edges or
+  // triangles, rising from 0 and below 1; the result is the same as without
+  // a callback. A callback that stops at the second report leaves an empty,
+  // aborted result.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::unitSphere(64, 64, points, triangles);
+  std::vector<double> heard;
+  const PNTriangleResult watched =
+    silsmooth::tessellatePNTriangles(points, triangles, points, 2, [&heard](double done) {
+      heard.push_back(done);
+      return true;
+    });
+  const PNTriangleResult plain = silsmooth::tessellatePNTriangles(points, triangles, points, 2);
+  EXPECT_FALSE(watched.Aborted);
+  EXPECT_EQ(watched.Points, plain.Points);
+  EXPECT_EQ(watched.Triangles, plain.Triangles);
+  ASSERT_GE(heard.size(), 5u);
+  EXPECT_EQ(heard.front(), 0.0);
+  EXPECT_TRUE(std::is_sorted(heard.begin(), heard.end()));
+  EXPECT_LT(heard.back(), 1.0);
+  int calls = 0;
+  const PNTriangleResult stopped = silsmooth::tessellatePNTriangles(
+    points, triangles, points, 2, [&calls](double) { return ++calls < 2; });
+  EXPECT_TRUE(stopped.Aborted);
+  EXPECT_TRUE(stopped.Points.empty() && stopped.Triangles.empty());
+  EXPECT_EQ(calls, 2);
 }

@@ -8,8 +8,9 @@
 // progressive mesh's build (the bunny), OpenSubdiv refinement (the coarse
 // bunny to level 3), the line visibility (2,000 short lines over a sphere),
 // the smoothing filter (the coarse bunny), whose core pass runs between two
-// checks, and the view-dependent level of detail's build (the bunny's
-// simplification and vertex hierarchy).
+// checks, the view-dependent level of detail's build (the bunny's
+// simplification and vertex hierarchy), and PN triangles and Phong
+// tessellation (the bunny at level 3).
 #include "vtkAlgorithm.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
@@ -17,6 +18,8 @@
 #include "vtkDataObject.h"
 #include "vtkNew.h"
 #include "vtkOpenSubdivRefiner.h"
+#include "vtkPNTriangleFilter.h"
+#include "vtkPhongTessellationFilter.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProgressiveMeshFilter.h"
@@ -180,6 +183,16 @@ int TestAbortAtHalf(int argc, char* argv[])
   lod->SetInputData(bunny);
   lod->SetCamera(silhouette_test::CameraAroundMesh(bunny, { 0.3, 0.2, 1.0 }, 3.0, false));
   ok = Check("level of detail", lod, false) && ok;
+
+  vtkNew<vtkPNTriangleFilter> pn;
+  pn->SetInputData(bunny);
+  pn->SetLevel(3);
+  ok = Check("PN triangles", pn, false) && ok;
+
+  vtkNew<vtkPhongTessellationFilter> phong;
+  phong->SetInputData(bunny);
+  phong->SetLevel(3);
+  ok = Check("Phong tessellation", phong, false) && ok;
 
   vtkNew<vtkSilhouetteLineVisibility> visibility;
   visibility->SetInputData(ShortLinesOnSphere(2000));

@@ -70,9 +70,20 @@ std::vector<double> dihedralCosines(const std::vector<glm::dvec3>& points,
 std::vector<double> dihedralCosines(const std::vector<glm::dvec3>& points,
   const std::vector<Triangle>& triangles, const EdgeSides& sides, const ParallelFor& parallelFor)
 {
+  std::vector<glm::dvec3> faceNormals;
+  std::vector<double> cosines;
+  dihedralCosines(points, triangles, sides, parallelFor, faceNormals, cosines);
+  return cosines;
+}
+
+void dihedralCosines(const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles,
+  const EdgeSides& sides, const ParallelFor& parallelFor, std::vector<glm::dvec3>& faceNormals,
+  std::vector<double>& cosines)
+{
   // Each triangle's unit normal once (an edge's two triangles each have
-  // three edges); NaN-free zero for a triangle that cannot be used.
-  std::vector<glm::dvec3> faceNormals(triangles.size());
+  // three edges); NaN-free zero for a triangle that cannot be used. Every
+  // entry of both buffers is written below.
+  faceNormals.resize(triangles.size());
   parallelFor(triangles.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t t = begin; t < end; ++t)
     {
@@ -85,7 +96,7 @@ std::vector<double> dihedralCosines(const std::vector<glm::dvec3>& points,
     }
   });
   const std::size_t edgeCount = sides.Count.size();
-  std::vector<double> cosines(edgeCount);
+  cosines.resize(edgeCount);
   parallelFor(edgeCount, [&](std::size_t begin, std::size_t end) {
     for (std::size_t e = begin; e < end; ++e)
     {
@@ -111,7 +122,6 @@ std::vector<double> dihedralCosines(const std::vector<glm::dvec3>& points,
       cosines[e] = glm::dot(n0, sameWay ? -n1 : n1);
     }
   });
-  return cosines;
 }
 
 std::vector<FeatureEdge> featureEdgesByAngle(const std::vector<glm::dvec3>& points,

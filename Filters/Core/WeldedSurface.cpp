@@ -247,7 +247,7 @@ std::unique_ptr<PreparedMesh> WeldedSurface::prepareGeometry(std::vector<glm::dv
   const std::vector<glm::dvec3>& normals, const GivenNormals& given,
   const std::vector<FeatureEdge>& markedFeatures, const SurfaceOptions& options,
   SurfaceStatistics& statistics, const ParallelFor& parallelFor, PreparedMesh* reusable,
-  bool* reused) const
+  bool* reused)
 {
   statistics.FlatShadedNormals = given.FlatShaded;
   const std::vector<Triangle>& welded = this->Welded;
@@ -316,9 +316,14 @@ std::unique_ptr<PreparedMesh> WeldedSurface::prepareGeometry(std::vector<glm::dv
   statistics.FlatCreaseEdgeCount = 0;
   // Both tests read the dihedral angles: computed once (a sixth of a
   // deforming mesh's frame at 1.3M triangles when computed for each).
-  const std::vector<double> cosines = options.DetectFlatCreases || options.DetectFeatures
-    ? dihedralCosines(points, welded, this->Sides, parallelFor)
-    : std::vector<double>{};
+  std::vector<double> ownCosines;
+  std::vector<double>& cosines = reusable ? this->MovedCosines : ownCosines;
+  if (options.DetectFlatCreases || options.DetectFeatures)
+  {
+    std::vector<glm::dvec3> ownFaceNormals;
+    dihedralCosines(points, welded, this->Sides, parallelFor,
+      reusable ? this->MovedFaceNormals : ownFaceNormals, cosines);
+  }
   if (options.DetectFlatCreases)
   {
     const std::vector<FeatureEdge> creases = flatSidedCreases(

@@ -203,12 +203,13 @@ private:
   // the kept welding, orientation and edge table. With `reusable` (the
   // prepared mesh of earlier positions), its topology is taken when the
   // features split the mesh as before (PreparedMesh::moved; `*reused` says
-  // whether it was, and reusable is then empty).
+  // whether it was, and reusable is then empty; the dihedral angles are
+  // then computed in MovedFaceNormals and MovedCosines).
   std::unique_ptr<PreparedMesh> prepareGeometry(std::vector<glm::dvec3> points,
     const std::vector<glm::dvec3>& normals, const GivenNormals& given,
     const std::vector<FeatureEdge>& markedFeatures, const SurfaceOptions& options,
     SurfaceStatistics& statistics, const ParallelFor& parallelFor, PreparedMesh* reusable = nullptr,
-    bool* reused = nullptr) const;
+    bool* reused = nullptr);
   Id outputOfPreparedCorner(std::size_t t, Id prepared) const;
   /// assemble() over the prepared triangles `only` (ascending), or over all
   /// of them when `only` is null.
@@ -234,6 +235,12 @@ private:
   std::vector<Triangle> Welded;
   EdgeTable Table;
   EdgeSides Sides; // of Table, for the dihedral angles of every move
+  /// The dihedral angles' buffers, kept from one move to the next (a
+  /// deforming mesh's frame would otherwise take 47 MB of fresh memory at
+  /// 1.3M triangles, whose page faults cost about 10 ms); empty until the
+  /// first move.
+  std::vector<glm::dvec3> MovedFaceNormals;
+  std::vector<double> MovedCosines;
   std::vector<Id> Components;
   std::unique_ptr<PreparedMesh> Prepared;
   SurfaceStatistics Statistics;

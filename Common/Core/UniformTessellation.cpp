@@ -46,8 +46,9 @@ TessellationResult tessellateUniformly(const std::vector<glm::dvec3>& points,
   // of the edge then name the same points (no cracks from rounding).
   const EdgeTable edges(triangles);
   std::vector<Id> edgeFirst(edges.edgeCount(), -1); // id of the edge's first inner point
-  // The work: each edge once, then each triangle.
-  const double steps = static_cast<double>(edges.edgeCount() + triangles.size()) + 1.0;
+  // The work: each edge once (at level 0 there is none), then each triangle.
+  const std::size_t edgeSteps = k > 0 ? edges.edgeCount() : 0;
+  const double steps = static_cast<double>(edgeSteps + triangles.size()) + 1.0;
   for (std::size_t e = 0; e < edges.edgeCount() && k > 0; ++e)
   {
     if (e % ProgressEvery == 0 && !reportProgress(progress, static_cast<double>(e) / steps))
@@ -77,7 +78,7 @@ TessellationResult tessellateUniformly(const std::vector<glm::dvec3>& points,
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
     if (t % ProgressEvery == 0 &&
-      !reportProgress(progress, static_cast<double>(edges.edgeCount() + t) / steps))
+      !reportProgress(progress, static_cast<double>(edgeSteps + t) / steps))
     {
       return aborted();
     }

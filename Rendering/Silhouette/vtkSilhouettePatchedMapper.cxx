@@ -193,21 +193,25 @@ namespace
 // Whether the fan triangles of `polys` over `x` (three coordinates per
 // point) that the superclass keeps (those without coincident corners:
 // AppendTrianglesWorker in vtkOpenGLIndexBufferObject.cxx) are `pristine`,
-// in order.
+// in order, `counts[c]` of them from polygon c. (The counts matter too: a
+// cell array edited in place keeps its modification time in VTK 9.1, and
+// two polygons could trade a kept triangle with the list unchanged.)
 template<typename Coordinate>
-bool KeptTrianglesAre(
-  vtkCellArray* polys, const Coordinate* x, const std::vector<unsigned int>& pristine)
+bool KeptTrianglesAre(vtkCellArray* polys, const Coordinate* x,
+  const std::vector<unsigned int>& pristine, const std::vector<int>& counts)
 {
   auto same = [x](vtkIdType a, vtkIdType b) {
     return x[3 * a] == x[3 * b] && x[3 * a + 1] == x[3 * b + 1] && x[3 * a + 2] == x[3 * b + 2];
   };
   std::size_t next = 0;
+  std::size_t c = 0;
   auto it = vtk::TakeSmartPointer(polys->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++c)
   {
     vtkIdType n = 0;
     const vtkIdType* ids = nullptr;
     it->GetCurrentCell(n, ids);
+    const std::size_t before = next;
     for (vtkIdType i = 1; i + 1 < n; ++i)
     {
       if (same(ids[0], ids[i]) || same(ids[i + 1], ids[i]) || same(ids[i + 1], ids[0]))
@@ -222,8 +226,12 @@ bool KeptTrianglesAre(
       }
       next += 3;
     }
+    if (c >= counts.size() || static_cast<std::size_t>(counts[c]) * 3 != next - before)
+    {
+      return false;
+    }
   }
-  return next == pristine.size();
+  return next == pristine.size() && c == counts.size();
 }
 
 } // namespace
@@ -249,12 +257,12 @@ bool vtkSilhouettePatchedMapper::LayoutUnchanged(vtkPolyData* poly) const
   if (auto* doubles = vtkDoubleArray::FastDownCast(data))
   {
     return doubles->GetNumberOfComponents() == 3 &&
-      KeptTrianglesAre(polys, doubles->GetPointer(0), this->Pristine);
+      KeptTrianglesAre(polys, doubles->GetPointer(0), this->Pristine, this->TriangleCount);
   }
   if (auto* floats = vtkFloatArray::FastDownCast(data))
   {
     return floats->GetNumberOfComponents() == 3 &&
-      KeptTrianglesAre(polys, floats->GetPointer(0), this->Pristine);
+      KeptTrianglesAre(polys, floats->GetPointer(0), this->Pristine, this->TriangleCount);
   }
   return false;
 }

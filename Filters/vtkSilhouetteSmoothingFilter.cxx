@@ -79,8 +79,6 @@ std::vector<silsmooth::FeatureEdge> MarkedFeatures(vtkPolyData* input, bool useL
   return marked;
 }
 
-// The input's cell arrays (which objects, and their times) and its point
-// count: what must stay for a change to be one of the points only.
 // The core's loops on vtkSMPTools.
 void SMPFor(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body)
 {
@@ -89,6 +87,8 @@ void SMPFor(std::size_t count, const std::function<void(std::size_t, std::size_t
   });
 }
 
+// The input's cell arrays (which objects, and their times) and its point
+// count: what must stay for a change to be one of the points only.
 std::array<vtkMTimeType, 9> CellsOf(vtkPolyData* input)
 {
   vtkCellArray* cells[4] = { input->GetVerts(), input->GetLines(), input->GetPolys(),

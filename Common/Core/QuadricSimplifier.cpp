@@ -1,5 +1,7 @@
 #include "QuadricSimplifier.h"
 
+#include "FiniteVector.h"
+
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
@@ -342,8 +344,7 @@ private:
       // Trust the optimum only near the edge (a far optimum of a nearly
       // flat region makes spikes).
       const double edgeLength = glm::length(this->P(b) - this->P(a));
-      if (std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z) &&
-        glm::length(v - best) <= 2.0 * edgeLength)
+      if (isFinite(v) && glm::length(v - best) <= 2.0 * edgeLength)
       {
         best = v;
         cost = q(v);

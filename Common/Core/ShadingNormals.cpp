@@ -1,5 +1,7 @@
 #include "ShadingNormals.h"
 
+#include "FiniteVector.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -111,7 +113,7 @@ std::vector<glm::dvec3> crossWeightedNormals(
         const double scale = glm::dot(a, a) * glm::dot(b, b);
         c = scale > 0.0 && std::isfinite(scale) ? c / scale : glm::dvec3(0.0);
       }
-      if (std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z))
+      if (isFinite(c))
       {
         sums[static_cast<std::size_t>(t[k])] += c;
       }

@@ -1,5 +1,6 @@
 #include "WeldedSurface.h"
 
+#include "FiniteVector.h"
 #include "ShadingNormals.h"
 #include "SurfaceOrientation.h"
 #include "SurfaceWelding.h"
@@ -260,8 +261,13 @@ std::unique_ptr<PreparedMesh> WeldedSurface::prepareGeometry(std::vector<glm::dv
   auto givenCornerNormal = [&](std::size_t t, std::size_t k) -> const glm::dvec3& {
     return normals[static_cast<std::size_t>(this->InputTriangles[t][inputCorner(t, k)])];
   };
-  // Per component: whether its given normals are reversed.
+  // Per component: whether its given normals are reversed; and whether
+  // triangle t's are.
   std::vector<unsigned char> reversedComponent;
+  auto reversedAt = [&](std::size_t t) {
+    return !reversedComponent.empty() && this->Components[t] >= 0 &&
+      reversedComponent[static_cast<std::size_t>(this->Components[t])] != 0;
+  };
   bool normalsReversed = false;
   if (options.Orient && given.Use && !this->Components.empty())
   {
@@ -283,7 +289,7 @@ std::unique_ptr<PreparedMesh> WeldedSurface::prepareGeometry(std::vector<glm::dv
       for (std::size_t k = 0; k < 3; ++k)
       {
         const glm::dvec3& normal = givenCornerNormal(t, k);
-        if (std::isfinite(normal.x) && std::isfinite(normal.y) && std::isfinite(normal.z))
+        if (isFinite(normal))
         {
           agreement[static_cast<std::size_t>(this->Components[t])] += glm::dot(areaNormal, normal);
         }
@@ -296,8 +302,7 @@ std::unique_ptr<PreparedMesh> WeldedSurface::prepareGeometry(std::vector<glm::dv
     }
     for (std::size_t t = 0; t < welded.size() && !normalsReversed; ++t)
     {
-      normalsReversed = this->Components[t] >= 0 &&
-        reversedComponent[static_cast<std::size_t>(this->Components[t])];
+      normalsReversed = reversedAt(t);
     }
   }
 
@@ -348,9 +353,7 @@ std::unique_ptr<PreparedMesh> WeldedSurface::prepareGeometry(std::vector<glm::dv
     cornerNormals = CornerNormals(
       [&](std::size_t t, std::size_t k) {
         const glm::dvec3& normal = givenCornerNormal(t, k);
-        const bool reverse = !reversedComponent.empty() && this->Components[t] >= 0 &&
-          reversedComponent[static_cast<std::size_t>(this->Components[t])];
-        return reverse ? -normal : normal;
+        return reversedAt(t) ? -normal : normal;
       },
       welded.size());
   }

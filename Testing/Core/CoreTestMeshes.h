@@ -3,6 +3,7 @@
 
 #include "MeshTopology.h"
 #include "ViewGeometry.h"
+#include "WeldedSurface.h"
 
 #include <glm/vec3.hpp>
 
@@ -125,6 +126,34 @@ inline ManifoldCheck checkManifold(const std::vector<silsmooth::Triangle>& trian
     check.Unpaired += directed.count({ edge.second, edge.first }) ? 0 : 1;
   }
   return check;
+}
+
+// Every corner its own point (what VTK's OBJ reader makes of a textured
+// asset): corner 3t + k is point 3t + k.
+inline void makeSoup(const std::vector<glm::dvec3>& points,
+  const std::vector<silsmooth::Triangle>& triangles, std::vector<glm::dvec3>& soupPoints,
+  std::vector<silsmooth::Triangle>& soupTriangles)
+{
+  soupPoints.clear();
+  soupTriangles.clear();
+  for (const silsmooth::Triangle& t : triangles)
+  {
+    const silsmooth::Id base = static_cast<silsmooth::Id>(soupPoints.size());
+    for (const silsmooth::Id p : t)
+    {
+      soupPoints.push_back(points[static_cast<std::size_t>(p)]);
+    }
+    soupTriangles.push_back({ { base, base + 1, base + 2 } });
+  }
+}
+
+/// Surface options without the flat-sided crease detection, for meshes
+/// whose creases the tests name themselves.
+inline silsmooth::SurfaceOptions plainOptions()
+{
+  silsmooth::SurfaceOptions options;
+  options.DetectFlatCreases = false;
+  return options;
 }
 
 } // namespace coretest

@@ -1,17 +1,14 @@
 #include "LegacyCheck.h"
 
 #include "CliErrors.h"
+#include "TextScanning.h"
 
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <fstream>
-#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -22,27 +19,6 @@ namespace
 
 // vtkDataReader reads header lines into 256-character buffers.
 constexpr std::size_t MaximumLine = 255;
-
-// For messages: control and non-ASCII bytes as '?', at most 40 characters.
-std::string Printable(const std::string& text)
-{
-  std::string printable = text.substr(0, 40);
-  for (char& c : printable)
-  {
-    if (!std::isprint(static_cast<unsigned char>(c)))
-    {
-      c = '?';
-    }
-  }
-  return printable;
-}
-
-std::string Lower(std::string text)
-{
-  std::transform(text.begin(), text.end(), text.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return text;
-}
 
 // Bytes per value of a legacy data type in a BINARY file; 0 if unknown.
 std::size_t BinarySize(const std::string& type)
@@ -67,6 +43,7 @@ public:
   LegacyChecker(const std::string& path, std::string bytes)
     : Path(path)
     , Bytes(std::move(bytes))
+    , Text(this->Bytes)
   {
   }
 
@@ -83,23 +60,23 @@ public:
     this->MajorVersion =
       std::sscanf(version.c_str(), "# vtk DataFile Version %d.%d", &major, &minor) == 2 ? major : 0;
     this->Line(); // the title
-    const std::string format = Lower(this->Line());
+    const std::string format = Lowercase(this->Line());
     this->Binary = format.rfind("binary", 0) == 0;
     if (!this->Binary && format.rfind("ascii", 0) != 0)
     {
       this->Fail("the third line is neither ASCII nor BINARY");
     }
-    if (Lower(this->Word()) != "dataset" || Lower(this->Word()) != "polydata")
+    if (Lowercase(this->Word()) != "dataset" || Lowercase(this->Word()) != "polydata")
     {
       this->Fail("no 'DATASET POLYDATA' line");
     }
     while (true)
     {
-      const std::string keyword = Lower(this->Word());
+      const std::string keyword = Lowercase(this->Word());
       if (keyword == "points")
       {
         const long long count = this->Count("POINTS");
-        const std::string type = Lower(this->Word());
+        const std::string type = Lowercase(this->Word());
         this->Values(3 * count, type, "POINTS");
       }
       else if (keyword == "vertices" || keyword == "lines" || keyword == "polygons" ||
@@ -140,29 +117,18 @@ private:
     {
       if (keyword.rfind(known, 0) == 0)
       {
-        this->Fail("unknown keyword '" + Printable(keyword) + "'");
+        this->Fail("unknown keyword '" + Excerpt(keyword) + "'");
       }
     }
-  }
-
-  // The rest of the current line.
-  std::string RestOfLine()
-  {
-    const std::size_t end = std::min(this->Bytes.find('\n', this->Position), this->Bytes.size());
-    std::string rest = this->Bytes.substr(this->Position, end - this->Position);
-    this->Position = end;
-    return rest;
   }
 
   // An array's METADATA block (component names, information keys), which
   // VTK 9 writes after the array and ends with a blank line.
   void SkipMetadata()
   {
-    this->RestOfLine();
-    while (this->Position < this->Bytes.size())
+    this->Text.SkipToNextLine();
+    for (std::string line; this->Text.NextLine(line);)
     {
-      ++this->Position; // the newline
-      const std::string line = this->RestOfLine();
       if (line.find_first_not_of(" \t\r") == std::string::npos)
       {
         return;
@@ -189,7 +155,7 @@ private:
         this->Fail("FIELD array: " + std::to_string(components) + " x " + std::to_string(tuples) +
           " values cannot fit in the file");
       }
-      this->Values(components * tuples, Lower(this->Word()), "FIELD array");
+      this->Values(components * tuples, Lowercase(this->Word()), "FIELD array");
     }
   }
 
@@ -198,22 +164,22 @@ private:
   {
     while (true)
     {
-      const std::string keyword = Lower(this->Word());
+      const std::string keyword = Lowercase(this->Word());
       const auto values = [&](long long perTuple, const std::string& type) {
         this->Values(perTuple * count, type, keyword);
       };
       if (keyword == "scalars")
       {
         this->Word();
-        const std::string type = Lower(this->Word());
-        const std::string rest = this->RestOfLine();
+        const std::string type = Lowercase(this->Word());
+        const std::string rest = this->Text.RestOfLine();
         const int components =
           rest.find_first_not_of(" \t\r") == std::string::npos ? 1 : std::atoi(rest.c_str());
         if (components < 1 || components > 4)
         {
           this->Fail("SCALARS: " + std::to_string(components) + " components");
         }
-        if (Lower(this->Word()) != "lookup_table")
+        if (Lowercase(this->Word()) != "lookup_table")
         {
           this->Fail("SCALARS: no LOOKUP_TABLE line");
         }
@@ -240,7 +206,7 @@ private:
           : keyword == "tensors"                                                ? 9
           : keyword == "tensors6"                                               ? 6
                                                                                 : 1;
-        values(perTuple, Lower(this->Word()));
+        values(perTuple, Lowercase(this->Word()));
       }
       else if (keyword == "texture_coordinates")
       {
@@ -250,7 +216,7 @@ private:
         {
           this->Fail("TEXTURE_COORDINATES: dimension " + std::to_string(dimension));
         }
-        values(dimension, Lower(this->Word()));
+        values(dimension, Lowercase(this->Word()));
       }
       else if (keyword == "field")
       {
@@ -277,15 +243,15 @@ private:
     throw RuntimeError("cannot read '" + this->Path + "': malformed legacy VTK file: " + problem);
   }
 
+  // A header line, as vtkDataReader reads it into a 256-byte buffer.
   std::string Line()
   {
-    const std::size_t end = this->Bytes.find('\n', this->Position);
-    if (end == std::string::npos || end - this->Position > MaximumLine)
+    std::string line;
+    bool ended = false;
+    if (!this->Text.NextLine(line, &ended) || !ended || line.size() > MaximumLine)
     {
       this->Fail("a header line is missing or longer than 255 characters");
     }
-    std::string line = this->Bytes.substr(this->Position, end - this->Position);
-    this->Position = end + 1;
     return line;
   }
 
@@ -293,23 +259,7 @@ private:
   // Words are read as vtkDataReader::ReadString reads them, into 256-byte
   // buffers: a longer word is two (its name, then its type, for a SCALARS
   // line). Numbers are read whole, as iostream reads them.
-  std::string Word(std::size_t limit = MaximumLine)
-  {
-    const auto space = [](unsigned char c) {
-      return std::isspace(c) != 0;
-    };
-    while (this->Position < this->Bytes.size() && space(this->Bytes[this->Position]))
-    {
-      ++this->Position;
-    }
-    const std::size_t start = this->Position;
-    while (this->Position < this->Bytes.size() && !space(this->Bytes[this->Position]) &&
-      this->Position - start < limit)
-    {
-      ++this->Position;
-    }
-    return this->Bytes.substr(start, this->Position - start);
-  }
+  std::string Word(std::size_t limit = MaximumLine) { return this->Text.Word(limit); }
 
   // An ASCII integer as iostream reads it: digits only, in range.
   long long Integer(const std::string& what)
@@ -322,15 +272,10 @@ private:
     // At least one digit after an optional sign: a lone "+" is no number to
     // vtkPolyDataReader, which then leaves the array out and crashes (found
     // by fuzz_mesh_io in a FIELD array's tuple count).
-    const std::size_t start = (word[0] == '-' || word[0] == '+') ? 1 : 0;
-    const bool digits = word.size() > start &&
-      std::all_of(word.begin() + static_cast<std::ptrdiff_t>(start), word.end(),
-        [](unsigned char c) { return std::isdigit(c) != 0; });
-    errno = 0;
-    const long long value = digits ? std::strtoll(word.c_str(), nullptr, 10) : 0;
-    if (!digits || errno == ERANGE)
+    long long value = 0;
+    if (!ParseWholeInteger(word, value))
     {
-      this->Fail(what + ": '" + Printable(word) + "' is not an integer");
+      this->Fail(what + ": '" + Excerpt(word) + "' is not an integer");
     }
     return value;
   }
@@ -345,13 +290,6 @@ private:
     return count;
   }
 
-  // After a section's header line: BINARY data starts on the next line.
-  void SkipToNextLine()
-  {
-    const std::size_t end = this->Bytes.find('\n', this->Position);
-    this->Position = end == std::string::npos ? this->Bytes.size() : end + 1;
-  }
-
   // `count` values of `type`; returned (as integers) only when `keep`.
   std::vector<long long> Values(
     long long count, const std::string& type, const std::string& what, bool keep = false)
@@ -364,21 +302,22 @@ private:
     const std::size_t size = BinarySize(type);
     if (size == 0)
     {
-      this->Fail(what + ": unknown data type '" + Printable(type) + "'");
+      this->Fail(what + ": unknown data type '" + Excerpt(type) + "'");
     }
     const bool integer = type != "float" && type != "double";
     if (this->Binary)
     {
-      this->SkipToNextLine();
-      if (static_cast<unsigned long long>(count) * size > this->Bytes.size() - this->Position)
+      this->Text.SkipToNextLine();
+      if (static_cast<unsigned long long>(count) * size >
+        this->Bytes.size() - this->Text.Position())
       {
         this->Fail(what + ": the file ends inside the data (truncated binary data)");
       }
       for (long long i = 0; keep && i < count; ++i)
       {
         long long value = 0; // big-endian, signed
-        const auto* raw =
-          reinterpret_cast<const unsigned char*>(this->Bytes.data() + this->Position + i * size);
+        const auto* raw = reinterpret_cast<const unsigned char*>(
+          this->Bytes.data() + this->Text.Position() + i * size);
         value = (raw[0] & 0x80) ? -1 : 0;
         for (std::size_t b = 0; b < size; ++b)
         {
@@ -386,7 +325,7 @@ private:
         }
         kept.push_back(value);
       }
-      this->Position += count * size;
+      this->Text.Skip(static_cast<std::size_t>(count) * size);
       return kept;
     }
     for (long long i = 0; i < count; ++i)
@@ -409,20 +348,20 @@ private:
       {
         this->Fail(what + ": the file ends inside the data");
       }
-      char* end = nullptr;
-      const double value = std::strtod(word.c_str(), &end);
+      double value = 0.0;
+      const bool whole = ParseWholeNumber(word, value);
       const bool plain = std::all_of(word.begin(), word.end(), [](unsigned char c) {
         return std::isdigit(c) || c == '+' || c == '-' || c == '.' || c == 'e' || c == 'E';
       });
-      if (end != word.c_str() + word.size() || !plain)
+      if (!whole || !plain)
       {
-        this->Fail(what + ": '" + Printable(word) + "' is not a number");
+        this->Fail(what + ": '" + Excerpt(word) + "' is not a number");
       }
       // iostream fails on a value its type cannot hold, and the reader with it.
       if (!std::isfinite(value) ||
         (type == "float" && std::abs(value) > std::numeric_limits<float>::max()))
       {
-        this->Fail(what + ": '" + Printable(word) + "' does not fit in a " + type);
+        this->Fail(what + ": '" + Excerpt(word) + "' does not fit in a " + type);
       }
     }
     return kept;
@@ -438,12 +377,12 @@ private:
     if (this->MajorVersion >= 5)
     {
       // "POLYGONS offsets connectivity", then OFFSETS and CONNECTIVITY arrays.
-      if (Lower(this->Word()) != "offsets")
+      if (Lowercase(this->Word()) != "offsets")
       {
         this->Fail(what + ": no OFFSETS array");
       }
       const std::vector<long long> offsets =
-        this->Values(first, Lower(this->Word()), what + " OFFSETS", true);
+        this->Values(first, Lowercase(this->Word()), what + " OFFSETS", true);
       for (std::size_t i = 0; i < offsets.size(); ++i)
       {
         if ((i == 0 && offsets[i] != 0) || (i > 0 && offsets[i] < offsets[i - 1]) ||
@@ -456,11 +395,11 @@ private:
       {
         this->Fail(what + ": the offsets do not end at the connectivity size");
       }
-      if (Lower(this->Word()) != "connectivity")
+      if (Lowercase(this->Word()) != "connectivity")
       {
         this->Fail(what + ": no CONNECTIVITY array");
       }
-      this->Values(second, Lower(this->Word()), what + " CONNECTIVITY");
+      this->Values(second, Lowercase(this->Word()), what + " CONNECTIVITY");
       return;
     }
     // Legacy layout: "POLYGONS cells size", then size ints: n id id ... per cell.
@@ -483,7 +422,7 @@ private:
 
   std::string Path;
   std::string Bytes;
-  std::size_t Position = 0;
+  TextCursor Text;
   int MajorVersion = 0;
   bool Binary = false;
 };
@@ -492,13 +431,7 @@ private:
 
 void CheckLegacyVtkFile(const std::string& path)
 {
-  std::ifstream file(path, std::ios::binary);
-  if (!file)
-  {
-    throw RuntimeError("cannot read '" + path + "': " + std::strerror(errno));
-  }
-  std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  LegacyChecker(path, std::move(bytes)).Check();
+  LegacyChecker(path, ReadFileBytes(path)).Check();
 }
 
 } // namespace cli

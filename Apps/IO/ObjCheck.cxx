@@ -1,44 +1,21 @@
 #include "ObjCheck.h"
 
 #include "CliErrors.h"
+#include "TextScanning.h"
 
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
-#include <cstring>
-#include <fstream>
-#include <sstream>
+#include <string>
 #include <vector>
 
 namespace cli
 {
-namespace
-{
-
-// A whole word as an integer (strtol would stop at a NUL byte or a letter).
-bool ParseIndex(const std::string& word, long long& value)
-{
-  if (word.empty())
-  {
-    return false;
-  }
-  char* end = nullptr;
-  errno = 0;
-  value = std::strtoll(word.c_str(), &end, 10);
-  return end == word.c_str() + word.size() && errno != ERANGE;
-}
-
-} // namespace
 
 void CheckObjFile(const std::string& path)
 {
-  std::ifstream file(path);
-  if (!file)
-  {
-    throw RuntimeError("cannot read '" + path + "': " + std::strerror(errno));
-  }
+  const std::string bytes = ReadFileBytes(path);
   std::vector<std::string> lines;
-  for (std::string line; std::getline(file, line);)
+  TextCursor cursor(bytes);
+  for (std::string line; cursor.NextLine(line);)
   {
     lines.push_back(std::move(line));
   }
@@ -47,9 +24,8 @@ void CheckObjFile(const std::string& path)
   long long vertex = 0, textureCoordinates = 0, normals = 0;
   for (std::size_t number = 0; number < lines.size(); ++number)
   {
-    std::istringstream words(lines[number]);
-    std::string keyword;
-    words >> keyword;
+    const std::vector<std::string> words = WordsOf(lines[number]);
+    const std::string keyword = words.empty() ? std::string() : words[0];
     textureCoordinates += keyword == "vt";
     normals += keyword == "vn";
     if (keyword != "v")
@@ -59,14 +35,13 @@ void CheckObjFile(const std::string& path)
     ++vertex;
     const std::string where =
       "'" + path + "': line " + std::to_string(number + 1) + ", vertex " + std::to_string(vertex);
-    std::string word;
     int coordinates = 0;
     // x y z, then optional w or r g b.
-    while (words >> word)
+    for (std::size_t w = 1; w < words.size(); ++w)
     {
-      char* end = nullptr;
-      const double value = std::strtod(word.c_str(), &end);
-      if (end != word.c_str() + word.size() || !std::isfinite(value)) // a NUL byte stops strtod
+      const std::string& word = words[w];
+      double value = 0.0;
+      if (!ParseWholeNumber(word, value) || !std::isfinite(value)) // a NUL byte stops strtod
       {
         throw RuntimeError("cannot read " + where + ": '" + word + "' is not a finite number");
       }
@@ -96,16 +71,16 @@ void CheckObjFile(const std::string& path)
   // coordinate or normal index with none to refer to.
   for (std::size_t number = 0; number < lines.size(); ++number)
   {
-    std::istringstream words(lines[number]);
-    std::string keyword;
-    words >> keyword;
+    const std::vector<std::string> words = WordsOf(lines[number]);
+    const std::string keyword = words.empty() ? std::string() : words[0];
     if (keyword != "f" && keyword != "l" && keyword != "p")
     {
       continue;
     }
     const std::string where = "cannot read '" + path + "': line " + std::to_string(number + 1);
-    for (std::string corner; words >> corner;)
+    for (std::size_t w = 1; w < words.size(); ++w)
     {
+      const std::string& corner = words[w];
       std::vector<std::string> parts(1);
       for (const char c : corner)
       {
@@ -119,16 +94,16 @@ void CheckObjFile(const std::string& path)
         }
       }
       long long index = 0;
-      const bool wellFormed = parts.size() <= 3 && ParseIndex(parts[0], index) &&
-        (parts.size() < 2 || ParseIndex(parts[1], index) ||
+      const bool wellFormed = parts.size() <= 3 && ParseWholeInteger(parts[0], index) &&
+        (parts.size() < 2 || ParseWholeInteger(parts[1], index) ||
           (parts.size() == 3 && parts[1].empty())) &&
-        (parts.size() < 3 || ParseIndex(parts[2], index));
+        (parts.size() < 3 || ParseWholeInteger(parts[2], index));
       if (!wellFormed)
       {
         throw RuntimeError(where + ": '" + corner + "' is not v, v/vt, v//vn or v/vt/vn");
       }
       const auto requireInRange = [&](const std::string& part, long long count, const char* what) {
-        if (!part.empty() && ParseIndex(part, index) && (index < 1 || index > count))
+        if (!part.empty() && ParseWholeInteger(part, index) && (index < 1 || index > count))
         {
           throw RuntimeError(where + ": '" + corner + "' refers to " + what + " " + part +
             " but there are " + std::to_string(count));

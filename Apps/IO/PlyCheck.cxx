@@ -1,16 +1,14 @@
 #include "PlyCheck.h"
 
 #include "CliErrors.h"
+#include "TextScanning.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <iomanip>
-#include <iterator>
 #include <optional>
 #include <sstream>
 #include <utility>
@@ -148,7 +146,7 @@ public:
   {
     const Header header = this->ReadHeader();
     this->CheckElements(header);
-    this->Position = header.BodyOffset;
+    this->Body = TextCursor(this->Bytes, header.BodyOffset);
     for (const Element& element : header.Elements)
     {
       for (long long i = 0; i < element.Count; ++i)
@@ -215,25 +213,26 @@ private:
     Header header;
     std::size_t lineNumber = 0;
     bool sawFormat = false;
-    std::size_t position = 0;
+    TextCursor lines(this->Bytes);
     while (true)
     {
-      const std::size_t end = this->Bytes.find('\n', position);
-      if (end == std::string::npos)
+      std::string line;
+      bool ended = false;
+      if (!lines.NextLine(line, &ended) || !ended)
       {
         this->Fail(lineNumber == 0 ? "empty file" : "the header has no end_header line");
       }
-      std::string line = this->Bytes.substr(position, end - position);
       this->CheckLineText(line, "header line " + std::to_string(lineNumber + 1));
-      position = end + 1;
       ++lineNumber;
       if (!line.empty() && line.back() == '\r')
       {
         line.pop_back();
       }
-      std::istringstream words(line);
-      std::string keyword;
-      words >> keyword;
+      const std::vector<std::string> words = WordsOf(line);
+      const auto word = [&words](std::size_t k) {
+        return k < words.size() ? words[k] : std::string();
+      };
+      const std::string keyword = word(0);
       const std::string where = "header line " + std::to_string(lineNumber);
       if (lineNumber == 1)
       {
@@ -245,8 +244,7 @@ private:
       }
       if (keyword == "format")
       {
-        std::string format, version;
-        words >> format >> version;
+        const std::string format = word(1);
         if (format == "ascii")
         {
           header.BodyFormat = Format::Ascii;
@@ -268,13 +266,8 @@ private:
       else if (keyword == "element")
       {
         Element element;
-        std::string count;
-        words >> element.Name >> count;
-        char* countEnd = nullptr;
-        errno = 0;
-        element.Count = std::strtoll(count.c_str(), &countEnd, 10);
-        if (element.Name.empty() || count.empty() || *countEnd != '\0' || errno == ERANGE ||
-          element.Count < 0)
+        element.Name = word(1);
+        if (element.Name.empty() || !ParseWholeInteger(word(2), element.Count) || element.Count < 0)
         {
           this->Fail(where + ": bad element line '" + line + "'");
         }
@@ -287,14 +280,12 @@ private:
           this->Fail(where + ": property before any element");
         }
         Property property;
-        std::string type;
-        words >> type;
+        const std::string type = word(1);
         if (type == "list")
         {
-          std::string countType, itemType;
-          words >> countType >> itemType >> property.Name;
-          const auto count = ScalarTypeNamed(countType);
-          const auto item = ScalarTypeNamed(itemType);
+          property.Name = word(4);
+          const auto count = ScalarTypeNamed(word(2));
+          const auto item = ScalarTypeNamed(word(3));
           if (!count || !IsInteger(*count) || !item)
           {
             this->Fail(where + ": bad list property '" + line + "'");
@@ -305,7 +296,7 @@ private:
         }
         else
         {
-          words >> property.Name;
+          property.Name = word(2);
           const auto scalar = ScalarTypeNamed(type);
           if (!scalar)
           {
@@ -330,7 +321,7 @@ private:
     {
       this->Fail("the header has no format line");
     }
-    header.BodyOffset = position;
+    header.BodyOffset = lines.Position();
     return header;
   }
 
@@ -453,21 +444,13 @@ private:
   void CheckAsciiInstance(const Element& element, long long instance)
   {
     const std::string where = element.Name + " " + std::to_string(instance);
-    if (this->Position >= this->Bytes.size())
+    std::string text;
+    if (!this->Body.NextLine(text))
     {
       this->Fail("the file ends before " + where);
     }
-    std::size_t end = this->Bytes.find('\n', this->Position);
-    if (end == std::string::npos)
-    {
-      end = this->Bytes.size();
-    }
-    const std::string text = this->Bytes.substr(this->Position, end - this->Position);
     this->CheckLineText(text, where);
-    std::istringstream line(text);
-    this->Position = end + 1;
-    const std::vector<std::string> words(
-      (std::istream_iterator<std::string>(line)), std::istream_iterator<std::string>());
+    const std::vector<std::string> words = WordsOf(text);
     // vtkPLYReader 9.1 takes a line of white space for the end of the file,
     // reads on with values it does not have and crashes or drops what
     // follows.
@@ -482,11 +465,9 @@ private:
         this->Fail(where + " has too few values");
       }
       const std::string& word = words[next++];
-      char* end = nullptr;
-      const double value = std::strtod(word.c_str(), &end);
+      double value = 0.0;
       // The whole word: a NUL byte inside it ends the reader's line early.
-      if (word.empty() || end != word.c_str() + word.size() ||
-        (IsInteger(type) && std::trunc(value) != value))
+      if (!ParseWholeNumber(word, value) || (IsInteger(type) && std::trunc(value) != value))
       {
         this->Fail(where + " has a bad value '" + word + "'");
       }
@@ -531,13 +512,13 @@ private:
   double ReadBinary(ScalarType type, bool bigEndian, const std::string& where)
   {
     const std::size_t size = SizeOf(type);
-    if (this->Bytes.size() - this->Position < size)
+    if (this->Bytes.size() - this->Body.Position() < size)
     {
       this->Fail("the file ends inside " + where + " (truncated binary body)");
     }
     unsigned char raw[8];
-    std::memcpy(raw, this->Bytes.data() + this->Position, size);
-    this->Position += size;
+    std::memcpy(raw, this->Bytes.data() + this->Body.Position(), size);
+    this->Body.Skip(size);
     // Assemble the value in host order from the file's byte order.
     const bool hostIsLittle = [] {
       const std::uint16_t one = 1;
@@ -615,7 +596,7 @@ private:
       {
         this->CheckFaceSize(static_cast<long long>(count), instance);
       }
-      else if (static_cast<double>(this->Bytes.size() - this->Position) <
+      else if (static_cast<double>(this->Bytes.size() - this->Body.Position()) <
         count * static_cast<double>(SizeOf(property.Type)))
       {
         this->Fail("the file ends inside " + where + " (truncated binary body)");
@@ -636,7 +617,7 @@ private:
   // space (a final newline, say) may follow the last element.
   void CheckEnd(const Header& header) const
   {
-    const std::size_t from = std::min(this->Position, this->Bytes.size());
+    const std::size_t from = this->Body.Position();
     const std::size_t extra = this->Bytes.find_first_not_of(" \t\r\n", from);
     if (extra == std::string::npos)
     {
@@ -660,7 +641,7 @@ private:
 
   std::string Path;
   std::string Bytes;
-  std::size_t Position = 0;
+  TextCursor Body{ this->Bytes }; // where the body is read
   long long VertexCount = 0;
 };
 
@@ -668,17 +649,7 @@ private:
 
 void CheckPlyFile(const std::string& path)
 {
-  std::ifstream file(path, std::ios::binary);
-  if (!file)
-  {
-    throw RuntimeError("cannot read '" + path + "': " + std::strerror(errno));
-  }
-  std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
-  if (file.bad())
-  {
-    throw RuntimeError("cannot read '" + path + "': " + std::strerror(errno));
-  }
-  PlyChecker(path, std::move(bytes)).Check();
+  PlyChecker(path, ReadFileBytes(path)).Check();
 }
 
 } // namespace cli

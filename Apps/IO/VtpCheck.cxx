@@ -1,13 +1,11 @@
 #include "VtpCheck.h"
 
 #include "CliErrors.h"
+#include "TextScanning.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
-#include <iterator>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -408,13 +406,7 @@ void CheckDataArray(const VtpFile& file, const Tag& array)
 
 void CheckVtpFile(const std::string& path)
 {
-  std::ifstream stream(path, std::ios::binary);
-  if (!stream)
-  {
-    throw RuntimeError("cannot read '" + path + "': " + std::strerror(errno));
-  }
-  const std::string text(
-    (std::istreambuf_iterator<char>(stream)), std::istreambuf_iterator<char>());
+  const std::string text = ReadFileBytes(path);
   const std::size_t root = text.find("<VTKFile");
   if (root == std::string::npos)
   {

@@ -100,11 +100,19 @@ int vtkBoundaryCurveSmoothingFilter::RequestViewData(vtkInformation*,
     return 0;
   }
 
+  if (!support::ReportProgress(this, 0.4))
+  {
+    return 1; // aborted: the outputs stay empty
+  }
   silsmooth::BoundaryCurveParameters parameters;
   parameters.SamplesPerCurve = this->SamplesPerCurve;
   parameters.TolerancePixels = this->Tolerance;
   const silsmooth::BoundaryCurveResult result =
     internal.Mesh->smooth(view.Geometry, view.NormalToEye, parameters);
+  if (!support::ReportProgress(this, 0.7))
+  {
+    return 1;
+  }
 
   std::vector<vtkIdType> originalCell(result.TriangleSource.size());
   for (std::size_t t = 0; t < originalCell.size(); ++t)
@@ -149,6 +157,7 @@ int vtkBoundaryCurveSmoothingFilter::RequestViewData(vtkInformation*,
   lines->SetPoints(output->GetPoints());
   lines->GetPointData()->SetNormals(output->GetPointData()->GetNormals());
   lines->SetLines(curves);
+  this->UpdateProgress(1.0);
   return 1;
 }
 

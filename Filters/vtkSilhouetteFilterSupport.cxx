@@ -560,16 +560,20 @@ int RequestTessellation(vtkAlgorithm* self, vtkInformationVector** inputVector,
   {
     return 0;
   }
-  const silsmooth::TessellationResult result = tessellate(surface->Mesh, [self](double done) {
-    self->UpdateProgress(done);
-    return !self->GetAbortExecute();
-  });
+  const silsmooth::TessellationResult result =
+    tessellate(surface->Mesh, [self](double done) { return ReportProgress(self, done); });
   if (result.Aborted)
   {
     return 1; // the output stays empty
   }
   WriteTessellation(surface->Input, surface->Output, surface->Mesh, result, level);
   return 1;
+}
+
+bool ReportProgress(vtkAlgorithm* self, double fraction)
+{
+  self->UpdateProgress(fraction);
+  return !self->GetAbortExecute();
 }
 
 vtkSmartPointer<vtkUnsignedCharArray> LineKindArray(vtkIdType count, LineKindValue kind)

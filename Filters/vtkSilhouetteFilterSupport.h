@@ -159,6 +159,12 @@ int RequestTessellation(vtkAlgorithm* self, vtkInformationVector** inputVector,
   const std::function<silsmooth::TessellationResult(
     const Triangles&, const silsmooth::ProgressCallback&)>& tessellate);
 
+/// Reports `fraction` done to `self` (UpdateProgress) and says whether to go
+/// on: false once `self` is asked to abort. The filters whose work is a few
+/// steps (the line filters, the 2003 method, the proximity) call it between
+/// them and, on false, return with the output empty.
+bool ReportProgress(vtkAlgorithm* self, double fraction);
+
 /// The cell array `LineKind` of the line filters (0 silhouette, 1 crease,
 /// 2 border: the kinds of a line drawing), `count` tuples of `kind`.
 enum LineKindValue : unsigned char

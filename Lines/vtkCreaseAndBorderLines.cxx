@@ -37,7 +37,10 @@ int vtkCreaseAndBorderLines::RequestData(
     return 0;
   }
   auto& [input, output, triangles] = *surface;
-  this->UpdateProgress(0.2);
+  if (!support::ReportProgress(this, 0.2))
+  {
+    return 1; // aborted: the output stays empty
+  }
 
   silsmooth::SurfaceEdgeLineParameters parameters;
   parameters.Creases = this->Creases != 0;
@@ -46,7 +49,10 @@ int vtkCreaseAndBorderLines::RequestData(
   parameters.CreaseAngleDegrees = this->FeatureAngle;
   const std::vector<silsmooth::SurfaceEdgeLine> lines =
     silsmooth::surfaceEdgeLines(triangles.Points, triangles.Cells, triangles.Normals, parameters);
-  this->UpdateProgress(0.8);
+  if (!support::ReportProgress(this, 0.8))
+  {
+    return 1;
+  }
 
   // The points the lines use, in order of first use, with their data.
   vtkPointData* inPD = input->GetPointData();

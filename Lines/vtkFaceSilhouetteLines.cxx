@@ -80,6 +80,10 @@ int vtkFaceSilhouetteLines::RequestViewData(vtkInformation*, vtkInformationVecto
     return 0;
   }
 
+  if (!vtkSilhouetteFilterSupport::ReportProgress(this, 0.4))
+  {
+    return 1; // aborted: the output stays empty
+  }
   const silsmooth::ParallelFor smpFor =
     [](std::size_t count, const std::function<void(std::size_t, std::size_t)>& body) {
       vtkSMPTools::For(0, static_cast<vtkIdType>(count), [&body](vtkIdType begin, vtkIdType end) {
@@ -89,6 +93,10 @@ int vtkFaceSilhouetteLines::RequestViewData(vtkInformation*, vtkInformationVecto
   const silsmooth::FaceSilhouette lines =
     silsmooth::faceSilhouette(internal.Mesh->prepared(), view.Geometry, smpFor);
   const silsmooth::PreparedMesh& prepared = internal.Mesh->prepared();
+  if (!vtkSilhouetteFilterSupport::ReportProgress(this, 0.7))
+  {
+    return 1;
+  }
 
   const vtkIdType count = static_cast<vtkIdType>(lines.Crossings.size());
   vtkNew<vtkPoints> points;
@@ -151,6 +159,7 @@ int vtkFaceSilhouetteLines::RequestViewData(vtkInformation*, vtkInformationVecto
   triangleCount->SetNumberOfTuples(1);
   triangleCount->SetValue(0, static_cast<vtkIdType>(lines.Triangles.size()));
   output->GetFieldData()->AddArray(triangleCount);
+  this->UpdateProgress(1.0);
   return 1;
 }
 

@@ -36,8 +36,16 @@ int vtkSilhouetteProximity::RequestViewData(vtkInformation*, vtkInformationVecto
     return 0;
   }
   auto& [input, output, mesh] = *surface;
+  if (!vtkSilhouetteFilterSupport::ReportProgress(this, 0.3))
+  {
+    return 1; // aborted: the output stays empty
+  }
   const silsmooth::ProximityGrid grid =
     silsmooth::silhouetteProximity(mesh.Points, mesh.Cells, view.Geometry, this->Resolution);
+  if (!vtkSilhouetteFilterSupport::ReportProgress(this, 0.7))
+  {
+    return 1;
+  }
   const vtkIdType numPoints = input->GetNumberOfPoints();
 
   output->ShallowCopy(input);
@@ -83,6 +91,7 @@ int vtkSilhouetteProximity::RequestViewData(vtkInformation*, vtkInformationVecto
   cellSize->SetName("ProximityCellSize");
   cellSize->InsertNextValue(grid.CellSize);
   output->GetFieldData()->AddArray(cellSize);
+  this->UpdateProgress(1.0);
   return 1;
 }
 

@@ -9,13 +9,19 @@
 // bunny to level 3), the line visibility (2,000 short lines over a sphere),
 // the smoothing filter (the coarse bunny), whose core pass runs between two
 // checks, the view-dependent level of detail's build (the bunny's
-// simplification and vertex hierarchy), and PN triangles and Phong
-// tessellation (the bunny at level 3).
+// simplification and vertex hierarchy), PN triangles and Phong
+// tessellation (the bunny at level 3). The filters whose work is a few
+// steps check between them: the face and crease lines (the bunny, the
+// bracket), the 2003 method (the coarse bunny) and the silhouette proximity
+// (the bunny).
 #include "vtkAlgorithm.h"
+#include "vtkBoundaryCurveSmoothingFilter.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkCreaseAndBorderLines.h"
 #include "vtkDataObject.h"
+#include "vtkFaceSilhouetteLines.h"
 #include "vtkNew.h"
 #include "vtkOpenSubdivRefiner.h"
 #include "vtkPNTriangleFilter.h"
@@ -24,6 +30,7 @@
 #include "vtkPolyData.h"
 #include "vtkProgressiveMeshFilter.h"
 #include "vtkSilhouetteLineVisibility.h"
+#include "vtkSilhouetteProximity.h"
 #include "vtkSilhouetteQuadricDecimation.h"
 #include "vtkSilhouetteSmoothingFilter.h"
 #include "vtkSmartPointer.h"
@@ -193,6 +200,34 @@ int TestAbortAtHalf(int argc, char* argv[])
   phong->SetInputData(bunny);
   phong->SetLevel(3);
   ok = Check("Phong tessellation", phong, false) && ok;
+
+  const auto bracket =
+    silhouette_test::ReadMesh(silhouette_test::DataFile(argc, argv, "bracket.stl"));
+  if (!bracket)
+  {
+    std::printf("FAIL: the bracket reads\n");
+    return EXIT_FAILURE;
+  }
+  vtkNew<vtkCreaseAndBorderLines> creases;
+  creases->SetInputData(bracket);
+  ok = Check("crease and border lines", creases, false) && ok;
+
+  vtkSmartPointer<vtkCamera> bunnyCamera =
+    silhouette_test::CameraAroundMesh(bunny, { 0.3, 0.2, 1.0 }, 3.0, false);
+  vtkNew<vtkFaceSilhouetteLines> faceLines;
+  faceLines->SetInputData(bunny);
+  faceLines->SetCamera(bunnyCamera);
+  ok = Check("face silhouette lines", faceLines, false) && ok;
+
+  vtkNew<vtkBoundaryCurveSmoothingFilter> boundaryCurves;
+  boundaryCurves->SetInputData(coarse);
+  boundaryCurves->SetCamera(camera);
+  ok = Check("2003 boundary curves", boundaryCurves, false) && ok;
+
+  vtkNew<vtkSilhouetteProximity> proximity;
+  proximity->SetInputData(bunny);
+  proximity->SetCamera(bunnyCamera);
+  ok = Check("silhouette proximity", proximity, false) && ok;
 
   vtkNew<vtkSilhouetteLineVisibility> visibility;
   visibility->SetInputData(ShortLinesOnSphere(2000));

@@ -107,6 +107,16 @@ vtkSmartPointer<vtkActor> MakeActor(vtkPolyData* mesh)
   return MakeActor(producer->GetOutputPort());
 }
 
+// Lines in black, 2 px wide, unlit: the line styles' look.
+void AddBlackLines(vtkRenderer* renderer, vtkActor* actor)
+{
+  vtkProperty* property = actor->GetProperty();
+  property->SetColor(Black[0], Black[1], Black[2]);
+  property->SetLineWidth(2.0);
+  property->LightingOff();
+  renderer->AddActor(actor);
+}
+
 // The face-based silhouette of `input` (vtkFaceSilhouetteLines, Xing's Fig.
 // 6b) for the renderer's camera, with the shading normals and visibility
 // rule of the smoothing filter: what the silhouette is before smoothing.
@@ -317,11 +327,7 @@ void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter,
         mapper->SetColorModeToMapScalars();
         mapper->ScalarVisibilityOn();
       }
-      vtkProperty* property = actor->GetProperty();
-      property->SetColor(Black[0], Black[1], Black[2]);
-      property->SetLineWidth(2.0);
-      property->LightingOff();
-      renderer->AddActor(actor);
+      AddBlackLines(renderer, actor);
       break;
     }
     case RenderStyle::Charcoal:
@@ -331,12 +337,7 @@ void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter,
     {
       vtkSmartPointer<vtkPolyDataAlgorithm> strokes =
         MakeStrokes(renderer, filter, input, style, smoothed);
-      vtkSmartPointer<vtkActor> actor = MakeActor(strokes->GetOutputPort());
-      vtkProperty* property = actor->GetProperty();
-      property->SetColor(Black[0], Black[1], Black[2]);
-      property->SetLineWidth(2.0);
-      property->LightingOff();
-      renderer->AddActor(actor);
+      AddBlackLines(renderer, MakeActor(strokes->GetOutputPort()));
       break;
     }
   }

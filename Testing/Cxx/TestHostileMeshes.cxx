@@ -28,6 +28,7 @@
 #include "vtkSilhouetteSmoothingFilter.h"
 #include "vtkTestErrorObserver.h"
 
+#include "MeshValidation.h"
 #include "SilhouetteTestSupport.h"
 
 #include <algorithm>
@@ -461,28 +462,23 @@ bool Finite(const double v[3])
   return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
 }
 
-// Finite points and normals; every id of every cell in range.
+// What the program asks of any mesh it reads (cli::RequireConsistentMesh:
+// finite points, cell ids in range, one tuple per point or cell in each
+// array), and finite normals.
 bool Valid(vtkPolyData* mesh, std::string& problem)
 {
-  const vtkIdType points = mesh->GetNumberOfPoints();
-  for (vtkIdType i = 0; i < points; ++i)
+  try
   {
-    double p[3];
-    mesh->GetPoint(i, p);
-    if (!Finite(p))
-    {
-      problem = "point " + std::to_string(i) + " is not finite";
-      return false;
-    }
+    cli::RequireConsistentMesh(mesh, "the output");
+  }
+  catch (const std::exception& error)
+  {
+    problem = error.what();
+    return false;
   }
   if (vtkDataArray* normals = mesh->GetPointData()->GetNormals())
   {
-    if (normals->GetNumberOfTuples() != points)
-    {
-      problem = "the normals do not match the points";
-      return false;
-    }
-    for (vtkIdType i = 0; i < points; ++i)
+    for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
     {
       double n[3];
       normals->GetTuple(i, n);
@@ -490,26 +486,6 @@ bool Valid(vtkPolyData* mesh, std::string& problem)
       {
         problem = "normal " + std::to_string(i) + " is not finite";
         return false;
-      }
-    }
-  }
-  for (vtkCellArray* cells :
-    { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips() })
-  {
-    auto cell = vtk::TakeSmartPointer(cells->NewIterator());
-    vtkIdType size = 0;
-    const vtkIdType* ids = nullptr;
-    for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell())
-    {
-      cell->GetCurrentCell(size, ids);
-      for (vtkIdType k = 0; k < size; ++k)
-      {
-        if (ids[k] < 0 || ids[k] >= points)
-        {
-          problem =
-            "a cell names point " + std::to_string(ids[k]) + " of " + std::to_string(points);
-          return false;
-        }
       }
     }
   }

@@ -18,6 +18,7 @@
 #include "CliErrors.h"
 #include "FuzzBytes.h"
 #include "MeshIO.h"
+#include "MeshValidation.h"
 #include "VtkErrorLog.h"
 
 #include "vtkCamera.h"
@@ -68,38 +69,25 @@ bool Finite(const double v[3])
   return std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]);
 }
 
+// What the program asks of any mesh it reads (finite points, cell ids in
+// range, one tuple per point or cell in each array), and finite normals.
 void RequireValid(vtkPolyData* mesh)
 {
-  const vtkIdType points = mesh->GetNumberOfPoints();
-  for (vtkIdType i = 0; i < points; ++i)
+  try
   {
-    double p[3];
-    mesh->GetPoint(i, p);
-    require(Finite(p), "finite output points");
+    cli::RequireConsistentMesh(mesh, "the output");
+  }
+  catch (const cli::RuntimeError&)
+  {
+    require(false, "a consistent output mesh");
   }
   if (vtkDataArray* normals = mesh->GetPointData()->GetNormals())
   {
-    require(normals->GetNumberOfTuples() == points, "one normal per point");
-    for (vtkIdType i = 0; i < points; ++i)
+    for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
     {
       double n[3];
       normals->GetTuple(i, n);
       require(Finite(n), "finite output normals");
-    }
-  }
-  for (vtkCellArray* cells :
-    { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips() })
-  {
-    auto cell = vtk::TakeSmartPointer(cells->NewIterator());
-    vtkIdType size = 0;
-    const vtkIdType* ids = nullptr;
-    for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell())
-    {
-      cell->GetCurrentCell(size, ids);
-      for (vtkIdType k = 0; k < size; ++k)
-      {
-        require(ids[k] >= 0 && ids[k] < points, "output ids in range");
-      }
     }
   }
 }

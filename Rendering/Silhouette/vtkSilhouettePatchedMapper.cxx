@@ -190,59 +190,89 @@ void vtkSilhouettePatchedMapper::BuildIBO(vtkRenderer* ren, vtkActor* act, vtkPo
 namespace
 {
 
-// Whether the fan triangles of `polys` over `x` (three coordinates per
-// point) that the superclass keeps (those without coincident corners:
-// AppendTrianglesWorker in vtkOpenGLIndexBufferObject.cxx) are `pristine`,
-// in order, `counts[c]` of them from polygon c. (The counts matter too: a
-// cell array edited in place keeps its modification time in VTK 9.1, and
-// two polygons could trade a kept triangle with the list unchanged.)
-template<typename Coordinate>
-bool KeptTrianglesAre(vtkCellArray* polys, const Coordinate* x,
-  const std::vector<unsigned int>& pristine, const std::vector<int>& counts)
+// The superclass's rule for the triangles it draws of polygon `ids` (n
+// points): the fan (ids[0], ids[i], ids[i + 1]), i = 1 .. n - 2, less the
+// triangles with two corners at one position (AppendTrianglesWorker in
+// vtkOpenGLIndexBufferObject.cxx). Calls kept(a, b, c) for each triangle
+// kept, in order, and counted(cell, count) after each polygon; either
+// returning false stops the walk, which then returns false. `same(a, b)`:
+// whether points a and b have one position.
+template<typename Same, typename Kept, typename Counted>
+bool WalkKeptTriangles(
+  vtkCellArray* polys, const Same& same, const Kept& kept, const Counted& counted)
 {
-  auto same = [x](vtkIdType a, vtkIdType b) {
-    return x[3 * a] == x[3 * b] && x[3 * a + 1] == x[3 * b + 1] && x[3 * a + 2] == x[3 * b + 2];
-  };
-  std::size_t next = 0;
-  std::size_t c = 0;
+  vtkIdType c = 0;
   auto it = vtk::TakeSmartPointer(polys->NewIterator());
   for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++c)
   {
     vtkIdType n = 0;
     const vtkIdType* ids = nullptr;
     it->GetCurrentCell(n, ids);
-    const std::size_t before = next;
+    int count = 0;
     for (vtkIdType i = 1; i + 1 < n; ++i)
     {
       if (same(ids[0], ids[i]) || same(ids[i + 1], ids[i]) || same(ids[i + 1], ids[0]))
       {
         continue;
       }
-      if (next + 3 > pristine.size() || pristine[next] != static_cast<unsigned int>(ids[0]) ||
-        pristine[next + 1] != static_cast<unsigned int>(ids[i]) ||
-        pristine[next + 2] != static_cast<unsigned int>(ids[i + 1]))
+      if (!kept(ids[0], ids[i], ids[i + 1]))
       {
         return false;
       }
-      next += 3;
+      ++count;
     }
-    if (c >= counts.size() || static_cast<std::size_t>(counts[c]) * 3 != next - before)
+    if (!counted(c, count))
     {
       return false;
     }
   }
-  return next == pristine.size() && c == counts.size();
+  return true;
+}
+
+// WalkKeptTriangles over `points`: positions compared in place for float and
+// double points (the deforming mesh's every frame), through GetPoint else.
+template<typename Kept, typename Counted>
+bool WalkKeptTriangles(
+  vtkCellArray* polys, vtkPoints* points, const Kept& kept, const Counted& counted)
+{
+  vtkDataArray* data = points->GetData();
+  const auto inPlace = [&](const auto* x) {
+    const auto same = [x](vtkIdType a, vtkIdType b) {
+      return x[3 * a] == x[3 * b] && x[3 * a + 1] == x[3 * b + 1] && x[3 * a + 2] == x[3 * b + 2];
+    };
+    return WalkKeptTriangles(polys, same, kept, counted);
+  };
+  if (data->GetNumberOfComponents() == 3)
+  {
+    if (auto* doubles = vtkDoubleArray::FastDownCast(data))
+    {
+      return inPlace(doubles->GetPointer(0));
+    }
+    if (auto* floats = vtkFloatArray::FastDownCast(data))
+    {
+      return inPlace(floats->GetPointer(0));
+    }
+  }
+  const auto same = [points](vtkIdType a, vtkIdType b) {
+    double p[3];
+    double q[3];
+    points->GetPoint(a, p);
+    points->GetPoint(b, q);
+    return p[0] == q[0] && p[1] == q[1] && p[2] == q[2];
+  };
+  return WalkKeptTriangles(polys, same, kept, counted);
 }
 
 } // namespace
 
 // Whether the superclass's new triangle buffer is the recorded one: the same
 // polygons (the same cell array, unmodified) whose kept triangles are the
-// recorded ones. A deforming mesh's points change every frame, and the
-// superclass then builds its buffer again (which triangles it leaves out
-// depends on the positions); recording the layout again each time cost
-// about a fifth of such a frame at 1.3M triangles. Points other than float
-// or double are not checked here (the layout is then recorded again).
+// recorded ones, as many from each polygon as recorded (a cell array edited
+// in place keeps its modification time in VTK 9.1, and two polygons could
+// trade a kept triangle with the list unchanged). A deforming mesh's points
+// change every frame, and the superclass then builds its buffer again (which
+// triangles it leaves out depends on the positions); recording the layout
+// again each time cost about a fifth of such a frame at 1.3M triangles.
 bool vtkSilhouettePatchedMapper::LayoutUnchanged(vtkPolyData* poly) const
 {
   vtkCellArray* polys = poly->GetPolys();
@@ -253,18 +283,20 @@ bool vtkSilhouettePatchedMapper::LayoutUnchanged(vtkPolyData* poly) const
   {
     return false;
   }
-  vtkDataArray* data = points->GetData();
-  if (auto* doubles = vtkDoubleArray::FastDownCast(data))
-  {
-    return doubles->GetNumberOfComponents() == 3 &&
-      KeptTrianglesAre(polys, doubles->GetPointer(0), this->Pristine, this->TriangleCount);
-  }
-  if (auto* floats = vtkFloatArray::FastDownCast(data))
-  {
-    return floats->GetNumberOfComponents() == 3 &&
-      KeptTrianglesAre(polys, floats->GetPointer(0), this->Pristine, this->TriangleCount);
-  }
-  return false;
+  const std::vector<unsigned int>& pristine = this->Pristine;
+  std::size_t next = 0;
+  const auto kept = [&](vtkIdType a, vtkIdType b, vtkIdType c) {
+    const bool same = next + 3 <= pristine.size() &&
+      pristine[next] == static_cast<unsigned int>(a) &&
+      pristine[next + 1] == static_cast<unsigned int>(b) &&
+      pristine[next + 2] == static_cast<unsigned int>(c);
+    next += 3;
+    return same;
+  };
+  const auto counted = [this](vtkIdType cell, int count) {
+    return this->TriangleCount[static_cast<std::size_t>(cell)] == count;
+  };
+  return WalkKeptTriangles(polys, points, kept, counted) && next == pristine.size();
 }
 
 void vtkSilhouettePatchedMapper::RecordTriangleLayout(vtkPolyData* poly)
@@ -279,38 +311,18 @@ void vtkSilhouettePatchedMapper::RecordTriangleLayout(vtkPolyData* poly)
   }
   vtkOpenGLIndexBufferObject::AppendTriangleIndexBuffer(
     this->Pristine, polys, points, 0, nullptr, nullptr);
-  // The superclass's rule for triangles it leaves out: coincident corners
-  // (AppendTrianglesWorker in vtkOpenGLIndexBufferObject.cxx).
   const vtkIdType cells = polys->GetNumberOfCells();
   this->FirstTriangle.resize(static_cast<std::size_t>(cells));
   this->TriangleCount.resize(static_cast<std::size_t>(cells));
-  auto same = [](const double* a, const double* b) {
-    return a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
-  };
   vtkIdType triangle = 0;
-  vtkIdType c = 0;
-  auto it = vtk::TakeSmartPointer(polys->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++c)
-  {
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    it->GetCurrentCell(n, ids);
-    this->FirstTriangle[static_cast<std::size_t>(c)] = triangle;
-    int count = 0;
-    double p1[3], p2[3], p3[3];
-    if (n >= 3)
-    {
-      points->GetPoint(ids[0], p1);
-      for (vtkIdType i = 1; i + 1 < n; ++i)
-      {
-        points->GetPoint(ids[i], p2);
-        points->GetPoint(ids[i + 1], p3);
-        count += !same(p1, p2) && !same(p3, p2) && !same(p3, p1) ? 1 : 0;
-      }
-    }
-    this->TriangleCount[static_cast<std::size_t>(c)] = count;
-    triangle += count;
-  }
+  WalkKeptTriangles(
+    polys, points, [](vtkIdType, vtkIdType, vtkIdType) { return true; },
+    [this, &triangle](vtkIdType cell, int count) {
+      this->FirstTriangle[static_cast<std::size_t>(cell)] = triangle;
+      this->TriangleCount[static_cast<std::size_t>(cell)] = count;
+      triangle += count;
+      return true;
+    });
   this->TriangleHidden.assign(static_cast<std::size_t>(triangle), 0);
   vtkOpenGLIndexBufferObject* ibo = this->Primitives[PrimitiveTris].IBO;
   this->LayoutKnown = static_cast<std::size_t>(triangle) * 3 == this->Pristine.size() &&

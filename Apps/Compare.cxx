@@ -227,6 +227,20 @@ void PrintMarkdown(const std::vector<ModelComparison>& results, const CompareOpt
 
 } // namespace
 
+vtkSmartPointer<vtkPolyData> WeldedForEvaluation(vtkPolyData* mesh, const std::string& prefix)
+{
+  vtkIdType merged = 0;
+  vtkSmartPointer<vtkPolyData> welded = silhouette_eval::WeldedTriangles(mesh, &merged);
+  if (merged > 0)
+  {
+    std::cerr << PrintableText(prefix) << ": " << Grouped(merged)
+              << " points share a position with another (texture seams, hard edges or a "
+                 "triangle soup); merged, so that decimation and Loop refinement see one surface"
+              << std::endl;
+  }
+  return welded;
+}
+
 void RunCompare(const CompareOptions& options)
 {
   if (options.Truth)
@@ -280,7 +294,7 @@ void RunCompare(const CompareOptions& options)
       }
       else
       {
-        original = ReadMesh(input);
+        original = WeldedForEvaluation(ReadMesh(input), "compare: " + input);
         if (coarseTriangles == 0)
         {
           coarseTriangles = 1000;

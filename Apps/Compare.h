@@ -1,6 +1,9 @@
 #ifndef Compare_h
 #define Compare_h
 
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
 #include <array>
 #include <string>
 #include <vector>
@@ -37,6 +40,11 @@ struct CompareOptions
 /// `silhouette compare`: coarse, coarse + smoothing and the fine reference of
 /// each input, measured from the same cameras (see CompareHelp).
 void RunCompare(const CompareOptions& options);
+
+/// A mesh file read for `compare` or `figure`, its points merged where they
+/// share a position (silhouette_eval::WeldedTriangles), with a line on
+/// standard error after `prefix` saying how many went when any did.
+vtkSmartPointer<vtkPolyData> WeldedForEvaluation(vtkPolyData* mesh, const std::string& prefix);
 
 /// `silhouette compare --truth`: each mesh file's coarse version, smoothed
 /// (own and carried normals) and by the peers, against the original refined

@@ -1,6 +1,7 @@
 #include "Figure.h"
 
 #include "CliErrors.h"
+#include "Compare.h"
 #include "MeshIO.h"
 #include "Rendering.h"
 #include "RenderingBackend.h"
@@ -243,7 +244,7 @@ void RunFigure(const FigureOptions& options)
     }
     else
     {
-      original = ReadMesh(options.Input);
+      original = WeldedForEvaluation(ReadMesh(options.Input), "figure: " + options.Input);
       coarseTriangles = coarseTriangles ? coarseTriangles : 1000;
     }
     std::cerr << "figure: decimating to " << coarseTriangles

@@ -2,6 +2,7 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCleanPolyData.h"
 #include "vtkDoubleArray.h"
 #include "vtkGenericCell.h"
 #include "vtkIcosphereSource.h"
@@ -368,6 +369,42 @@ long CountBoundaryOrNonManifoldEdges(vtkPolyData* mesh)
     bad += entry.second != 2 ? 1 : 0;
   }
   return bad;
+}
+
+vtkSmartPointer<vtkPolyData> WeldedTriangles(vtkPolyData* input, vtkIdType* merged)
+{
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(input);
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  vtkNew<vtkCleanPolyData> clean;
+  clean->SetInputConnection(triangles->GetOutputPort());
+  clean->PointMergingOn();
+  clean->SetTolerance(0.0);
+  // Merged, pieces of one surface may still disagree on their winding (the
+  // spider's do), which the Loop refinement refuses: made consistent, each
+  // connected part as its first triangle winds (no cell flips on a mesh
+  // that agrees already).
+  vtkNew<vtkPolyDataNormals> orient;
+  orient->SetInputConnection(clean->GetOutputPort());
+  orient->ConsistencyOn();
+  orient->SplittingOff();
+  orient->AutoOrientNormalsOff();
+  orient->ComputeCellNormalsOff();
+  orient->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(orient->GetOutput()->GetPoints());
+  mesh->SetPolys(orient->GetOutput()->GetPolys());
+  if (merged)
+  {
+    // Points no triangle uses go too; only those sharing a position count.
+    vtkNew<vtkCleanPolyData> unused;
+    unused->SetInputConnection(triangles->GetOutputPort());
+    unused->PointMergingOff();
+    unused->Update();
+    *merged = unused->GetOutput()->GetNumberOfPoints() - mesh->GetNumberOfPoints();
+  }
+  return mesh;
 }
 
 vtkSmartPointer<vtkPolyData> Decimate(vtkPolyData* original, int triangles)

@@ -94,6 +94,17 @@ long CountBoundaryOrNonManifoldEdges(vtkPolyData* mesh);
 /// limit surface, with limit normals.
 vtkSmartPointer<vtkPolyData> Refine(vtkPolyData* original, int level);
 
+/// `input`'s polygons as triangles over points merged where they share a
+/// position (vtkCleanPolyData, tolerance 0), wound consistently per
+/// connected part (vtkPolyDataNormals), geometry only: what the
+/// evaluation decimates and refines. An asset file's texture seams, hard
+/// edges and triangle soups split points that one surface shares, and
+/// decimation and Loop refinement join triangles by point ids: on the file
+/// as read, the decimation cannot collapse across a seam and the refinement
+/// refines each piece apart (the spider OBJ's "fine" version was its coarse
+/// one). `merged`, when given, gets how many points went.
+vtkSmartPointer<vtkPolyData> WeldedTriangles(vtkPolyData* input, vtkIdType* merged = nullptr);
+
 /// All three versions of a model of the set, or of any mesh (name = its path).
 ModelVersions MakeVersions(const std::string& name, vtkSmartPointer<vtkPolyData> original,
   int coarseTriangles, int fineLevel);

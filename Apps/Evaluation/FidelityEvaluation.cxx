@@ -41,23 +41,6 @@ namespace silhouette_eval
 namespace
 {
 
-vtkSmartPointer<vtkPolyData> Triangulated(vtkPolyData* input)
-{
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(input);
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
-  vtkNew<vtkCleanPolyData> clean;
-  clean->SetInputConnection(triangles->GetOutputPort());
-  clean->PointMergingOn();
-  clean->SetTolerance(0.0);
-  clean->Update();
-  auto mesh = vtkSmartPointer<vtkPolyData>::New();
-  mesh->SetPoints(clean->GetOutput()->GetPoints());
-  mesh->SetPolys(clean->GetOutput()->GetPolys());
-  return mesh;
-}
-
 vtkSmartPointer<vtkPolyData> WithoutNormals(vtkPolyData* mesh)
 {
   auto bare = vtkSmartPointer<vtkPolyData>::New();
@@ -175,7 +158,7 @@ FidelityResult EvaluateFidelity(
       options.Progress(name + ": " + what);
     }
   };
-  vtkSmartPointer<vtkPolyData> original = Triangulated(input);
+  vtkSmartPointer<vtkPolyData> original = WeldedTriangles(input);
   if (original->GetNumberOfPolys() == 0 || CountBoundaryOrNonManifoldEdges(original) != 0)
   {
     throw std::runtime_error(

@@ -46,6 +46,9 @@ public:
     , Text(this->Bytes)
   {
   }
+  // The cursor points into Bytes: a copy would read the original's.
+  LegacyChecker(const LegacyChecker&) = delete;
+  LegacyChecker& operator=(const LegacyChecker&) = delete;
 
   void Check()
   {

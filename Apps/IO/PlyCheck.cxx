@@ -141,6 +141,9 @@ public:
     , Bytes(std::move(bytes))
   {
   }
+  // The cursor points into Bytes: a copy would read the original's.
+  PlyChecker(const PlyChecker&) = delete;
+  PlyChecker& operator=(const PlyChecker&) = delete;
 
   void Check()
   {

@@ -77,9 +77,9 @@ void RequireValid(vtkPolyData* mesh)
   {
     cli::RequireConsistentMesh(mesh, "the output");
   }
-  catch (const cli::RuntimeError&)
+  catch (const cli::RuntimeError& error)
   {
-    require(false, "a consistent output mesh");
+    require(false, (std::string("a consistent output mesh: ") + error.what()).c_str());
   }
   if (vtkDataArray* normals = mesh->GetPointData()->GetNormals())
   {

@@ -30,6 +30,7 @@ void SelectiveRefinement::IndexSet::erase(Index i)
 SelectiveRefinement::SelectiveRefinement(const VertexHierarchy& hierarchy)
   : Hierarchy(hierarchy)
   , Positions(hierarchy.basePositions())
+  , Normals(hierarchy.baseNormals())
   , Corners(hierarchy.baseCorners())
   , FacesOf(hierarchy.basePositions().size())
   , Applied(hierarchy.nodeCount(), 0)
@@ -143,6 +144,8 @@ void SelectiveRefinement::apply(Index node)
   this->addFace(n.RightFace);
   this->Positions[static_cast<std::size_t>(n.Kept)] = n.KeptFine;
   this->Positions[static_cast<std::size_t>(n.Removed)] = n.RemovedFine;
+  this->Normals[static_cast<std::size_t>(n.Kept)] = n.KeptFineNormal;
+  this->Normals[static_cast<std::size_t>(n.Removed)] = n.RemovedFineNormal;
   this->Applied[static_cast<std::size_t>(node)] = 1;
   ++this->AppliedNodes;
   this->NextSplits.erase(node);
@@ -171,6 +174,7 @@ void SelectiveRefinement::undo(Index node)
   for (const Index face : this->Fan)
     this->renameCorner(face, n.Removed, n.Kept);
   this->Positions[static_cast<std::size_t>(n.Kept)] = n.KeptCoarse;
+  this->Normals[static_cast<std::size_t>(n.Kept)] = n.KeptCoarseNormal;
   this->Applied[static_cast<std::size_t>(node)] = 0;
   --this->AppliedNodes;
   this->Undoable.erase(node);
@@ -291,10 +295,12 @@ void SelectiveRefinement::undoAll()
 void SelectiveRefinement::extract(ExtractedMesh& mesh) const
 {
   std::vector<glm::dvec3>& points = mesh.Points;
+  std::vector<glm::vec3>& normals = mesh.Normals;
   std::vector<Triangle>& triangles = mesh.Triangles;
   std::vector<Id>& pointIds = mesh.PointIds;
   std::vector<Id>& triangleIds = mesh.TriangleIds;
   points.clear();
+  normals.clear();
   triangles.clear();
   pointIds.clear();
   triangleIds.clear();
@@ -313,6 +319,7 @@ void SelectiveRefinement::extract(ExtractedMesh& mesh) const
       {
         this->PointStamp[p] = static_cast<Id>(points.size());
         points.push_back(this->Positions[p]);
+        normals.push_back(this->Normals[p]);
         pointIds.push_back(corners[k]);
       }
       t[k] = this->PointStamp[p];

@@ -49,6 +49,10 @@ public:
 struct ExtractedMesh
 {
   std::vector<glm::dvec3> Points;
+  /// Per point, the shading normal that suits its position now: the unit
+  /// sum of the input normals of the points it stands for
+  /// (VertexHierarchy::Node; its own, in float, when it stands for itself).
+  std::vector<glm::vec3> Normals;
   std::vector<Triangle> Triangles;
   std::vector<Id> PointIds;
   std::vector<Id> TriangleIds;
@@ -127,6 +131,7 @@ private:
 
   const VertexHierarchy& Hierarchy;
   std::vector<glm::dvec3> Positions;
+  std::vector<glm::vec3> Normals;
   std::vector<Triangle> Corners;           // per face
   std::vector<std::vector<Index>> FacesOf; // per point: the active faces at it
   std::vector<unsigned char> Applied;

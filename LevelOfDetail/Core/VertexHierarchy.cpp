@@ -139,6 +139,7 @@ public:
     }
     if (this->PointNormals.size() != points.size())
       this->PointNormals = angleWeightedNormals(points, triangles);
+    this->NormalSums = this->PointNormals;
   }
 
   void collapse(const CollapseRecord& record)
@@ -151,6 +152,11 @@ public:
     node.KeptFine = this->position(record.Kept);
     node.KeptCoarse = record.Position;
     node.RemovedFine = this->position(record.Removed);
+    node.KeptFineNormal = this->clusterNormal(record.Kept);
+    node.RemovedFineNormal = this->clusterNormal(record.Removed);
+    this->NormalSums[static_cast<std::size_t>(record.Kept)] +=
+      this->NormalSums[static_cast<std::size_t>(record.Removed)];
+    node.KeptCoarseNormal = this->clusterNormal(record.Kept);
     this->findFaces(node);
     for (const Id end : { node.Kept, node.Removed })
     {
@@ -188,12 +194,28 @@ public:
     }
     std::sort(out.BaseFaces.begin(), out.BaseFaces.end());
     out.BasePositions = this->Positions;
+    out.BaseNormals.resize(this->NormalSums.size());
+    for (std::size_t v = 0; v < this->NormalSums.size(); ++v)
+      out.BaseNormals[v] = this->clusterNormal(static_cast<Id>(v));
     out.PointNormals = std::move(this->PointNormals);
     buildParents(out);
   }
 
 private:
   const glm::dvec3& position(Id v) const { return this->Positions[static_cast<std::size_t>(v)]; }
+  // The unit sum of the input normals of the points v stands for now: the
+  // surface's normal about where the collapses placed v (a merged vertex
+  // keeps no input point's position, so no input point's normal suits it;
+  // on a sphere those were up to 16 degrees off). A sum that cancels keeps
+  // v's own input normal.
+  glm::vec3 clusterNormal(Id v) const
+  {
+    const glm::dvec3& sum = this->NormalSums[static_cast<std::size_t>(v)];
+    const double length = glm::length(sum);
+    return glm::vec3(length > 1e-12 && std::isfinite(length)
+        ? sum / length
+        : this->PointNormals[static_cast<std::size_t>(v)]);
+  }
   const Triangle& corners(Index face) const
   {
     return this->Corners[static_cast<std::size_t>(face)];
@@ -406,6 +428,7 @@ private:
   VertexHierarchy& Out;
   std::vector<glm::dvec3> Positions;
   std::vector<glm::dvec3> PointNormals;
+  std::vector<glm::dvec3> NormalSums; // per point: its cluster's input normals summed
   std::vector<Triangle> Corners;
   std::vector<std::vector<Index>> FacesOf; // per point: the live faces at it
   std::vector<Index> LastSplitOf;          // per point: the last collapse that kept it, so far

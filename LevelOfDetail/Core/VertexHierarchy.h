@@ -95,6 +95,12 @@ public:
     glm::dvec3 KeptFine{ 0.0 };    ///< Kept's position with the split applied
     glm::dvec3 KeptCoarse{ 0.0 };  ///< Kept's position without it
     glm::dvec3 RemovedFine{ 0.0 }; ///< Removed's position with the split applied
+    /// The shading normals that suit those positions: each the unit sum of
+    /// the input point normals of the points the vertex stands for there
+    /// (its own alone, for a vertex no collapse reached).
+    glm::vec3 KeptFineNormal{ 0.0f };
+    glm::vec3 KeptCoarseNormal{ 0.0f };
+    glm::vec3 RemovedFineNormal{ 0.0f };
     Index LeftFace = None;
     Index RightFace = None;
     std::array<CornerRole, 3> LeftRoles{};
@@ -140,6 +146,8 @@ public:
   /// Every point's position in the base mesh (the input's for points no
   /// collapse moved).
   const std::vector<glm::dvec3>& basePositions() const { return this->BasePositions; }
+  /// Every point's shading normal in the base mesh (the Node normals' rule).
+  const std::vector<glm::vec3>& baseNormals() const { return this->BaseNormals; }
   /// Input triangles (faces are numbered as the input's triangles).
   std::size_t faceCount() const { return this->BaseCorners.size(); }
   /// The input's unit point normals the bounds were made with (given, or
@@ -164,6 +172,7 @@ private:
   std::vector<Triangle> BaseCorners;
   std::vector<Index> BaseFaces;
   std::vector<glm::dvec3> BasePositions;
+  std::vector<glm::vec3> BaseNormals;
   std::vector<glm::dvec3> PointNormals;
   bool Aborted = false;
 

@@ -146,7 +146,13 @@ CompareOptions ParseCompare(ArgumentList& arguments, RenderBackend& backend)
     else if (option.Name == "--json" || option.Name == "--markdown")
     {
       RejectInlineValue(option);
-      options.Format = option.Name == "--json" ? CompareFormat::Json : CompareFormat::Markdown;
+      const CompareFormat format =
+        option.Name == "--json" ? CompareFormat::Json : CompareFormat::Markdown;
+      if (options.Format != CompareFormat::Text && options.Format != format)
+      {
+        throw UsageError("options '--json' and '--markdown' do not go together");
+      }
+      options.Format = format;
     }
     else if (option.Name == "--truth")
     {

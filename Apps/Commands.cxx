@@ -113,12 +113,6 @@ void RunSmooth(const SmoothOptions& options)
     options.Json);
 }
 
-bool IsLineStyle(RenderStyle style)
-{
-  return style != RenderStyle::Shaded && style != RenderStyle::Wireframe &&
-    style != RenderStyle::NewGeometry;
-}
-
 // The folder of a progressive sketch: made when missing (not its parents).
 void PrepareSketchFolder(const std::string& folder)
 {
@@ -145,8 +139,8 @@ void RunProgressiveSketch(const RenderOptions& options)
 {
   if (!IsLineStyle(options.Style))
   {
-    throw RuntimeError(std::string("--progressive draws a line style (lines, charcoal, lazy, "
-                                   "hand or rough), not '") +
+    throw UsageError(std::string("--progressive draws a line style (lines, charcoal, lazy, "
+                                 "hand or rough), not '") +
       NameOf(options.Style) + "'");
   }
   if (!options.ProgressiveSvg)

@@ -360,7 +360,7 @@ void CheckImageOutputPath(const std::string& path)
 {
   if (LowercaseExtension(path) != ".png")
   {
-    throw RuntimeError("cannot write '" + path + "': the image must be a .png file");
+    throw UsageError("cannot write '" + path + "': the image must be a .png file");
   }
   RequireOutputDirectory(path);
 }
@@ -370,25 +370,37 @@ bool IsSvgPath(const std::string& path)
   return LowercaseExtension(path) == ".svg";
 }
 
+bool IsLineStyle(RenderStyle style)
+{
+  return style != RenderStyle::Shaded && style != RenderStyle::Wireframe &&
+    style != RenderStyle::NewGeometry;
+}
+
 void CheckRenderOutputPath(const RenderOptions& options)
 {
+  const bool lineStyle = IsLineStyle(options.Style);
   if (!IsSvgPath(options.Output))
   {
     if (LowercaseExtension(options.Output) != ".png")
     {
-      throw RuntimeError("cannot write '" + options.Output +
+      throw UsageError("cannot write '" + options.Output +
         "': the image must be a .png file, or an .svg file with a line style");
     }
     if (options.WidthByDepth)
     {
-      throw RuntimeError("--width-by-depth needs an .svg output; '" + options.Output +
+      throw UsageError("--width-by-depth needs an .svg output; '" + options.Output +
         "' is a PNG image, whose lines have one width");
     }
+    if (options.HiddenLines && options.Style != RenderStyle::Lines)
+    {
+      throw UsageError("--hidden dashed draws the hidden lines of '--style lines' in a PNG "
+                       "image (of any line style in an .svg drawing), not of '" +
+        std::string(NameOf(options.Style)) + "'");
+    }
   }
-  else if (options.Style == RenderStyle::Shaded || options.Style == RenderStyle::Wireframe ||
-    options.Style == RenderStyle::NewGeometry)
+  else if (!lineStyle)
   {
-    throw RuntimeError("cannot write '" + options.Output +
+    throw UsageError("cannot write '" + options.Output +
       "': an .svg drawing needs a line style "
       "(lines, charcoal, lazy, hand or rough), not '" +
       NameOf(options.Style) + "'");

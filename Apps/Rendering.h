@@ -27,15 +27,20 @@ struct OffscreenView
 };
 OffscreenView MakeOffscreenView(const std::array<int, 2>& size);
 
-/// Throws RuntimeError unless `path` ends in .png (any letter case).
+/// Throws UsageError unless `path` ends in .png (any letter case), and
+/// RuntimeError when its folder is missing.
 void CheckImageOutputPath(const std::string& path);
 
 /// Whether `path` ends in .svg (any letter case).
 bool IsSvgPath(const std::string& path);
 
 /// `render`'s output: a .png, or an .svg with a line style; throws
-/// RuntimeError otherwise, and for --width-by-depth without an .svg.
+/// UsageError otherwise, for --width-by-depth without an .svg and for
+/// --hidden dashed in a PNG of a style other than lines (all options that
+/// do not go together), RuntimeError when the folder is missing.
 void CheckRenderOutputPath(const RenderOptions& options);
+/// Whether `style` draws lines (lines and the brushes), not a surface.
+bool IsLineStyle(RenderStyle style);
 
 /// Throws RuntimeError when the program renders through X and there is no
 /// X display (VTK would abort the program); does nothing with OSMesa.

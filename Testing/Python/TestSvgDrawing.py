@@ -225,17 +225,17 @@ if code == 0:
 
 # --- Errors --------------------------------------------------------------------
 code, _, err = run("render", torus, "--progressive", "3", "-o", os.path.join(work, "p"))
-check(code == 1 and "--progressive draws a line style" in err, "--progressive needs a line style")
+check(code == 2 and "--progressive draws a line style" in err, "--progressive needs a line style")
 code, _, err = run("render", torus, "--style", "lines", "--svg", "-o", os.path.join(work, "x.svg"))
 check(code == 2 and "'--svg' goes with '--progressive'" in err, "--svg alone is a usage error")
 code, _, err = run("render", torus, "--style", "lines", "--progressive", "1", "-o", work)
 check(code == 2, "--progressive 1 is refused (2 to 64)")
 code, _, err = run("render", torus, "-o", os.path.join(work, "shaded.svg"))
-check(code == 1 and "an .svg drawing needs a line style" in err and err.count("\n") == 1,
+check(code == 2 and "an .svg drawing needs a line style" in err and err.count("\n") == 1,
       "an .svg with the shaded style is refused in one line")
 code, _, err = run("render", torus, "--style", "lines", "--width-by-depth",
                    "-o", os.path.join(work, "depth.png"))
-check(code == 1 and "--width-by-depth needs an .svg output" in err,
+check(code == 2 and "--width-by-depth needs an .svg output" in err,
       "--width-by-depth with a PNG is refused")
 code, _, err = run("render", torus, "--style", "lines", "--hidden", "dotted",
                    "-o", os.path.join(work, "dotted.svg"))

@@ -280,7 +280,7 @@ void CheckMeshOutputPath(const std::string& path)
   const std::string extension = LowercaseExtension(path);
   if (extension != ".vtp" && extension != ".ply")
   {
-    throw RuntimeError("cannot write " + Quoted(path) + ": unknown output format '" + extension +
+    throw UsageError("cannot write " + Quoted(path) + ": unknown output format '" + extension +
       "'; expected .vtp or .ply");
   }
   RequireOutputDirectory(path);
@@ -453,7 +453,7 @@ void CheckLinesOutputPath(const std::string& path)
 {
   if (LowercaseExtension(path) != ".vtp")
   {
-    throw RuntimeError("cannot write " + Quoted(path) + ": unknown format for polylines '" +
+    throw UsageError("cannot write " + Quoted(path) + ": unknown format for polylines '" +
       LowercaseExtension(path) + "'; expected .vtp");
   }
   RequireOutputDirectory(path);

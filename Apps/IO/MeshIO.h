@@ -35,7 +35,7 @@ vtkIdType CountTriangles(vtkPolyData* mesh);
 /// writers only say they could not open the file).
 void RequireOutputDirectory(const std::string& path);
 
-/// Throws RuntimeError unless WriteMesh can write `path` (.vtp or .ply);
+/// Throws UsageError unless WriteMesh can write `path` (.vtp or .ply);
 /// called before the work so a typo costs nothing.
 void CheckMeshOutputPath(const std::string& path);
 
@@ -47,7 +47,7 @@ void CheckMeshOutputPath(const std::string& path);
 /// "vertex cells"), empty for .vtp. Throws RuntimeError on failure.
 std::vector<std::string> WriteMesh(vtkPolyData* mesh, const std::string& path);
 
-/// Throws RuntimeError unless WriteLines can write `path` (.vtp).
+/// Throws UsageError unless WriteLines can write `path` (.vtp).
 void CheckLinesOutputPath(const std::string& path);
 
 /// Writes polylines (the filter's silhouette output) to .vtp.

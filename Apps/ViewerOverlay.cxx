@@ -255,7 +255,10 @@ std::string Viewer::StatusText() const
          << " ms (renderer's own)";
     if (this->UsesMapper())
     {
-      text << "\nsmoothing " << Fixed(figures.FilterMilliseconds, 2) << " ms (mapper)";
+      // The last render that smoothed: a redraw of the same view (the
+      // overlay's own, say) reuses the patch and costs next to nothing.
+      text << "\nsmoothing " << Fixed(1000.0 * this->SmoothMapper->GetLastSmoothingSeconds(), 2)
+           << " ms (mapper, last view change)";
     }
     else if (this->Smoothing)
     {

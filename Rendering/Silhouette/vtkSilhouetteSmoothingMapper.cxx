@@ -134,7 +134,9 @@ struct vtkSilhouetteSmoothingMapper::Internals
     }
   }
 
-  void UpdatePatch(
+  // False when the view (and the smoothing switch) are the last patch's:
+  // the patch is kept as it is.
+  bool UpdatePatch(
     vtkSilhouetteSmoothingMapper* self, vtkPolyData* input, vtkRenderer* ren, vtkActor* act)
   {
     const bool smooth = self->Smoothing && this->BaseReady;
@@ -146,7 +148,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
     const vtkMTimeType viewTime = this->View.Update(camera, model, { { width, height } });
     if (this->HavePatch && this->PatchSmoothed == smooth && viewTime == this->PatchViewTime)
     {
-      return;
+      return false;
     }
     this->PatchViewTime = viewTime;
     this->HavePatch = true;
@@ -161,7 +163,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
         input, camera, model, width, height, this->Changes, this->Replaced))
     {
       this->Drawn->SetPatch(this->Ghosts, nullptr, nullptr, {});
-      return;
+      return true;
     }
     const vtkIdType* replaced = this->Replaced->GetPointer(0);
     std::vector<vtkIdType> hidden;
@@ -188,6 +190,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
         self->NewTriangleCount += made->GetTuple1(c) != 0.0 ? 1 : 0;
       }
     }
+    return true;
   }
 };
 
@@ -229,9 +232,13 @@ void vtkSilhouetteSmoothingMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     internal.Drawn->SetStatic(1);
     internal.CopiedSettingsTime = settings;
   }
-  internal.UpdatePatch(this, input, ren, act);
+  const bool smoothed = internal.UpdatePatch(this, input, ren, act);
   this->LastPrepareSeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (smoothed)
+  {
+    this->LastSmoothingSeconds = this->LastPrepareSeconds;
+  }
   internal.Drawn->RenderPiece(ren, act);
 }
 

@@ -96,6 +96,15 @@ public:
    */
   double GetLastPrepareSeconds() const { return this->LastPrepareSeconds; }
 
+  /**
+   * Wall-clock seconds before drawing of the last RenderPiece that made its
+   * patch again (the view, the input or Smoothing had changed): what a
+   * camera move costs. A render
+   * of an unchanged view reuses the patch, and GetLastPrepareSeconds is then
+   * next to nothing; this keeps the figure of the last real work.
+   */
+  double GetLastSmoothingSeconds() const { return this->LastSmoothingSeconds; }
+
   void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
   void ReleaseGraphicsResources(vtkWindow* win) override;
   bool GetSupportsSelection() override { return true; }
@@ -114,6 +123,7 @@ protected:
   vtkIdType SilhouetteTriangleCount = 0;
   vtkIdType NewTriangleCount = 0;
   double LastPrepareSeconds = 0.0;
+  double LastSmoothingSeconds = 0.0;
 
 private:
   vtkSilhouetteSmoothingMapper(const vtkSilhouetteSmoothingMapper&) = delete;

@@ -284,7 +284,7 @@ void CheckCameraOptions(const CameraOptions& camera)
 
 std::string CameraOptionsHelp()
 {
-  return R"(Camera options (shared by smooth and render):
+  return R"(Camera options (the same for every command that takes them):
   --size WxH               viewport and image size in pixels, each side 1 to
                            16384 (default 1024x768)
   --tolerance PX           the filter's Tolerance: the largest distance in

@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -227,13 +228,31 @@ void PrintMarkdown(const std::vector<ModelComparison>& results, const CompareOpt
 
 } // namespace
 
-vtkSmartPointer<vtkPolyData> WeldedForEvaluation(vtkPolyData* mesh, const std::string& prefix)
+vtkSmartPointer<vtkPolyData> OriginalOf(const std::string& input, const std::string& dataDirectory,
+  const std::string& command, int& coarseTriangles)
 {
+  if (silhouette_eval::IsModelName(input))
+  {
+    coarseTriangles =
+      coarseTriangles > 0 ? coarseTriangles : silhouette_eval::DefaultCoarseTriangles(input);
+    return silhouette_eval::MakeOriginal(input, dataDirectory);
+  }
+  if (LowercaseExtension(input).empty() && !std::filesystem::exists(input))
+  {
+    std::string models;
+    for (const std::string& name : silhouette_eval::ModelNames())
+    {
+      models += (models.empty() ? "" : ", ") + name;
+    }
+    throw RuntimeError("'" + input + "' is neither a model (" + models +
+      ") nor a mesh file (.ply, .obj, .stl, .vtp or .vtk)");
+  }
+  coarseTriangles = coarseTriangles > 0 ? coarseTriangles : 1000;
   vtkIdType merged = 0;
-  vtkSmartPointer<vtkPolyData> welded = silhouette_eval::WeldedTriangles(mesh, &merged);
+  vtkSmartPointer<vtkPolyData> welded = silhouette_eval::WeldedTriangles(ReadMesh(input), &merged);
   if (merged > 0)
   {
-    std::cerr << PrintableText(prefix) << ": " << Grouped(merged)
+    std::cerr << command << ": " << PrintableText(input) << ": " << Grouped(merged)
               << " points share a position with another (texture seams, hard edges or a "
                  "triangle soup); merged, so that decimation and Loop refinement see one surface"
               << std::endl;
@@ -280,26 +299,11 @@ void RunCompare(const CompareOptions& options)
   for (const std::string& input : inputs)
   {
     errors.Clear();
-    vtkSmartPointer<vtkPolyData> original;
     int coarseTriangles = options.CoarseTriangles;
     try
     {
-      if (silhouette_eval::IsModelName(input))
-      {
-        original = silhouette_eval::MakeOriginal(input, dataDirectory);
-        if (coarseTriangles == 0)
-        {
-          coarseTriangles = silhouette_eval::DefaultCoarseTriangles(input);
-        }
-      }
-      else
-      {
-        original = WeldedForEvaluation(ReadMesh(input), "compare: " + input);
-        if (coarseTriangles == 0)
-        {
-          coarseTriangles = 1000;
-        }
-      }
+      const vtkSmartPointer<vtkPolyData> original =
+        OriginalOf(input, dataDirectory, "compare", coarseTriangles);
       std::cerr << "compare: " << input << ": decimating to " << coarseTriangles
                 << " triangles and refining to Loop level " << options.FineLevel << std::endl;
       const silhouette_eval::ModelVersions versions =
@@ -345,7 +349,8 @@ std::string CompareHelp()
 {
   return R"(Usage: silhouette compare MODEL|MESH|all ... [options]
 
-Xing's evaluation with numbers: for each input, a coarse version (quadric
+R. Xing's evaluation ("Adaptive Local Remeshing for Smooth Silhouette on 3D
+Triangle Meshes", section 4.4) with numbers: for each input, a coarse version (quadric
 decimation of the original), the coarse version with silhouette smoothing
 (Wang et al. 2008, this project), the coarse version with the methods the
 2008 paper compares with -- Wang et al. 2003 boundary-curve interpolation

@@ -41,10 +41,14 @@ struct CompareOptions
 /// each input, measured from the same cameras (see CompareHelp).
 void RunCompare(const CompareOptions& options);
 
-/// A mesh file read for `compare` or `figure`, its points merged where they
-/// share a position (silhouette_eval::WeldedTriangles), with a line on
-/// standard error after `prefix` saying how many went when any did.
-vtkSmartPointer<vtkPolyData> WeldedForEvaluation(vtkPolyData* mesh, const std::string& prefix);
+/// The original of `input` for `compare` and `figure` (`command`): a model
+/// of the set (silhouette_eval::MakeOriginal), or a mesh file with its
+/// points merged where they share a position (silhouette_eval::
+/// WeldedTriangles; a line on standard error says how many went). Sets
+/// `coarseTriangles`, when 0, to the input's default (1,000 for a file).
+/// Refuses a name that is neither a model nor a file in one line.
+vtkSmartPointer<vtkPolyData> OriginalOf(const std::string& input, const std::string& dataDirectory,
+  const std::string& command, int& coarseTriangles);
 
 /// `silhouette compare --truth`: each mesh file's coarse version, smoothed
 /// (own and carried normals) and by the peers, against the original refined

@@ -234,19 +234,9 @@ void RunFigure(const FigureOptions& options)
     options.DataDirectory.empty() ? SILHOUETTE_DATA_DIR : options.DataDirectory;
   try
   {
-    vtkSmartPointer<vtkPolyData> original;
     int coarseTriangles = options.CoarseTriangles;
-    if (silhouette_eval::IsModelName(options.Input))
-    {
-      original = silhouette_eval::MakeOriginal(options.Input, dataDirectory);
-      coarseTriangles =
-        coarseTriangles ? coarseTriangles : silhouette_eval::DefaultCoarseTriangles(options.Input);
-    }
-    else
-    {
-      original = WeldedForEvaluation(ReadMesh(options.Input), "figure: " + options.Input);
-      coarseTriangles = coarseTriangles ? coarseTriangles : 1000;
-    }
+    vtkSmartPointer<vtkPolyData> original =
+      OriginalOf(options.Input, dataDirectory, "figure", coarseTriangles);
     std::cerr << "figure: decimating to " << coarseTriangles
               << " triangles and refining to Loop level " << options.FineLevel << std::endl;
     const silhouette_eval::ModelVersions model =
@@ -271,7 +261,8 @@ std::string FigureHelp()
   return R"(Usage: silhouette figure MODEL|MESH -o FIGURE.png [--plot PLOT.png] [options]
                         [camera options]
 
-Draws the four panels of Xing's Fig. 1 and 7 side by side, labelled, from
+Draws the four panels of Figs. 1 and 7 of R. Xing's "Adaptive Local Remeshing
+for Smooth Silhouette on 3D Triangle Meshes" side by side, labelled, from
 one camera: the coarse mesh shaded, its wireframe after smoothing with the
 new triangles in red, the coarse mesh with smoothing shaded, and the fine
 reference (OpenSubdiv Loop refinement of the original) shaded. MODEL is one

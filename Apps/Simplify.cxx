@@ -30,7 +30,7 @@ std::string SimplifyHelp()
 {
   return R"(Usage: silhouette simplify INPUT -o OUTPUT --triangles N [--grid CELLS]
                           [--near-min D] [--near-max D] [--near-factor F]
-                          [--plain] [--json] [camera options]
+                          [--plain] [--measure] [--json] [camera options]
 
 Simplifies INPUT to at most N triangles by quadric edge collapse (Garland and
 Heckbert), allowing less error near the external contour for the view of the

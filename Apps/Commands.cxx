@@ -143,6 +143,23 @@ void RunProgressiveSketch(const RenderOptions& options)
                                  "hand or rough), not '") +
       NameOf(options.Style) + "'");
   }
+  // The single drawing's checks (CheckRenderOutputPath), for a folder of
+  // PNG drawings or of SVG ones (--svg).
+  if (!options.ProgressiveSvg && options.WidthByDepth)
+  {
+    throw UsageError("--width-by-depth needs SVG drawings; add --svg to --progressive");
+  }
+  if (!options.ProgressiveSvg && options.HiddenLines && options.Style != RenderStyle::Lines)
+  {
+    throw UsageError("--hidden dashed draws the hidden lines of '--style lines' in PNG drawings "
+                     "(of any line style with --svg), not of '" +
+      std::string(NameOf(options.Style)) + "'");
+  }
+  if (options.LinesOutput)
+  {
+    throw UsageError("option '--lines-output' does not go with '--progressive' (its drawings "
+                     "are of many meshes)");
+  }
   if (!options.ProgressiveSvg)
   {
     RequireDisplay();

@@ -19,6 +19,8 @@
 #include "ViewRefinementTest.h"
 #include "vtkSilhouetteFilterSupport.h"
 
+#include <glm/geometric.hpp>
+
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -239,24 +241,40 @@ void CopyTuples(vtkDataSetAttributes* in, vtkDataSetAttributes* out,
 // cluster's normal (ExtractedMesh::Normals): the input's normal belongs to
 // the input position (on a sphere with exact normals, merged points sat up
 // to 16 degrees off it, and the shading was blotchy). Points at their input
-// position keep the input's normal exactly.
-void UseClusterNormalsWhereMoved(
-  const silsmooth::ExtractedMesh& mesh, vtkPoints* inputPoints, vtkDataArray* normals)
+// position keep the input's normal exactly, and so does a copy whose normal
+// differs from its welded vertex's (`vertexNormals`) by more than 10
+// degrees: it is the other side of a hard edge, which the cluster's normal,
+// summed on the vertex's side, would smooth away.
+void UseClusterNormalsWhereMoved(const silsmooth::ExtractedMesh& mesh, vtkPoints* inputPoints,
+  const std::vector<glm::dvec3>& vertexNormals, const std::vector<silsmooth::Id>& vertex,
+  vtkDataArray* normals)
 {
   if (!normals || normals->GetNumberOfComponents() != 3)
   {
     return;
   }
+  const double sameSide = std::cos(10.0 * vtkMath::Pi() / 180.0);
   for (std::size_t i = 0; i < mesh.Points.size(); ++i)
   {
     double at[3];
     inputPoints->GetPoint(static_cast<vtkIdType>(mesh.PointIds[i]), at);
     const glm::dvec3& p = mesh.Points[i];
-    if (p.x != at[0] || p.y != at[1] || p.z != at[2])
+    if (p.x == at[0] && p.y == at[1] && p.z == at[2])
     {
-      const glm::vec3& n = mesh.Normals[i];
-      normals->SetTuple3(static_cast<vtkIdType>(i), n.x, n.y, n.z);
+      continue;
     }
+    double own[3];
+    normals->GetTuple(static_cast<vtkIdType>(i), own);
+    const glm::dvec3 copy(own[0], own[1], own[2]);
+    const glm::dvec3& welded =
+      vertexNormals[static_cast<std::size_t>(vertex[static_cast<std::size_t>(mesh.PointIds[i])])];
+    const double lengths = glm::length(copy) * glm::length(welded);
+    if (!(glm::dot(copy, welded) >= sameSide * lengths) && lengths > 0.0)
+    {
+      continue; // across a hard edge from the vertex's side
+    }
+    const glm::vec3& n = mesh.Normals[i];
+    normals->SetTuple3(static_cast<vtkIdType>(i), n.x, n.y, n.z);
   }
 }
 
@@ -387,7 +405,8 @@ int vtkViewDependentLevelOfDetail::RequestViewData(vtkInformation*,
     AddComputedNormals(
       internal.Hierarchy->pointNormals(), internal.Tables.Vertex, pointIds, output->GetPointData());
   }
-  UseClusterNormalsWhereMoved(mesh, input->GetPoints(), output->GetPointData()->GetNormals());
+  UseClusterNormalsWhereMoved(mesh, input->GetPoints(), internal.Hierarchy->pointNormals(),
+    internal.Tables.Vertex, output->GetPointData()->GetNormals());
   std::vector<vtkIdType> cellIds(mesh.TriangleIds.size());
   for (std::size_t t = 0; t < cellIds.size(); ++t)
     cellIds[t] = internal.Tables.CellIds[static_cast<std::size_t>(mesh.TriangleIds[t])];

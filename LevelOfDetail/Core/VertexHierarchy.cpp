@@ -109,6 +109,10 @@ void NormalCone::add(const NormalCone& other)
   this->HalfAngle = std::min(Pi, halfAngle + 1e-9);
 }
 
+// Clusters whose normals are further apart than this (45 degrees) lie on two
+// sides of a crease: their normals are not summed.
+constexpr float CreaseCosine = 0.70710678f;
+
 // Replays the collapse sequence on the input, fine to coarse, recording for
 // each collapse the split that undoes it.
 class VertexHierarchyBuilder
@@ -154,8 +158,14 @@ public:
     node.RemovedFine = this->position(record.Removed);
     node.KeptFineNormal = this->clusterNormal(record.Kept);
     node.RemovedFineNormal = this->clusterNormal(record.Removed);
-    this->NormalSums[static_cast<std::size_t>(record.Kept)] +=
-      this->NormalSums[static_cast<std::size_t>(record.Removed)];
+    // Across a crease (the two sides' normals more than 45 degrees apart)
+    // the kept vertex keeps its side's normal: a sum of both would shade
+    // each side as the other.
+    if (glm::dot(node.KeptFineNormal, node.RemovedFineNormal) >= CreaseCosine)
+    {
+      this->NormalSums[static_cast<std::size_t>(record.Kept)] +=
+        this->NormalSums[static_cast<std::size_t>(record.Removed)];
+    }
     node.KeptCoarseNormal = this->clusterNormal(record.Kept);
     this->findFaces(node);
     for (const Id end : { node.Kept, node.Removed })

@@ -97,7 +97,10 @@ public:
     glm::dvec3 RemovedFine{ 0.0 }; ///< Removed's position with the split applied
     /// The shading normals that suit those positions: each the unit sum of
     /// the input point normals of the points the vertex stands for there
-    /// (its own alone, for a vertex no collapse reached).
+    /// (its own alone, for a vertex no collapse reached), leaving out a
+    /// collapsed cluster whose normal is more than 45 degrees from the kept
+    /// one's (across a crease, where a sum would shade each side as the
+    /// other).
     glm::vec3 KeptFineNormal{ 0.0f };
     glm::vec3 KeptCoarseNormal{ 0.0f };
     glm::vec3 RemovedFineNormal{ 0.0f };

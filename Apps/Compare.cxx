@@ -228,16 +228,10 @@ void PrintMarkdown(const std::vector<ModelComparison>& results, const CompareOpt
 
 } // namespace
 
-vtkSmartPointer<vtkPolyData> OriginalOf(const std::string& input, const std::string& dataDirectory,
-  const std::string& command, int& coarseTriangles)
+void RequireModelOrFile(const std::string& input)
 {
-  if (silhouette_eval::IsModelName(input))
-  {
-    coarseTriangles =
-      coarseTriangles > 0 ? coarseTriangles : silhouette_eval::DefaultCoarseTriangles(input);
-    return silhouette_eval::MakeOriginal(input, dataDirectory);
-  }
-  if (LowercaseExtension(input).empty() && !std::filesystem::exists(input))
+  if (!silhouette_eval::IsModelName(input) && LowercaseExtension(input).empty() &&
+    !std::filesystem::exists(input))
   {
     std::string models;
     for (const std::string& name : silhouette_eval::ModelNames())
@@ -247,6 +241,18 @@ vtkSmartPointer<vtkPolyData> OriginalOf(const std::string& input, const std::str
     throw RuntimeError("'" + input + "' is neither a model (" + models +
       ") nor a mesh file (.ply, .obj, .stl, .vtp or .vtk)");
   }
+}
+
+vtkSmartPointer<vtkPolyData> OriginalOf(const std::string& input, const std::string& dataDirectory,
+  const std::string& command, int& coarseTriangles)
+{
+  if (silhouette_eval::IsModelName(input))
+  {
+    coarseTriangles =
+      coarseTriangles > 0 ? coarseTriangles : silhouette_eval::DefaultCoarseTriangles(input);
+    return silhouette_eval::MakeOriginal(input, dataDirectory);
+  }
+  RequireModelOrFile(input);
   coarseTriangles = coarseTriangles > 0 ? coarseTriangles : 1000;
   vtkIdType merged = 0;
   vtkSmartPointer<vtkPolyData> welded = silhouette_eval::WeldedTriangles(ReadMesh(input), &merged);
@@ -296,6 +302,17 @@ void RunCompare(const CompareOptions& options)
 
   VtkErrorLog& errors = VtkErrorLog::Instance();
   std::vector<ModelComparison> results;
+  for (const std::string& input : inputs) // a typo found before the work
+  {
+    try
+    {
+      RequireModelOrFile(input);
+    }
+    catch (const RuntimeError& error)
+    {
+      throw RuntimeError(input + ": " + error.what());
+    }
+  }
   for (const std::string& input : inputs)
   {
     errors.Clear();

@@ -41,6 +41,10 @@ struct CompareOptions
 /// each input, measured from the same cameras (see CompareHelp).
 void RunCompare(const CompareOptions& options);
 
+/// Throws RuntimeError("'INPUT' is neither a model ... nor a mesh file")
+/// for a name that is neither a model of the set nor a file.
+void RequireModelOrFile(const std::string& input);
+
 /// The original of `input` for `compare` and `figure` (`command`): a model
 /// of the set (silhouette_eval::MakeOriginal), or a mesh file with its
 /// points merged where they share a position (silhouette_eval::

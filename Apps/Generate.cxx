@@ -9,21 +9,33 @@
 #include <vtkPolyData.h>
 #include <vtkTorusSurfaceSource.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 namespace cli
 {
 namespace
 {
 
-// The memory the system says it can give now (MemAvailable), in bytes; 0
-// when it does not say.
+// A number read from a file, or 0 when there is none ("max", say).
+double NumberIn(const char* path)
+{
+  std::ifstream file(path);
+  double value = 0.0;
+  return file >> value ? value : 0.0;
+}
+
+// The memory the program can have now, in bytes: the system's MemAvailable,
+// less where a control group (a container's, cgroup v2 or v1) limits it to
+// less; 0 when nothing says.
 double AvailableMemory()
 {
+  double available = 0.0;
   std::ifstream meminfo("/proc/meminfo");
   std::string key;
   double kilobytes = 0.0;
@@ -32,10 +44,25 @@ double AvailableMemory()
   {
     if (key == "MemAvailable:")
     {
-      return kilobytes * 1024.0;
+      available = kilobytes * 1024.0;
+      break;
     }
   }
-  return 0.0;
+  const std::pair<const char*, const char*> groups[] = {
+    { "/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory.current" },
+    { "/sys/fs/cgroup/memory/memory.limit_in_bytes", "/sys/fs/cgroup/memory/memory.usage_in_bytes" }
+  };
+  for (const auto& [limitFile, usageFile] : groups)
+  {
+    const double limit = NumberIn(limitFile);
+    // v1 says "no limit" with a number near 2^63.
+    if (limit > 0.0 && limit < 1e18)
+    {
+      const double left = std::max(0.0, limit - NumberIn(usageFile));
+      available = available > 0.0 ? std::min(available, left) : left;
+    }
+  }
+  return available;
 }
 
 // Refuses a mesh that would not fit in memory, before making it: past what

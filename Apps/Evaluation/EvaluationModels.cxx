@@ -384,7 +384,7 @@ vtkSmartPointer<vtkPolyData> WeldedTriangles(vtkPolyData* input, vtkIdType* merg
   // Merged, pieces of one surface may still disagree on their winding (the
   // spider's do), which the Loop refinement refuses: made consistent, each
   // connected part as its first triangle winds (no cell flips on a mesh
-  // that agrees already).
+  // that agrees already), then the whole turned outward below.
   vtkNew<vtkPolyDataNormals> orient;
   orient->SetInputConnection(clean->GetOutputPort());
   orient->ConsistencyOn();
@@ -395,6 +395,30 @@ vtkSmartPointer<vtkPolyData> WeldedTriangles(vtkPolyData* input, vtkIdType* merg
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->SetPoints(orient->GetOutput()->GetPoints());
   mesh->SetPolys(orient->GetOutput()->GetPolys());
+  // A part winds as its first triangle did: when that one was the odd one
+  // out, the whole came out inside out. A negative enclosed volume turns
+  // it back (the truth evaluation tells outside from inside by it).
+  double volume = 0.0;
+  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    double a[3], b[3], c[3], bc[3];
+    mesh->GetPoint(ids[0], a);
+    mesh->GetPoint(ids[1], b);
+    mesh->GetPoint(ids[2], c);
+    vtkMath::Cross(b, c, bc);
+    volume += vtkMath::Dot(a, bc);
+  }
+  if (volume < 0.0)
+  {
+    for (vtkIdType c = 0; c < mesh->GetPolys()->GetNumberOfCells(); ++c)
+    {
+      mesh->GetPolys()->ReverseCellAtId(c);
+    }
+  }
   if (merged)
   {
     // Points no triangle uses go too; only those sharing a position count.

@@ -254,7 +254,7 @@ pipeline and its MTime). The window needs an X display; the headless modes
 MODEL|MESH: a model of the evaluation set (bunny, sphere, torus, ellipsoid,
 supertoroid, knot), shown as its coarse version (quadric decimation of the
 original, as 'silhouette compare' makes it), or a mesh file (.ply .obj .stl
-.vtp .vtk). Default: the bundled coarse bunny, Data/bunny_coarse.ply. The
+.vtp .vtk). Default: the bundled coarse bunny, bunny_coarse.ply of --data. The
 side-by-side fine reference is OpenSubdiv Loop refinement of the original
 (of the file itself for a mesh file), made the first time it is shown.
 
@@ -294,7 +294,9 @@ Options:
   --coarse-triangles N   triangles of a model's coarse version (default:
                          the model's own, as in 'silhouette compare')
   --data DIR             the folder that holds bunny.ply and
-                         bunny_coarse.ply (default: the project's Data/)
+                         bunny_coarse.ply (default: the one installed with
+                         the program, share/SilhouetteSmoothing/Data beside
+                         its bin folder)
   --help-overlay         start with the key help shown (default: hidden;
                          key h)
   --no-overlay           no text overlays and no slider (default: shown)

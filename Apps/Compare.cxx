@@ -1,6 +1,7 @@
 #include "Compare.h"
 
 #include "CliErrors.h"
+#include "DataFolder.h"
 #include "Figures.h"
 #include "MeshIO.h"
 #include "PrintableText.h"
@@ -19,10 +20,6 @@
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
-
-#ifndef SILHOUETTE_DATA_DIR
-#define SILHOUETTE_DATA_DIR "Data"
-#endif
 
 namespace cli
 {
@@ -287,7 +284,7 @@ void RunCompare(const CompareOptions& options)
     }
   }
   const std::string dataDirectory =
-    options.DataDirectory.empty() ? SILHOUETTE_DATA_DIR : options.DataDirectory;
+    options.DataDirectory.empty() ? DefaultDataDirectory() : options.DataDirectory;
 
   silhouette_eval::ComparisonOptions comparison;
   comparison.Width = options.ViewportSize[0];
@@ -415,8 +412,9 @@ Options:
   --size WxH            image size (default 1024x768)
   --tolerance PX        the filters' Tolerance, ours and Wang 2003's
                         (default 0.5)
-  --data DIR            the folder that holds bunny.ply (default: the
-                        project's Data/ folder)
+  --data DIR            the folder that holds bunny.ply (default: the one
+                        installed with the program, share/SilhouetteSmoothing/
+                        Data beside its bin folder)
   --truth               measure against the truth instead, for mesh files
                         (closed triangle meshes): a coarse version (our
                         link-condition quadric decimation to --coarse-triangles,

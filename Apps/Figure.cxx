@@ -2,6 +2,7 @@
 
 #include "CliErrors.h"
 #include "Compare.h"
+#include "DataFolder.h"
 #include "MeshIO.h"
 #include "Rendering.h"
 #include "RenderingBackend.h"
@@ -34,10 +35,6 @@
 #include <iostream>
 #include <stdexcept>
 #include <vector>
-
-#ifndef SILHOUETTE_DATA_DIR
-#define SILHOUETTE_DATA_DIR "Data"
-#endif
 
 namespace cli
 {
@@ -231,7 +228,7 @@ void RunFigure(const FigureOptions& options)
   }
   RequireDisplay();
   const std::string dataDirectory =
-    options.DataDirectory.empty() ? SILHOUETTE_DATA_DIR : options.DataDirectory;
+    options.DataDirectory.empty() ? DefaultDataDirectory() : options.DataDirectory;
   try
   {
     int coarseTriangles = options.CoarseTriangles;
@@ -281,8 +278,9 @@ Options:
                         model's own; 1000 for a mesh file)
   --fine-level L        Loop level of the fine reference, 1 to 5 (default 3)
   --frames N            timed orbit frames per point of the plot (default 30)
-  --data DIR            the folder that holds bunny.ply (default: the
-                        project's Data/ folder)
+  --data DIR            the folder that holds bunny.ply (default: the one
+                        installed with the program, share/SilhouetteSmoothing/
+                        Data beside its bin folder)
 )" + RenderBackendHelp(24) +
     R"(  -h, --help            show this help and exit
 

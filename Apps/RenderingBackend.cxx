@@ -59,7 +59,7 @@ bool OSMesaLibraryLoaded()
 }
 
 // bin/../lib/libsilhouette_osmesa.so.N (the build tree and an installed tree
-// alike), else where the build put it.
+// alike, wherever the tree was moved).
 std::optional<std::string> FindOSMesaLibrary()
 {
   namespace fs = std::filesystem;
@@ -71,7 +71,6 @@ std::optional<std::string> FindOSMesaLibrary()
     candidates.push_back(program.parent_path() / SILHOUETTE_OSMESA_LIBRARY_RELATIVE_DIR /
       SILHOUETTE_OSMESA_LIBRARY_NAME);
   }
-  candidates.emplace_back(SILHOUETTE_OSMESA_LIBRARY_BUILD_PATH);
   for (const fs::path& candidate : candidates)
   {
     if (fs::is_regular_file(candidate, error))
@@ -115,8 +114,9 @@ std::string WithoutLibrary(const std::string& preload, const std::string& name)
     if (!library)
     {
       throw RuntimeError(std::string("there is no X display, and the OSMesa back-end library ") +
-        SILHOUETTE_OSMESA_LIBRARY_NAME + " is missing (looked next to the program and in " +
-        SILHOUETTE_OSMESA_LIBRARY_BUILD_PATH + "); run under 'xvfb-run -a'");
+        SILHOUETTE_OSMESA_LIBRARY_NAME +
+        " is missing (looked in the lib folder beside the "
+        "program's); run under 'xvfb-run -a'");
     }
     preload = *library + (previous.empty() ? "" : ":" + previous);
   }

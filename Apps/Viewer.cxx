@@ -1,6 +1,7 @@
 #include "Viewer.h"
 
 #include "CliErrors.h"
+#include "DataFolder.h"
 #include "Figures.h"
 #include "MeshIO.h"
 #include "Rendering.h"
@@ -51,10 +52,6 @@
 #include <sstream>
 #include <stdexcept>
 #include <unistd.h>
-
-#ifndef SILHOUETTE_DATA_DIR
-#define SILHOUETTE_DATA_DIR "Data"
-#endif
 
 namespace cli
 {
@@ -209,7 +206,7 @@ Viewer::~Viewer()
 void Viewer::LoadMesh()
 {
   const std::string dataDirectory =
-    this->Options.DataDirectory.empty() ? SILHOUETTE_DATA_DIR : this->Options.DataDirectory;
+    this->Options.DataDirectory.empty() ? DefaultDataDirectory() : this->Options.DataDirectory;
   const std::string& input = this->Options.Input;
   if (input.empty() || !silhouette_eval::IsModelName(input))
   {

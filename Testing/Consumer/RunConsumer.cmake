@@ -1,7 +1,11 @@
-# ctest install.consumer: installs the build into a fresh prefix, then, as a
-# user would, configures, builds and runs the downstream project of this
-# folder against it, runs the installed CLI, and imports the installed Python
-# package with Debian's python3.
+# ctest install.consumer: installs the build into a fresh prefix and moves the
+# prefix to another folder; checks that no installed file names the source or
+# build folder, and that every installed module library loads by itself (each
+# finds the modules it needs); then, as a user would, configures, builds and
+# runs the downstream project of this folder against the moved prefix, runs
+# the installed CLI (a job on a file, and the viewer's headless orbit of its
+# default mesh, which it finds in the prefix), and imports the installed
+# Python package with Debian's python3.
 #   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DPYTHON=... -DPYTHON_DESTINATION=... -P RunConsumer.cmake
 foreach (name BUILD_DIR SOURCE_DIR WORK_DIR)
   if (NOT DEFINED ${name})
@@ -19,22 +23,51 @@ function (run)
   endif ()
 endfunction ()
 
-run("${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${prefix}")
+run("${CMAKE_COMMAND}" --install "${BUILD_DIR}" --prefix "${WORK_DIR}/installed")
+file(RENAME "${WORK_DIR}/installed" "${prefix}") # the tree must not care where it is
 foreach (installed
     "include/SilhouetteSmoothing/vtkSilhouetteSmoothingFilter.h"
-    "bin/silhouette")
+    "bin/silhouette"
+    "share/SilhouetteSmoothing/Data/bunny_coarse.ply")
   if (NOT EXISTS "${prefix}/${installed}")
     message(FATAL_ERROR "FAILED: ${installed} is not installed")
   endif ()
 endforeach ()
+
+# No installed file names a folder of the build machine's checkout.
+file(GLOB_RECURSE installed_files LIST_DIRECTORIES false "${prefix}/*")
+foreach (installed_file IN LISTS installed_files)
+  foreach (folder "${SOURCE_DIR}" "${BUILD_DIR}")
+    file(STRINGS "${installed_file}" naming REGEX "${folder}")
+    if (naming)
+      list(GET naming 0 first)
+      message(FATAL_ERROR "FAILED: ${installed_file} names ${folder}: ${first}")
+    endif ()
+  endforeach ()
+endforeach ()
+
+# Every module library loads on its own: a library that needs another
+# module's finds it in the prefix (a program using only the mapper once
+# could not start).
+if (PYTHON)
+  file(GLOB module_libraries "${prefix}/lib/libSilhouetteSmoothing*.so")
+  foreach (library IN LISTS module_libraries)
+    run("${PYTHON}" -c "import ctypes; ctypes.CDLL('${library}')")
+  endforeach ()
+endif ()
 
 run("${CMAKE_COMMAND}" -S "${SOURCE_DIR}/Testing/Consumer" -B "${WORK_DIR}/consumer"
   "-DCMAKE_PREFIX_PATH=${prefix}" -DCMAKE_BUILD_TYPE=Release)
 run("${CMAKE_COMMAND}" --build "${WORK_DIR}/consumer")
 run("${WORK_DIR}/consumer/consumer")
 
-# The installed program finds the installed module (RPATH), not the build's.
+# The installed program finds the installed module (RPATH), not the build's,
+# and its default mesh in the prefix.
 run("${prefix}/bin/silhouette" smooth "${SOURCE_DIR}/Data/sphere_ico80.vtp" --json)
+run("${prefix}/bin/silhouette" view --orbit 10 --frames 1 --record "${WORK_DIR}/orbit")
+if (NOT EXISTS "${WORK_DIR}/orbit/frame_0000.png")
+  message(FATAL_ERROR "FAILED: the installed viewer's orbit wrote no frame")
+endif ()
 
 if (PYTHON AND PYTHON_DESTINATION)
   set(ENV{PYTHONPATH} "${prefix}/${PYTHON_DESTINATION}")

@@ -382,8 +382,7 @@ int vtkSilhouetteSmoothingFilter::RequestViewData(vtkInformation*,
     internal.Smooth(this, input, view.Geometry, boundaryMayBeSeam);
   const silsmooth::PreparedMesh& mesh = internal.Surface->prepared();
   const silsmooth::SurfaceStatistics& statistics = internal.Surface->statistics();
-  this->UpdateProgress(0.6);
-  if (this->GetAbortExecute())
+  if (!vtkSilhouetteFilterSupport::ReportProgress(this, 0.6))
   {
     return 1;
   }

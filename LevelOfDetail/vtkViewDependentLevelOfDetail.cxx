@@ -123,8 +123,7 @@ std::string BuildHierarchy(vtkPolyData* input, vtkIdType base, bool weld, vtkAlg
   parameters.RecordSequence = true;
   parameters.IndependentRounds = true;
   parameters.Progress = [self](double done) {
-    self->UpdateProgress(0.8 * done);
-    return !self->GetAbortExecute();
+    return vtkSilhouetteFilterSupport::ReportProgress(self, 0.8 * done);
   };
   const silsmooth::SimplificationResult result =
     silsmooth::simplifyQuadric(mesh.Points, cells, parameters);
@@ -132,8 +131,7 @@ std::string BuildHierarchy(vtkPolyData* input, vtkIdType base, bool weld, vtkAlg
     return "aborted";
   auto built = std::make_unique<silsmooth::VertexHierarchy>(
     mesh.Points, cells, result.Sequence, mesh.Normals, [self](double done) {
-      self->UpdateProgress(0.8 + 0.15 * done);
-      return !self->GetAbortExecute();
+      return vtkSilhouetteFilterSupport::ReportProgress(self, 0.8 + 0.15 * done);
     });
   if (built->aborted())
     return "aborted";

@@ -263,8 +263,8 @@ int vtkSilhouetteLineVisibility::RequestViewData(vtkInformation*,
   {
     if (line % 256 == 0)
     {
-      this->UpdateProgress(static_cast<double>(line) / static_cast<double>(lineCount));
-      if (this->GetAbortExecute())
+      if (!vtkSilhouetteFilterSupport::ReportProgress(
+            this, static_cast<double>(line) / static_cast<double>(lineCount)))
       {
         break;
       }

@@ -69,8 +69,7 @@ int vtkSilhouetteQuadricDecimation::RequestData(
     }
   }
   parameters.Progress = [this](double done) {
-    this->UpdateProgress(0.1 + 0.8 * done);
-    return !this->GetAbortExecute();
+    return vtkSilhouetteFilterSupport::ReportProgress(this, 0.1 + 0.8 * done);
   };
   const silsmooth::SimplificationResult result =
     silsmooth::simplifyQuadric(points, triangles, parameters);

@@ -101,8 +101,7 @@ int vtkProgressiveMeshFilter::RequestData(
     }
     this->UpdateProgress(0.1);
     cache.Mesh.emplace(std::move(points), std::move(triangles), 0, [this](double done) {
-      this->UpdateProgress(0.1 + 0.8 * done);
-      return !this->GetAbortExecute();
+      return vtkSilhouetteFilterSupport::ReportProgress(this, 0.1 + 0.8 * done);
     });
     if (cache.Mesh->aborted())
     {

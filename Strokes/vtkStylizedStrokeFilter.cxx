@@ -82,8 +82,8 @@ int vtkStylizedStrokeFilter::RequestViewData(vtkInformation*, vtkInformationVect
     {
       if (strokeIndex % 256 == 0)
       {
-        this->UpdateProgress(static_cast<double>(strokeIndex) / total);
-        if (this->GetAbortExecute())
+        if (!vtkSilhouetteFilterSupport::ReportProgress(
+              this, static_cast<double>(strokeIndex) / total))
         {
           break;
         }

@@ -10,16 +10,25 @@
 namespace cli
 {
 
+std::optional<std::filesystem::path> ProgramFolder()
+{
+  std::error_code error;
+  const std::filesystem::path program = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (error)
+  {
+    return std::nullopt;
+  }
+  return program.parent_path();
+}
+
 std::string DefaultDataDirectory()
 {
-  namespace fs = std::filesystem;
-  std::error_code error;
-  const fs::path program = fs::read_symlink("/proc/self/exe", error);
-  if (error)
+  const std::optional<std::filesystem::path> folder = ProgramFolder();
+  if (!folder)
   {
     return "Data"; // no /proc: the current folder's, as a last resort
   }
-  return (program.parent_path() / SILHOUETTE_DATA_RELATIVE_DIR).lexically_normal().string();
+  return (*folder / SILHOUETTE_DATA_RELATIVE_DIR).lexically_normal().string();
 }
 
 } // namespace cli

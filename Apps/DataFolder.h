@@ -1,6 +1,8 @@
 #ifndef DataFolder_h
 #define DataFolder_h
 
+#include <filesystem>
+#include <optional>
 #include <string>
 
 namespace cli
@@ -14,6 +16,10 @@ namespace cli
  * path of the machine the program was built on is compiled in.
  */
 std::string DefaultDataDirectory();
+
+/// The folder of the running program (/proc/self/exe's), if the system says:
+/// what the data folder and the OSMesa library are found relative to.
+std::optional<std::filesystem::path> ProgramFolder();
 
 } // namespace cli
 

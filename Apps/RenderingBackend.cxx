@@ -1,6 +1,7 @@
 #include "RenderingBackend.h"
 
 #include "CliErrors.h"
+#include "DataFolder.h"
 
 #include <dlfcn.h>
 #include <unistd.h>
@@ -63,22 +64,19 @@ bool OSMesaLibraryLoaded()
 std::optional<std::string> FindOSMesaLibrary()
 {
   namespace fs = std::filesystem;
+  const std::optional<fs::path> folder = ProgramFolder();
+  if (!folder)
+  {
+    return std::nullopt;
+  }
+  const fs::path candidate =
+    *folder / SILHOUETTE_OSMESA_LIBRARY_RELATIVE_DIR / SILHOUETTE_OSMESA_LIBRARY_NAME;
   std::error_code error;
-  const fs::path program = fs::read_symlink("/proc/self/exe", error);
-  std::vector<fs::path> candidates;
-  if (!error)
+  if (!fs::is_regular_file(candidate, error))
   {
-    candidates.push_back(program.parent_path() / SILHOUETTE_OSMESA_LIBRARY_RELATIVE_DIR /
-      SILHOUETTE_OSMESA_LIBRARY_NAME);
+    return std::nullopt;
   }
-  for (const fs::path& candidate : candidates)
-  {
-    if (fs::is_regular_file(candidate, error))
-    {
-      return fs::weakly_canonical(candidate, error).string();
-    }
-  }
-  return std::nullopt;
+  return fs::weakly_canonical(candidate, error).string();
 }
 
 // LD_PRELOAD's entries (separated by ':' or spaces) without `name`'s file.

@@ -4,10 +4,23 @@
 #include "vtkMatrix4x4.h"
 
 #include <algorithm>
+#include <cfloat>
+#include <cmath>
 #include <cstring>
 
 namespace vtkSilhouetteFilterSupport
 {
+
+bool ViewTracker::SameViewAngle(double now, double last)
+{
+  // vtkWindowToImageFilter renders its grab with a copy of the camera whose
+  // view angle went through a float (and back through tan and atan): that is
+  // the same view, and smoothing it again would double a screenshot's cost.
+  // A few floats' rounding moves a silhouette by under 1e-3 px.
+  constexpr double Rounding = 4.0 * FLT_EPSILON;
+  return std::memcmp(&now, &last, sizeof(double)) == 0 ||
+    std::abs(now - last) <= Rounding * std::max(std::abs(now), std::abs(last));
+}
 
 vtkMTimeType ViewTracker::Update(
   vtkCamera* camera, const double model[16], std::array<int, 2> viewport)
@@ -36,10 +49,14 @@ vtkMTimeType ViewTracker::Update(
   camera->GetScreenBottomLeft(p + 13);
   p[16] = camera->GetLeftEye();
   std::copy(model, model + 16, v + 49);
-  // Bitwise: a NaN in the view compares equal to itself.
-  if (!this->Have || std::memcmp(now.data(), this->Last.data(), sizeof(now)) != 0 ||
-    viewport != this->LastViewport)
+  // Bitwise, but for the view angle: a NaN in the view compares equal to
+  // itself.
+  const double angle = p[0];
+  p[0] = this->Last[32];
+  if (!this->Have || !SameViewAngle(angle, this->Last[32]) ||
+    std::memcmp(now.data(), this->Last.data(), sizeof(now)) != 0 || viewport != this->LastViewport)
   {
+    p[0] = angle;
     this->Last = now;
     this->LastViewport = viewport;
     this->Have = true;

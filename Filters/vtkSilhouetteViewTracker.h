@@ -22,12 +22,19 @@ namespace vtkSilhouetteFilterSupport
 /// camera's model-view matrix (position, orientation, model and user-view
 /// transforms) and its projection parameters (not the clipping range), the
 /// model matrix and the viewport, compared bitwise (a NaN in the view compares
-/// equal to itself instead of re-running the filter on every update).
+/// equal to itself instead of re-running the filter on every update), except
+/// for the view angle, which may differ by a float's rounding
+/// (SameViewAngle).
 class ViewTracker
 {
 public:
   /// The time the view last changed (updated by this call).
   vtkMTimeType Update(vtkCamera* camera, const double model[16], std::array<int, 2> viewport);
+
+  /// Whether two view angles (degrees) are one view's: bitwise equal, or
+  /// apart by at most a few floats' rounding (a window-to-image grab's copy
+  /// of the camera).
+  static bool SameViewAngle(double now, double last);
 
 private:
   std::array<double, 16 + 16 + 17 + 16> Last{};

@@ -406,19 +406,63 @@ bool PreparedMesh::adoptTriangleGridOfMoved(const PreparedMesh& earlier)
   return false;
 }
 
-bool PreparedMesh::findSilhouetteTriangles(
-  const ViewGeometry& view, const ParallelFor& parallelFor, std::vector<Id>& out) const
+PreparedMesh::LazyTriangleHierarchy::~LazyTriangleHierarchy()
+{
+  if (this->Builder.joinable())
+  {
+    this->Builder.join();
+  }
+}
+
+bool PreparedMesh::findSilhouetteTriangles(const ViewGeometry& view, const ParallelFor& parallelFor,
+  std::vector<Id>& out, TreeBuild build) const
 {
   LazyTriangleHierarchy& lazy = *this->TriangleHierarchies[view.Parallel ? 0 : 1];
   if (lazy.Searches.fetch_add(1) == 0)
   {
     return false; // the first search scans: maybe the only one
   }
+  const bool perspective = !view.Parallel;
   std::call_once(lazy.Once, [&] {
+    if (build == TreeBuild::Background)
+    {
+      try
+      {
+        // Copies: this mesh may go before the tree is done; the lazy state
+        // (shared by copies of the mesh) joins the thread when it goes.
+        lazy.Builder = std::thread([&lazy, points = this->Points, normals = this->Normals,
+                                     triangles = this->Triangles, perspective] {
+          try
+          {
+            lazy.Tree = SilhouetteTriangleHierarchy(points, normals, triangles, perspective);
+            lazy.Ready.store(true, std::memory_order_release);
+          }
+          catch (const std::bad_alloc&)
+          {
+            // No tree: every search keeps scanning.
+          }
+        });
+        return;
+      }
+      catch (const std::exception&)
+      {
+        // No thread (or no memory for the copies): build it here.
+      }
+    }
     lazy.Tree =
-      SilhouetteTriangleHierarchy(this->Points, this->Normals, this->Triangles, !view.Parallel);
+      SilhouetteTriangleHierarchy(this->Points, this->Normals, this->Triangles, perspective);
+    lazy.Ready.store(true, std::memory_order_release);
   });
+  if (!lazy.Ready.load(std::memory_order_acquire))
+  {
+    return false;
+  }
   return lazy.Tree.find(view, this->Points, this->Normals, this->Triangles, parallelFor, out);
+}
+
+bool PreparedMesh::silhouetteTreeReady(bool parallel) const
+{
+  return this->TriangleHierarchies[parallel ? 0 : 1]->Ready.load(std::memory_order_acquire);
 }
 
 const VisibilityHierarchy& PreparedMesh::visibilityHierarchy() const

@@ -25,8 +25,11 @@ namespace detail
 
 void SilhouettePass::findSilhouetteTriangles()
 {
+  const PreparedMesh::TreeBuild build = this->Parameters.TriangleHierarchyInBackground
+    ? PreparedMesh::TreeBuild::Background
+    : PreparedMesh::TreeBuild::InCall;
   if (!(this->Parameters.SilhouetteTriangleHierarchy &&
-        this->Mesh.findSilhouetteTriangles(this->View, this->For, this->Silhouette)))
+        this->Mesh.findSilhouetteTriangles(this->View, this->For, this->Silhouette, build)))
   {
     this->G = vertexVisibility(this->Mesh, this->View, this->Parameters.Visibility, this->For);
     this->scanForSilhouetteTriangles();

@@ -9,7 +9,8 @@
 // render, wait for completion) and its ratio to plain's, and the median
 // time of the smoothing's own work before drawing: the mapper's
 // GetLastPrepareSeconds, and the filter's Update. The per-frame upload of
-// the filter's output is part of its frame, not of this column.
+// the filter's output is part of its frame, not of this column. Then the
+// slowest frame of each (a frame that waited for a one-time build).
 //
 // Then a deforming mesh (new points every frame, the same cells, as a time
 // series gives), with the camera still: the plain mapper; the mapper, which
@@ -217,6 +218,13 @@ void MeasureOrbit(vtkPolyData* mesh, const Options& options)
   std::printf("%10s  mapper: %lld triangles replaced by %lld in the last frame\n", "",
     static_cast<long long>(smoothingMapper->GetReplacedTriangleCount()),
     static_cast<long long>(smoothingMapper->GetPatchTriangleCount()));
+  // The orbit's first frame is the mesh's second view, where the
+  // silhouette triangle tree's build starts (on a thread of its own, so no
+  // frame should stand out).
+  std::printf("%10s  slowest frame: plain %.1f, mapper %.1f, filter %.1f\n", "",
+    *std::max_element(plain.FrameMs.begin(), plain.FrameMs.end()),
+    *std::max_element(mapper.FrameMs.begin(), mapper.FrameMs.end()),
+    *std::max_element(filtered.FrameMs.begin(), filtered.FrameMs.end()));
   std::fflush(stdout);
 }
 

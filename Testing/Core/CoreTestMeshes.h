@@ -147,6 +147,23 @@ inline void makeSoup(const std::vector<glm::dvec3>& points,
   }
 }
 
+/// A unit sphere (unitSphere) and the same triangles as a soup (makeSoup).
+struct SphereAndSoup
+{
+  std::vector<glm::dvec3> Points;
+  std::vector<silsmooth::Triangle> Triangles;
+  std::vector<glm::dvec3> SoupPoints;
+  std::vector<silsmooth::Triangle> SoupTriangles;
+};
+
+inline SphereAndSoup sphereAndSoup(int rings, int sectors)
+{
+  SphereAndSoup meshes;
+  unitSphere(rings, sectors, meshes.Points, meshes.Triangles);
+  makeSoup(meshes.Points, meshes.Triangles, meshes.SoupPoints, meshes.SoupTriangles);
+  return meshes;
+}
+
 /// Surface options without the flat-sided crease detection, for meshes
 /// whose creases the tests name themselves.
 inline silsmooth::SurfaceOptions plainOptions()

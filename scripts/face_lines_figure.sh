@@ -7,19 +7,8 @@
 # SILHOUETTE=path/to/silhouette uses that program instead of building build/.
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-if [ -n "${SILHOUETTE:-}" ]; then
-  silhouette="$SILHOUETTE"
-else
-  # shellcheck source=setup.sh
-  source "$here/scripts/setup.sh"
-  silhouette="$build/bin/silhouette"
-fi
-display=()
-if [ -z "${DISPLAY:-}" ]; then
-  display=(xvfb-run -a -s "-screen 0 1280x1024x24")
-fi
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
+# shellcheck source=figure_setup.sh
+source "$here/scripts/figure_setup.sh"
 
 panels=()
 for mesh in bunny_coarse sphere_ico80; do

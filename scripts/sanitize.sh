@@ -17,18 +17,17 @@ jobs="$(nproc 2>/dev/null || echo 2)"
 
 started=$SECONDS
 echo "sanitize: building the tests and the program with -fsanitize=address,undefined in $build"
-mkdir -p "$build"
 meshes="${SILHOUETTE_BUILD_DIR:-$here/build}/real-meshes"
 bash "$here/scripts/real-meshes.sh" "$meshes"
 # -O1 -g1: the optimisation AddressSanitizer recommends, and line tables
 # (enough for its stack traces) instead of full debug information: the build
 # takes half the time of -O2 -g, and the tests about as long.
-cmake -S "$here" -B "$build" -DSILHOUETTE_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+# shellcheck source=cmake_logged.sh
+source "$here/scripts/cmake_logged.sh"
+configure_logged sanitize "$build" -DSILHOUETTE_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-  -DSILHOUETTE_REAL_MESHES_DIR="$meshes" \
-  >"$build/sanitize-configure.log" 2>&1 || { cat "$build/sanitize-configure.log" >&2; exit 1; }
-cmake --build "$build" -j "$jobs" --target silhouette_core_tests visibility_benchmark fold_guard_benchmark SilhouetteModuleTests silhouette MeasureRun \
-  >"$build/sanitize-build.log" 2>&1 || { tail -50 "$build/sanitize-build.log" >&2; exit 1; }
+  -DSILHOUETTE_REAL_MESHES_DIR="$meshes"
+build_logged sanitize "$build" -j "$jobs" --target silhouette_core_tests visibility_benchmark fold_guard_benchmark SilhouetteModuleTests silhouette MeasureRun
 echo "sanitize: built in $((SECONDS - started)) s"
 
 cd "$build"

@@ -33,9 +33,8 @@ fi
 
 jobs="$(nproc 2>/dev/null || echo 2)"
 echo "setup: configuring and building in $build"
-mkdir -p "$build"
-cmake -S "$here" -B "$build" -DCMAKE_BUILD_TYPE=Release >"$build/setup-configure.log" 2>&1 ||
-  { cat "$build/setup-configure.log" >&2; exit 1; }
-cmake --build "$build" -j "$jobs" >"$build/setup-build.log" 2>&1 ||
-  { tail -50 "$build/setup-build.log" >&2; exit 1; }
+# shellcheck source=cmake_logged.sh
+source "$here/scripts/cmake_logged.sh"
+configure_logged setup "$build" -DCMAKE_BUILD_TYPE=Release
+build_logged setup "$build" -j "$jobs"
 echo "setup: built (logs in $build: setup-configure.log, setup-build.log)"

@@ -11,19 +11,8 @@
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 triangles="${1:-600}"
-if [ -n "${SILHOUETTE:-}" ]; then
-  silhouette="$SILHOUETTE"
-else
-  # shellcheck source=setup.sh
-  source "$here/scripts/setup.sh"
-  silhouette="$build/bin/silhouette"
-fi
-display=()
-if [ -z "${DISPLAY:-}" ]; then
-  display=(xvfb-run -a -s "-screen 0 1280x1024x24")
-fi
-work="$(mktemp -d)"
-trap 'rm -rf "$work"' EXIT
+# shellcheck source=figure_setup.sh
+source "$here/scripts/figure_setup.sh"
 size=560x480
 input="$here/Data/bunny.ply"
 

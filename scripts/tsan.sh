@@ -22,13 +22,12 @@ jobs="$(nproc 2>/dev/null || echo 2)"
 
 started=$SECONDS
 echo "tsan: building the core and module tests with -fsanitize=thread in $build"
-mkdir -p "$build"
+# shellcheck source=cmake_logged.sh
+source "$here/scripts/cmake_logged.sh"
 # -O1 -g1 as in scripts/sanitize.sh: line tables suffice for the reports.
-cmake -S "$here" -B "$build" -DSILHOUETTE_SANITIZE_THREAD=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-  >"$build/tsan-configure.log" 2>&1 || { cat "$build/tsan-configure.log" >&2; exit 1; }
-cmake --build "$build" -j "$jobs" --target silhouette_core_tests SilhouetteModuleTests \
-  >"$build/tsan-build.log" 2>&1 || { tail -50 "$build/tsan-build.log" >&2; exit 1; }
+configure_logged tsan "$build" -DSILHOUETTE_SANITIZE_THREAD=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG"
+build_logged tsan "$build" -j "$jobs" --target silhouette_core_tests SilhouetteModuleTests
 echo "tsan: built in $((SECONDS - started)) s"
 
 cd "$build"

@@ -37,6 +37,16 @@ def show_bunny_view(view):
     view.CameraParallelProjection = 0
 
 
+def bunny_render_view(size):
+    """A new render view of `size` pixels with the image tests' look and
+    camera (show_bunny_view), which its first render keeps."""
+    simple._DisableFirstRenderCameraReset()
+    view = simple.CreateView("RenderView")
+    view.ViewSize = size
+    show_bunny_view(view)
+    return view
+
+
 def copy_camera(view, smoother):
     """Copies the render view's camera and size into the filter's properties:
     ParaView does not hand the view's vtkCamera to a filter."""
@@ -79,6 +89,57 @@ def image_error(image, baseline):
     difference.AveragingOn()
     difference.Update()
     return difference.GetThresholdedError()
+
+
+def two_ranks():
+    """The number of MPI ranks, which must be two (the tests split the mesh
+    in two); exits otherwise."""
+    from vtkmodules.vtkParallelCore import vtkMultiProcessController
+
+    ranks = vtkMultiProcessController.GetGlobalController().GetNumberOfProcesses()
+    print("ranks: %d" % ranks)
+    if ranks != 2:
+        sys.exit("FAILED: run with mpirun -np 2 (got %d ranks)" % ranks)
+    return ranks
+
+
+def read_with_point_normals(ply_file):
+    """A PLY mesh with point normals computed on the whole mesh (no
+    splitting, no reorientation), before any partitioning, so that both sides
+    of a seam carry the same normals at the same points."""
+    from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
+    from vtkmodules.vtkIOPLY import vtkPLYReader
+
+    ply = vtkPLYReader()
+    ply.SetFileName(ply_file)
+    normals = vtkPolyDataNormals()
+    normals.SetInputConnection(ply.GetOutputPort())
+    normals.SplittingOff()
+    normals.ConsistencyOff()
+    normals.ComputeCellNormalsOff()
+    normals.Update()
+    return normals.GetOutput()
+
+
+def cell_point_ids(mesh):
+    """Each cell's point ids, in cell order."""
+    from vtkmodules.vtkCommonCore import vtkIdList
+
+    ids = vtkIdList()
+    cell_points = []
+    for cell in range(mesh.GetNumberOfCells()):
+        mesh.GetCellPoints(cell, ids)
+        cell_points.append([ids.GetId(i) for i in range(ids.GetNumberOfIds())])
+    return cell_points
+
+
+def halves_at_median_x(mesh, cell_points):
+    """The two halves of `mesh` as lists of cell ids (in cell order): the
+    cells whose centroid lies left of the median x, then the others."""
+    centroids = [sum(mesh.GetPoint(p)[0] for p in points) / len(points) for points in cell_points]
+    median = sorted(centroids)[len(centroids) // 2]
+    return [[cell for cell in range(len(centroids)) if (centroids[cell] >= median) == (half == 1)]
+            for half in range(2)]
 
 
 def write_pieces(mesh, pieces, output_dir, name, ghosts=False):

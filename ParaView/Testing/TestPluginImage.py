@@ -7,15 +7,12 @@ import sys
 
 from paraview import simple, servermanager
 
-from SilhouetteTestUtils import copy_camera, field_value, finish, image_error, load_plugin, setting, show_bunny_view, triangle_count
+from SilhouetteTestUtils import bunny_render_view, copy_camera, field_value, finish, image_error, load_plugin, setting, triangle_count
 
 SilhouetteSmoothing = load_plugin()
-simple._DisableFirstRenderCameraReset()
 
 size = [640, 480]
-view = simple.CreateView("RenderView")
-view.ViewSize = size
-show_bunny_view(view)
+view = bunny_render_view(size)
 
 reader = simple.PLYReader(FileNames=[setting("SILHOUETTE_DATA")])
 smoother = SilhouetteSmoothing(Input=reader)

@@ -8,22 +8,17 @@ must be equal: the same triangle count, the same triangles (compared by their
 corners' coordinates, exactly) and no crack where the pieces meet (once
 coincident points are merged with tolerance 0, no boundary edge, as on the
 closed whole). With it (the default), the same count and no crack."""
-import sys
 from collections import Counter
 from types import SimpleNamespace
 
 from paraview import servermanager, simple
 from vtkmodules.vtkCommonCore import vtkIdList
-from vtkmodules.vtkFiltersCore import vtkAppendPolyData, vtkCleanPolyData, vtkFeatureEdges, vtkPolyDataNormals
-from vtkmodules.vtkIOPLY import vtkPLYReader
-from vtkmodules.vtkParallelCore import vtkMultiProcessController
+from vtkmodules.vtkFiltersCore import vtkAppendPolyData, vtkCleanPolyData, vtkFeatureEdges
 
-from SilhouetteTestUtils import copy_camera, field_value, finish, load_plugin, setting, triangle_count, write_pieces
+from SilhouetteTestUtils import (cell_point_ids, copy_camera, field_value, finish, halves_at_median_x, load_plugin,
+                                 read_with_point_normals, setting, triangle_count, two_ranks, write_pieces)
 
-ranks = vtkMultiProcessController.GetGlobalController().GetNumberOfProcesses()
-print("ranks: %d" % ranks)
-if ranks != 2:
-    sys.exit("FAILED: run with mpirun -np 2 (got %d ranks)" % ranks)
+ranks = two_ranks()
 
 SilhouetteSmoothing = load_plugin()
 
@@ -35,27 +30,12 @@ view = SimpleNamespace(CameraPosition=[16.0, 11.0, 22.0], CameraFocalPoint=[0.0,
 
 # Normals on the whole mesh, before partitioning, so that both sides of the
 # seam carry the same normals at the same points.
-ply = vtkPLYReader()
-ply.SetFileName(setting("SILHOUETTE_DATA"))
-normals = vtkPolyDataNormals()
-normals.SetInputConnection(ply.GetOutputPort())
-normals.SplittingOff()
-normals.ConsistencyOff()
-normals.ComputeCellNormalsOff()
-normals.Update()
-mesh = normals.GetOutput()
+mesh = read_with_point_normals(setting("SILHOUETTE_DATA"))
 
 # The two halves: cells whose centroid lies left of the median x go to piece
 # 0, the others to piece 1. Each piece keeps the points it uses (same
 # coordinates and normals).
-centroids = []
-ids = vtkIdList()
-for cell in range(mesh.GetNumberOfCells()):
-    mesh.GetCellPoints(cell, ids)
-    centroids.append(sum(mesh.GetPoint(ids.GetId(i))[0] for i in range(ids.GetNumberOfIds())) / ids.GetNumberOfIds())
-median = sorted(centroids)[len(centroids) // 2]
-pieces = [[(cell, 0) for cell in range(mesh.GetNumberOfCells()) if (centroids[cell] >= median) == (piece == 1)]
-          for piece in range(ranks)]
+pieces = [[(cell, 0) for cell in half] for half in halves_at_median_x(mesh, cell_point_ids(mesh))]
 parallel_file, whole_file = write_pieces(mesh, pieces, setting("SILHOUETTE_OUTPUT_DIR"), "TestPluginMPI")
 
 # Rank i reads piece i; the whole mesh, a one-piece file, is read by rank 0.

@@ -17,15 +17,12 @@ from paraview import servermanager, simple
 from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 
-from SilhouetteTestUtils import finish, image_error, load_representation_plugin, setting, show_bunny_view
+from SilhouetteTestUtils import bunny_render_view, finish, image_error, load_representation_plugin, setting
 
 load_representation_plugin()
-simple._DisableFirstRenderCameraReset()
 
 size = [640, 480]
-view = simple.CreateView("RenderView")
-view.ViewSize = size
-show_bunny_view(view)
+view = bunny_render_view(size)
 
 reader = simple.PLYReader(FileNames=[setting("SILHOUETTE_DATA")])
 display = simple.Show(reader, view)

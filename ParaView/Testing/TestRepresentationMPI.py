@@ -12,54 +12,28 @@ layer (ParaView 5.11's geometry filter already drops ghost cells, so none
 reach the mapper, which would leave them out too). And the limit must tell
 the smooth outline from the chord outline (the pieces with smoothing off)."""
 import os
-import sys
 
 from paraview import servermanager, simple
-from vtkmodules.vtkCommonCore import vtkIdList
 from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes
-from vtkmodules.vtkFiltersCore import vtkPolyDataNormals
-from vtkmodules.vtkIOPLY import vtkPLYReader
-from vtkmodules.vtkParallelCore import vtkMultiProcessController
 
-from SilhouetteTestUtils import finish, image_error, load_representation_plugin, setting, show_bunny_view, write_pieces
+from SilhouetteTestUtils import (bunny_render_view, cell_point_ids, finish, halves_at_median_x, image_error,
+                                 load_representation_plugin, read_with_point_normals, setting, two_ranks, write_pieces)
 
-ranks = vtkMultiProcessController.GetGlobalController().GetNumberOfProcesses()
-print("ranks: %d" % ranks)
-if ranks != 2:
-    sys.exit("FAILED: run with mpirun -np 2 (got %d ranks)" % ranks)
+ranks = two_ranks()
 
 load_representation_plugin()
-simple._DisableFirstRenderCameraReset()
 
 # Normals on the whole mesh, before partitioning, so that both sides of the
 # seam carry the same normals at the same points (vtkSilhouetteSmoothingFilter:
 # pieces meet without cracks when they do).
-ply = vtkPLYReader()
-ply.SetFileName(setting("SILHOUETTE_DATA"))
-normals = vtkPolyDataNormals()
-normals.SetInputConnection(ply.GetOutputPort())
-normals.SplittingOff()
-normals.ConsistencyOff()
-normals.ComputeCellNormalsOff()
-normals.Update()
-mesh = normals.GetOutput()
+mesh = read_with_point_normals(setting("SILHOUETTE_DATA"))
 cell_count = mesh.GetNumberOfCells()
 
-
-ids = vtkIdList()
-cell_points = []
-centroids = []
-for cell in range(cell_count):
-    mesh.GetCellPoints(cell, ids)
-    points = [ids.GetId(i) for i in range(ids.GetNumberOfIds())]
-    cell_points.append(points)
-    centroids.append(sum(mesh.GetPoint(p)[0] for p in points) / len(points))
-median = sorted(centroids)[cell_count // 2]
+cell_points = cell_point_ids(mesh)
 pieces = []
 owned_counts = []
 ghost_counts = []
-for piece in range(ranks):
-    owned = [cell for cell in range(cell_count) if (centroids[cell] >= median) == (piece == 1)]
+for piece, owned in enumerate(halves_at_median_x(mesh, cell_points)):
     owned_points = {p for cell in owned for p in cell_points[cell]}
     owned_set = set(owned)
     ghosts = [cell for cell in range(cell_count)
@@ -72,9 +46,7 @@ output_dir = setting("SILHOUETTE_OUTPUT_DIR")
 parallel_file, whole_file = write_pieces(mesh, pieces, output_dir, "TestRepresentationMPI", ghosts=True)
 
 size = [640, 480]
-view = simple.CreateView("RenderView")
-view.ViewSize = size
-show_bunny_view(view)
+view = bunny_render_view(size)
 
 # Rank i reads piece i; the whole mesh, a one-piece file, is read by rank 0.
 pieces = simple.XMLPartitionedPolydataReader(FileName=[parallel_file])

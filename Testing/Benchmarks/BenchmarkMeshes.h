@@ -4,6 +4,7 @@
 #ifndef BenchmarkMeshes_h
 #define BenchmarkMeshes_h
 
+#include "CoreTestMeshes.h"
 #include "MeshTopology.h"
 #include "ViewGeometry.h"
 
@@ -14,7 +15,6 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <map>
 #include <random>
 #include <string>
 #include <vector>
@@ -34,38 +34,6 @@ struct Mesh
   std::vector<glm::dvec3> Normals; // empty: angle-weighted
 };
 
-// Splits every triangle in four at its edge midpoints; onSphere projects the
-// new points onto the unit sphere.
-inline void refine(Mesh& mesh, bool onSphere)
-{
-  std::map<std::pair<Id, Id>, Id> middles;
-  auto middle = [&](Id a, Id b) {
-    const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-    const auto it = middles.find(key);
-    if (it != middles.end())
-    {
-      return it->second;
-    }
-    glm::dvec3 p =
-      0.5 * (mesh.Points[static_cast<std::size_t>(a)] + mesh.Points[static_cast<std::size_t>(b)]);
-    mesh.Points.push_back(onSphere ? glm::normalize(p) : p);
-    return middles[key] = static_cast<Id>(mesh.Points.size() - 1);
-  };
-  std::vector<Triangle> finer;
-  finer.reserve(mesh.Triangles.size() * 4);
-  for (const Triangle& t : mesh.Triangles)
-  {
-    const Id ab = middle(t[0], t[1]);
-    const Id bc = middle(t[1], t[2]);
-    const Id ca = middle(t[2], t[0]);
-    finer.push_back({ t[0], ab, ca });
-    finer.push_back({ ab, t[1], bc });
-    finer.push_back({ ca, bc, t[2] });
-    finer.push_back({ ab, bc, ca });
-  }
-  mesh.Triangles = std::move(finer);
-}
-
 inline Mesh icosphere(int level)
 {
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
@@ -82,7 +50,7 @@ inline Mesh icosphere(int level)
     { 9, 8, 1 } };
   for (int l = 0; l < level; ++l)
   {
-    refine(mesh, true);
+    coretest::splitInFour(mesh.Points, mesh.Triangles, true);
   }
   mesh.Normals = mesh.Points; // exact
   mesh.Name = "icosphere " + std::to_string(level);

@@ -2,17 +2,9 @@
 # thresholds on the outline deviations (not on times, which depend on the
 # machine). Variables (-D): PROGRAM, WRAPPER (runs it with a display).
 cmake_minimum_required(VERSION 3.19) # string(JSON)
+include("${CMAKE_CURRENT_LIST_DIR}/RunCompare.cmake")
 
-execute_process(
-  COMMAND "${WRAPPER}" "${PROGRAM}" compare sphere torus --views 6 --frames 3 --size 640x480 --json
-  RESULT_VARIABLE exit_status
-  OUTPUT_VARIABLE json
-  ERROR_VARIABLE progress
-  TIMEOUT 600)
-if (NOT exit_status EQUAL 0)
-  message(FATAL_ERROR "compare failed (${exit_status}):\n${json}\n${progress}")
-endif ()
-message(STATUS "${json}")
+run_compare(json sphere torus)
 
 function (figure model variant key out)
   string(JSON value GET "${json}" ${model} ${variant} ${key})

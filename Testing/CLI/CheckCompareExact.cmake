@@ -10,18 +10,10 @@
 # (0.77, 0.50, 0.67 px).
 # Variables (-D): PROGRAM, WRAPPER (runs it with a display).
 cmake_minimum_required(VERSION 3.19) # string(JSON)
+include("${CMAKE_CURRENT_LIST_DIR}/RunCompare.cmake")
 
 set(models ellipsoid supertoroid knot)
-execute_process(
-  COMMAND "${WRAPPER}" "${PROGRAM}" compare ${models} --views 6 --frames 3 --size 640x480 --json
-  RESULT_VARIABLE exit_status
-  OUTPUT_VARIABLE json
-  ERROR_VARIABLE progress
-  TIMEOUT 600)
-if (NOT exit_status EQUAL 0)
-  message(FATAL_ERROR "compare failed (${exit_status}):\n${json}\n${progress}")
-endif ()
-message(STATUS "${json}")
+run_compare(json ${models})
 
 set(limit 0.75)
 set(index 0)

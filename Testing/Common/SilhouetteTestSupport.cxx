@@ -11,6 +11,7 @@
 #include "vtkIcosphereSource.h"
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
+#include "vtkNew.h"
 #include "vtkOBJReader.h"
 #include "vtkPLYReader.h"
 #include "vtkPointData.h"
@@ -21,6 +22,7 @@
 #include "vtkProperty.h"
 #include "vtkSTLReader.h"
 #include "vtkTestErrorObserver.h"
+#include "vtkTorusSurfaceSource.h"
 #include "vtkXMLPolyDataReader.h"
 #include <vtksys/SystemTools.hxx>
 
@@ -205,6 +207,26 @@ bool IsUniformTessellationOf(vtkPolyData* input, vtkPolyData* out, int level)
   return true;
 }
 
+bool IsUniformTessellationOfFlatGrid(vtkPolyData* flat, vtkPolyData* out, int level)
+{
+  CHECK(
+    out->GetNumberOfPolys() == flat->GetNumberOfPolys() * (level + 1) * (level + 1), "flat count");
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    CHECK(std::abs(p[2]) < 1e-7, "flat stays flat");
+    double n[3];
+    out->GetPointData()->GetNormals()->GetTuple(i, n);
+    CHECK(std::abs(n[2] - 1.0) < 1e-6, "flat normals stay the plane's");
+  }
+  const TopologyReport report = AnalyzeTopology(out);
+  CHECK(report.NonManifoldEdges == 0 && report.OrientationConflicts == 0 &&
+      report.BoundaryEdges == 2 * (4 + 3) * (level + 1),
+    report.summary().c_str());
+  return true;
+}
+
 std::string AssetModelsFolder()
 {
   const std::string folder = "/usr/share/assimp/models";
@@ -260,6 +282,23 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->ShallowCopy(reader->GetOutputDataObject(0));
   return mesh->GetNumberOfPoints() > 0 ? mesh : nullptr;
+}
+
+SphereTorusBunny MakeSphereTorusBunny(int argc, char* argv[])
+{
+  SphereTorusBunny meshes;
+  vtkNew<vtkIcosphereSource> sphere;
+  sphere->Update();
+  meshes.Sphere = sphere->GetOutput();
+  vtkNew<vtkTorusSurfaceSource> torus;
+  torus->Update();
+  meshes.Torus = torus->GetOutput();
+  meshes.Bunny = ReadMesh(DataFile(argc, argv, "bunny_coarse.ply"));
+  if (!meshes.Bunny)
+  {
+    std::printf("FAIL: cannot read bunny_coarse.ply\n");
+  }
+  return meshes;
 }
 
 vtkSmartPointer<vtkPolyData> FlatGrid()

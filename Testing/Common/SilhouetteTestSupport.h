@@ -61,6 +61,13 @@ TopologyReport AnalyzeTopology(vtkPolyData* mesh);
 /// triangles, the input's points first and unmoved. Prints what failed.
 bool IsUniformTessellationOf(vtkPolyData* input, vtkPolyData* output, int level);
 
+/// The layout a uniform tessellation of FlatGrid() (open, flat, the plane's
+/// normal everywhere) at `level` must have: (level + 1)^2 triangles per
+/// input triangle, every point in the plane with the plane's normal, no
+/// non-manifold or conflicting edges, and each of the grid's 14 boundary
+/// edges cut in level + 1. Prints what failed.
+bool IsUniformTessellationOfFlatGrid(vtkPolyData* flat, vtkPolyData* output, int level);
+
 /// A copy of vtkIcosphereSource's sphere at `level` (exact normals), free to modify.
 vtkSmartPointer<vtkPolyData> Icosphere(int level);
 
@@ -88,6 +95,17 @@ std::string AssetModelsFolder();
 
 /// Reads a mesh by extension (.ply .vtp .obj .stl .vtk); nullptr on failure.
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path);
+
+/// The three meshes the image, mapper and topology tests run on:
+/// vtkIcosphereSource's and vtkTorusSurfaceSource's defaults and the coarse
+/// bunny (Data/bunny_coarse.ply).
+struct SphereTorusBunny
+{
+  vtkSmartPointer<vtkPolyData> Sphere;
+  vtkSmartPointer<vtkPolyData> Torus;
+  vtkSmartPointer<vtkPolyData> Bunny; ///< nullptr (and a FAIL line printed) when unreadable
+};
+SphereTorusBunny MakeSphereTorusBunny(int argc, char* argv[]);
 
 /// A flat, open mesh in the plane z = 0: a 4 x 3 grid of quads over
 /// [-1, 1] x [-1, 1.5], each cut in two (24 triangles, 14 boundary edges),

@@ -5,8 +5,10 @@
 #include "ViewGeometry.h"
 #include "WeldedSurface.h"
 
+#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <utility>
@@ -145,6 +147,58 @@ inline void makeSoup(const std::vector<glm::dvec3>& points,
     }
     soupTriangles.push_back({ { base, base + 1, base + 2 } });
   }
+}
+
+/// Splits every triangle in four at its edge midpoints (each shared edge's
+/// midpoint made once); `onSphere` projects the new points onto the unit
+/// sphere.
+inline void splitInFour(
+  std::vector<glm::dvec3>& points, std::vector<silsmooth::Triangle>& triangles, bool onSphere)
+{
+  using silsmooth::Id;
+  std::map<std::pair<Id, Id>, Id> middles;
+  auto middle = [&](Id a, Id b) {
+    const auto key = std::make_pair(std::min(a, b), std::max(a, b));
+    const auto it = middles.find(key);
+    if (it != middles.end())
+    {
+      return it->second;
+    }
+    const glm::dvec3 p =
+      0.5 * (points[static_cast<std::size_t>(a)] + points[static_cast<std::size_t>(b)]);
+    points.push_back(onSphere ? glm::normalize(p) : p);
+    return middles[key] = static_cast<Id>(points.size() - 1);
+  };
+  std::vector<silsmooth::Triangle> finer;
+  finer.reserve(triangles.size() * 4);
+  for (const silsmooth::Triangle& t : triangles)
+  {
+    const Id ab = middle(t[0], t[1]);
+    const Id bc = middle(t[1], t[2]);
+    const Id ca = middle(t[2], t[0]);
+    finer.push_back({ t[0], ab, ca });
+    finer.push_back({ ab, t[1], bc });
+    finer.push_back({ ca, bc, t[2] });
+    finer.push_back({ ab, bc, ca });
+  }
+  triangles = std::move(finer);
+}
+
+/// A unit sphere (unitSphere) and the same triangles as a soup (makeSoup).
+struct SphereAndSoup
+{
+  std::vector<glm::dvec3> Points;
+  std::vector<silsmooth::Triangle> Triangles;
+  std::vector<glm::dvec3> SoupPoints;
+  std::vector<silsmooth::Triangle> SoupTriangles;
+};
+
+inline SphereAndSoup sphereAndSoup(int rings, int sectors)
+{
+  SphereAndSoup meshes;
+  unitSphere(rings, sectors, meshes.Points, meshes.Triangles);
+  makeSoup(meshes.Points, meshes.Triangles, meshes.SoupPoints, meshes.SoupTriangles);
+  return meshes;
 }
 
 /// Surface options without the flat-sided crease detection, for meshes

@@ -176,12 +176,7 @@ TEST(SurfaceOrientation, OpenPatchFollowsItsNormalsAndMoebiusStripIsReported)
 
 TEST(WeldedSurface, TriangleSoupSmoothsExactlyAsTheWeldedMesh)
 {
-  std::vector<glm::dvec3> points;
-  std::vector<Triangle> triangles;
-  coretest::unitSphere(6, 10, points, triangles);
-  std::vector<glm::dvec3> soupPoints;
-  std::vector<Triangle> soupTriangles;
-  coretest::makeSoup(points, triangles, soupPoints, soupTriangles);
+  const auto [points, triangles, soupPoints, soupTriangles] = coretest::sphereAndSoup(6, 10);
   const std::vector<glm::dvec3> soupNormals = soupPoints; // exact sphere normals
   for (const bool withNormals : { true, false })
   {
@@ -359,12 +354,7 @@ TEST(WeldedSurface, ReversedInputKeepsItsWindingAndSmoothsAsTheOrientedMesh)
 // normal is then found through the turn).
 TEST(WeldedSurface, InwardGivenNormalsShadeAsTheOutwardOnes)
 {
-  std::vector<glm::dvec3> points;
-  std::vector<Triangle> triangles;
-  coretest::unitSphere(8, 12, points, triangles);
-  std::vector<glm::dvec3> soupPoints;
-  std::vector<Triangle> soupTriangles;
-  coretest::makeSoup(points, triangles, soupPoints, soupTriangles);
+  const auto [points, triangles, soupPoints, soupTriangles] = coretest::sphereAndSoup(8, 12);
   std::vector<Triangle> mixed = triangles;
   std::mt19937 random(7);
   for (Triangle& t : mixed)
@@ -444,12 +434,7 @@ TEST(WeldedSurface, FlatShadedNormalsAreNotSeams)
 {
   // The sphere as a soup whose normals are the faces' own (flat shading):
   // every edge would be a normal seam.
-  std::vector<glm::dvec3> points;
-  std::vector<Triangle> triangles;
-  coretest::unitSphere(6, 10, points, triangles);
-  std::vector<glm::dvec3> soupPoints;
-  std::vector<Triangle> soupTriangles;
-  coretest::makeSoup(points, triangles, soupPoints, soupTriangles);
+  const auto [points, triangles, soupPoints, soupTriangles] = coretest::sphereAndSoup(6, 10);
   std::vector<glm::dvec3> faceNormals;
   for (const Triangle& t : soupTriangles)
   {

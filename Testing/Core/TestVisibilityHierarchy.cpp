@@ -1,6 +1,7 @@
 // The hierarchical visibility pass must make exactly the decisions of the
 // plain per-vertex pass, for every vertex and view, at any scale; and the
 // triangle hierarchy must find exactly the silhouette triangles a scan finds.
+#include "CoreTestMeshes.h"
 #include "SilhouetteSmoother.h"
 #include "SilhouetteTriangleHierarchy.h"
 #include "VisibilityCones.h"
@@ -13,7 +14,6 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <map>
 #include <random>
 #include <string>
 
@@ -448,29 +448,7 @@ PreparedMesh bumpySphereMesh(int level, double scale, const glm::dvec3& offset, 
     { 1, 2, 5 }, { 3, 1, 5 }, { 0, 3, 5 } };
   for (int l = 0; l < level; ++l)
   {
-    std::map<std::pair<Id, Id>, Id> middles;
-    auto middle = [&](Id a, Id b) {
-      const auto key = std::make_pair(std::min(a, b), std::max(a, b));
-      const auto it = middles.find(key);
-      if (it != middles.end())
-      {
-        return it->second;
-      }
-      points.push_back(glm::normalize(points[a] + points[b]));
-      return middles[key] = static_cast<Id>(points.size() - 1);
-    };
-    std::vector<Triangle> finer;
-    for (const Triangle& t : triangles)
-    {
-      const Id ab = middle(t[0], t[1]);
-      const Id bc = middle(t[1], t[2]);
-      const Id ca = middle(t[2], t[0]);
-      finer.push_back({ t[0], ab, ca });
-      finer.push_back({ ab, t[1], bc });
-      finer.push_back({ ca, bc, t[2] });
-      finer.push_back({ ab, bc, ca });
-    }
-    triangles = std::move(finer);
+    coretest::splitInFour(points, triangles, true);
   }
   std::vector<glm::dvec3> normals;
   for (glm::dvec3& p : points)

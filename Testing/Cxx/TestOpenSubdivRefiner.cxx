@@ -9,6 +9,20 @@ namespace
 
 using namespace refiner_test;
 
+// The largest distance from an expected point to `refined`, in diagonals
+// of the base `mesh`.
+double WorstDistanceInDiagonals(
+  vtkPolyData* refined, const std::vector<Vec>& expected, vtkPolyData* mesh)
+{
+  Nearest nearest(refined);
+  double worst = 0.0;
+  for (const Vec& p : expected)
+  {
+    worst = std::max(worst, nearest.Distance(p) / Diagonal(mesh));
+  }
+  return worst;
+}
+
 // (1) Limit positions of the base vertices against the closed form.
 void TestLimitPositions()
 {
@@ -37,12 +51,7 @@ void TestLimitPositions()
     for (int level = 0; level <= 3; ++level)
     {
       Run run(mesh, level, true);
-      Nearest nearest(run.Output());
-      double worst = 0.0;
-      for (const Vec& p : expected)
-      {
-        worst = std::max(worst, nearest.Distance(p) / Diagonal(mesh));
-      }
+      const double worst = WorstDistanceInDiagonals(run.Output(), expected, mesh);
       Expect(run.Clean() && worst < 1e-9,
         "%-18s valence %-5s level %d: max |p - v_inf| / diagonal = %.2e over %zu vertices",
         named.first.c_str(), valenceText.c_str(), level, worst, expected.size());
@@ -120,12 +129,7 @@ void TestLimitPositions()
   for (int level = 0; level <= 3; ++level)
   {
     Run run(grid, level, true);
-    Nearest nearest(run.Output());
-    double worst = 0.0;
-    for (const Vec& q : expected)
-    {
-      worst = std::max(worst, nearest.Distance(q) / Diagonal(grid));
-    }
+    const double worst = WorstDistanceInDiagonals(run.Output(), expected, grid);
     Expect(run.Clean() && worst < 1e-9,
       "open curved grid level %d: %d corners (one triangle), %d other boundary and %d interior "
       "vertices: max |p - expected| / diagonal = %.2e",

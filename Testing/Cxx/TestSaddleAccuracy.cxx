@@ -452,10 +452,8 @@ Deviation Measure(const silhouette_eval::Mask& mask, const ExactContour& exact)
   return d;
 }
 
-// The largest distance from an exact sample to the smoothed silhouette
-// polylines (the filter's second output), projected: how well the curves
-// themselves follow the exact contour, blocked or not.
-double CurveDeviation(vtkPolyData* lines, vtkCamera* camera, const ExactContour& exact)
+// The segments of `lines`' polylines, projected into the image.
+std::vector<std::array<Point2, 2>> ProjectedSegments(vtkPolyData* lines, vtkCamera* camera)
 {
   const Projector project(camera);
   std::vector<std::array<Point2, 2>> segments;
@@ -472,7 +470,15 @@ double CurveDeviation(vtkPolyData* lines, vtkCamera* camera, const ExactContour&
       segments.push_back({ project(a), project(b) });
     }
   }
-  const SegmentIndex index(std::move(segments));
+  return segments;
+}
+
+// The largest distance from an exact sample to the smoothed silhouette
+// polylines (the filter's second output), projected: how well the curves
+// themselves follow the exact contour, blocked or not.
+double CurveDeviation(vtkPolyData* lines, vtkCamera* camera, const ExactContour& exact)
+{
+  const SegmentIndex index(ProjectedSegments(lines, camera));
   double worst = 0.0;
   for (const Point2& q : exact.Samples)
   {
@@ -512,30 +518,20 @@ void WriteOverlay(const std::string& path, const silhouette_eval::Mask& on,
   }
   if (lines && camera)
   {
-    const Projector project(camera);
-    vtkCellArray* cells = lines->GetLines();
-    vtkIdType n;
-    const vtkIdType* ids;
-    for (cells->InitTraversal(); cells->GetNextCell(n, ids);)
+    for (const std::array<Point2, 2>& segment : ProjectedSegments(lines, camera))
     {
-      for (vtkIdType k = 0; k + 1 < n; ++k)
+      const Point2& pa = segment[0];
+      const Point2& pb = segment[1];
+      for (int t = 0; t <= 20; ++t)
       {
-        Vec3 a, b;
-        lines->GetPoint(ids[k], a.data());
-        lines->GetPoint(ids[k + 1], b.data());
-        const Point2 pa = project(a);
-        const Point2 pb = project(b);
-        for (int t = 0; t <= 20; ++t)
+        const double x = pa[0] + (pb[0] - pa[0]) * t / 20.0;
+        const double y = pa[1] + (pb[1] - pa[1]) * t / 20.0;
+        if (x >= 0 && y >= 0 && x < on.Width && y < on.Height)
         {
-          const double x = pa[0] + (pb[0] - pa[0]) * t / 20.0;
-          const double y = pa[1] + (pb[1] - pa[1]) * t / 20.0;
-          if (x >= 0 && y >= 0 && x < on.Width && y < on.Height)
-          {
-            const auto k2 = static_cast<std::size_t>(y) * on.Width + static_cast<std::size_t>(x);
-            pixels[3 * k2] = 0;
-            pixels[3 * k2 + 1] = 128;
-            pixels[3 * k2 + 2] = 255;
-          }
+          const auto k2 = static_cast<std::size_t>(y) * on.Width + static_cast<std::size_t>(x);
+          pixels[3 * k2] = 0;
+          pixels[3 * k2 + 1] = 128;
+          pixels[3 * k2 + 2] = 255;
         }
       }
     }

@@ -5,7 +5,6 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellData.h"
-#include "vtkIcosphereSource.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -13,7 +12,6 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSilhouetteSmoothingFilter.h"
-#include "vtkTorusSurfaceSource.h"
 
 #include "SilhouetteTestSupport.h"
 
@@ -51,14 +49,10 @@ void AddPanel(vtkRenderWindow* window, vtkPolyData* mesh, int row, int column, d
 
 int TestSmoothingImages(int argc, char* argv[])
 {
-  vtkNew<vtkIcosphereSource> sphere;
-  sphere->Update();
-  vtkNew<vtkTorusSurfaceSource> torus;
-  torus->Update();
-  auto bunny = silhouette_test::ReadMesh(silhouette_test::DataFile(argc, argv, "bunny_coarse.ply"));
-  if (!bunny)
+  const silhouette_test::SphereTorusBunny meshes =
+    silhouette_test::MakeSphereTorusBunny(argc, argv);
+  if (!meshes.Bunny)
   {
-    std::printf("FAIL: cannot read bunny_coarse.ply\n");
     return EXIT_FAILURE;
   }
 
@@ -66,13 +60,13 @@ int TestSmoothingImages(int argc, char* argv[])
   window->SetSize(900, 900);
   window->SetMultiSamples(0);
   window->SetOffScreenRendering(1);
-  vtkPolyData* meshes[3] = { sphere->GetOutput(), torus->GetOutput(), bunny };
+  vtkPolyData* rowMeshes[3] = { meshes.Sphere, meshes.Torus, meshes.Bunny };
   const double views[3][2] = { { 20, 15 }, { 10, 50 }, { 30, 10 } };
   for (int row = 0; row < 3; ++row)
   {
     for (int column = 0; column < 2; ++column)
     {
-      AddPanel(window, meshes[row], row, column, views[row][0], views[row][1], column == 1);
+      AddPanel(window, rowMeshes[row], row, column, views[row][0], views[row][1], column == 1);
     }
   }
   window->Render();

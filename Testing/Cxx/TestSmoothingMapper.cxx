@@ -22,7 +22,6 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
-#include "vtkIcosphereSource.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
@@ -40,7 +39,6 @@
 #include "vtkSilhouetteSmoothingFilter.h"
 #include "vtkSilhouetteSmoothingMapper.h"
 #include "vtkTexture.h"
-#include "vtkTorusSurfaceSource.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
 
@@ -719,39 +717,37 @@ int TestSmoothingMapper(int argc, char* argv[])
   keeper->SetOffScreenRendering(1);
   keeper->SetSize(8, 8);
   keeper->Render();
-  vtkNew<vtkIcosphereSource> sphere;
-  sphere->Update();
-  vtkNew<vtkTorusSurfaceSource> torus;
-  torus->Update();
-  auto bunny = silhouette_test::ReadMesh(silhouette_test::DataFile(argc, argv, "bunny_coarse.ply"));
-  if (!bunny)
+  const silhouette_test::SphereTorusBunny meshes =
+    silhouette_test::MakeSphereTorusBunny(argc, argv);
+  if (!meshes.Bunny)
   {
-    std::printf("FAIL: cannot read bunny_coarse.ply\n");
     return EXIT_FAILURE;
   }
+  vtkPolyData* sphere = meshes.Sphere;
+  vtkPolyData* torus = meshes.Torus;
+  vtkPolyData* bunny = meshes.Bunny;
   // One texture per window: a vtkTexture's OpenGL object belongs to one
   // context.
   vtkSmartPointer<vtkTexture> filterTexture = Checkers();
   vtkSmartPointer<vtkTexture> mapperTexture = Checkers();
-  const MapperCase cases[] = { { "sphere", sphere->GetOutput(), Colouring::Plain },
-    { "torus", torus->GetOutput(), Colouring::Plain }, { "bunny", bunny, Colouring::Plain },
+  const MapperCase cases[] = { { "sphere", sphere, Colouring::Plain },
+    { "torus", torus, Colouring::Plain }, { "bunny", bunny, Colouring::Plain },
     { "bunny, point scalars", bunny, Colouring::PointScalars },
-    { "torus, cell scalars", torus->GetOutput(), Colouring::CellScalars },
-    { "sphere, texture", sphere->GetOutput(), Colouring::Texture },
+    { "torus, cell scalars", torus, Colouring::CellScalars },
+    { "sphere, texture", sphere, Colouring::Texture },
     { "bunny, texture", bunny, Colouring::Texture },
-    { "torus, zoomed in", torus->GetOutput(), Colouring::Plain, 3.0 },
+    { "torus, zoomed in", torus, Colouring::Plain, 3.0 },
     { "bunny, clipped", bunny, Colouring::Plain, 1.3, true },
-    { "torus, clipped", torus->GetOutput(), Colouring::Plain, 1.3, true },
+    { "torus, clipped", torus, Colouring::Plain, 1.3, true },
     { "bunny, translucent", bunny, Colouring::Plain, 1.3, false, 0.5 },
-    { "torus, translucent, point scalars", torus->GetOutput(), Colouring::PointScalars, 1.3, false,
-      0.5 } };
+    { "torus, translucent, point scalars", torus, Colouring::PointScalars, 1.3, false, 0.5 } };
 
   bool ok = true;
   for (const MapperCase& c : cases)
   {
     ok = CheckCase(c, filterTexture, mapperTexture) && ok;
   }
-  ok = CheckGhostCells(sphere->GetOutput(), filterTexture, mapperTexture) && ok;
+  ok = CheckGhostCells(sphere, filterTexture, mapperTexture) && ok;
   ok = CheckDeformingMesh(bunny, filterTexture, mapperTexture) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

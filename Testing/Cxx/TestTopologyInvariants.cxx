@@ -17,7 +17,6 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSilhouetteSmoothingFilter.h"
-#include "vtkTorusSurfaceSource.h"
 #include "vtkTriangleFilter.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -247,22 +246,16 @@ bool CheckNoSilhouetteIsIdentity()
 
 int TestTopologyInvariants(int argc, char* argv[])
 {
-  bool ok = true;
-  vtkNew<vtkIcosphereSource> sphere;
-  sphere->Update();
-  ok = CheckMeshOverViews("sphere", sphere->GetOutput(), true) && ok;
-
-  vtkNew<vtkTorusSurfaceSource> torus;
-  torus->Update();
-  ok = CheckMeshOverViews("torus", torus->GetOutput(), true) && ok;
-
-  auto bunny = silhouette_test::ReadMesh(silhouette_test::DataFile(argc, argv, "bunny_coarse.ply"));
-  if (!bunny)
+  const silhouette_test::SphereTorusBunny meshes =
+    silhouette_test::MakeSphereTorusBunny(argc, argv);
+  if (!meshes.Bunny)
   {
-    std::printf("FAIL: cannot read bunny_coarse.ply\n");
     return EXIT_FAILURE;
   }
-  ok = CheckMeshOverViews("bunny", bunny, false) && ok;
+  bool ok = true;
+  ok = CheckMeshOverViews("sphere", meshes.Sphere, true) && ok;
+  ok = CheckMeshOverViews("torus", meshes.Torus, true) && ok;
+  ok = CheckMeshOverViews("bunny", meshes.Bunny, false) && ok;
   ok = CheckOpenMesh() && ok;
   ok = CheckNoSilhouetteIsIdentity() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -94,10 +94,6 @@ long CountBoundaryOrNonManifoldEdges(vtkPolyData* mesh);
 /// limit surface, with limit normals.
 vtkSmartPointer<vtkPolyData> Refine(vtkPolyData* original, int level);
 
-/// The volume `mesh`'s triangles enclose (divergence theorem): positive when
-/// a closed surface is wound outward, negative when inside out.
-double EnclosedVolume(vtkPolyData* mesh);
-
 /// `input`'s polygons as triangles over points merged where they share a
 /// position (vtkCleanPolyData, tolerance 0), wound consistently per
 /// connected part (vtkPolyDataNormals), geometry only: what the

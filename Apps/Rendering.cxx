@@ -196,6 +196,10 @@ vtkSmartPointer<vtkSilhouetteLineVisibility> MakeVisibleLines(
   auto drawing = vtkSmartPointer<vtkAppendPolyData>::New();
   auto visible = vtkSmartPointer<vtkSilhouetteLineVisibility>::New();
   VtkErrorLog::Instance().Watch(visible);
+  // A silhouette within a pixel of the surface's outline is drawn: a
+  // smoothed surface's flat triangles can stand a pixel or two beyond the
+  // curve and cut gaps into a drawing's outline (the Wuson's back).
+  visible->SetOutlinePixels(1.0);
   if (smoothed)
   {
     // The smoothed surface marks its creases by a normal per side.

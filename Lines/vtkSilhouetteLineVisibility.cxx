@@ -19,6 +19,7 @@
 #include "vtkSilhouetteFilterSupport.h"
 
 #include <cmath>
+#include <cstring>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -42,11 +43,21 @@ vtkIdType FieldValue(vtkIdType value, const char* name, vtkFieldData* fields)
 vtkSilhouetteLineVisibility::vtkSilhouetteLineVisibility()
 {
   this->SetNumberOfInputPorts(2);
-  // Visibility does not depend on the viewport's size.
+  // Visibility depends on the viewport's size only through OutlinePixels.
   this->ViewportDependent = false;
 }
 
 vtkSilhouetteLineVisibility::~vtkSilhouetteLineVisibility() = default;
+
+void vtkSilhouetteLineVisibility::SetOutlinePixels(double pixels)
+{
+  if (std::memcmp(&pixels, &this->OutlinePixels, sizeof(double)) != 0)
+  {
+    this->OutlinePixels = pixels;
+    this->ViewportDependent = pixels > 0.0;
+    this->Modified();
+  }
+}
 
 void vtkSilhouetteLineVisibility::SetSurfaceConnection(vtkAlgorithmOutput* output)
 {
@@ -203,6 +214,10 @@ std::string vtkSilhouetteLineVisibility::CheckSettings() const
     message << "EdgeTolerance must be 0 (automatic) or positive, not " << this->EdgeTolerance
             << ".";
   }
+  else if (!(this->OutlinePixels >= 0.0))
+  {
+    message << "OutlinePixels must be 0 (off) or positive, not " << this->OutlinePixels << ".";
+  }
   return message.str();
 }
 
@@ -243,7 +258,9 @@ int vtkSilhouetteLineVisibility::RequestViewData(vtkInformation*,
   {
     parameters.Tolerance = this->Tolerance;
   }
+  parameters.OutlinePixels = this->OutlinePixels;
   silsmooth::LineVisibilityParameters edgeParameters = parameters;
+  edgeParameters.OutlinePixels = 0.0;
   edgeParameters.Tolerance =
     this->EdgeTolerance > 0.0 ? this->EdgeTolerance : 10.0 * parameters.Precision;
   // The stubs a tolerance leaves where an occluder meets the line.
@@ -304,5 +321,6 @@ void vtkSilhouetteLineVisibility::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "EdgeTolerance: " << this->EdgeTolerance
      << (this->EdgeTolerance > 0 ? "" : " (automatic)") << "\n";
+  os << indent << "OutlinePixels: " << this->OutlinePixels << "\n";
   os << indent << "PassHiddenLines: " << (this->PassHiddenLines ? "On" : "Off") << "\n";
 }

@@ -12,7 +12,8 @@
  *
  * A point of a line is hidden when the ray from it towards the eye crosses
  * the surface farther than Tolerance from it: lines on the surface
- * (silhouettes graze it) are not hidden by the triangles they lie on.
+ * (silhouettes graze it) are not hidden by the triangles they lie on, and a
+ * silhouette within OutlinePixels of the surface's outline is drawn.
  * Each line is split where its visibility changes, the change located by
  * bisection along the segment; the output holds every input vertex, in
  * order, plus a point at each change, shared by the pieces on its two sides.
@@ -87,6 +88,27 @@ public:
 
   ///@{
   /**
+   * A silhouette point the tolerance rule hides is kept visible when a point
+   * this many pixels beside it, across the line in the image, meets nothing
+   * on its way to the eye: the surface's outline passes within that
+   * distance. The flat triangles of a smoothed surface can stand a pixel or
+   * two beyond its silhouette curve and hide it exactly where it is the
+   * outline (gaps in a drawing's outline). Only the point's own sheet, and
+   * only within four tolerances of the point, is discounted so: a line
+   * passing behind another part keeps its exact change points. Where a
+   * contour ends at a cusp (it turns back behind its own sheet), its end
+   * moves by up to about twice this distance along the line. Default 0
+   * (off: exact visibility); `silhouette render` uses 1 pixel. Crease and
+   * border lines (LineKind 1 and 2) do not use it. Negative or NaN values
+   * are refused. A positive value makes the output depend on the
+   * viewport's size.
+   */
+  void SetOutlinePixels(double pixels);
+  vtkGetMacro(OutlinePixels, double);
+  ///@}
+
+  ///@{
+  /**
    * Keep the hidden pieces in the output (flagged 0 in `Visible`). Default on.
    */
   vtkSetMacro(PassHiddenLines, vtkTypeBool);
@@ -107,6 +129,7 @@ protected:
 
   double Tolerance = 0.0;
   double EdgeTolerance = 0.0;
+  double OutlinePixels = 0.0;
   vtkTypeBool PassHiddenLines = 1;
 
 private:

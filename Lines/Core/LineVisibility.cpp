@@ -339,6 +339,60 @@ double OcclusionMesh::toleranceAt(
     rule.Tolerance, std::max(rule.LocalToleranceFactor * longest, 2.0 * rule.Contact));
 }
 
+bool OcclusionMesh::nearTheOutline(const ViewGeometry& view, const glm::dvec3& point,
+  const glm::dvec3& direction, const LineVisibilityParameters& rule) const
+{
+  if (!(rule.OutlinePixels > 0.0))
+  {
+    return false;
+  }
+  const glm::dvec3 toward = view.towardViewerFrom(point);
+  glm::dvec3 across = glm::cross(toward, direction);
+  const double acrossLength = glm::length(across);
+  const double distance = glm::length(toward);
+  if (!(acrossLength > 0.0) || !std::isfinite(acrossLength) || !(distance > 0.0))
+  {
+    return false;
+  }
+  across /= acrossLength;
+  // Model units per pixel here, from a step small against the distance to
+  // the eye (parallel: the view's size is what matters, not the distance).
+  const double step = 1e-3 * (view.Parallel ? glm::length(direction) : distance);
+  glm::dvec2 at;
+  glm::dvec2 beside;
+  if (!(step > 0.0) || !view.toPixels(point, at) || !view.toPixels(point + step * across, beside))
+  {
+    return false;
+  }
+  const double pixelsPerStep = glm::length(beside - at);
+  if (!(pixelsPerStep > 0.0) || !std::isfinite(pixelsPerStep))
+  {
+    return false;
+  }
+  const double offset = rule.OutlinePixels * step / pixelsPerStep;
+  if (this->hides(view, point + offset * across, rule.Contact) &&
+    this->hides(view, point - offset * across, rule.Contact))
+  {
+    return false;
+  }
+  // Only the point's own sheet may hide it, and only near it: a surface
+  // standing a little beyond its silhouette curve, not an occluder in front
+  // of a line that passes behind it (whose change points stay exact).
+  const double reach = OutlineSheetTolerances * rule.Tolerance;
+  if (this->hides(view, point, reach))
+  {
+    return false;
+  }
+  const std::vector<Id> under = this->trianglesUnder(point, rule.Contact);
+  if (under.empty())
+  {
+    return false;
+  }
+  const std::vector<Id> sheet = this->localSheet(point, under, reach);
+  return !this->anyHit(view, point, rule.Contact, reach,
+    [&](Id t, double) { return !std::binary_search(sheet.begin(), sheet.end(), t); });
+}
+
 bool OcclusionMesh::hides(
   const ViewGeometry& view, const glm::dvec3& point, const LineVisibilityParameters& rule) const
 {
@@ -447,8 +501,11 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
   {
     return pieces;
   }
+  // Along the segment being classified (OutlinePixels' "across the line").
+  glm::dvec3 direction = polyline.size() > 1 ? polyline[1] - polyline[0] : glm::dvec3(0.0);
   auto visible = [&](const glm::dvec3& p) {
-    return !surface.hides(view, p, parameters);
+    return !surface.hides(view, p, parameters) ||
+      surface.nearTheOutline(view, p, direction, parameters);
   };
   LinePiece current;
   current.Visible = visible(polyline.front());
@@ -458,6 +515,7 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
   {
     const glm::dvec3& a = polyline[i - 1];
     const glm::dvec3& b = polyline[i];
+    direction = b - a;
     const double length = glm::length(b - a);
     // Probes at fractions k / probes of the segment; the last is b.
     const double wanted = parameters.SampleSpacing > 0.0 && std::isfinite(length)

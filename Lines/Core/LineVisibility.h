@@ -73,6 +73,14 @@ struct LineVisibilityParameters
   /// where an occluding face meets the line (a box's hidden edge at its
   /// visible corner): a few tolerances remove it.
   double MinimumPieceLength = 0.0;
+  /// A point the rule hides is visible all the same when a point this many
+  /// pixels beside it, across the line in the image, meets no triangle on
+  /// its way to the viewer: the surface's outline passes within that
+  /// distance. A smoothed surface's flat triangles can stand a pixel or two
+  /// beyond its silhouette curve, and hide it where it is the outline
+  /// (docs/line-drawings.md). Needs the view's projection and viewport
+  /// (ViewGeometry::toPixels); 0 turns it off.
+  double OutlinePixels = 0.0;
 
   /// Tolerance: the mesh's mean edge length; Precision: 1e-6 of its bounding
   /// box's diagonal; SampleSpacing: 1/400 of it; Contact: 1e-5 of it.
@@ -96,6 +104,18 @@ public:
   /// The plain rule alone: whether a triangle farther than `tolerance` from
   /// `point` along its ray hides it.
   bool hides(const ViewGeometry& view, const glm::dvec3& point, double tolerance) const;
+
+  /// OutlinePixels' rule for a point the rule hides, on a line running along
+  /// `direction`: whether a point that many pixels to either side of it,
+  /// across the line in the image, meets no triangle farther than Contact on
+  /// its way to the viewer, while only the point's own local sheet, within
+  /// OutlineSheetTolerances tolerances, hides the point itself.
+  bool nearTheOutline(const ViewGeometry& view, const glm::dvec3& point,
+    const glm::dvec3& direction, const LineVisibilityParameters& rule) const;
+
+  /// How far (in Tolerances) the surface may stand beyond a silhouette for
+  /// OutlinePixels' rule: the Wuson's smoothed back stood 1 to 2.6 beyond.
+  static constexpr double OutlineSheetTolerances = 4.0;
 
 private:
   /// Whether the ray from `point` towards the viewer meets, farther than

@@ -99,6 +99,52 @@ TEST(LineVisibility, SquareHidesTheLineBehindIt)
   expectWellFormed(pieces, line);
 }
 
+// OutlinePixels, on a sheet that folds back over the edge a line lies along
+// (as a smoothed surface's flat triangles stand a little beyond its
+// silhouette curve): the square [0, 1] x [-1, 1] at z = 0 with a flap
+// hinged on its edge x = 1 leaning back over it to x = `back` at height
+// 0.01, seen from above at 100 pixels per unit. A line on the square at x0
+// is hidden by the flap 2.5 to 3 tolerances above it.
+//   - Half a pixel inside the outline (x = 1): drawn; with the rule off (the
+//     wrong variant), hidden.
+//   - Three pixels inside: hidden (a pixel across is still under the flap).
+//   - The flap a separate sheet (its hinge a hair off the square's edge):
+//     hidden; an occluder that is not the line's own sheet is never
+//     discounted, so a line passing behind another part keeps its exact
+//     change points.
+TEST(LineVisibility, ALineWithinAPixelOfItsSheetsOutlineIsDrawn)
+{
+  auto fold = [](double back, double hinge) {
+    const std::vector<glm::dvec3> points{ { 0, -1, 0 }, { 1, -1, 0 }, { 1, 1, 0 }, { 0, 1, 0 },
+      { hinge, -1, 0 }, { hinge, 1, 0 }, { back, 1, 0.01 }, { back, -1, 0.01 } };
+    const std::vector<Triangle> triangles{ { { 0, 1, 2 } }, { { 0, 2, 3 } }, { { 4, 5, 6 } },
+      { { 4, 6, 7 } } };
+    return OcclusionMesh(points, triangles);
+  };
+  ViewGeometry view = fromAbove();
+  view.ViewportWidth = view.ViewportHeight = 1000;
+  view.ModelToClip = glm::dmat4(0.2); // 100 pixels per unit: a pixel is 0.01
+  view.ModelToClip[3][3] = 1.0;
+  LineVisibilityParameters parameters;
+  parameters.Tolerance = 2e-3;
+  parameters.Precision = 1e-10;
+  parameters.Contact = 1e-6;
+  parameters.OutlinePixels = 1.0;
+  LineVisibilityParameters off = parameters;
+  off.OutlinePixels = 0.0;
+  auto visibleAt = [&](const OcclusionMesh& surface, double x0,
+                     const LineVisibilityParameters& rule) {
+    const std::vector<glm::dvec3> line{ { x0, -0.5, 0.0 }, { x0, 0.0, 0.0 }, { x0, 0.5, 0.0 } };
+    const std::vector<LinePiece> pieces = splitByVisibility(surface, view, line, rule);
+    EXPECT_EQ(pieces.size(), 1u) << x0;
+    return !pieces.empty() && pieces[0].Visible;
+  };
+  EXPECT_TRUE(visibleAt(fold(0.99, 1.0), 0.995, parameters));
+  EXPECT_FALSE(visibleAt(fold(0.99, 1.0), 0.995, off));
+  EXPECT_FALSE(visibleAt(fold(0.95, 1.0), 0.97, parameters));
+  EXPECT_FALSE(visibleAt(fold(0.99, 1.0 + 1e-7), 0.995, parameters));
+}
+
 TEST(LineVisibility, NothingInTheWayGivesTheLineBack)
 {
   std::vector<glm::dvec3> points;

@@ -275,6 +275,14 @@ bool CheckOptions(
   }
   errors->Clear();
   visibility->SetTolerance(0.0);
+  visibility->SetOutlinePixels(-1.0);
+  visibility->Update();
+  if (!errors->GetError())
+  {
+    ok = Fail("a negative OutlinePixels was accepted");
+  }
+  errors->Clear();
+  visibility->SetOutlinePixels(0.0);
   visibility->SetCamera(nullptr);
   visibility->Update();
   if (!errors->GetError())

@@ -19,15 +19,52 @@ void CheckObjFile(const std::string& path)
   {
     lines.push_back(std::move(line));
   }
-  // First the vertices and the counts of texture coordinates and normals,
-  // which faces may refer to before they appear.
+  // A coordinate of a vertex or a normal: vtkOBJReader 9.1 reads "nan",
+  // "inf" and "0x10" as 0, a word that is no number as 0, and a number
+  // beyond the range of a float as FLT_MAX or garbage, all without a word.
+  // (One too small for a float becomes 0 or a subnormal, as it would in any
+  // float reader: that is rounding, not a misread.)
+  const auto requireCoordinate = [](const std::string& word, const std::string& where,
+                                   const char* what) {
+    double value = 0.0;
+    if (!ParseWholeNumber(word, value) || !std::isfinite(value)) // a NUL byte stops strtod
+    {
+      throw RuntimeError("cannot read " + where + ": '" + word + "' is not a finite number");
+    }
+    if (word.find_first_of("xX") != std::string::npos)
+    {
+      throw RuntimeError(
+        "cannot read " + where + ": '" + word + "' is hexadecimal, which vtkOBJReader reads as 0");
+    }
+    if (std::isinf(std::strtof(word.c_str(), nullptr)))
+    {
+      throw RuntimeError(
+        "cannot read " + where + ": '" + word + "' is out of range for a float " + what);
+    }
+  };
+  // First the vertices and normals, and the counts of texture coordinates
+  // and normals, which faces may refer to before they appear.
   long long vertex = 0, textureCoordinates = 0, normals = 0;
   for (std::size_t number = 0; number < lines.size(); ++number)
   {
     const std::vector<std::string> words = WordsOf(lines[number]);
     const std::string keyword = words.empty() ? std::string() : words[0];
     textureCoordinates += keyword == "vt";
-    normals += keyword == "vn";
+    if (keyword == "vn")
+    {
+      ++normals;
+      const std::string where = "'" + path + "': line " + std::to_string(number + 1) + ", normal " +
+        std::to_string(normals);
+      for (std::size_t w = 1; w < words.size(); ++w)
+      {
+        requireCoordinate(words[w], where, "normal component");
+      }
+      if (words.size() < 4)
+      {
+        throw RuntimeError("cannot read " + where + ": fewer than 3 components");
+      }
+      continue;
+    }
     if (keyword != "v")
     {
       continue;
@@ -35,33 +72,12 @@ void CheckObjFile(const std::string& path)
     ++vertex;
     const std::string where =
       "'" + path + "': line " + std::to_string(number + 1) + ", vertex " + std::to_string(vertex);
-    int coordinates = 0;
     // x y z, then optional w or r g b.
     for (std::size_t w = 1; w < words.size(); ++w)
     {
-      const std::string& word = words[w];
-      double value = 0.0;
-      if (!ParseWholeNumber(word, value) || !std::isfinite(value)) // a NUL byte stops strtod
-      {
-        throw RuntimeError("cannot read " + where + ": '" + word + "' is not a finite number");
-      }
-      // vtkOBJReader 9.1 reads a hexadecimal number such as 0x10 as 0, and a
-      // number beyond the range of a float, such as 1e39, as FLT_MAX. (One too
-      // small for a float becomes 0 or a subnormal, as it would in any float
-      // reader: that is rounding, not a misread.)
-      if (word.find_first_of("xX") != std::string::npos)
-      {
-        throw RuntimeError("cannot read " + where + ": '" + word +
-          "' is hexadecimal, which vtkOBJReader reads as 0");
-      }
-      if (std::isinf(std::strtof(word.c_str(), nullptr)))
-      {
-        throw RuntimeError(
-          "cannot read " + where + ": '" + word + "' is out of range for a float coordinate");
-      }
-      ++coordinates;
+      requireCoordinate(words[w], where, "coordinate");
     }
-    if (coordinates < 3)
+    if (words.size() < 4)
     {
       throw RuntimeError("cannot read " + where + ": fewer than 3 coordinates");
     }

@@ -85,15 +85,22 @@ void CheckObjFile(const std::string& path)
   // Then the corners of faces, lines and points: v, v/vt, v//vn or v/vt/vn.
   // VTK 9.1's reader crashes on a corner such as "1/" and on a texture
   // coordinate or normal index with none to refer to.
+  long long verticesBefore = 0; // a negative point index counts back from here
+  // Whether a face's texture or normal index differs from its point's, and
+  // the line of the first face without normal indices (0: none).
+  bool indexedApart = false;
+  std::size_t faceWithoutNormals = 0;
   for (std::size_t number = 0; number < lines.size(); ++number)
   {
     const std::vector<std::string> words = WordsOf(lines[number]);
     const std::string keyword = words.empty() ? std::string() : words[0];
+    verticesBefore += keyword == "v";
     if (keyword != "f" && keyword != "l" && keyword != "p")
     {
       continue;
     }
     const std::string where = "cannot read '" + path + "': line " + std::to_string(number + 1);
+    bool withNormals = false;
     for (std::size_t w = 1; w < words.size(); ++w)
     {
       const std::string& corner = words[w];
@@ -118,11 +125,18 @@ void CheckObjFile(const std::string& path)
       {
         throw RuntimeError(where + ": '" + corner + "' is not v, v/vt, v//vn or v/vt/vn");
       }
+      long long point = 0;
+      ParseWholeInteger(parts[0], point);
+      const long long resolvedPoint = point < 0 ? verticesBefore + point + 1 : point;
       const auto requireInRange = [&](const std::string& part, long long count, const char* what) {
         if (!part.empty() && ParseWholeInteger(part, index) && (index < 1 || index > count))
         {
           throw RuntimeError(where + ": '" + corner + "' refers to " + what + " " + part +
             " but there are " + std::to_string(count));
+        }
+        if (!part.empty() && keyword == "f" && index != resolvedPoint)
+        {
+          indexedApart = true;
         }
       };
       if (parts.size() > 1)
@@ -132,8 +146,24 @@ void CheckObjFile(const std::string& path)
       if (parts.size() > 2)
       {
         requireInRange(parts[2], normals, "normal");
+        withNormals = true;
       }
     }
+    if (keyword == "f" && !withNormals && faceWithoutNormals == 0)
+    {
+      faceWithoutNormals = number + 1;
+    }
+  }
+  // Where a face's texture or normal index differs from its point's,
+  // vtkOBJReader 9.1 copies the points face by face, and then leaves out
+  // every face without normal indices if the file has normals: a warning
+  // per face ("Skipping poly"), and a mesh with fewer triangles.
+  if (normals > 0 && indexedApart && faceWithoutNormals != 0)
+  {
+    throw RuntimeError("cannot read '" + path + "': line " + std::to_string(faceWithoutNormals) +
+      ": the face has no normal indices in a file with normals ('vn'), and vtkOBJReader 9.1 "
+      "would leave it out; give every face normal indices (v//vn or v/vt/vn), or none and no "
+      "'vn' lines");
   }
 }
 

@@ -128,6 +128,24 @@ void CheckObjFile(const std::string& path)
       long long point = 0;
       ParseWholeInteger(parts[0], point);
       const long long resolvedPoint = point < 0 ? verticesBefore + point + 1 : point;
+      // Here, not after reading: the reader's 0-based, resolved index would
+      // not be the one the file says (1-based; negative counts back).
+      if (point == 0)
+      {
+        throw RuntimeError(
+          where + ": '" + corner + "' refers to point 0, but OBJ counts points from 1");
+      }
+      if (point > vertex)
+      {
+        throw RuntimeError(where + ": '" + corner + "' refers to point " + parts[0] +
+          " but there are " + std::to_string(vertex));
+      }
+      if (resolvedPoint < 1)
+      {
+        throw RuntimeError(where + ": '" + corner + "' refers to point " + parts[0] + ", " +
+          std::to_string(-point) + " back from this line, but only " +
+          std::to_string(verticesBefore) + " come before it");
+      }
       const auto requireInRange = [&](const std::string& part, long long count, const char* what) {
         if (!part.empty() && ParseWholeInteger(part, index) && (index < 1 || index > count))
         {

@@ -1,5 +1,6 @@
 #include "Commands.h"
 
+#include "AtomicFile.h"
 #include "CliErrors.h"
 #include "Figures.h"
 #include "LevelOfDetail.h"
@@ -100,13 +101,21 @@ void RunSmooth(const SmoothOptions& options)
 
   const SmoothingRun run = SmoothSilhouette(mesh, camera, options.Camera);
   PrintWarnings(run);
+  // Both files or neither: one that cannot be written leaves the other as it was.
+  FileBatch outputs;
+  std::vector<std::string> dropped;
   if (options.Output)
   {
-    ReportDropped(WriteMesh(run.Filter->GetOutput(), *options.Output), *options.Output);
+    dropped = WriteMesh(run.Filter->GetOutput(), *options.Output, &outputs);
   }
   if (options.LinesOutput)
   {
-    WriteLines(run.Filter->GetSilhouetteOutput(), *options.LinesOutput);
+    WriteLines(run.Filter->GetSilhouetteOutput(), *options.LinesOutput, &outputs);
+  }
+  outputs.Commit();
+  if (options.Output)
+  {
+    ReportDropped(dropped, *options.Output);
   }
   PrintFigures(CollectFigures(options.Input, options.Output, run.Filter->GetOutput(),
                  run.PrepareMilliseconds, run.MedianMilliseconds, options.Camera, camera),
@@ -278,18 +287,21 @@ void RunRender(const RenderOptions& options)
 
   const SmoothingRun run = SmoothSilhouette(mesh, camera, options.Camera);
   PrintWarnings(run);
+  // Both files or neither: one that cannot be written leaves the other as it was.
+  FileBatch outputs;
   if (svg)
   {
-    RenderToSvg(view, run.Filter, mesh, options);
+    RenderToSvg(view, run.Filter, mesh, options, &outputs);
   }
   else
   {
-    RenderToPng(view, run.Filter, mesh, options);
+    RenderToPng(view, run.Filter, mesh, options, &outputs);
   }
   if (options.LinesOutput)
   {
-    WriteLines(run.Filter->GetSilhouetteOutput(), *options.LinesOutput);
+    WriteLines(run.Filter->GetSilhouetteOutput(), *options.LinesOutput, &outputs);
   }
+  outputs.Commit();
   PrintFigures(CollectFigures(options.Input, options.Output, run.Filter->GetOutput(),
                  run.PrepareMilliseconds, run.MedianMilliseconds, options.Camera, camera),
     options.Json);

@@ -10,9 +10,13 @@
 #include "Smoothing.h"
 #include "VtkErrorLog.h"
 
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
+#include <vtkMath.h>
 #include <vtkNew.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkProgressiveMeshFilter.h>
 #include <vtkRenderer.h>
@@ -31,13 +35,62 @@ namespace cli
 namespace
 {
 
-// Reads the mesh and refuses one the filter could do nothing with.
+// Whether a triangle of the mesh (polygons fanned, strips split) has an
+// area: one without any has no outline, whatever the view.
+bool HasTriangleWithArea(vtkPolyData* mesh)
+{
+  vtkPoints* points = mesh->GetPoints();
+  if (!points)
+  {
+    return false;
+  }
+  for (vtkCellArray* cells : { mesh->GetPolys(), mesh->GetStrips() })
+  {
+    const bool strips = cells == mesh->GetStrips();
+    auto cell = vtk::TakeSmartPointer(cells->NewIterator());
+    for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell())
+    {
+      vtkIdType size = 0;
+      const vtkIdType* ids = nullptr;
+      cell->GetCurrentCell(size, ids);
+      for (vtkIdType k = 1; k + 1 < size; ++k)
+      {
+        double a[3], b[3], c[3], ab[3], ac[3], normal[3];
+        points->GetPoint(ids[strips ? k - 1 : 0], a);
+        points->GetPoint(ids[k], b);
+        points->GetPoint(ids[k + 1], c);
+        for (int i = 0; i < 3; ++i)
+        {
+          ab[i] = b[i] - a[i];
+          ac[i] = c[i] - a[i];
+        }
+        vtkMath::Cross(ab, ac, normal);
+        if (vtkMath::Norm(normal) > 0.0)
+        {
+          return true;
+        }
+      }
+    }
+  }
+  return false;
+}
+
+// Reads the mesh and refuses one the filter could do nothing with. One whose
+// triangles all lack an area (all its points at one place, or on one line)
+// goes on, as the filter's input without a proper triangle does, but says
+// why nothing comes of it: the run gave a blank image and no word.
 vtkSmartPointer<vtkPolyData> ReadMeshWithTriangles(const std::string& path)
 {
   vtkSmartPointer<vtkPolyData> mesh = ReadMesh(path);
   if (CountTriangles(mesh) == 0)
   {
     throw RuntimeError(path + " has no triangles");
+  }
+  if (!HasTriangleWithArea(mesh))
+  {
+    std::cerr << "silhouette: warning: '" << PrintableText(path)
+              << "': none of its triangles has an area (its points are all at one place or on "
+                 "one line): there is no outline to smooth or draw\n";
   }
   return mesh;
 }

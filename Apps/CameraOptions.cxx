@@ -37,6 +37,15 @@ std::array<double, 3> Scaled(const std::array<double, 3>& v)
                        : v;
 }
 
+constexpr std::array<double, 3> DefaultViewUp{ 0, 1, 0 };
+
+std::string ParallelViewUpMessage(const CameraOptions& camera)
+{
+  return camera.ViewUp
+    ? "option '--view-up' is parallel to the viewing direction"
+    : "the default view-up (0 1 0) is parallel to the viewing direction; give --view-up";
+}
+
 bool IsParallel(const std::array<double, 3>& up, const std::array<double, 3>& direction)
 {
   const std::array<double, 3> u = Scaled(up);
@@ -275,9 +284,11 @@ void CheckCameraOptions(const CameraOptions& camera)
     {
       throw UsageError("options '--camera-position' and '--focal-point' give the same point");
     }
-    if (camera.ViewUp && IsParallel(*camera.ViewUp, direction))
+    // The default view-up as much as one given: either way the options do
+    // not fit together, a usage error (exit 2), as SetUpCamera() says too.
+    if (IsParallel(camera.ViewUp.value_or(DefaultViewUp), direction))
     {
-      throw UsageError("option '--view-up' is parallel to the viewing direction");
+      throw UsageError(ParallelViewUpMessage(camera));
     }
   }
 }
@@ -416,16 +427,18 @@ void SetUpCamera(vtkRenderer* renderer, const double bounds[6], const CameraOpti
       0.5 * (bounds[4] + bounds[5]) };
     const double* focus = options.FocalPoint ? options.FocalPoint->data() : centre;
     const double* position = options.CameraPosition->data();
-    const std::array<double, 3> up = options.ViewUp.value_or(std::array<double, 3>{ 0, 1, 0 });
+    const std::array<double, 3> up = options.ViewUp.value_or(DefaultViewUp);
     const auto direction = Difference(focus, position);
+    // Without --focal-point the mesh decides the direction, but it is still
+    // the options that do not fit: usage errors, as in CheckCameraOptions().
     if (Length(direction) == 0.0)
     {
-      throw RuntimeError("the camera position is the focal point (the centre of the mesh's "
-                         "bounding box); give another --camera-position or a --focal-point");
+      throw UsageError("the camera position is the focal point (the centre of the mesh's "
+                       "bounding box); give another --camera-position or a --focal-point");
     }
     if (IsParallel(up, direction))
     {
-      throw RuntimeError("the view-up is parallel to the viewing direction; give --view-up");
+      throw UsageError(ParallelViewUpMessage(options));
     }
     // Focal point last: vtkCamera moves the focal point when the position lands on it.
     camera->SetPosition(position);

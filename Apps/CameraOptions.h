@@ -63,7 +63,8 @@ std::string CameraOptionsHelp();
  * vtkRenderer::ResetCamera() does (looking along -Z, view-up +Y), or the
  * explicit camera; then azimuth, elevation and zoom, in that order. The
  * renderer must already be in a window of the viewport size, as the framing
- * depends on the aspect ratio. Throws RuntimeError if the result is degenerate.
+ * depends on the aspect ratio. Throws UsageError when the explicit camera does
+ * not fit the mesh (the position at its centre, the view-up along the view).
  */
 void SetUpCamera(vtkRenderer* renderer, const double bounds[6], const CameraOptions& options);
 

@@ -266,8 +266,10 @@ f makes the fine reference the first time (Loop level --fine-level of the
 original; the status line says so, it takes a moment), then shows it on the
 right, sharing the camera: shaded, or as its face-based silhouette lines in
 the lines style. + and - double and halve the tolerance within the slider's 0.1
-to 5 px. r goes back to the camera of the camera options, keeping the
-projection. c writes silhouette_view_NNNN.png (the first free number) to the
+to 5 px. r frames the mesh again from the camera options' direction,
+keeping the projection: the start camera when the fine reference is hidden;
+while it is shown, the framing of the narrower left half, so the camera
+stands farther back than at the start. c writes silhouette_view_NNNN.png (the first free number) to the
 screenshot folder and prints where. VTK's other trackball keys (3 stereo,
 j/t joystick, u user, fly-to, pick) do nothing here.
 

@@ -1,5 +1,6 @@
 #include "Commands.h"
 
+#include "AtomicFile.h"
 #include "CliErrors.h"
 #include "Figures.h"
 #include "LevelOfDetail.h"
@@ -9,9 +10,13 @@
 #include "Smoothing.h"
 #include "VtkErrorLog.h"
 
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
+#include <vtkMath.h>
 #include <vtkNew.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkProgressiveMeshFilter.h>
 #include <vtkRenderer.h>
@@ -30,13 +35,62 @@ namespace cli
 namespace
 {
 
-// Reads the mesh and refuses one the filter could do nothing with.
+// Whether a triangle of the mesh (polygons fanned, strips split) has an
+// area: one without any has no outline, whatever the view.
+bool HasTriangleWithArea(vtkPolyData* mesh)
+{
+  vtkPoints* points = mesh->GetPoints();
+  if (!points)
+  {
+    return false;
+  }
+  for (vtkCellArray* cells : { mesh->GetPolys(), mesh->GetStrips() })
+  {
+    const bool strips = cells == mesh->GetStrips();
+    auto cell = vtk::TakeSmartPointer(cells->NewIterator());
+    for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell())
+    {
+      vtkIdType size = 0;
+      const vtkIdType* ids = nullptr;
+      cell->GetCurrentCell(size, ids);
+      for (vtkIdType k = 1; k + 1 < size; ++k)
+      {
+        double a[3], b[3], c[3], ab[3], ac[3], normal[3];
+        points->GetPoint(ids[strips ? k - 1 : 0], a);
+        points->GetPoint(ids[k], b);
+        points->GetPoint(ids[k + 1], c);
+        for (int i = 0; i < 3; ++i)
+        {
+          ab[i] = b[i] - a[i];
+          ac[i] = c[i] - a[i];
+        }
+        vtkMath::Cross(ab, ac, normal);
+        if (vtkMath::Norm(normal) > 0.0)
+        {
+          return true;
+        }
+      }
+    }
+  }
+  return false;
+}
+
+// Reads the mesh and refuses one the filter could do nothing with. One whose
+// triangles all lack an area (all its points at one place, or on one line)
+// goes on, as the filter's input without a proper triangle does, but says
+// why nothing comes of it: the run gave a blank image and no word.
 vtkSmartPointer<vtkPolyData> ReadMeshWithTriangles(const std::string& path)
 {
   vtkSmartPointer<vtkPolyData> mesh = ReadMesh(path);
   if (CountTriangles(mesh) == 0)
   {
     throw RuntimeError(path + " has no triangles");
+  }
+  if (!HasTriangleWithArea(mesh))
+  {
+    std::cerr << "silhouette: warning: '" << PrintableText(path)
+              << "': none of its triangles has an area (its points are all at one place or on "
+                 "one line): there is no outline to smooth or draw\n";
   }
   return mesh;
 }
@@ -100,13 +154,21 @@ void RunSmooth(const SmoothOptions& options)
 
   const SmoothingRun run = SmoothSilhouette(mesh, camera, options.Camera);
   PrintWarnings(run);
+  // Both files or neither: one that cannot be written leaves the other as it was.
+  FileBatch outputs;
+  std::vector<std::string> dropped;
   if (options.Output)
   {
-    ReportDropped(WriteMesh(run.Filter->GetOutput(), *options.Output), *options.Output);
+    dropped = WriteMesh(run.Filter->GetOutput(), *options.Output, &outputs);
   }
   if (options.LinesOutput)
   {
-    WriteLines(run.Filter->GetSilhouetteOutput(), *options.LinesOutput);
+    WriteLines(run.Filter->GetSilhouetteOutput(), *options.LinesOutput, &outputs);
+  }
+  outputs.Commit();
+  if (options.Output)
+  {
+    ReportDropped(dropped, *options.Output);
   }
   PrintFigures(CollectFigures(options.Input, options.Output, run.Filter->GetOutput(),
                  run.PrepareMilliseconds, run.MedianMilliseconds, options.Camera, camera),
@@ -278,18 +340,21 @@ void RunRender(const RenderOptions& options)
 
   const SmoothingRun run = SmoothSilhouette(mesh, camera, options.Camera);
   PrintWarnings(run);
+  // Both files or neither: one that cannot be written leaves the other as it was.
+  FileBatch outputs;
   if (svg)
   {
-    RenderToSvg(view, run.Filter, mesh, options);
+    RenderToSvg(view, run.Filter, mesh, options, &outputs);
   }
   else
   {
-    RenderToPng(view, run.Filter, mesh, options);
+    RenderToPng(view, run.Filter, mesh, options, &outputs);
   }
   if (options.LinesOutput)
   {
-    WriteLines(run.Filter->GetSilhouetteOutput(), *options.LinesOutput);
+    WriteLines(run.Filter->GetSilhouetteOutput(), *options.LinesOutput, &outputs);
   }
+  outputs.Commit();
   PrintFigures(CollectFigures(options.Input, options.Output, run.Filter->GetOutput(),
                  run.PrepareMilliseconds, run.MedianMilliseconds, options.Camera, camera),
     options.Json);

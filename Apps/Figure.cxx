@@ -247,6 +247,11 @@ void RunFigure(const FigureOptions& options)
     }
     RenderPanels(model, options);
   }
+  catch (const UsageError& error)
+  {
+    // Camera options that do not fit the mesh stay usage errors (exit 2).
+    throw UsageError(options.Input + ": " + error.what());
+  }
   catch (const std::runtime_error& error)
   {
     throw RuntimeError(options.Input + ": " + error.what());

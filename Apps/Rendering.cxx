@@ -154,7 +154,7 @@ void ShadeAsSurface(vtkActor* actor)
   property->SetSpecularPower(20.0);
 }
 
-void WriteWindowPng(vtkRenderWindow* window, const std::string& path)
+void WriteWindowPng(vtkRenderWindow* window, const std::string& path, FileBatch* batch)
 {
   VtkErrorLog& errors = VtkErrorLog::Instance();
   errors.Clear();
@@ -176,9 +176,16 @@ void WriteWindowPng(vtkRenderWindow* window, const std::string& path)
   {
     throw RuntimeError("cannot write '" + path + "': VTK's PNG writer gave no image");
   }
-  WriteFileAtomically(path,
-    std::string(reinterpret_cast<const char*>(png->GetPointer(0)),
-      static_cast<std::size_t>(png->GetNumberOfValues())));
+  std::string bytes(reinterpret_cast<const char*>(png->GetPointer(0)),
+    static_cast<std::size_t>(png->GetNumberOfValues()));
+  if (batch)
+  {
+    batch->Add(path, bytes);
+  }
+  else
+  {
+    WriteFileAtomically(path, bytes);
+  }
 }
 
 namespace
@@ -427,7 +434,7 @@ void RequireDisplay()
 }
 
 void RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
-  vtkPolyData* input, const RenderOptions& options)
+  vtkPolyData* input, const RenderOptions& options, FileBatch* batch)
 {
   VtkErrorLog& errors = VtkErrorLog::Instance();
   errors.Clear();
@@ -457,11 +464,11 @@ void RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   view.Window->Render();
   errors.ThrowIfErrors("rendering failed");
 
-  WriteWindowPng(view.Window, options.Output);
+  WriteWindowPng(view.Window, options.Output, batch);
 }
 
 void RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
-  vtkPolyData* input, const RenderOptions& options)
+  vtkPolyData* input, const RenderOptions& options, FileBatch* batch)
 {
   VtkErrorLog& errors = VtkErrorLog::Instance();
   errors.Clear();
@@ -497,7 +504,15 @@ void RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   style.WidthByDepth = options.WidthByDepth;
   style.ReferenceDepth = renderer->GetActiveCamera()->GetDistance();
   style.Title = "silhouette render " + options.Input + " --style " + NameOf(options.Style);
-  WriteFileAtomically(options.Output, SvgDocument(lines, style));
+  const std::string document = SvgDocument(lines, style);
+  if (batch)
+  {
+    batch->Add(options.Output, document);
+  }
+  else
+  {
+    WriteFileAtomically(options.Output, document);
+  }
 }
 
 } // namespace cli

@@ -17,6 +17,8 @@ class vtkSilhouetteSmoothingFilter;
 namespace cli
 {
 
+class FileBatch;
+
 /// An offscreen window of the viewport size with one renderer. `smooth`
 /// uses it only to frame the camera, so both commands frame alike; nothing
 /// touches the display until the first Render().
@@ -62,8 +64,8 @@ void ShowEdges(vtkActor* actor, const double color[3]);
 void ShadeAsSurface(vtkActor* actor);
 
 /// Writes the window's last frame to a PNG file (re-rendering only an
-/// onscreen window); throws RuntimeError on failure.
-void WriteWindowPng(vtkRenderWindow* window, const std::string& path);
+/// onscreen window), or adds it to `batch`; throws RuntimeError on failure.
+void WriteWindowPng(vtkRenderWindow* window, const std::string& path, FileBatch* batch = nullptr);
 
 /**
  * Adds to `renderer` the actors that draw `style`: of the filter's output, or
@@ -78,20 +80,20 @@ void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter,
 /**
  * Draws `options.Style` of the filter's output (or of `input` with
  * --no-smoothing) into `view` with the camera already set up, and writes
- * the PNG image. Throws RuntimeError on any VTK error.
+ * the PNG image (or adds it to `batch`). Throws RuntimeError on any VTK error.
  */
 void RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
-  vtkPolyData* input, const RenderOptions& options);
+  vtkPolyData* input, const RenderOptions& options, FileBatch* batch = nullptr);
 
 /**
  * Writes the line style `options.Style` as an SVG drawing (SvgDrawing.h):
  * the visible lines (or, for the brushes, their strokes) projected with the
  * view's camera, and with `options.HiddenLines` the hidden pieces, dashed.
  * Nothing is rendered: no display is needed. Throws RuntimeError on any VTK
- * error or a failed write.
+ * error or a failed write. With a `batch`, the file is added to it.
  */
 void RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
-  vtkPolyData* input, const RenderOptions& options);
+  vtkPolyData* input, const RenderOptions& options, FileBatch* batch = nullptr);
 
 } // namespace cli
 

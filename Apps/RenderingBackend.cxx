@@ -4,11 +4,13 @@
 #include "DataFolder.h"
 
 #include <dlfcn.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
@@ -205,17 +207,42 @@ bool HaveXDisplay()
     }
 #if SILHOUETTE_VTK_HAS_X
     // A busy Xvfb has been seen to refuse a connection for a moment, so a
-    // refusal is retried for up to a second before it counts.
-    for (int attempt = 0; attempt < 20; ++attempt)
+    // refusal is retried for up to a second before it counts. Xlib prints a
+    // server's refusal itself ("Authorization required, ...", two lines) at
+    // every attempt, 40 lines in all where X refuses us and OSMesa then
+    // renders fine: the probe runs with stderr on /dev/null, and a command
+    // that needs X says in its own line that the display does not answer.
+    std::fflush(stderr);
+    const int savedStderr = fcntl(STDERR_FILENO, F_DUPFD_CLOEXEC, 0);
+    const int null = open("/dev/null", O_WRONLY | O_CLOEXEC);
+    const bool silenced = savedStderr >= 0 && null >= 0 && dup2(null, STDERR_FILENO) >= 0;
+    if (null >= 0)
+    {
+      close(null);
+    }
+    bool answered = false;
+    for (int attempt = 0; attempt < 20 && !answered; ++attempt)
     {
       if (Display* display = XOpenDisplay(nullptr))
       {
         XCloseDisplay(display);
-        return true;
+        answered = true;
       }
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      else
+      {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+      }
     }
-    return false;
+    std::fflush(stderr);
+    if (silenced)
+    {
+      dup2(savedStderr, STDERR_FILENO);
+    }
+    if (savedStderr >= 0)
+    {
+      close(savedStderr);
+    }
+    return answered;
 #else
     return true;
 #endif
@@ -245,8 +272,9 @@ void SelectRenderBackend(RenderBackend requested, bool interactive, char* argv[]
   if (requested == RenderBackend::X && !HaveXDisplay())
   {
     throw RuntimeError(std::string("'--backend x' needs an X display, and ") +
-      (HaveDisplayVariable() ? "DISPLAY ('" + Environment("DISPLAY") + "') does not answer"
-                             : "DISPLAY is not set") +
+      (HaveDisplayVariable()
+          ? "DISPLAY ('" + Environment("DISPLAY") + "') does not answer or refuses the connection"
+          : "DISPLAY is not set") +
       "; run it under 'xvfb-run -a', or leave '--backend' out to render through OSMesa");
   }
 #if SILHOUETTE_VTK_NATIVE_OFFSCREEN

@@ -81,7 +81,7 @@ constexpr KeyBinding KeyBindings[] = {
   { "f", "side-by-side fine reference on / off" },
   { "+ -", "tolerance x2, /2 (also = _)" },
   { "p", "parallel / perspective" },
-  { "r", "reset the camera" },
+  { "r", "frame the mesh again (farther back with f on)" },
   { "c", "screenshot (PNG)" },
   { "q e", "quit" },
   { "drag", "rotate; with shift: pan; with ctrl: spin" },

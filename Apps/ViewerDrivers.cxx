@@ -230,6 +230,15 @@ void RunView(const ViewOptions& options)
     throw RuntimeError("view needs an X display and DISPLAY is not set; run it under "
                        "'xvfb-run -a' (offscreen with --orbit or --play)");
   }
+  // VTK's X window crashes when the server named does not answer or refuses
+  // the connection; the probe is the same (cached) one the back-end used.
+  if ((interactive || ActiveRenderBackend() == RenderBackend::X) && !HaveXDisplay())
+  {
+    throw RuntimeError(std::string("view needs an X display, and DISPLAY ('") + display +
+      "') does not answer or refuses the connection; run it under 'xvfb-run -a' (offscreen with "
+      "--orbit or "
+      "--play)");
+  }
   if (!options.PlayLog.empty())
   {
     viewer.Play();

@@ -75,7 +75,18 @@ mode_t NewFileMode()
 
 } // namespace
 
-void WriteFileAtomically(const std::string& path, const std::string& bytes)
+FileBatch::~FileBatch()
+{
+  for (const Pending& file : this->Files)
+  {
+    if (!file.Temporary.empty())
+    {
+      ::unlink(file.Temporary.c_str());
+    }
+  }
+}
+
+void FileBatch::Add(const std::string& path, const std::string& bytes)
 {
   struct stat existing
   {
@@ -87,7 +98,7 @@ void WriteFileAtomically(const std::string& path, const std::string& bytes)
   }
   if (exists && !S_ISREG(existing.st_mode))
   {
-    WriteInPlace(path, bytes);
+    this->Files.push_back({ path, "", "", bytes });
     return;
   }
   // Through a link to its target, so the link stays a link.
@@ -121,15 +132,44 @@ void WriteFileAtomically(const std::string& path, const std::string& bytes)
   {
     error = errno;
   }
-  if (error == 0 && ::rename(temporary.c_str(), target.c_str()) != 0)
-  {
-    error = errno;
-  }
   if (error != 0)
   {
     ::unlink(temporary.c_str());
     Fail(path, error);
   }
+  this->Files.push_back({ path, target, temporary, "" });
+}
+
+void FileBatch::Commit()
+{
+  // Devices and pipes first: they cannot be undone, and a failure there
+  // leaves every renamed target untouched.
+  for (const Pending& file : this->Files)
+  {
+    if (file.Temporary.empty())
+    {
+      WriteInPlace(file.Path, file.Bytes);
+    }
+  }
+  for (Pending& file : this->Files)
+  {
+    if (!file.Temporary.empty())
+    {
+      if (::rename(file.Temporary.c_str(), file.Target.c_str()) != 0)
+      {
+        Fail(file.Path, errno); // the destructor removes the temporaries left
+      }
+      file.Temporary.clear();
+    }
+  }
+  this->Files.clear();
+}
+
+void WriteFileAtomically(const std::string& path, const std::string& bytes)
+{
+  FileBatch batch;
+  batch.Add(path, bytes);
+  batch.Commit();
 }
 
 } // namespace cli

@@ -2,6 +2,7 @@
 #define AtomicFile_h
 
 #include <string>
+#include <vector>
 
 namespace cli
 {
@@ -21,6 +22,38 @@ namespace cli
  * removing the temporary file.
  */
 void WriteFileAtomically(const std::string& path, const std::string& bytes);
+
+/**
+ * Several files written as one, so a failure leaves none of them changed
+ * (smooth -o MESH --lines-output LINES once left MESH written when LINES
+ * could not be): Add() writes each file's temporary beside it at once, and
+ * Commit() renames them all onto their targets. A failure in Add() throws
+ * as WriteFileAtomically() does; the destructor removes the temporaries of
+ * a batch not committed. A device or pipe, written in place, is written
+ * first in Commit(). Only a rename failing half-way through Commit() (the
+ * directory changed meanwhile) can leave some targets new and some old.
+ */
+class FileBatch
+{
+public:
+  FileBatch() = default;
+  FileBatch(const FileBatch&) = delete;
+  FileBatch& operator=(const FileBatch&) = delete;
+  ~FileBatch();
+
+  void Add(const std::string& path, const std::string& bytes);
+  void Commit();
+
+private:
+  struct Pending
+  {
+    std::string Path;      ///< as the user gave it, for messages
+    std::string Target;    ///< the link's target when it is a link
+    std::string Temporary; ///< empty: written in place at Commit()
+    std::string Bytes;     ///< for a file written in place
+  };
+  std::vector<Pending> Files;
+};
 
 } // namespace cli
 

@@ -297,9 +297,21 @@ void Put(std::ostream& out, T value)
   out.write(reinterpret_cast<const char*>(&value), sizeof(T));
 }
 
+void WriteOrAdd(const std::string& path, const std::string& bytes, FileBatch* batch)
+{
+  if (batch)
+  {
+    batch->Add(path, bytes);
+  }
+  else
+  {
+    WriteFileAtomically(path, bytes);
+  }
+}
+
 // Our own PLY writer: vtkPLYWriter (VTK 9.1) cannot write normals, and the
 // shading normals are what makes the smoothed mesh look smooth.
-std::vector<std::string> WritePly(vtkPolyData* mesh, const std::string& path)
+std::vector<std::string> WritePly(vtkPolyData* mesh, const std::string& path, FileBatch* batch)
 {
   static_assert(sizeof(float) == 4 && sizeof(double) == 8, "IEEE floats");
   vtkPointData* pd = mesh->GetPointData();
@@ -418,18 +430,18 @@ std::vector<std::string> WritePly(vtkPolyData* mesh, const std::string& path)
       Put(out, static_cast<std::int32_t>(ids[k]));
     }
   }
-  WriteFileAtomically(path, std::move(out).str());
+  WriteOrAdd(path, std::move(out).str(), batch);
   return dropped;
 }
 
 } // namespace
 
-std::vector<std::string> WriteMesh(vtkPolyData* mesh, const std::string& path)
+std::vector<std::string> WriteMesh(vtkPolyData* mesh, const std::string& path, FileBatch* batch)
 {
   CheckMeshOutputPath(path);
   if (LowercaseExtension(path) == ".ply")
   {
-    return WritePly(mesh, path);
+    return WritePly(mesh, path, batch);
   }
   VtkErrorLog& errors = VtkErrorLog::Instance();
   errors.Clear();
@@ -445,7 +457,7 @@ std::vector<std::string> WriteMesh(vtkPolyData* mesh, const std::string& path)
   {
     throw RuntimeError("cannot write " + Quoted(path) + ": VTK's XML writer failed");
   }
-  WriteFileAtomically(path, writer->GetOutputString());
+  WriteOrAdd(path, writer->GetOutputString(), batch);
   return {};
 }
 
@@ -459,10 +471,10 @@ void CheckLinesOutputPath(const std::string& path)
   RequireOutputDirectory(path);
 }
 
-void WriteLines(vtkPolyData* lines, const std::string& path)
+void WriteLines(vtkPolyData* lines, const std::string& path, FileBatch* batch)
 {
   CheckLinesOutputPath(path);
-  WriteMesh(lines, path);
+  WriteMesh(lines, path, batch);
 }
 
 } // namespace cli

@@ -13,6 +13,8 @@ class vtkPolyData;
 namespace cli
 {
 
+class FileBatch;
+
 /// The extension of `path` in lower case, with its dot ("" if none).
 std::string LowercaseExtension(const std::string& path);
 
@@ -44,14 +46,17 @@ void CheckMeshOutputPath(const std::string& path);
 /// texture coordinates and unsigned-char colours as nx ny nz, u v and red
 /// green blue [alpha], which vtkPLYReader reads back). Returns what the file
 /// could not keep (the names of the other arrays, and "line cells" or
-/// "vertex cells"), empty for .vtp. Throws RuntimeError on failure.
-std::vector<std::string> WriteMesh(vtkPolyData* mesh, const std::string& path);
+/// "vertex cells"), empty for .vtp. Throws RuntimeError on failure. With a
+/// `batch`, the file is added to it (written when the batch is committed).
+std::vector<std::string> WriteMesh(
+  vtkPolyData* mesh, const std::string& path, FileBatch* batch = nullptr);
 
 /// Throws UsageError unless WriteLines can write `path` (.vtp).
 void CheckLinesOutputPath(const std::string& path);
 
-/// Writes polylines (the filter's silhouette output) to .vtp.
-void WriteLines(vtkPolyData* lines, const std::string& path);
+/// Writes polylines (the filter's silhouette output) to .vtp (or adds them to
+/// `batch`).
+void WriteLines(vtkPolyData* lines, const std::string& path, FileBatch* batch = nullptr);
 
 } // namespace cli
 

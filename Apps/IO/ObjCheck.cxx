@@ -19,15 +19,52 @@ void CheckObjFile(const std::string& path)
   {
     lines.push_back(std::move(line));
   }
-  // First the vertices and the counts of texture coordinates and normals,
-  // which faces may refer to before they appear.
+  // A coordinate of a vertex or a normal: vtkOBJReader 9.1 reads "nan",
+  // "inf" and "0x10" as 0, a word that is no number as 0, and a number
+  // beyond the range of a float as FLT_MAX or garbage, all without a word.
+  // (One too small for a float becomes 0 or a subnormal, as it would in any
+  // float reader: that is rounding, not a misread.)
+  const auto requireCoordinate = [](const std::string& word, const std::string& where,
+                                   const char* what) {
+    double value = 0.0;
+    if (!ParseWholeNumber(word, value) || !std::isfinite(value)) // a NUL byte stops strtod
+    {
+      throw RuntimeError("cannot read " + where + ": '" + word + "' is not a finite number");
+    }
+    if (word.find_first_of("xX") != std::string::npos)
+    {
+      throw RuntimeError(
+        "cannot read " + where + ": '" + word + "' is hexadecimal, which vtkOBJReader reads as 0");
+    }
+    if (std::isinf(std::strtof(word.c_str(), nullptr)))
+    {
+      throw RuntimeError(
+        "cannot read " + where + ": '" + word + "' is out of range for a float " + what);
+    }
+  };
+  // First the vertices and normals, and the counts of texture coordinates
+  // and normals, which faces may refer to before they appear.
   long long vertex = 0, textureCoordinates = 0, normals = 0;
   for (std::size_t number = 0; number < lines.size(); ++number)
   {
     const std::vector<std::string> words = WordsOf(lines[number]);
     const std::string keyword = words.empty() ? std::string() : words[0];
     textureCoordinates += keyword == "vt";
-    normals += keyword == "vn";
+    if (keyword == "vn")
+    {
+      ++normals;
+      const std::string where = "'" + path + "': line " + std::to_string(number + 1) + ", normal " +
+        std::to_string(normals);
+      for (std::size_t w = 1; w < words.size(); ++w)
+      {
+        requireCoordinate(words[w], where, "normal component");
+      }
+      if (words.size() < 4)
+      {
+        throw RuntimeError("cannot read " + where + ": fewer than 3 components");
+      }
+      continue;
+    }
     if (keyword != "v")
     {
       continue;
@@ -35,33 +72,12 @@ void CheckObjFile(const std::string& path)
     ++vertex;
     const std::string where =
       "'" + path + "': line " + std::to_string(number + 1) + ", vertex " + std::to_string(vertex);
-    int coordinates = 0;
     // x y z, then optional w or r g b.
     for (std::size_t w = 1; w < words.size(); ++w)
     {
-      const std::string& word = words[w];
-      double value = 0.0;
-      if (!ParseWholeNumber(word, value) || !std::isfinite(value)) // a NUL byte stops strtod
-      {
-        throw RuntimeError("cannot read " + where + ": '" + word + "' is not a finite number");
-      }
-      // vtkOBJReader 9.1 reads a hexadecimal number such as 0x10 as 0, and a
-      // number beyond the range of a float, such as 1e39, as FLT_MAX. (One too
-      // small for a float becomes 0 or a subnormal, as it would in any float
-      // reader: that is rounding, not a misread.)
-      if (word.find_first_of("xX") != std::string::npos)
-      {
-        throw RuntimeError("cannot read " + where + ": '" + word +
-          "' is hexadecimal, which vtkOBJReader reads as 0");
-      }
-      if (std::isinf(std::strtof(word.c_str(), nullptr)))
-      {
-        throw RuntimeError(
-          "cannot read " + where + ": '" + word + "' is out of range for a float coordinate");
-      }
-      ++coordinates;
+      requireCoordinate(words[w], where, "coordinate");
     }
-    if (coordinates < 3)
+    if (words.size() < 4)
     {
       throw RuntimeError("cannot read " + where + ": fewer than 3 coordinates");
     }
@@ -69,15 +85,22 @@ void CheckObjFile(const std::string& path)
   // Then the corners of faces, lines and points: v, v/vt, v//vn or v/vt/vn.
   // VTK 9.1's reader crashes on a corner such as "1/" and on a texture
   // coordinate or normal index with none to refer to.
+  long long verticesBefore = 0; // a negative point index counts back from here
+  // Whether a face's texture or normal index differs from its point's, and
+  // the line of the first face without normal indices (0: none).
+  bool indexedApart = false;
+  std::size_t faceWithoutNormals = 0;
   for (std::size_t number = 0; number < lines.size(); ++number)
   {
     const std::vector<std::string> words = WordsOf(lines[number]);
     const std::string keyword = words.empty() ? std::string() : words[0];
+    verticesBefore += keyword == "v";
     if (keyword != "f" && keyword != "l" && keyword != "p")
     {
       continue;
     }
     const std::string where = "cannot read '" + path + "': line " + std::to_string(number + 1);
+    bool withNormals = false;
     for (std::size_t w = 1; w < words.size(); ++w)
     {
       const std::string& corner = words[w];
@@ -102,11 +125,36 @@ void CheckObjFile(const std::string& path)
       {
         throw RuntimeError(where + ": '" + corner + "' is not v, v/vt, v//vn or v/vt/vn");
       }
+      long long point = 0;
+      ParseWholeInteger(parts[0], point);
+      const long long resolvedPoint = point < 0 ? verticesBefore + point + 1 : point;
+      // Here, not after reading: the reader's 0-based, resolved index would
+      // not be the one the file says (1-based; negative counts back).
+      if (point == 0)
+      {
+        throw RuntimeError(
+          where + ": '" + corner + "' refers to point 0, but OBJ counts points from 1");
+      }
+      if (point > vertex)
+      {
+        throw RuntimeError(where + ": '" + corner + "' refers to point " + parts[0] +
+          " but there are " + std::to_string(vertex));
+      }
+      if (resolvedPoint < 1)
+      {
+        throw RuntimeError(where + ": '" + corner + "' refers to point " + parts[0] + ", " +
+          std::to_string(-point) + " back from this line, but only " +
+          std::to_string(verticesBefore) + " come before it");
+      }
       const auto requireInRange = [&](const std::string& part, long long count, const char* what) {
         if (!part.empty() && ParseWholeInteger(part, index) && (index < 1 || index > count))
         {
           throw RuntimeError(where + ": '" + corner + "' refers to " + what + " " + part +
             " but there are " + std::to_string(count));
+        }
+        if (!part.empty() && keyword == "f" && index != resolvedPoint)
+        {
+          indexedApart = true;
         }
       };
       if (parts.size() > 1)
@@ -116,8 +164,24 @@ void CheckObjFile(const std::string& path)
       if (parts.size() > 2)
       {
         requireInRange(parts[2], normals, "normal");
+        withNormals = true;
       }
     }
+    if (keyword == "f" && !withNormals && faceWithoutNormals == 0)
+    {
+      faceWithoutNormals = number + 1;
+    }
+  }
+  // Where a face's texture or normal index differs from its point's,
+  // vtkOBJReader 9.1 copies the points face by face, and then leaves out
+  // every face without normal indices if the file has normals: a warning
+  // per face ("Skipping poly"), and a mesh with fewer triangles.
+  if (normals > 0 && indexedApart && faceWithoutNormals != 0)
+  {
+    throw RuntimeError("cannot read '" + path + "': line " + std::to_string(faceWithoutNormals) +
+      ": the face has no normal indices in a file with normals ('vn'), and vtkOBJReader 9.1 "
+      "would leave it out; give every face normal indices (v//vn or v/vt/vn), or none and no "
+      "'vn' lines");
   }
 }
 

@@ -64,6 +64,11 @@ run("${WORK_DIR}/consumer/consumer")
 # The installed program finds the installed module (RPATH), not the build's,
 # and its default mesh in the prefix.
 run("${prefix}/bin/silhouette" smooth "${SOURCE_DIR}/Data/sphere_ico80.vtp" --json)
+# The README's examples run from the installed data folder (the bracket's
+# line drawing was the one whose mesh was not installed).
+set(installed_data "${prefix}/share/SilhouetteSmoothing/Data")
+run("${prefix}/bin/silhouette" render "${installed_data}/bracket.stl" -o "${WORK_DIR}/bracket.svg"
+  --style lines --hidden dashed)
 run("${prefix}/bin/silhouette" view --orbit 10 --frames 1 --record "${WORK_DIR}/orbit")
 if (NOT EXISTS "${WORK_DIR}/orbit/frame_0000.png")
   message(FATAL_ERROR "FAILED: the installed viewer's orbit wrote no frame")

@@ -260,7 +260,18 @@ FeatureCurves::FeatureCurves(const std::vector<glm::dvec3>& points, std::vector<
     {
       continue; // a corner: ends two polylines
     }
-    insideTangent[v] = safeNormalize(l1 * w0 + l0 * w1);
+    // Beside an edge FeatureLineRatio times as long as the other, the long
+    // edge's own direction: a CAD tessellation's line meeting an arc
+    // tangentially (a rounded rectangle's side beside its corner's short
+    // segments), which the circle through the three points would bow.
+    if (std::max(l0, l1) > FeatureLineRatio * std::min(l0, l1))
+    {
+      insideTangent[v] = l0 > l1 ? w0 / l0 : w1 / l1;
+    }
+    else
+    {
+      insideTangent[v] = safeNormalize(l1 * w0 + l0 * w1);
+    }
     inside[v] = insideTangent[v] != glm::dvec3(0.0) ? 1 : 0;
   }
 

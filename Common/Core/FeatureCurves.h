@@ -6,7 +6,9 @@
 // feature edges is inside a polyline; any other vertex on a feature edge ends
 // one (a crease fading out, or a corner where several meet). Tangents:
 //   - inside: the tangent of the circle through the vertex and its two
-//     polyline neighbours, T = |W1| W0 + |W0| W1 (eq. 1);
+//     polyline neighbours, T = |W1| W0 + |W0| W1 (eq. 1), unless one edge is
+//     more than FeatureLineRatio times the other's length: then the long
+//     edge's direction (ours: a line meeting an arc in a CAD part);
 //   - at an end: the tangent of the circle through the end and the next two
 //     polyline points (the eq. 1 tangent at the next point, mirrored in the
 //     chord's perpendicular bisector).
@@ -38,6 +40,13 @@ using FeatureEdge = std::pair<Id, Id>;
 
 /// A polyline turning by more than this at a vertex has a corner there.
 constexpr double FeatureCornerAngleDegrees = 70.0;
+
+/// At a vertex between a feature edge more than this many times as long as
+/// the other, the tangent is the long edge's direction, not eq. 1's: CAD
+/// tessellations put long straight edges beside the short segments of
+/// arcs they meet tangentially, and the circle through the three points
+/// bowed a rounded plate's straight sides by 11 px (docs/real-assets.md).
+constexpr double FeatureLineRatio = 4.0;
 
 /// Lower id first, no self-edges, sorted, no repeats.
 std::vector<FeatureEdge> normalizedFeatureEdges(std::vector<FeatureEdge> edges);

@@ -119,6 +119,69 @@ TEST(FeatureCurves, SingleEdgesAndCornersStayStraight)
   EXPECT_EQ(messy.find(2, 3), -1);
 }
 
+// A rounded rectangle as OpenSCAD tessellates hull() of four cylinders:
+// 60 x 30 straight sides between quarter circles of radius 6 in 5 segments
+// each (18 degrees; a side is 32 times as long). The sides stay straight
+// (their end tangents are their own direction), while eq. 1's tangent there,
+// the circle through the three points, turns 4.5 degrees off the side (the
+// wrong variant: it bowed a plate's sides by 11 px) and would put the
+// side's middle 0.6 (short sides) to 1.2 (long sides) off the line. The arcs
+// still follow their circle.
+TEST(FeatureCurves, ACadLineBesideAnArcStaysStraight)
+{
+  const double radius = 6.0;
+  const glm::dvec2 centres[4] = { { 60, 30 }, { 0, 30 }, { 0, 0 }, { 60, 0 } };
+  std::vector<glm::dvec3> points;
+  for (int corner = 0; corner < 4; ++corner)
+  {
+    for (int k = 0; k <= 5; ++k) // from the corner's first side to its next
+    {
+      const double a = Pi / 2.0 * corner + Pi / 2.0 * k / 5.0;
+      points.emplace_back(
+        centres[corner].x + radius * std::cos(a), centres[corner].y + radius * std::sin(a), 0.0);
+    }
+  }
+  const int n = static_cast<int>(points.size()); // 24: sides join k = 5 to the next k = 0
+  const FeatureCurves curves(points, loop(n));
+  ASSERT_EQ(curves.curvedCount(), static_cast<std::size_t>(n));
+  for (int corner = 0; corner < 4; ++corner)
+  {
+    const Id a = 6 * corner + 5;
+    const Id b = (6 * corner + 6) % n;
+    const Id side = curves.find(a, b);
+    ASSERT_GE(side, 0);
+    const glm::dvec3 from = points[static_cast<std::size_t>(a)];
+    const glm::dvec3 chord = points[static_cast<std::size_t>(b)] - from;
+    double farthest = 0.0;
+    for (int k = 0; k <= 64; ++k)
+    {
+      const glm::dvec3 p = curves.curve(side).evaluate(k / 64.0) - from;
+      farthest = std::max(farthest, glm::length(glm::cross(p, chord)) / glm::length(chord));
+    }
+    EXPECT_LT(farthest, 1e-9 * glm::length(chord)) << "side " << corner;
+    // Eq. 1's tangent at the side's start, and the bow it would give.
+    const glm::dvec3 w0 = from - points[static_cast<std::size_t>(a - 1)];
+    const glm::dvec3 eq1 = glm::normalize(glm::length(chord) * w0 + glm::length(w0) * chord);
+    const double turn = std::acos(glm::dot(eq1, glm::normalize(chord))) * 180.0 / Pi;
+    EXPECT_NEAR(turn, 4.5, 1e-6) << "side " << corner;
+    EXPECT_GT(glm::length(chord) * std::tan(turn * Pi / 180.0) / 4.0, 0.5);
+  }
+  for (int corner = 0; corner < 4; ++corner)
+  {
+    for (int k = 0; k < 5; ++k)
+    {
+      const Id e = curves.find(6 * corner + k, 6 * corner + k + 1);
+      ASSERT_GE(e, 0);
+      for (int j = 0; j <= 16; ++j)
+      {
+        const glm::dvec3 p = curves.curve(e).evaluate(j / 16.0);
+        const glm::dvec3 c(centres[corner].x, centres[corner].y, 0.0);
+        EXPECT_NEAR(glm::length(p - c), radius, 0.02 * radius) << corner << " " << k;
+      }
+    }
+  }
+}
+
 TEST(FeatureCurves, CircleTangentLengthIsTheArcApproximation)
 {
   // A 90-degree arc of radius 1: chord sqrt(2), theta 45 degrees; the

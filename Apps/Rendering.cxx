@@ -44,24 +44,20 @@ namespace cli
 namespace
 {
 
-// The input with the filter's shading normals, so --no-smoothing differs from
-// the smoothed mesh in its geometry only (input points keep their ids).
+// The input as the smoothing sees it, with its shading normals (a point
+// copy per smooth group at creases, as the filter's output has), so
+// --no-smoothing differs from the smoothed mesh in its geometry only. The
+// input's own points carry one normal each: across a crease that smeared
+// the shading of flat faces.
 vtkSmartPointer<vtkPolyData> InputWithShadingNormals(
   vtkPolyData* input, vtkSilhouetteSmoothingFilter* filter)
 {
-  auto shown = vtkSmartPointer<vtkPolyData>::New();
-  shown->ShallowCopy(input);
-  vtkDataArray* shadingNormals = filter->GetOutput()->GetPointData()->GetNormals();
-  if (shadingNormals)
+  auto base = vtkSmartPointer<vtkPolyData>::New();
+  if (!filter->BuildBaseMesh(input, base))
   {
-    vtkNew<vtkFloatArray> normals;
-    normals->SetName("Normals");
-    normals->SetNumberOfComponents(3);
-    normals->SetNumberOfTuples(input->GetNumberOfPoints());
-    normals->InsertTuples(0, input->GetNumberOfPoints(), 0, shadingNormals);
-    shown->GetPointData()->SetNormals(normals);
+    throw RuntimeError("the filter could not prepare the input for drawing");
   }
-  return shown;
+  return base;
 }
 
 // The triangles of the filter's output that the smoothing made (NewGeometry

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <iterator>
 #include <mutex>
+#include <thread>
 #include <tuple>
 #include <unordered_map>
 
@@ -406,18 +407,12 @@ bool PreparedMesh::adoptTriangleGridOfMoved(const PreparedMesh& earlier)
   return false;
 }
 
-PreparedMesh::LazyTriangleHierarchy::~LazyTriangleHierarchy()
-{
-  if (this->Builder.joinable())
-  {
-    this->Builder.join();
-  }
-}
-
 bool PreparedMesh::findSilhouetteTriangles(const ViewGeometry& view, const ParallelFor& parallelFor,
   std::vector<Id>& out, TreeBuild build) const
 {
-  LazyTriangleHierarchy& lazy = *this->TriangleHierarchies[view.Parallel ? 0 : 1];
+  const std::shared_ptr<LazyTriangleHierarchy>& shared =
+    this->TriangleHierarchies[view.Parallel ? 0 : 1];
+  LazyTriangleHierarchy& lazy = *shared;
   if (lazy.Searches.fetch_add(1) == 0)
   {
     return false; // the first search scans: maybe the only one
@@ -428,20 +423,22 @@ bool PreparedMesh::findSilhouetteTriangles(const ViewGeometry& view, const Paral
     {
       try
       {
-        // Copies: this mesh may go before the tree is done; the lazy state
-        // (shared by copies of the mesh) joins the thread when it goes.
-        lazy.Builder = std::thread([&lazy, points = this->Points, normals = this->Normals,
-                                     triangles = this->Triangles, perspective] {
+        // Detached, with copies of the arrays and a share of the lazy
+        // state: the mesh (and every copy of it) may go before the tree is
+        // done, and then nobody waits for it; the thread frees what it
+        // holds when it ends.
+        std::thread([shared, points = this->Points, normals = this->Normals,
+                      triangles = this->Triangles, perspective] {
           try
           {
-            lazy.Tree = SilhouetteTriangleHierarchy(points, normals, triangles, perspective);
-            lazy.Ready.store(true, std::memory_order_release);
+            shared->Tree = SilhouetteTriangleHierarchy(points, normals, triangles, perspective);
+            shared->Ready.store(true, std::memory_order_release);
           }
-          catch (const std::bad_alloc&)
+          catch (...)
           {
             // No tree: every search keeps scanning.
           }
-        });
+        }).detach();
         return;
       }
       catch (const std::exception&)

@@ -21,7 +21,6 @@
 #include <functional>
 #include <memory>
 #include <mutex>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -265,17 +264,11 @@ private:
   double GridSlack = 0.0;
   struct LazyTriangleHierarchy
   {
-    LazyTriangleHierarchy() = default;
-    LazyTriangleHierarchy(const LazyTriangleHierarchy&) = delete;
-    LazyTriangleHierarchy& operator=(const LazyTriangleHierarchy&) = delete;
-    /// Waits for a build still under way: it writes Tree.
-    ~LazyTriangleHierarchy();
     std::atomic<int> Searches{ 0 };
     std::once_flag Once;
     /// Tree is complete and may be read (set after it is written).
     std::atomic<bool> Ready{ false };
     SilhouetteTriangleHierarchy Tree;
-    std::thread Builder;
   };
   /// For parallel views ([0]) and perspective ones ([1]).
   std::shared_ptr<LazyTriangleHierarchy> TriangleHierarchies[2] = {

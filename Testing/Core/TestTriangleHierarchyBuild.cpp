@@ -42,10 +42,11 @@ void expectSameFrame(const SmoothingResult& a, const SmoothingResult& b, int ste
 } // namespace
 
 // The mesh searched twice starts the build and is then dropped: its copy
-// (which shares the tree) goes on, and the thread must have read copies of
-// the arrays, not the dropped mesh's (AddressSanitizer's run sees a read of
-// freed memory). The copy's frames equal a scanning pass's before and after
-// the tree is ready, and the tree becomes ready.
+// (which shares the tree) goes on. The thread works on copies of the arrays
+// (one that read the dropped mesh's would read freed memory, which the
+// AddressSanitizer run sees when the build outlives the mesh). The copy's
+// frames equal a scanning pass's before and after the tree is ready, and the
+// tree becomes ready.
 TEST(SilhouetteTriangleHierarchy, BuiltInTheBackgroundAnswersAsTheScanDoes)
 {
   std::vector<glm::dvec3> points;

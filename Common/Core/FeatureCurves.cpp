@@ -210,6 +210,50 @@ glm::dvec3 circleTangentAlong(const glm::dvec3& direction, const glm::dvec3& cho
   return unit * (2.0 * chordLength / (1.0 + cosTheta));
 }
 
+namespace
+{
+
+// The angle between consecutive edges a -> v -> b.
+double turnAt(const glm::dvec3& a, const glm::dvec3& v, const glm::dvec3& b)
+{
+  const glm::dvec3 u0 = safeNormalize(v - a);
+  const glm::dvec3 u1 = safeNormalize(b - v);
+  return std::atan2(glm::length(glm::cross(u0, u1)), glm::dot(u0, u1));
+}
+
+// How much of the long edge's direction vertex v's tangent takes (0 to 1):
+// where one edge is from half of FeatureLineRatio to FeatureLineRatio times
+// as long as the other, rising smoothly, and only where a line meets an
+// arc: v turns by at most 3/4 of what the short edge's far end does (half
+// of it there; on a curve merely sampled unevenly v turns about as much,
+// alternating edges, or (1 + ratio) / 2 times as much, and eq. 1 is right).
+double lineMeetsArcWeight(const std::vector<glm::dvec3>& points,
+  const std::vector<std::size_t>& offsets, const std::vector<Id>& neighbours, std::size_t v,
+  std::size_t shortEnd, double l0, double l1)
+{
+  const double ratio = std::max(l0, l1) / std::min(l0, l1);
+  const double t =
+    std::clamp((ratio - 0.5 * FeatureLineRatio) / (0.5 * FeatureLineRatio), 0.0, 1.0);
+  if (!(t > 0.0) || offsets[shortEnd + 1] - offsets[shortEnd] != 2)
+  {
+    return 0.0;
+  }
+  const Id first = neighbours[offsets[shortEnd]];
+  const std::size_t beyond = static_cast<std::size_t>(
+    first == static_cast<Id>(v) ? neighbours[offsets[shortEnd] + 1] : first);
+  const std::size_t before = static_cast<std::size_t>(neighbours[offsets[v]]);
+  const std::size_t after = static_cast<std::size_t>(neighbours[offsets[v] + 1]);
+  const double turnHere = turnAt(points[before], points[v], points[after]);
+  const double turnThere = turnAt(points[v], points[shortEnd], points[beyond]);
+  if (!(turnHere <= 0.75 * turnThere))
+  {
+    return 0.0;
+  }
+  return t * t * (3.0 - 2.0 * t);
+}
+
+} // namespace
+
 FeatureCurves::FeatureCurves(const std::vector<glm::dvec3>& points, std::vector<FeatureEdge> edges)
 {
   edges = normalizedFeatureEdges(std::move(edges));
@@ -260,17 +304,17 @@ FeatureCurves::FeatureCurves(const std::vector<glm::dvec3>& points, std::vector<
     {
       continue; // a corner: ends two polylines
     }
-    // Beside an edge FeatureLineRatio times as long as the other, the long
-    // edge's own direction: a CAD tessellation's line meeting an arc
-    // tangentially (a rounded rectangle's side beside its corner's short
-    // segments), which the circle through the three points would bow.
-    if (std::max(l0, l1) > FeatureLineRatio * std::min(l0, l1))
+    insideTangent[v] = safeNormalize(l1 * w0 + l0 * w1);
+    // A CAD tessellation's line meeting an arc tangentially (a rounded
+    // rectangle's side beside its corner's short segments), which eq. 1
+    // would bow: the long edge's own direction (LineMeetsArc).
+    const std::size_t shortEnd =
+      static_cast<std::size_t>(neighbours[offsets[v] + (l0 < l1 ? 0 : 1)]);
+    const double weight = lineMeetsArcWeight(points, offsets, neighbours, v, shortEnd, l0, l1);
+    if (weight > 0.0)
     {
-      insideTangent[v] = l0 > l1 ? w0 / l0 : w1 / l1;
-    }
-    else
-    {
-      insideTangent[v] = safeNormalize(l1 * w0 + l0 * w1);
+      const glm::dvec3 along = l0 > l1 ? w0 / l0 : w1 / l1;
+      insideTangent[v] = safeNormalize((1.0 - weight) * insideTangent[v] + weight * along);
     }
     inside[v] = insideTangent[v] != glm::dvec3(0.0) ? 1 : 0;
   }

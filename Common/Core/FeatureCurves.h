@@ -6,9 +6,9 @@
 // feature edges is inside a polyline; any other vertex on a feature edge ends
 // one (a crease fading out, or a corner where several meet). Tangents:
 //   - inside: the tangent of the circle through the vertex and its two
-//     polyline neighbours, T = |W1| W0 + |W0| W1 (eq. 1), unless one edge is
-//     more than FeatureLineRatio times the other's length: then the long
-//     edge's direction (ours: a line meeting an arc in a CAD part);
+//     polyline neighbours, T = |W1| W0 + |W0| W1 (eq. 1; the bisector of the
+//     two edges' directions), except where a line meets an arc (ours,
+//     FeatureLineRatio): the line's direction;
 //   - at an end: the tangent of the circle through the end and the next two
 //     polyline points (the eq. 1 tangent at the next point, mirrored in the
 //     chord's perpendicular bisector).
@@ -41,11 +41,12 @@ using FeatureEdge = std::pair<Id, Id>;
 /// A polyline turning by more than this at a vertex has a corner there.
 constexpr double FeatureCornerAngleDegrees = 70.0;
 
-/// At a vertex between a feature edge more than this many times as long as
-/// the other, the tangent is the long edge's direction, not eq. 1's: CAD
-/// tessellations put long straight edges beside the short segments of
-/// arcs they meet tangentially, and the circle through the three points
-/// bowed a rounded plate's straight sides by 11 px (docs/real-assets.md).
+/// Where a line meets an arc tangentially, as CAD tessellations have it (a
+/// long straight edge beside the short segments of an arc, the vertex between
+/// them turning at most 3/4 as much as the arc's next vertex), the tangent there
+/// is the long edge's direction, fully from this ratio of the two edges'
+/// lengths on and blended in from half of it: eq. 1 bowed a rounded plate's
+/// straight sides by 11 px (docs/real-assets.md).
 constexpr double FeatureLineRatio = 4.0;
 
 /// Lower id first, no self-edges, sorted, no repeats.

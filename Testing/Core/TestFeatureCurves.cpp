@@ -123,8 +123,8 @@ TEST(FeatureCurves, SingleEdgesAndCornersStayStraight)
 // 60 x 30 straight sides between quarter circles of radius 6 in 5 segments
 // each (18 degrees; a side is 32 times as long). The sides stay straight
 // (their end tangents are their own direction), while eq. 1's tangent there,
-// the circle through the three points, turns 4.5 degrees off the side (the
-// wrong variant: it bowed a plate's sides by 11 px) and would put the
+// the bisector of the two edges' directions, turns 4.5 degrees off the side
+// (the wrong variant: it bowed a plate's sides by 11 px) and would put the
 // side's middle 0.6 (short sides) to 1.2 (long sides) off the line. The arcs
 // still follow their circle.
 TEST(FeatureCurves, ACadLineBesideAnArcStaysStraight)
@@ -178,6 +178,41 @@ TEST(FeatureCurves, ACadLineBesideAnArcStaysStraight)
         const glm::dvec3 c(centres[corner].x, centres[corner].y, 0.0);
         EXPECT_NEAR(glm::length(p - c), radius, 0.02 * radius) << corner << " " << k;
       }
+    }
+  }
+}
+
+// The counter-case: a circle sampled unevenly, edges of 5 and 25 degrees in
+// turn (five times as long) or runs of short edges then one long one. It is
+// no line meeting an arc (every vertex turns as much as, or more than, its
+// short edge's far end), so every tangent stays eq. 1's (the bisector);
+// taking the long edge's direction there would lean the wrong way.
+TEST(FeatureCurves, AnUnevenlySampledCurveKeepsEqOneTangents)
+{
+  for (const std::vector<double>& steps :
+    { std::vector<double>{ 5, 25 }, std::vector<double>{ 4, 4, 4, 24 } })
+  {
+    std::vector<glm::dvec3> points;
+    double angle = 0.0;
+    for (std::size_t k = 0; angle < 359.0; ++k)
+    {
+      points.emplace_back(std::cos(angle * Pi / 180.0), std::sin(angle * Pi / 180.0), 0.0);
+      angle += steps[k % steps.size()];
+    }
+    const int n = static_cast<int>(points.size());
+    const FeatureCurves curves(points, loop(n));
+    ASSERT_EQ(curves.curvedCount(), static_cast<std::size_t>(n));
+    for (int v = 0; v < n; ++v)
+    {
+      const glm::dvec3& p = points[static_cast<std::size_t>(v)];
+      const glm::dvec3 w0 = p - points[static_cast<std::size_t>((v + n - 1) % n)];
+      const glm::dvec3 w1 = points[static_cast<std::size_t>((v + 1) % n)] - p;
+      const glm::dvec3 bisector = glm::normalize(glm::normalize(w0) + glm::normalize(w1));
+      const Id e = curves.find(v, (v + 1) % n);
+      ASSERT_GE(e, 0);
+      const HermiteCurve& c = curves.curve(e);
+      const glm::dvec3 t = c.P0 == p ? c.T0 : c.T1;
+      EXPECT_LT(glm::length(glm::cross(glm::normalize(t), bisector)), 1e-12) << v;
     }
   }
 }

@@ -174,7 +174,9 @@ protected:
 
   /// False in a subclass whose output does not depend on the viewport: the
   /// view then uses a fixed 1 x 1 viewport, so window resizes (and
-  /// ViewportSize) do not re-run it. Set in the subclass's constructor.
+  /// ViewportSize) do not re-run it. Set in the subclass's constructor, or
+  /// by a setting that makes the output depend on the viewport
+  /// (vtkSilhouetteLineVisibility::SetOutlinePixels).
   bool ViewportDependent = true;
 
 private:

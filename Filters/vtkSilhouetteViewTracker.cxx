@@ -19,7 +19,8 @@ bool ViewTracker::SameViewAngle(double now, double last)
   // A few floats' rounding moves a silhouette by under 1e-3 px.
   constexpr double Rounding = 4.0 * FLT_EPSILON;
   return std::memcmp(&now, &last, sizeof(double)) == 0 ||
-    std::abs(now - last) <= Rounding * std::max(std::abs(now), std::abs(last));
+    (std::isfinite(now) && std::isfinite(last) &&
+      std::abs(now - last) <= Rounding * std::max(std::abs(now), std::abs(last)));
 }
 
 vtkMTimeType ViewTracker::Update(

@@ -143,8 +143,9 @@ void CheckObjFile(const std::string& path)
       if (resolvedPoint < 1)
       {
         throw RuntimeError(where + ": '" + corner + "' refers to point " + parts[0] + ", " +
-          std::to_string(-point) + " back from this line, but only " +
-          std::to_string(verticesBefore) + " come before it");
+          // Negated as unsigned: -LLONG_MIN overflows a long long.
+          std::to_string(0ULL - static_cast<unsigned long long>(point)) +
+          " back from this line, but only " + std::to_string(verticesBefore) + " come before it");
       }
       const auto requireInRange = [&](const std::string& part, long long count, const char* what) {
         if (!part.empty() && ParseWholeInteger(part, index) && (index < 1 || index > count))

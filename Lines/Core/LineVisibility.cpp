@@ -356,8 +356,8 @@ bool OcclusionMesh::nearTheOutline(const ViewGeometry& view, const glm::dvec3& p
   }
   across /= acrossLength;
   // Model units per pixel here, from a step small against the distance to
-  // the eye (parallel: the view's size is what matters, not the distance).
-  const double step = 1e-3 * (view.Parallel ? glm::length(direction) : distance);
+  // the eye (parallel, an affine map: against the surface's size).
+  const double step = 1e-3 * (view.Parallel ? glm::length(this->High - this->Low) : distance);
   glm::dvec2 at;
   glm::dvec2 beside;
   if (!(step > 0.0) || !view.toPixels(point, at) || !view.toPixels(point + step * across, beside))
@@ -502,7 +502,13 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
     return pieces;
   }
   // Along the segment being classified (OutlinePixels' "across the line").
-  glm::dvec3 direction = polyline.size() > 1 ? polyline[1] - polyline[0] : glm::dvec3(0.0);
+  // A repeated point has no direction: the last segment's (or the first
+  // real one's) stands for it.
+  glm::dvec3 direction(0.0);
+  for (std::size_t i = 1; i < polyline.size() && direction == glm::dvec3(0.0); ++i)
+  {
+    direction = polyline[i] - polyline[i - 1];
+  }
   auto visible = [&](const glm::dvec3& p) {
     return !surface.hides(view, p, parameters) ||
       surface.nearTheOutline(view, p, direction, parameters);
@@ -515,7 +521,10 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
   {
     const glm::dvec3& a = polyline[i - 1];
     const glm::dvec3& b = polyline[i];
-    direction = b - a;
+    if (b != a)
+    {
+      direction = b - a;
+    }
     const double length = glm::length(b - a);
     // Probes at fractions k / probes of the segment; the last is b.
     const double wanted = parameters.SampleSpacing > 0.0 && std::isfinite(length)

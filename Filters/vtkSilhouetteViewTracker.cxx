@@ -50,14 +50,16 @@ vtkMTimeType ViewTracker::Update(
   camera->GetScreenBottomLeft(p + 13);
   p[16] = camera->GetLeftEye();
   std::copy(model, model + 16, v + 49);
-  // Bitwise, but for the view angle: a NaN in the view compares equal to
-  // itself.
-  const double angle = p[0];
-  p[0] = this->Last[32];
-  if (!this->Have || !SameViewAngle(angle, this->Last[32]) ||
-    std::memcmp(now.data(), this->Last.data(), sizeof(now)) != 0 || viewport != this->LastViewport)
+  // Bitwise (a NaN in the view compares equal to itself) on both sides of
+  // the view angle, which SameViewAngle compares.
+  constexpr std::size_t angle = 32;
+  const bool same = this->Have && viewport == this->LastViewport &&
+    SameViewAngle(now[angle], this->Last[angle]) &&
+    std::memcmp(now.data(), this->Last.data(), angle * sizeof(double)) == 0 &&
+    std::memcmp(now.data() + angle + 1, this->Last.data() + angle + 1,
+      (now.size() - angle - 1) * sizeof(double)) == 0;
+  if (!same)
   {
-    p[0] = angle;
     this->Last = now;
     this->LastViewport = viewport;
     this->Have = true;

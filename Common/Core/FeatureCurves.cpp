@@ -213,11 +213,11 @@ glm::dvec3 circleTangentAlong(const glm::dvec3& direction, const glm::dvec3& cho
 namespace
 {
 
-// The angle between consecutive edges a -> v -> b.
-double turnAt(const glm::dvec3& a, const glm::dvec3& v, const glm::dvec3& b)
+// The angle a polyline turns by from edge `in` to the next edge `out`.
+double turnBetween(const glm::dvec3& in, const glm::dvec3& out)
 {
-  const glm::dvec3 u0 = safeNormalize(v - a);
-  const glm::dvec3 u1 = safeNormalize(b - v);
+  const glm::dvec3 u0 = safeNormalize(in);
+  const glm::dvec3 u1 = safeNormalize(out);
   return std::atan2(glm::length(glm::cross(u0, u1)), glm::dot(u0, u1));
 }
 
@@ -227,9 +227,11 @@ double turnAt(const glm::dvec3& a, const glm::dvec3& v, const glm::dvec3& b)
 // arc: v turns by at most 3/4 of what the short edge's far end does (half
 // of it there; on a curve merely sampled unevenly v turns about as much,
 // alternating edges, or (1 + ratio) / 2 times as much, and eq. 1 is right).
+// w0 and w1 are v's incoming and outgoing edges (lengths l0 and l1), the
+// short one ending at shortEnd.
 double lineMeetsArcWeight(const std::vector<glm::dvec3>& points,
   const std::vector<std::size_t>& offsets, const std::vector<Id>& neighbours, std::size_t v,
-  std::size_t shortEnd, double l0, double l1)
+  std::size_t shortEnd, const glm::dvec3& w0, const glm::dvec3& w1, double l0, double l1)
 {
   const double ratio = std::max(l0, l1) / std::min(l0, l1);
   const double t =
@@ -241,10 +243,9 @@ double lineMeetsArcWeight(const std::vector<glm::dvec3>& points,
   const Id first = neighbours[offsets[shortEnd]];
   const std::size_t beyond = static_cast<std::size_t>(
     first == static_cast<Id>(v) ? neighbours[offsets[shortEnd] + 1] : first);
-  const std::size_t before = static_cast<std::size_t>(neighbours[offsets[v]]);
-  const std::size_t after = static_cast<std::size_t>(neighbours[offsets[v] + 1]);
-  const double turnHere = turnAt(points[before], points[v], points[after]);
-  const double turnThere = turnAt(points[v], points[shortEnd], points[beyond]);
+  const double turnHere = turnBetween(w0, w1);
+  const double turnThere =
+    turnBetween(points[shortEnd] - points[v], points[beyond] - points[shortEnd]);
   if (!(turnHere <= 0.75 * turnThere))
   {
     return 0.0;
@@ -310,7 +311,8 @@ FeatureCurves::FeatureCurves(const std::vector<glm::dvec3>& points, std::vector<
     // would bow: the long edge's own direction (LineMeetsArc).
     const std::size_t shortEnd =
       static_cast<std::size_t>(neighbours[offsets[v] + (l0 < l1 ? 0 : 1)]);
-    const double weight = lineMeetsArcWeight(points, offsets, neighbours, v, shortEnd, l0, l1);
+    const double weight =
+      lineMeetsArcWeight(points, offsets, neighbours, v, shortEnd, w0, w1, l0, l1);
     if (weight > 0.0)
     {
       const glm::dvec3 along = l0 > l1 ? w0 / l0 : w1 / l1;

@@ -5,12 +5,14 @@
 #include "CoreTestMeshes.h"
 #include "PreparedMesh.h"
 #include "SilhouetteSmoother.h"
+#include "SmoothingResultCheck.h"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <string>
 #include <thread>
 
 using namespace silsmooth;
@@ -25,18 +27,6 @@ ViewGeometry orbitView(int step)
   const double angle = 0.05 * step;
   return coretest::perspectiveFrom(
     glm::dvec3(4.0 * std::cos(angle), 4.0 * std::sin(angle), 1.3 + 0.02 * step));
-}
-
-void expectSameFrame(const SmoothingResult& a, const SmoothingResult& b, int step)
-{
-  ASSERT_EQ(a.RemeshedTriangles, b.RemeshedTriangles) << "view " << step;
-  ASSERT_EQ(a.NewPoints.size(), b.NewPoints.size()) << "view " << step;
-  for (std::size_t i = 0; i < a.NewPoints.size(); ++i)
-  {
-    ASSERT_EQ(a.NewPoints[i].Position, b.NewPoints[i].Position) << "view " << step;
-  }
-  EXPECT_EQ(a.Replacements, b.Replacements) << "view " << step;
-  EXPECT_EQ(a.MovedPoints, b.MovedPoints) << "view " << step;
 }
 
 } // namespace
@@ -63,8 +53,8 @@ TEST(SilhouetteTriangleHierarchy, BuiltInTheBackgroundAnswersAsTheScanDoes)
   int step = 0;
   for (; step < 2; ++step) // the second search starts the build
   {
-    expectSameFrame(smoothSilhouettes(*original, orbitView(step), scanning),
-      smoothSilhouettes(*original, orbitView(step), background), step);
+    coretest::expectSameSmoothing(smoothSilhouettes(*original, orbitView(step), scanning),
+      smoothSilhouettes(*original, orbitView(step), background), "view " + std::to_string(step));
   }
   original.reset();
 
@@ -73,8 +63,8 @@ TEST(SilhouetteTriangleHierarchy, BuiltInTheBackgroundAnswersAsTheScanDoes)
   while (answeredByTree < 5 && std::chrono::steady_clock::now() < deadline)
   {
     const bool ready = copy.silhouetteTreeReady(false);
-    expectSameFrame(smoothSilhouettes(copy, orbitView(step), scanning),
-      smoothSilhouettes(copy, orbitView(step), background), step);
+    coretest::expectSameSmoothing(smoothSilhouettes(copy, orbitView(step), scanning),
+      smoothSilhouettes(copy, orbitView(step), background), "view " + std::to_string(step));
     if (ready)
     {
       ++answeredByTree;

@@ -4,6 +4,7 @@
 #include "CoreTestMeshes.h"
 #include "SilhouetteSmoother.h"
 #include "SilhouetteTriangleHierarchy.h"
+#include "SmoothingResultCheck.h"
 #include "VisibilityCones.h"
 #include "VisibilityHierarchy.h"
 
@@ -512,21 +513,8 @@ TEST(VisibilityHierarchy, WholePassIdenticalWithEitherMethod)
       const SmoothingResult a = smoothSilhouettes(mesh, view, plain);
       for (const SmoothingParameters* other : { &hierarchical, &triangleTree })
       {
-        const SmoothingResult b = smoothSilhouettes(mesh, view, *other);
-        ASSERT_EQ(a.RemeshedTriangles, b.RemeshedTriangles) << "view " << v;
-        EXPECT_FALSE(a.RemeshedTriangles.empty());
-        ASSERT_EQ(a.NewPoints.size(), b.NewPoints.size());
-        for (std::size_t i = 0; i < a.NewPoints.size(); ++i)
-        {
-          EXPECT_EQ(a.NewPoints[i].Position, b.NewPoints[i].Position);
-          EXPECT_EQ(a.NewPoints[i].Normal, b.NewPoints[i].Normal);
-          EXPECT_EQ(a.NewPoints[i].Weights, b.NewPoints[i].Weights);
-        }
-        EXPECT_EQ(a.ReplacementOffsets, b.ReplacementOffsets);
-        EXPECT_EQ(a.Replacements, b.Replacements);
-        EXPECT_EQ(a.Polylines, b.Polylines);
-        EXPECT_EQ(a.ConcaveSegmentCount, b.ConcaveSegmentCount);
-        EXPECT_EQ(a.MovedPoints, b.MovedPoints);
+        coretest::expectSameSmoothing(
+          a, smoothSilhouettes(mesh, view, *other), "view " + std::to_string(v));
       }
     }
   }

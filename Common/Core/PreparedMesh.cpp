@@ -351,21 +351,60 @@ std::vector<double> vertexVisibility(
 
 const TriangleGrid& PreparedMesh::triangleGrid() const
 {
-  std::call_once(this->Grid->Once, [this] {
-    this->Grid->Grid = TriangleGrid(this->Points, this->Triangles);
-    this->Grid->Built = true;
+  LazyGrid& lazy = *this->Grid;
+  // Under the same flag as a background build's hand-over: whichever comes
+  // first writes the grid, and this call returns only once it is written.
+  std::call_once(lazy.Once, [&] {
+    lazy.Grid = TriangleGrid(this->Points, this->Triangles);
+    lazy.Built.store(true, std::memory_order_release);
   });
-  return this->Grid->Grid;
+  return lazy.Grid;
 }
 
-const TriangleGrid* PreparedMesh::foldGuardGridForFrame() const
+const TriangleGrid* PreparedMesh::foldGuardGridForFrame(IndexBuild build) const
 {
-  const int earlierFrames = this->Grid->Frames.fetch_add(1);
-  if (!this->Grid->Built && (earlierFrames == 0 || this->Grid->Outrun))
+  const std::shared_ptr<LazyGrid>& shared = this->Grid;
+  LazyGrid& lazy = *shared;
+  const int earlierFrames = lazy.Frames.fetch_add(1);
+  if (lazy.Built.load(std::memory_order_acquire))
+  {
+    return &lazy.Grid;
+  }
+  if (earlierFrames == 0 || lazy.Outrun)
   {
     return nullptr; // the first frame scans: maybe the only one
   }
-  return &this->triangleGrid();
+  if (build == IndexBuild::InCall || lazy.Deforming)
+  {
+    return &this->triangleGrid();
+  }
+  if (!lazy.BackgroundStarted.exchange(true))
+  {
+    try
+    {
+      // Detached, with copies of the arrays and a share of the lazy state,
+      // as the triangle tree's build (findSilhouetteTriangles).
+      std::thread([shared, points = this->Points, triangles = this->Triangles] {
+        try
+        {
+          TriangleGrid grid(points, triangles);
+          std::call_once(shared->Once, [&] {
+            shared->Grid = std::move(grid);
+            shared->Built.store(true, std::memory_order_release);
+          });
+        }
+        catch (...)
+        {
+          // No grid: the frames keep scanning.
+        }
+      }).detach();
+    }
+    catch (const std::exception&)
+    {
+      return &this->triangleGrid(); // no thread (or no memory for the copies)
+    }
+  }
+  return lazy.Built.load(std::memory_order_acquire) ? &lazy.Grid : nullptr;
 }
 
 bool PreparedMesh::adoptTriangleGrid(const PreparedMesh& earlier)
@@ -380,7 +419,7 @@ bool PreparedMesh::adoptTriangleGridOfMoved(const PreparedMesh& earlier)
     return false;
   }
   const LazyGrid& before = *earlier.Grid;
-  const bool built = before.Built && !before.Grid.empty();
+  const bool built = before.Built.load(std::memory_order_acquire) && !before.Grid.empty();
   // The largest coordinate change of any point (NaN for a non-finite one),
   // which only a grid to adopt asks for.
   double step = 0.0;
@@ -402,13 +441,14 @@ bool PreparedMesh::adoptTriangleGridOfMoved(const PreparedMesh& earlier)
   // on; a grid that this one move outran is not built again (scanning
   // costs less), one that the moves outran only added up is.
   this->Grid = std::make_shared<LazyGrid>(); // never a copy's shared state
+  this->Grid->Deforming = true;
   this->Grid->Frames = before.Frames.load();
   this->Grid->Outrun = built ? !(step <= half) : before.Outrun.load();
   return false;
 }
 
 bool PreparedMesh::findSilhouetteTriangles(const ViewGeometry& view, const ParallelFor& parallelFor,
-  std::vector<Id>& out, TreeBuild build) const
+  std::vector<Id>& out, IndexBuild build) const
 {
   const std::shared_ptr<LazyTriangleHierarchy>& shared =
     this->TriangleHierarchies[view.Parallel ? 0 : 1];
@@ -419,7 +459,7 @@ bool PreparedMesh::findSilhouetteTriangles(const ViewGeometry& view, const Paral
   }
   const bool perspective = !view.Parallel;
   std::call_once(lazy.Once, [&] {
-    if (build == TreeBuild::Background)
+    if (build == IndexBuild::Background)
     {
       try
       {

@@ -170,18 +170,35 @@ public:
   const TriangleGrid& triangleGrid() const;
   double triangleGridSlack() const { return this->GridSlack; }
   /// Whether the grid is there (built, or adopted).
-  bool hasTriangleGrid() const { return this->Grid->Built; }
+  bool hasTriangleGrid() const { return this->Grid->Built.load(std::memory_order_acquire); }
+  /// How the mesh's whole-mesh indexes are built when a second frame asks
+  /// for them: the silhouette triangle tree (findSilhouetteTriangles) and
+  /// the fold guard's grid (foldGuardGridForFrame).
+  enum class IndexBuild
+  {
+    /// On a thread of its own, from copies of the mesh's arrays: the calls
+    /// answer as without the index (the caller scans) until it is done, so
+    /// no frame waits for it (about 0.5 s for the tree and 0.15 s for the
+    /// grid at 1.3M triangles). The answers are the same either way; only
+    /// the time of a frame differs.
+    Background,
+    /// In the call itself, which then uses it (tests that must see the
+    /// index answer).
+    InCall
+  };
   /// The grid for a frame's fold checks (FoldGuardMesh::Grid): call once
   /// per frame that checks folds. Null on the mesh's first such frame,
   /// unless the grid is there already (built, or adopted): the fold guard
   /// then scans the triangles, which costs less than building the grid, so a
-  /// mesh smoothed once (a filter's run) never builds it. From the second
-  /// frame on, the grid (built then). The frames of a deforming mesh count
-  /// as one mesh's (adoptTriangleGrid carries the count): its second frame
-  /// builds the grid, later ones adopt it while the points move little; when
-  /// the moves added up outrun it, the next frame builds it anew, and when a
-  /// single move outruns it, the frames scan from then on.
-  const TriangleGrid* foldGuardGridForFrame() const;
+  /// mesh smoothed once (a filter's run) never builds it. The second frame
+  /// builds the grid as `build` says; with IndexBuild::Background, frames
+  /// scan until it is done. The frames of a deforming mesh count as one
+  /// mesh's (adoptTriangleGrid carries the count) and build in the call,
+  /// because the next frames adopt the grid: its second frame builds the
+  /// grid, later ones adopt it while the points move little; when the moves
+  /// added up outrun it, the next frame builds it anew, and when a single
+  /// move outruns it, the frames scan from then on.
+  const TriangleGrid* foldGuardGridForFrame(IndexBuild build = IndexBuild::Background) const;
   /// Takes `earlier`'s grid, if it has been built, when this mesh has the
   /// same triangles over moved points (a deforming mesh) and the points
   /// moved little: the slack (earlier's plus the largest coordinate change
@@ -191,18 +208,6 @@ public:
   /// the count of frames and whether a single move outran a grid
   /// (foldGuardGridForFrame).
   bool adoptTriangleGrid(const PreparedMesh& earlier);
-  /// How findSilhouetteTriangles builds its tree on the second call.
-  enum class TreeBuild
-  {
-    /// On a thread of its own, from copies of the mesh's arrays: the calls
-    /// answer false (the caller scans) until it is done, so no frame waits
-    /// for it (about 0.5 s at 1.3M triangles). The answers are the same
-    /// either way; only the time of a frame differs.
-    Background,
-    /// In the second call itself, which then uses it (tests that must see
-    /// the tree answer).
-    InCall
-  };
   /// The silhouette triangles of `view` from the triangle hierarchy of its
   /// projection (SilhouetteTriangleHierarchy.h), built on the second call
   /// for that projection (thread-safe; copies of the mesh share it). False,
@@ -210,7 +215,7 @@ public:
   /// in the background, and when the tree cannot answer: the caller then
   /// scans the triangles.
   bool findSilhouetteTriangles(const ViewGeometry& view, const ParallelFor& parallelFor,
-    std::vector<Id>& out, TreeBuild build = TreeBuild::Background) const;
+    std::vector<Id>& out, IndexBuild build = IndexBuild::Background) const;
   /// Whether the tree of that projection (parallel or perspective) is built
   /// and answers findSilhouetteTriangles (for tests and benchmarks).
   bool silhouetteTreeReady(bool parallel) const;
@@ -255,9 +260,15 @@ private:
   struct LazyGrid
   {
     std::once_flag Once;
-    std::atomic<bool> Built{ false };
     std::atomic<int> Frames{ 0 };      // foldGuardGridForFrame's calls
     std::atomic<bool> Outrun{ false }; // a single move outran an earlier grid
+    /// A deforming mesh's grid (not adopted from the earlier frame's): built
+    /// in the call, for the next frames to adopt.
+    bool Deforming = false;
+    std::atomic<bool> BackgroundStarted{ false };
+    /// Grid is complete and may be read (set, with release, after it is
+    /// written under Once).
+    std::atomic<bool> Built{ false };
     TriangleGrid Grid;
   };
   std::shared_ptr<LazyGrid> Grid = std::make_shared<LazyGrid>();

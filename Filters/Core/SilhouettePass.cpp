@@ -166,7 +166,9 @@ FoldFindings SilhouettePass::findFrameFolds(
 {
   if (!this->FoldGridAsked)
   {
-    this->FoldGrid = this->Mesh.foldGuardGridForFrame();
+    this->FoldGrid = this->Mesh.foldGuardGridForFrame(this->Parameters.IndexesInBackground
+        ? PreparedMesh::IndexBuild::Background
+        : PreparedMesh::IndexBuild::InCall);
     this->FoldGridAsked = true;
   }
   std::vector<glm::dvec3> positions;

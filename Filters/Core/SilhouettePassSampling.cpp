@@ -25,9 +25,9 @@ namespace detail
 
 void SilhouettePass::findSilhouetteTriangles()
 {
-  const PreparedMesh::TreeBuild build = this->Parameters.TriangleHierarchyInBackground
-    ? PreparedMesh::TreeBuild::Background
-    : PreparedMesh::TreeBuild::InCall;
+  const PreparedMesh::IndexBuild build = this->Parameters.IndexesInBackground
+    ? PreparedMesh::IndexBuild::Background
+    : PreparedMesh::IndexBuild::InCall;
   if (!(this->Parameters.SilhouetteTriangleHierarchy &&
         this->Mesh.findSilhouetteTriangles(this->View, this->For, this->Silhouette, build)))
   {

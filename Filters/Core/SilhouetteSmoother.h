@@ -53,10 +53,12 @@ struct SmoothingParameters
   /// (core.SilhouetteTriangleHierarchy compares them); Visibility then
   /// matters only for the scans.
   bool SilhouetteTriangleHierarchy = true;
-  /// Build that tree on a thread of its own, scanning until it is done, so
-  /// that no frame waits for it (PreparedMesh::TreeBuild). False builds it in
-  /// the second search, which then uses it (for tests of the tree's answers).
-  bool TriangleHierarchyInBackground = true;
+  /// Build that tree, and the fold guard's grid of triangle boxes, on threads
+  /// of their own, scanning until each is done, so that no frame waits for
+  /// them (PreparedMesh::IndexBuild; a deforming mesh's grid is built in the
+  /// frame, for the next frames to adopt). False builds them in the second
+  /// frame, which then uses them (for tests of their answers).
+  bool IndexesInBackground = true;
   /// Re-mesh folding triangles again, more conservatively, until none folds
   /// (FoldGuard.h): a silhouette triangle whose new triangles turn over or
   /// cut through another output triangle is re-meshed along the chord

@@ -10,10 +10,12 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <functional>
 #include <iterator>
 #include <map>
+#include <memory>
 #include <random>
 #include <thread>
 #include <utility>
@@ -385,11 +387,11 @@ namespace
 // A coarse sphere whose normals are turned by up to `degrees` at random
 // (fixed seed): what a coarse real mesh's estimated normals look like, and
 // enough to make the re-meshing fold from some views.
-PreparedMesh noisySphere(double degrees)
+PreparedMesh noisySphere(double degrees, int rings = 8, int sectors = 12)
 {
   std::vector<glm::dvec3> points;
   std::vector<Triangle> triangles;
-  coretest::unitSphere(8, 12, points, triangles);
+  coretest::unitSphere(rings, sectors, points, triangles);
   std::vector<glm::dvec3> normals = points;
   unsigned state = 12345u;
   auto next = [&state] {
@@ -510,6 +512,53 @@ TEST(SilhouetteSmoother, FoldGuardLeavesNoFoldAndIncrementalChecksChangeNothing)
   EXPECT_GT(unguardedFolds, 0u);
   EXPECT_GT(fallbacks, 0u);
   EXPECT_GT(extraRounds, 40u) << "fallbacks " << fallbacks << ", folds " << unguardedFolds;
+}
+
+// The fold guard's grid built on a thread of its own (the default,
+// SmoothingParameters::IndexesInBackground) changes no frame: the frames scan
+// until it is done and use it afterwards, and each equals the frame of a mesh
+// that built its grid in the second frame. The mesh that started the build
+// is dropped during it; its copy shares the grid.
+TEST(SilhouetteSmoother, FoldGuardGridBuiltInTheBackgroundChangesNoFrame)
+{
+  // About 3,500 triangles, with folds in the frames. (That frames before the
+  // grid is built do not use it: core.PreparedMeshGrid.)
+  auto original = std::make_unique<PreparedMesh>(noisySphere(50.0, 30, 60));
+  const PreparedMesh copy = *original;
+  const PreparedMesh reference = noisySphere(50.0, 30, 60);
+  SmoothingParameters background;
+  ASSERT_TRUE(background.IndexesInBackground);
+  SmoothingParameters inCall;
+  inCall.IndexesInBackground = false;
+  auto view = [](int v) {
+    const double a = 0.7 * v;
+    const double z = -0.9 + 0.045 * (v % 40);
+    return coretest::perspectiveFrom(
+      4.0 * glm::dvec3(std::sqrt(1 - z * z) * std::cos(a), std::sqrt(1 - z * z) * std::sin(a), z));
+  };
+  std::size_t fallbacks = 0;
+  auto compare = [&](const PreparedMesh& mesh, int v) {
+    const SmoothingResult b = smoothSilhouettes(mesh, view(v), background);
+    const SmoothingResult c = smoothSilhouettes(reference, view(v), inCall);
+    EXPECT_TRUE(sameResult(b, c)) << "view " << v;
+    fallbacks += c.ChordFallbackTriangles + c.StraightSilhouettePoints + c.PinnedPoints;
+  };
+  int v = 0;
+  for (; v < 2; ++v) // the second frame starts the build
+  {
+    compare(*original, v);
+  }
+  EXPECT_TRUE(reference.hasTriangleGrid()) << "built in the second frame";
+  original.reset();
+  int withGrid = 0;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (withGrid < 4 && std::chrono::steady_clock::now() < deadline)
+  {
+    withGrid += copy.hasTriangleGrid() ? 1 : 0;
+    compare(copy, v++);
+  }
+  EXPECT_EQ(withGrid, 4) << "the grid was not built within a minute";
+  EXPECT_GT(fallbacks, 0u) << "the views must make the guard fall back";
 }
 
 TEST(SilhouetteSmoother, ThreadsGiveTheSerialResult)

@@ -1,14 +1,16 @@
-// The silhouette triangle hierarchy built on a thread of its own
-// (PreparedMesh::TreeBuild::Background): until it is done the passes scan,
-// afterwards the tree answers, and either way a frame's output is the
-// scan's. A mesh may go while its tree is still being built.
+// The silhouette triangle hierarchy and the fold guard's grid built on
+// threads of their own (PreparedMesh::IndexBuild::Background): until each is
+// done the passes scan, afterwards it answers, and either way a frame's
+// output is the scan's. A mesh may go while they are still being built.
 #include "CoreTestMeshes.h"
 #include "PreparedMesh.h"
 #include "SilhouetteSmoother.h"
 #include "SmoothingResultCheck.h"
+#include "TriangleGrid.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -48,7 +50,7 @@ TEST(SilhouetteTriangleHierarchy, BuiltInTheBackgroundAnswersAsTheScanDoes)
   SmoothingParameters background; // the default: the tree built on a thread
   SmoothingParameters scanning;
   scanning.SilhouetteTriangleHierarchy = false;
-  ASSERT_TRUE(background.TriangleHierarchyInBackground);
+  ASSERT_TRUE(background.IndexesInBackground);
 
   int step = 0;
   for (; step < 2; ++step) // the second search starts the build
@@ -62,7 +64,7 @@ TEST(SilhouetteTriangleHierarchy, BuiltInTheBackgroundAnswersAsTheScanDoes)
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (answeredByTree < 5 && std::chrono::steady_clock::now() < deadline)
   {
-    const bool ready = copy.silhouetteTreeReady(false);
+    const bool ready = copy.silhouetteTreeReady(false) && copy.hasTriangleGrid();
     coretest::expectSameSmoothing(smoothSilhouettes(copy, orbitView(step), scanning),
       smoothSilhouettes(copy, orbitView(step), background), "view " + std::to_string(step));
     if (ready)
@@ -75,11 +77,11 @@ TEST(SilhouetteTriangleHierarchy, BuiltInTheBackgroundAnswersAsTheScanDoes)
     }
     ++step;
   }
-  EXPECT_EQ(answeredByTree, 5) << "the tree was not ready within a minute";
+  EXPECT_EQ(answeredByTree, 5) << "the tree or the grid was not ready within a minute";
   EXPECT_FALSE(copy.silhouetteTreeReady(true)) << "no parallel view was searched";
 }
 
-// Built in the call (TreeBuild::InCall), the tree answers from the second
+// Built in the call (IndexBuild::InCall), the tree answers from the second
 // search on, as the other tree tests need.
 TEST(SilhouetteTriangleHierarchy, BuiltInTheCallIsReadyAfterTheSecondSearch)
 {
@@ -88,9 +90,61 @@ TEST(SilhouetteTriangleHierarchy, BuiltInTheCallIsReadyAfterTheSecondSearch)
   coretest::unitSphere(20, 40, points, triangles);
   const PreparedMesh mesh(points, triangles, points);
   SmoothingParameters inCall;
-  inCall.TriangleHierarchyInBackground = false;
+  inCall.IndexesInBackground = false;
   smoothSilhouettes(mesh, orbitView(0), inCall);
   EXPECT_FALSE(mesh.silhouetteTreeReady(false));
   smoothSilhouettes(mesh, orbitView(1), inCall);
   EXPECT_TRUE(mesh.silhouetteTreeReady(false));
+}
+
+// The fold guard's grid, asked for by a mesh's second frame, is built on a
+// thread: that frame and the next ones get no grid (they scan) until it is
+// built, then the grid, which answers as one built in the call. A deforming
+// mesh's frames build it in the call, for the next frames to adopt.
+TEST(PreparedMeshGrid, FramesScanUntilTheBackgroundGridIsBuilt)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::unitSphere(150, 300, points, triangles); // about 90,000 triangles
+  const PreparedMesh mesh(points, triangles, points);
+  EXPECT_EQ(mesh.foldGuardGridForFrame(), nullptr) << "the first frame scans";
+  // Built in a few milliseconds at the least: a grid handed out before then
+  // would be read while it is written.
+  const TriangleGrid* second = mesh.foldGuardGridForFrame();
+  const bool builtByThen = mesh.hasTriangleGrid();
+  EXPECT_TRUE(second == nullptr || builtByThen);
+  const TriangleGrid* grid = second;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (grid == nullptr && std::chrono::steady_clock::now() < deadline)
+  {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    grid = mesh.foldGuardGridForFrame();
+  }
+  ASSERT_NE(grid, nullptr) << "the grid was not built within a minute";
+  EXPECT_TRUE(mesh.hasTriangleGrid());
+  EXPECT_EQ(grid, &mesh.triangleGrid());
+  const TriangleGrid inCall(points, triangles);
+  std::vector<Id> a;
+  std::vector<Id> b;
+  for (const glm::dvec3& centre : { glm::dvec3(1, 0, 0), glm::dvec3(0, -0.6, 0.8) })
+  {
+    grid->query(centre - 0.05, centre + 0.05, a);
+    inCall.query(centre - 0.05, centre + 0.05, b);
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    EXPECT_FALSE(a.empty());
+    EXPECT_EQ(a, b);
+  }
+
+  PreparedMesh before(points, triangles, points);
+  EXPECT_EQ(before.foldGuardGridForFrame(), nullptr);
+  std::vector<glm::dvec3> moved = points;
+  for (glm::dvec3& p : moved)
+  {
+    p *= 1.001;
+  }
+  PreparedMesh after(moved, triangles, moved);
+  EXPECT_FALSE(after.adoptTriangleGrid(before)) << "no grid to adopt yet";
+  EXPECT_NE(after.foldGuardGridForFrame(), nullptr) << "a deforming mesh's second frame";
+  EXPECT_TRUE(after.hasTriangleGrid());
 }

@@ -495,7 +495,7 @@ TEST(VisibilityHierarchy, WholePassIdenticalWithEitherMethod)
       hierarchical.Visibility = VisibilityMethod::Hierarchical;
       SmoothingParameters triangleTree = plain;
       triangleTree.SilhouetteTriangleHierarchy = true;    // after this mesh's first search
-      triangleTree.TriangleHierarchyInBackground = false; // the tree answers from the second
+      triangleTree.IndexesInBackground = false; // the tree answers from the second
       // Placeholders next to silhouette triangles: a pass reading G as values
       // would differ.
       const std::vector<double> gPlain = vertexVisibility(mesh, view, VisibilityMethod::PerVertex);

@@ -10,7 +10,9 @@
 // time of the smoothing's own work before drawing: the mapper's
 // GetLastPrepareSeconds, and the filter's Update. The per-frame upload of
 // the filter's output is part of its frame, not of this column. Then the
-// slowest frame of each (a frame that waited for a one-time build).
+// slowest frame of each (a frame that waited for a one-time build), and the
+// mapper's first four frames with their smoothing, where the whole-mesh
+// indexes' builds start (on threads of their own).
 //
 // Then a deforming mesh (new points every frame, the same cells, as a time
 // series gives), with the camera still: the plain mapper; the mapper, which
@@ -225,6 +227,12 @@ void MeasureOrbit(vtkPolyData* mesh, const Options& options)
     *std::max_element(plain.FrameMs.begin(), plain.FrameMs.end()),
     *std::max_element(mapper.FrameMs.begin(), mapper.FrameMs.end()),
     *std::max_element(filtered.FrameMs.begin(), filtered.FrameMs.end()));
+  std::printf("%10s  mapper's first frames (smoothing):", "");
+  for (std::size_t f = 0; f < mapper.FrameMs.size() && f < 4; ++f)
+  {
+    std::printf(" %.1f (%.1f)", mapper.FrameMs[f], mapper.PrepareMs[f]);
+  }
+  std::printf("\n");
   std::fflush(stdout);
 }
 

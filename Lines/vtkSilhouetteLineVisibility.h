@@ -12,8 +12,9 @@
  *
  * A point of a line is hidden when the ray from it towards the eye crosses
  * the surface farther than Tolerance from it: lines on the surface
- * (silhouettes graze it) are not hidden by the triangles they lie on, and a
- * silhouette within OutlinePixels of the surface's outline is drawn.
+ * (silhouettes graze it) are not hidden by the triangles they lie on, and,
+ * with OutlinePixels, a silhouette is drawn where it is the surface's
+ * outline.
  * Each line is split where its visibility changes, the change located by
  * bisection along the segment; the output holds every input vertex, in
  * order, plus a point at each change, shared by the pieces on its two sides.
@@ -97,7 +98,13 @@ public:
    * only within four tolerances of the point, is discounted so: a line
    * passing behind another part keeps its exact change points. Where a
    * contour ends at a cusp (it turns back behind its own sheet), its end
-   * moves by up to about twice this distance along the line. Default 0
+   * moves by up to about twice this distance along the line. The other way
+   * round, a silhouette point visible only because the triangles in front
+   * of it, within the tolerance, are its own sheet's is hidden when the
+   * points 1.5 times this distance beside it on both sides are hidden too:
+   * it lies inside the surface's image (the far silhouette of a part thinner
+   * than the tolerance, such as a spider's leg), unless it dips inside for
+   * less than 8 times this distance between visible pieces. Default 0
    * (off: exact visibility); `silhouette render` uses 1 pixel. Crease and
    * border lines (LineKind 1 and 2) do not use it. Negative or NaN values
    * are refused. A positive value makes the output depend on the

@@ -339,18 +339,14 @@ double OcclusionMesh::toleranceAt(
     rule.Tolerance, std::max(rule.LocalToleranceFactor * longest, 2.0 * rule.Contact));
 }
 
-bool OcclusionMesh::nearTheOutline(const ViewGeometry& view, const glm::dvec3& point,
-  const glm::dvec3& direction, const LineVisibilityParameters& rule) const
+bool OcclusionMesh::besideInTheImage(const ViewGeometry& view, const glm::dvec3& point,
+  const glm::dvec3& direction, double pixels, glm::dvec3& offset) const
 {
-  if (!(rule.OutlinePixels > 0.0))
-  {
-    return false;
-  }
   const glm::dvec3 toward = view.towardViewerFrom(point);
   glm::dvec3 across = glm::cross(toward, direction);
   const double acrossLength = glm::length(across);
   const double distance = glm::length(toward);
-  if (!(acrossLength > 0.0) || !std::isfinite(acrossLength) || !(distance > 0.0))
+  if (!(pixels > 0.0) || !(acrossLength > 0.0) || !std::isfinite(acrossLength) || !(distance > 0.0))
   {
     return false;
   }
@@ -369,9 +365,17 @@ bool OcclusionMesh::nearTheOutline(const ViewGeometry& view, const glm::dvec3& p
   {
     return false;
   }
-  const double offset = rule.OutlinePixels * step / pixelsPerStep;
-  if (this->hides(view, point + offset * across, rule.Contact) &&
-    this->hides(view, point - offset * across, rule.Contact))
+  offset = (pixels * step / pixelsPerStep) * across;
+  return true;
+}
+
+bool OcclusionMesh::nearTheOutline(const ViewGeometry& view, const glm::dvec3& point,
+  const glm::dvec3& direction, const LineVisibilityParameters& rule) const
+{
+  glm::dvec3 offset;
+  if (!this->besideInTheImage(view, point, direction, rule.OutlinePixels, offset) ||
+    (this->hides(view, point + offset, rule.Contact) &&
+      this->hides(view, point - offset, rule.Contact)))
   {
     return false;
   }
@@ -393,7 +397,23 @@ bool OcclusionMesh::nearTheOutline(const ViewGeometry& view, const glm::dvec3& p
     [&](Id t, double) { return !std::binary_search(sheet.begin(), sheet.end(), t); });
 }
 
+bool OcclusionMesh::insideTheOutline(const ViewGeometry& view, const glm::dvec3& point,
+  const glm::dvec3& direction, const LineVisibilityParameters& rule) const
+{
+  glm::dvec3 offset;
+  return this->besideInTheImage(
+           view, point, direction, InsideOutlineFactor * rule.OutlinePixels, offset) &&
+    this->hides(view, point + offset, rule.Contact) &&
+    this->hides(view, point - offset, rule.Contact);
+}
+
 bool OcclusionMesh::hides(
+  const ViewGeometry& view, const glm::dvec3& point, const LineVisibilityParameters& rule) const
+{
+  return this->occlusion(view, point, rule) == Occlusion::Hidden;
+}
+
+OcclusionMesh::Occlusion OcclusionMesh::occlusion(
   const ViewGeometry& view, const glm::dvec3& point, const LineVisibilityParameters& rule) const
 {
   // The triangles the point lies on: they cap its tolerance and seed its
@@ -405,11 +425,11 @@ bool OcclusionMesh::hides(
   // A hit beyond the tolerance hides the point whatever the triangle.
   if (this->hides(view, point, tolerance))
   {
-    return true;
+    return Occlusion::Hidden;
   }
   if (!onSurfaceRule || !(rule.Contact < tolerance))
   {
-    return false;
+    return Occlusion::Clear;
   }
   // The nearer hits; the sheet is worked out only when there are some.
   std::vector<Id> near;
@@ -419,15 +439,17 @@ bool OcclusionMesh::hides(
   });
   if (near.empty())
   {
-    return false;
+    return Occlusion::Clear;
   }
   const std::vector<Id> sheet = this->localSheet(point, std::move(under), tolerance);
   if (sheet.empty())
   {
-    return false; // not on the surface: the plain rule's answer
+    return Occlusion::Clear; // not on the surface: the plain rule's answer
   }
   return std::any_of(near.begin(), near.end(),
-    [&](Id triangle) { return !std::binary_search(sheet.begin(), sheet.end(), triangle); });
+           [&](Id triangle) { return !std::binary_search(sheet.begin(), sheet.end(), triangle); })
+    ? Occlusion::Hidden
+    : Occlusion::BehindItsOwnSheet;
 }
 
 namespace
@@ -450,7 +472,94 @@ void appendPiece(LinePiece& piece, const LinePiece& next)
   piece.Along.insert(piece.Along.end(), next.Along.begin() + 1, next.Along.end());
 }
 
+// The length of the piece's image in pixels, or infinity when a point has
+// no image.
+double pixelLength(const LinePiece& piece, const ViewGeometry& view)
+{
+  double length = 0.0;
+  glm::dvec2 last;
+  for (std::size_t k = 0; k < piece.Points.size(); ++k)
+  {
+    glm::dvec2 at;
+    if (!view.toPixels(piece.Points[k], at))
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+    length += k > 0 ? glm::length(at - last) : 0.0;
+    last = at;
+  }
+  return length;
+}
+
 } // namespace
+
+std::vector<LinePiece> OcclusionMesh::closeShortInsideGaps(std::vector<LinePiece> pieces,
+  const ViewGeometry& view, const LineVisibilityParameters& rule) const
+{
+  const double longest = InsideGapOutlines * rule.OutlinePixels;
+  if (!(longest > 0.0) || pieces.size() < 3)
+  {
+    return pieces;
+  }
+  // Hidden only by insideTheOutline: no point of the piece, and no middle of
+  // its segments, is hidden by the ray rule.
+  auto onlyInside = [&](const LinePiece& piece) {
+    for (std::size_t k = 0; k + 1 < piece.Points.size(); ++k)
+    {
+      const glm::dvec3 middle = 0.5 * (piece.Points[k] + piece.Points[k + 1]);
+      if ((k > 0 && this->occlusion(view, piece.Points[k], rule) == Occlusion::Hidden) ||
+        this->occlusion(view, middle, rule) == Occlusion::Hidden)
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  std::vector<LinePiece> closed;
+  std::vector<unsigned char> joined; // per closed piece: a gap was closed in it
+  closed.push_back(std::move(pieces[0]));
+  joined.push_back(0);
+  for (std::size_t i = 1; i < pieces.size(); ++i)
+  {
+    LinePiece& piece = pieces[i];
+    const bool gap = !piece.Visible && i + 1 < pieces.size() && closed.back().Visible &&
+      pixelLength(piece, view) < longest && onlyInside(piece);
+    if (gap || piece.Visible == closed.back().Visible)
+    {
+      appendPiece(closed.back(), piece);
+      joined.back() = 1;
+    }
+    else
+    {
+      closed.push_back(std::move(piece));
+      joined.push_back(0);
+    }
+  }
+  // A closed gap leaves the line as if it had not been split there: the
+  // change points inside the joined piece go (its ends stay).
+  for (std::size_t i = 0; i < closed.size(); ++i)
+  {
+    LinePiece& piece = closed[i];
+    std::size_t kept = 1;
+    for (std::size_t k = 1; joined[i] && k < piece.Points.size(); ++k)
+    {
+      const bool inside = k + 1 < piece.Points.size();
+      if (inside && piece.Along[k] != std::floor(piece.Along[k]))
+      {
+        continue;
+      }
+      piece.Points[kept] = piece.Points[k];
+      piece.Along[kept] = piece.Along[k];
+      ++kept;
+    }
+    if (joined[i])
+    {
+      piece.Points.resize(kept);
+      piece.Along.resize(kept);
+    }
+  }
+  return closed;
+}
 
 std::vector<LinePiece> mergeShortPieces(std::vector<LinePiece> pieces, double minimumLength)
 {
@@ -510,8 +619,15 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
     direction = polyline[i] - polyline[i - 1];
   }
   auto visible = [&](const glm::dvec3& p) {
-    return !surface.hides(view, p, parameters) ||
-      surface.nearTheOutline(view, p, direction, parameters);
+    switch (surface.occlusion(view, p, parameters))
+    {
+      case OcclusionMesh::Occlusion::Hidden:
+        return surface.nearTheOutline(view, p, direction, parameters);
+      case OcclusionMesh::Occlusion::BehindItsOwnSheet:
+        return !surface.insideTheOutline(view, p, direction, parameters);
+      default:
+        return true;
+    }
   };
   LinePiece current;
   current.Visible = visible(polyline.front());
@@ -563,6 +679,7 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
     current.Along.push_back(static_cast<double>(i));
   }
   pieces.push_back(std::move(current));
+  pieces = surface.closeShortInsideGaps(std::move(pieces), view, parameters);
   return mergeShortPieces(std::move(pieces), parameters.MinimumPieceLength);
 }
 

@@ -78,14 +78,28 @@ struct LineVisibilityParameters
   /// its way to the viewer: the surface's outline passes within that
   /// distance. A smoothed surface's flat triangles can stand a pixel or two
   /// beyond its silhouette curve, and hide it where it is the outline
-  /// (docs/line-drawings.md). Needs the view's projection and viewport
-  /// (ViewGeometry::toPixels); 0 turns it off.
+  /// (docs/line-drawings.md). The other way round, a point visible only
+  /// because its own sheet is exempt is hidden when the points 1.5 times
+  /// that many pixels beside it on both sides are hidden (insideTheOutline: the far
+  /// silhouette of a thin part). Needs the view's projection and viewport
+  /// (ViewGeometry::toPixels); 0 turns both off. Meant for silhouettes:
+  /// a crease in a valley has its faces in front of it on both sides.
   double OutlinePixels = 0.0;
 
   /// Tolerance: the mesh's mean edge length; Precision: 1e-6 of its bounding
   /// box's diagonal; SampleSpacing: 1/400 of it; Contact: 1e-5 of it.
   static LineVisibilityParameters forMesh(
     const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles);
+};
+
+struct LinePiece
+{
+  std::vector<glm::dvec3> Points;
+  /// Where each point is along the input polyline: vertex i at exactly i, a
+  /// change point between vertices i and i + 1 at i + its fraction of the
+  /// segment (for interpolating the vertices' attributes).
+  std::vector<double> Along;
+  bool Visible = true;
 };
 
 /// A surface that hides lines: its triangles and a grid over them, built once.
@@ -101,6 +115,19 @@ public:
   bool hides(
     const ViewGeometry& view, const glm::dvec3& point, const LineVisibilityParameters& rule) const;
 
+  enum class Occlusion
+  {
+    /// No triangle meets the ray farther than Contact.
+    Clear,
+    /// Only triangles of the point's local sheet, within its tolerance:
+    /// visible by the header's rule.
+    BehindItsOwnSheet,
+    Hidden
+  };
+  /// The header's rule, telling apart the two ways a point is visible.
+  Occlusion occlusion(
+    const ViewGeometry& view, const glm::dvec3& point, const LineVisibilityParameters& rule) const;
+
   /// The plain rule alone: whether a triangle farther than `tolerance` from
   /// `point` along its ray hides it.
   bool hides(const ViewGeometry& view, const glm::dvec3& point, double tolerance) const;
@@ -113,6 +140,35 @@ public:
   bool nearTheOutline(const ViewGeometry& view, const glm::dvec3& point,
     const glm::dvec3& direction, const LineVisibilityParameters& rule) const;
 
+  /// OutlinePixels' rule for a point visible only by its sheet's exemption
+  /// (Occlusion::BehindItsOwnSheet), on a line running along `direction`:
+  /// whether points InsideOutlineFactor times that many pixels to both sides
+  /// of it, across the line in the image, are hidden (by hits farther than
+  /// Contact), so that the point lies inside the surface's image and is not
+  /// its outline. A silhouette's
+  /// own sheet turns away from the eye on one side of it, so the point
+  /// beside it on that side is clear; the far silhouette of a part thinner
+  /// than the tolerance (a spider's leg) has the near side in front of it on
+  /// both.
+  bool insideTheOutline(const ViewGeometry& view, const glm::dvec3& point,
+    const glm::dvec3& direction, const LineVisibilityParameters& rule) const;
+
+  /// How far inside the surface's image (in OutlinePixels) a silhouette its
+  /// own sheet exempts may lie and still be drawn. 1.5 measured best on real
+  /// meshes (docs/line-drawings.md): 1 lost outline where the smoothed curve
+  /// runs a little inside a coarse thin part, 2 and 3 kept more strays.
+  static constexpr double InsideOutlineFactor = 1.5;
+
+  /// Hidden pieces shorter than this many OutlinePixels in the image, between
+  /// two visible pieces, that only insideTheOutline hides are drawn: where
+  /// the smoothed curve dips a little inside a coarse part's outline for a
+  /// few pixels (the bunny's ear tip), leaving it out opens the outline.
+  static constexpr double InsideGapOutlines = 8.0;
+  /// splitByVisibility's last step before mergeShortPieces: joins such gaps
+  /// with the pieces on both sides.
+  std::vector<LinePiece> closeShortInsideGaps(std::vector<LinePiece> pieces,
+    const ViewGeometry& view, const LineVisibilityParameters& rule) const;
+
   /// How far (in Tolerances) the surface may stand beyond a silhouette for
   /// OutlinePixels' rule: the Wuson's smoothed back stood 1 to 2.6 beyond.
   static constexpr double OutlineSheetTolerances = 4.0;
@@ -124,6 +180,10 @@ private:
   template<typename Counts>
   bool anyHit(
     const ViewGeometry& view, const glm::dvec3& point, double from, double to, Counts counts) const;
+  /// The offset, in model units, of the point `pixels` beside `point` across
+  /// the line along `direction` in the image; false when there is none.
+  bool besideInTheImage(const ViewGeometry& view, const glm::dvec3& point,
+    const glm::dvec3& direction, double pixels, glm::dvec3& offset) const;
   /// The triangles within `contact` of the point: the ones it lies on.
   std::vector<Id> trianglesUnder(const glm::dvec3& point, double contact) const;
   /// The tolerance of a point lying on the triangles `under` (see the
@@ -146,16 +206,6 @@ private:
   glm::dvec3 High{ 0.0 };
   double Step = 0.0;     ///< length of the ray pieces whose boxes are queried
   glm::dvec3 Pad{ 0.0 }; ///< added around each piece's box
-};
-
-struct LinePiece
-{
-  std::vector<glm::dvec3> Points;
-  /// Where each point is along the input polyline: vertex i at exactly i, a
-  /// change point between vertices i and i + 1 at i + its fraction of the
-  /// segment (for interpolating the vertices' attributes).
-  std::vector<double> Along;
-  bool Visible = true;
 };
 
 /// Joins each piece shorter than `minimumLength` with its neighbours, in

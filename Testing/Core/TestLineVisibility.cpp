@@ -145,6 +145,86 @@ TEST(LineVisibility, ALineWithinAPixelOfItsSheetsOutlineIsDrawn)
   EXPECT_FALSE(visibleAt(fold(0.99, 1.0 + 1e-7), 0.995, parameters));
 }
 
+// The other way round: a line under a flap of its own sheet nearer than the
+// tolerance (a part thinner than the tolerance, folded over it) is visible by
+// the sheet rule; with OutlinePixels it is hidden when the points 1.5 pixels
+// to both sides of it are hidden too, and drawn when it is within that of
+// either edge of the flap's image.
+TEST(LineVisibility, ALineWellInsideItsSheetsImageIsHidden)
+{
+  // The square z = 0, x in [0, 1], folded at x = 1 back over itself to
+  // x = 0.9, 0.001 above it (the tolerance is 0.002).
+  const std::vector<glm::dvec3> points{ { 0, -1, 0 }, { 1, -1, 0 }, { 1, 1, 0 }, { 0, 1, 0 },
+    { 0.9, 1, 0.001 }, { 0.9, -1, 0.001 } };
+  const std::vector<Triangle> triangles{ { { 0, 1, 2 } }, { { 0, 2, 3 } }, { { 1, 2, 4 } },
+    { { 1, 4, 5 } } };
+  const OcclusionMesh fold(points, triangles);
+  ViewGeometry view = fromAbove();
+  view.ViewportWidth = view.ViewportHeight = 1000;
+  view.ModelToClip = glm::dmat4(0.2); // 100 pixels per unit: a pixel is 0.01
+  view.ModelToClip[3][3] = 1.0;
+  LineVisibilityParameters parameters;
+  parameters.Tolerance = 2e-3;
+  parameters.Precision = 1e-10;
+  parameters.Contact = 1e-6;
+  parameters.OutlinePixels = 1.0;
+  LineVisibilityParameters off = parameters;
+  off.OutlinePixels = 0.0;
+  auto visibleAt = [&](double x0, const LineVisibilityParameters& rule) {
+    const std::vector<glm::dvec3> line{ { x0, -0.5, 0.0 }, { x0, 0.0, 0.0 }, { x0, 0.5, 0.0 } };
+    EXPECT_EQ(fold.occlusion(view, line[1], rule), OcclusionMesh::Occlusion::BehindItsOwnSheet)
+      << x0;
+    const std::vector<LinePiece> pieces = splitByVisibility(fold, view, line, rule);
+    EXPECT_EQ(pieces.size(), 1u) << x0;
+    return !pieces.empty() && pieces[0].Visible;
+  };
+  EXPECT_FALSE(visibleAt(0.95, parameters)); // 5 pixels inside either edge
+  EXPECT_TRUE(visibleAt(0.95, off));
+  EXPECT_FALSE(visibleAt(0.98, parameters)); // 2 pixels inside the fold's edge
+  EXPECT_TRUE(visibleAt(0.99, parameters));  // 1 pixel
+  EXPECT_TRUE(visibleAt(0.91, parameters));  // 1 pixel inside the flap's free edge
+  // Beyond the flap the sheet is clear.
+  EXPECT_EQ(
+    fold.occlusion(view, glm::dvec3(0.5, 0, 0), parameters), OcclusionMesh::Occlusion::Clear);
+}
+
+// A piece hidden only by that rule, shorter than InsideGapOutlines times
+// OutlinePixels in the image and between two visible pieces, is drawn: the
+// line comes back whole, as if never split. A longer one stays hidden.
+TEST(LineVisibility, AShortDipInsideItsSheetsImageLeavesNoGap)
+{
+  // The square z = 0, x in [0, 1], with a flap over y in [-h, h] folded at
+  // x = 1 back to x = 0.9, 0.001 above it.
+  auto folded = [](double h) {
+    const std::vector<glm::dvec3> points{ { 0, -1, 0 }, { 1, -1, 0 }, { 1, -h, 0 }, { 1, h, 0 },
+      { 1, 1, 0 }, { 0, 1, 0 }, { 0.9, h, 0.001 }, { 0.9, -h, 0.001 } };
+    const std::vector<Triangle> triangles{ { { 0, 1, 2 } }, { { 0, 2, 5 } }, { { 2, 3, 5 } },
+      { { 3, 4, 5 } }, { { 2, 3, 6 } }, { { 2, 6, 7 } } };
+    return OcclusionMesh(points, triangles);
+  };
+  ViewGeometry view = fromAbove();
+  view.ViewportWidth = view.ViewportHeight = 1000;
+  view.ModelToClip = glm::dmat4(0.2); // 100 pixels per unit: a pixel is 0.01
+  view.ModelToClip[3][3] = 1.0;
+  LineVisibilityParameters parameters;
+  parameters.Tolerance = 2e-3;
+  parameters.Precision = 1e-10;
+  parameters.Contact = 1e-6;
+  parameters.OutlinePixels = 1.0;
+  ASSERT_EQ(OcclusionMesh::InsideGapOutlines, 8.0);
+  const std::vector<glm::dvec3> line{ { 0.95, -0.5, 0.0 }, { 0.95, 0.0, 0.0 }, { 0.95, 0.5, 0.0 } };
+  const std::vector<LinePiece> dip = splitByVisibility(folded(0.02), view, line, parameters);
+  ASSERT_EQ(dip.size(), 1u) << "4 pixels under the flap";
+  EXPECT_TRUE(dip[0].Visible);
+  EXPECT_EQ(dip[0].Points, line);
+  EXPECT_EQ(dip[0].Along, (std::vector<double>{ 0.0, 1.0, 2.0 }));
+  const std::vector<LinePiece> run = splitByVisibility(folded(0.2), view, line, parameters);
+  ASSERT_EQ(run.size(), 3u) << "40 pixels under the flap";
+  EXPECT_FALSE(run[1].Visible);
+  EXPECT_NEAR(run[1].Points.front().y, -0.2, 1e-6);
+  EXPECT_NEAR(run[1].Points.back().y, 0.2, 1e-6);
+}
+
 TEST(LineVisibility, NothingInTheWayGivesTheLineBack)
 {
   std::vector<glm::dvec3> points;

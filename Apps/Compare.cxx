@@ -97,8 +97,8 @@ void PrintText(const ModelComparison& c, const CompareOptions& options)
               << " 1-degree steps, outline change per step (px): mean, largest, mean over fine's, "
                  "largest excess over fine's in the same step:\n";
     auto coherence = [](const char* name, const VariantFigures& v) {
-      std::printf(
-        "  %-18s %10.3f %10.3f %10.2f\n", name, v.CoherenceMean, v.CoherenceMax, v.CoherenceRatio);
+      std::printf("  %-18s %10.3f %10.3f %10.2f %10.3f\n", name, v.CoherenceMean, v.CoherenceMax,
+        v.CoherenceRatio, v.CoherenceExcess);
     };
     coherence("coarse", c.Coarse);
     coherence("coarse+smoothing", c.Smoothed);

@@ -80,6 +80,10 @@ vtkSilhouetteSmoothingFilter, writes the result if -o is given, and prints
 figures about it. The extension of INPUT, in any letter case, picks the
 reader: .ply (vtkPLYReader), .obj (vtkOBJReader), .stl (vtkSTLReader), .vtp
 (vtkXMLPolyDataReader) or .vtk (vtkPolyDataReader; legacy POLYDATA only).
+INPUT may also be a model of the evaluation set (bunny, sphere, torus,
+ellipsoid, supertoroid, knot): its coarse version, the mesh 'silhouette view
+MODEL' shows (quadric decimation of the original, as 'silhouette compare'
+makes it).
 
 Options:
   -o, --output FILE   write the smoothed mesh to FILE: .vtp (VTK XML, binary,

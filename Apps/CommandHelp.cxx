@@ -197,7 +197,8 @@ Options:
                           geometrically, each smoothed and its hidden lines
                           removed, all from the camera that frames INPUT;
                           -o names a directory (made if missing, not its
-                          parents) that gets sketch-01.png ... sketch-NN.png,
+                          parents; a name ending in .png or .svg is
+                          refused) that gets sketch-01.png ... sketch-NN.png,
                           and one line of figures per drawing (a JSON array
                           with --json) (default: one drawing)
   --svg                   with --progressive, write sketch-NN.svg drawings

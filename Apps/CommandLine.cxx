@@ -9,6 +9,7 @@
 #include "Compare.h"
 #include "Figure.h"
 #include "Generate.h"
+#include "MeshIO.h"
 #include "Simplify.h"
 #include "Smoothing.h"
 #include "Viewer.h"
@@ -547,6 +548,15 @@ RenderOptions ParseRender(
     throw UsageError(render.ProgressiveLevels > 0
         ? "'render --progressive' needs '-o DIR'"
         : "'render' needs '-o IMAGE.png' or '-o DRAWING.svg'");
+  }
+  // -o of --progressive is a folder; one named like an image became a folder
+  // called x.png.
+  const std::string outputExtension = LowercaseExtension(render.Output);
+  if (render.ProgressiveLevels > 0 && (outputExtension == ".png" || outputExtension == ".svg"))
+  {
+    throw UsageError("with '--progressive', -o names a folder for the drawings (sketch-01" +
+      std::string(render.ProgressiveSvg ? ".svg" : ".png") + ", ...), not an image: '" +
+      render.Output + "'");
   }
   if (render.Lod && render.ProgressiveLevels > 0)
   {

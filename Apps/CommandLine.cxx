@@ -633,6 +633,33 @@ const Command Commands[] = {
     } },
 };
 
+// `words` as one line a shell would split back into them: "silhouette",
+// then each word, in single quotes where it holds anything but letters,
+// digits and _ - + . , / : = @ %.
+std::string QuotedCommandLine(const std::vector<std::string>& words)
+{
+  std::string line = "silhouette";
+  for (const std::string& word : words)
+  {
+    const bool plain = !word.empty() &&
+      word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789"
+                             "_-+.,/:=@%") == std::string::npos;
+    line += ' ';
+    if (plain)
+    {
+      line += word;
+      continue;
+    }
+    line += '\'';
+    for (const char c : word)
+    {
+      line += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    }
+    line += '\'';
+  }
+  return line;
+}
+
 // The command named `name`, or UsageError if there is none.
 const Command& FindCommand(const std::string& name)
 {
@@ -710,6 +737,7 @@ CommandLine ParseCommandLine(int argc, char* argv[])
   ArgumentList arguments({ words.begin() + 1, words.end() });
   result.Selected = &selected;
   selected.Parse(command, arguments, result);
+  result.Render.CommandText = QuotedCommandLine(words);
   return result;
 }
 

@@ -241,6 +241,9 @@ Options:
                            (default 12); the torus has 2 * ring * tube
                            triangles
   -h, --help               show this help and exit
+
+An option of the other shape (--level with a torus, a torus option with a
+sphere) is refused.
 )";
 }
 

@@ -32,10 +32,48 @@ int ParseCount(const Option& option, const std::string& text, int low, int high)
   return static_cast<int>(value);
 }
 
+// The options of one shape only, and the shapes they apply to.
+struct ShapeOption
+{
+  const char* Name;
+  bool Sphere;
+  bool Torus;
+};
+const ShapeOption ShapeOptions[] = {
+  { "--level", true, false },
+  { "--radius", true, true },
+  { "--ring-resolution", false, true },
+  { "--tube-resolution", false, true },
+  { "--tube-radius", false, true },
+};
+
+// Refuses an option given for a shape it does not shape (it was ignored).
+void CheckShapeOptions(GeneratedShape shape, const std::vector<std::string>& given)
+{
+  for (const std::string& name : given)
+  {
+    for (const ShapeOption& option : ShapeOptions)
+    {
+      if (name != option.Name)
+      {
+        continue;
+      }
+      const bool applies = shape == GeneratedShape::Sphere ? option.Sphere : option.Torus;
+      if (!applies)
+      {
+        throw UsageError("option '" + name + "' applies to a " +
+          (option.Sphere ? "sphere" : "torus") + ", not a " +
+          (shape == GeneratedShape::Sphere ? "sphere" : "torus"));
+      }
+    }
+  }
+}
+
 GenerateOptions ParseGenerate(ArgumentList& arguments)
 {
   GenerateOptions options;
   bool haveShape = false;
+  std::vector<std::string> given; // the options of one shape that were given
   while (!arguments.AtEnd())
   {
     const std::string word = arguments.Take();
@@ -54,6 +92,7 @@ GenerateOptions ParseGenerate(ArgumentList& arguments)
       continue;
     }
     const Option option = SplitOption(word);
+    given.push_back(option.Name);
     if (option.Name == "-o" || option.Name == "--output")
     {
       options.Output = arguments.TakeValue(option);
@@ -90,6 +129,7 @@ GenerateOptions ParseGenerate(ArgumentList& arguments)
   {
     throw UsageError("'generate' needs a shape: sphere or torus");
   }
+  CheckShapeOptions(options.Shape, given);
   if (options.Output.empty())
   {
     throw UsageError("'generate' needs '-o OUTPUT'");

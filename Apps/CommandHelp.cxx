@@ -42,6 +42,8 @@ Commands:
       headless orbit to numbered PNGs with per-frame figures
   help [COMMAND]
       show this help, or the help of COMMAND
+  version, --version
+      print the program's version
 
 Run 'silhouette COMMAND --help' for the options of a command.
 

@@ -716,6 +716,10 @@ const Command& FindCommand(const std::string& name)
 // The help of `command` ("help" is the program's), or UsageError.
 std::string HelpOf(const std::string& command)
 {
+  if (command == "version")
+  {
+    return "Usage: silhouette version  (or --version)\n\nPrints the program's version.\n";
+  }
   return command == "help" ? MainHelp() : FindCommand(command).Help();
 }
 
@@ -754,6 +758,16 @@ CommandLine ParseCommandLine(int argc, char* argv[])
     throw UsageError("no command given; run 'silhouette --help'");
   }
   const std::string command = words.front();
+  if (command == "--version" || command == "version")
+  {
+    if (words.size() > 1)
+    {
+      throw UsageError("'" + command + "' takes no arguments");
+    }
+    // The project's version (CMake's project(VERSION), Apps/CMakeLists.txt).
+    result.HelpText = "silhouette " SILHOUETTE_VERSION "\n";
+    return result;
+  }
   if (IsHelpWord(command) || command == "help")
   {
     if (command == "help" && words.size() > 2)

@@ -42,6 +42,8 @@ Commands:
       headless orbit to numbered PNGs with per-frame figures
   help [COMMAND]
       show this help, or the help of COMMAND
+  version, --version
+      print the program's version
 
 Run 'silhouette COMMAND --help' for the options of a command.
 
@@ -80,6 +82,10 @@ vtkSilhouetteSmoothingFilter, writes the result if -o is given, and prints
 figures about it. The extension of INPUT, in any letter case, picks the
 reader: .ply (vtkPLYReader), .obj (vtkOBJReader), .stl (vtkSTLReader), .vtp
 (vtkXMLPolyDataReader) or .vtk (vtkPolyDataReader; legacy POLYDATA only).
+INPUT may also be a model of the evaluation set (bunny, sphere, torus,
+ellipsoid, supertoroid, knot): its coarse version, the mesh 'silhouette view
+MODEL' shows (quadric decimation of the original, as 'silhouette compare'
+makes it).
 
 Options:
   -o, --output FILE   write the smoothed mesh to FILE: .vtp (VTK XML, binary,
@@ -193,7 +199,8 @@ Options:
                           geometrically, each smoothed and its hidden lines
                           removed, all from the camera that frames INPUT;
                           -o names a directory (made if missing, not its
-                          parents) that gets sketch-01.png ... sketch-NN.png,
+                          parents; a name ending in .png or .svg is
+                          refused) that gets sketch-01.png ... sketch-NN.png,
                           and one line of figures per drawing (a JSON array
                           with --json) (default: one drawing)
   --svg                   with --progressive, write sketch-NN.svg drawings
@@ -236,6 +243,9 @@ Options:
                            (default 12); the torus has 2 * ring * tube
                            triangles
   -h, --help               show this help and exit
+
+An option of the other shape (--level with a torus, a torus option with a
+sphere) is refused.
 )";
 }
 

@@ -9,6 +9,7 @@
 #include "Compare.h"
 #include "Figure.h"
 #include "Generate.h"
+#include "MeshIO.h"
 #include "Simplify.h"
 #include "Smoothing.h"
 #include "Viewer.h"
@@ -31,10 +32,48 @@ int ParseCount(const Option& option, const std::string& text, int low, int high)
   return static_cast<int>(value);
 }
 
+// The options of one shape only, and the shapes they apply to.
+struct ShapeOption
+{
+  const char* Name;
+  bool Sphere;
+  bool Torus;
+};
+const ShapeOption ShapeOptions[] = {
+  { "--level", true, false },
+  { "--radius", true, true },
+  { "--ring-resolution", false, true },
+  { "--tube-resolution", false, true },
+  { "--tube-radius", false, true },
+};
+
+// Refuses an option given for a shape it does not shape (it was ignored).
+void CheckShapeOptions(GeneratedShape shape, const std::vector<std::string>& given)
+{
+  for (const std::string& name : given)
+  {
+    for (const ShapeOption& option : ShapeOptions)
+    {
+      if (name != option.Name)
+      {
+        continue;
+      }
+      const bool applies = shape == GeneratedShape::Sphere ? option.Sphere : option.Torus;
+      if (!applies)
+      {
+        throw UsageError("option '" + name + "' applies to a " +
+          (option.Sphere ? "sphere" : "torus") + ", not a " +
+          (shape == GeneratedShape::Sphere ? "sphere" : "torus"));
+      }
+    }
+  }
+}
+
 GenerateOptions ParseGenerate(ArgumentList& arguments)
 {
   GenerateOptions options;
   bool haveShape = false;
+  std::vector<std::string> given; // the options of one shape that were given
   while (!arguments.AtEnd())
   {
     const std::string word = arguments.Take();
@@ -53,6 +92,7 @@ GenerateOptions ParseGenerate(ArgumentList& arguments)
       continue;
     }
     const Option option = SplitOption(word);
+    given.push_back(option.Name);
     if (option.Name == "-o" || option.Name == "--output")
     {
       options.Output = arguments.TakeValue(option);
@@ -89,6 +129,7 @@ GenerateOptions ParseGenerate(ArgumentList& arguments)
   {
     throw UsageError("'generate' needs a shape: sphere or torus");
   }
+  CheckShapeOptions(options.Shape, given);
   if (options.Output.empty())
   {
     throw UsageError("'generate' needs '-o OUTPUT'");
@@ -548,6 +589,15 @@ RenderOptions ParseRender(
         ? "'render --progressive' needs '-o DIR'"
         : "'render' needs '-o IMAGE.png' or '-o DRAWING.svg'");
   }
+  // -o of --progressive is a folder; one named like an image became a folder
+  // called x.png.
+  const std::string outputExtension = LowercaseExtension(render.Output);
+  if (render.ProgressiveLevels > 0 && (outputExtension == ".png" || outputExtension == ".svg"))
+  {
+    throw UsageError("with '--progressive', -o names a folder for the drawings (sketch-01" +
+      std::string(render.ProgressiveSvg ? ".svg" : ".png") + ", ...), not an image: '" +
+      render.Output + "'");
+  }
   if (render.Lod && render.ProgressiveLevels > 0)
   {
     throw UsageError("option '--lod' does not go with '--progressive' (each drawing is one "
@@ -623,6 +673,33 @@ const Command Commands[] = {
     } },
 };
 
+// `words` as one line a shell would split back into them: "silhouette",
+// then each word, in single quotes where it holds anything but letters,
+// digits and _ - + . , / : = @ %.
+std::string QuotedCommandLine(const std::vector<std::string>& words)
+{
+  std::string line = "silhouette";
+  for (const std::string& word : words)
+  {
+    const bool plain = !word.empty() &&
+      word.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789"
+                             "_-+.,/:=@%") == std::string::npos;
+    line += ' ';
+    if (plain)
+    {
+      line += word;
+      continue;
+    }
+    line += '\'';
+    for (const char c : word)
+    {
+      line += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    }
+    line += '\'';
+  }
+  return line;
+}
+
 // The command named `name`, or UsageError if there is none.
 const Command& FindCommand(const std::string& name)
 {
@@ -639,6 +716,10 @@ const Command& FindCommand(const std::string& name)
 // The help of `command` ("help" is the program's), or UsageError.
 std::string HelpOf(const std::string& command)
 {
+  if (command == "version")
+  {
+    return "Usage: silhouette version  (or --version)\n\nPrints the program's version.\n";
+  }
   return command == "help" ? MainHelp() : FindCommand(command).Help();
 }
 
@@ -677,6 +758,16 @@ CommandLine ParseCommandLine(int argc, char* argv[])
     throw UsageError("no command given; run 'silhouette --help'");
   }
   const std::string command = words.front();
+  if (command == "--version" || command == "version")
+  {
+    if (words.size() > 1)
+    {
+      throw UsageError("'" + command + "' takes no arguments");
+    }
+    // The project's version (CMake's project(VERSION), Apps/CMakeLists.txt).
+    result.HelpText = "silhouette " SILHOUETTE_VERSION "\n";
+    return result;
+  }
   if (IsHelpWord(command) || command == "help")
   {
     if (command == "help" && words.size() > 2)
@@ -700,6 +791,7 @@ CommandLine ParseCommandLine(int argc, char* argv[])
   ArgumentList arguments({ words.begin() + 1, words.end() });
   result.Selected = &selected;
   selected.Parse(command, arguments, result);
+  result.Render.CommandText = QuotedCommandLine(words);
   return result;
 }
 

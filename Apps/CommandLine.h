@@ -54,6 +54,9 @@ struct RenderOptions
   bool ProgressiveSvg = false;
   bool Json = false;
   CameraOptions Camera;
+  /// The command line as given ("silhouette render ...", words quoted as a
+  /// shell would need): an SVG drawing's title.
+  std::string CommandText;
 };
 
 /// `silhouette view`: the interactive viewer, its headless orbit and its

@@ -5,6 +5,7 @@
 #include "Figures.h"
 #include "LevelOfDetail.h"
 #include "MeshIO.h"
+#include "ModelInput.h"
 #include "PrintableText.h"
 #include "Rendering.h"
 #include "Smoothing.h"
@@ -81,7 +82,7 @@ bool HasTriangleWithArea(vtkPolyData* mesh)
 // why nothing comes of it: the run gave a blank image and no word.
 vtkSmartPointer<vtkPolyData> ReadMeshWithTriangles(const std::string& path)
 {
-  vtkSmartPointer<vtkPolyData> mesh = ReadMesh(path);
+  vtkSmartPointer<vtkPolyData> mesh = ReadModelOrMesh(path); // a model name: its coarse version
   if (CountTriangles(mesh) == 0)
   {
     throw RuntimeError(path + " has no triangles");
@@ -142,10 +143,12 @@ void RunSmooth(const SmoothOptions& options)
   if (options.Output)
   {
     CheckMeshOutputPath(*options.Output);
+    RefuseOverwritingInput(options.Input, *options.Output, "-o");
   }
   if (options.LinesOutput)
   {
     CheckLinesOutputPath(*options.LinesOutput);
+    RefuseOverwritingInput(options.Input, *options.LinesOutput, "--lines-output");
   }
   vtkSmartPointer<vtkPolyData> mesh = ReadMeshWithTriangles(options.Input);
   const OffscreenView view = MakeOffscreenView(options.Camera.ViewportSize);
@@ -318,9 +321,11 @@ void RunRender(const RenderOptions& options)
     return;
   }
   CheckRenderOutputPath(options);
+  RefuseOverwritingInput(options.Input, options.Output, "-o");
   if (options.LinesOutput)
   {
     CheckLinesOutputPath(*options.LinesOutput);
+    RefuseOverwritingInput(options.Input, *options.LinesOutput, "--lines-output");
   }
   const bool svg = IsSvgPath(options.Output);
   if (!svg)

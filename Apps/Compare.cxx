@@ -4,6 +4,7 @@
 #include "DataFolder.h"
 #include "Figures.h"
 #include "MeshIO.h"
+#include "ModelInput.h"
 #include "PrintableText.h"
 #include "RenderingBackend.h"
 #include "TextFormat.h"
@@ -16,7 +17,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -97,8 +97,8 @@ void PrintText(const ModelComparison& c, const CompareOptions& options)
               << " 1-degree steps, outline change per step (px): mean, largest, mean over fine's, "
                  "largest excess over fine's in the same step:\n";
     auto coherence = [](const char* name, const VariantFigures& v) {
-      std::printf(
-        "  %-18s %10.3f %10.3f %10.2f\n", name, v.CoherenceMean, v.CoherenceMax, v.CoherenceRatio);
+      std::printf("  %-18s %10.3f %10.3f %10.2f %10.3f\n", name, v.CoherenceMean, v.CoherenceMax,
+        v.CoherenceRatio, v.CoherenceExcess);
     };
     coherence("coarse", c.Coarse);
     coherence("coarse+smoothing", c.Smoothed);
@@ -224,21 +224,6 @@ void PrintMarkdown(const std::vector<ModelComparison>& results, const CompareOpt
 }
 
 } // namespace
-
-void RequireModelOrFile(const std::string& input)
-{
-  if (!silhouette_eval::IsModelName(input) && LowercaseExtension(input).empty() &&
-    !std::filesystem::exists(input))
-  {
-    std::string models;
-    for (const std::string& name : silhouette_eval::ModelNames())
-    {
-      models += (models.empty() ? "" : ", ") + name;
-    }
-    throw RuntimeError("'" + input + "' is neither a model (" + models +
-      ") nor a mesh file (.ply, .obj, .stl, .vtp or .vtk)");
-  }
-}
 
 vtkSmartPointer<vtkPolyData> OriginalOf(const std::string& input, const std::string& dataDirectory,
   const std::string& command, int& coarseTriangles)

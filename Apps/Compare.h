@@ -41,16 +41,13 @@ struct CompareOptions
 /// each input, measured from the same cameras (see CompareHelp).
 void RunCompare(const CompareOptions& options);
 
-/// Throws RuntimeError("'INPUT' is neither a model ... nor a mesh file")
-/// for a name that is neither a model of the set nor a file.
-void RequireModelOrFile(const std::string& input);
-
 /// The original of `input` for `compare` and `figure` (`command`): a model
 /// of the set (silhouette_eval::MakeOriginal), or a mesh file with its
 /// points merged where they share a position (silhouette_eval::
 /// WeldedTriangles; a line on standard error says how many went). Sets
 /// `coarseTriangles`, when 0, to the input's default (1,000 for a file).
-/// Refuses a name that is neither a model nor a file in one line.
+/// Refuses a name that is neither a model nor a file in one line
+/// (RequireModelOrFile, ModelInput.h).
 vtkSmartPointer<vtkPolyData> OriginalOf(const std::string& input, const std::string& dataDirectory,
   const std::string& command, int& coarseTriangles);
 

@@ -222,9 +222,11 @@ void RenderPlot(
 void RunFigure(const FigureOptions& options)
 {
   CheckImageOutputPath(options.Output);
+  RefuseOverwritingInput(options.Input, options.Output, "-o");
   if (!options.Plot.empty())
   {
     CheckImageOutputPath(options.Plot);
+    RefuseOverwritingInput(options.Input, options.Plot, "--plot");
   }
   RequireDisplay();
   const std::string dataDirectory =

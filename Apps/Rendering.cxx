@@ -499,7 +499,9 @@ void RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   style.Height = options.Camera.ViewportSize[1];
   style.WidthByDepth = options.WidthByDepth;
   style.ReferenceDepth = renderer->GetActiveCamera()->GetDistance();
-  style.Title = "silhouette render " + options.Input + " --style " + NameOf(options.Style);
+  // The whole command line, every option that shaped the drawing with it
+  // (the input and style alone left out --hidden, --width-by-depth, --size...).
+  style.Title = options.CommandText;
   const std::string document = SvgDocument(lines, style);
   if (batch)
   {

@@ -3,6 +3,7 @@
 #include "CliErrors.h"
 #include "Figures.h"
 #include "MeshIO.h"
+#include "ModelInput.h"
 #include "Rendering.h"
 #include "RenderingBackend.h"
 #include "SilhouetteMasks.h"
@@ -48,8 +49,8 @@ quadric error (sum of squared distances to the planes of the input triangles
 merged into it, in squared model units) at most e, and at most F * e near
 the contour. Collapses keep the link condition and never turn a triangle
 over, so a closed manifold stays one; points on boundary edges stay. Reads
-the formats of 'silhouette smooth'; polygons and strips are triangulated,
-vertices and lines dropped.
+the formats and model names of 'silhouette smooth'; polygons and strips are
+triangulated, vertices and lines dropped.
 
 Options:
   -o, --output FILE   write the simplified mesh to FILE: .vtp or .ply
@@ -183,11 +184,12 @@ void RunSimplify(const SimplifyOptions& options)
 {
   using Clock = std::chrono::steady_clock;
   CheckMeshOutputPath(options.Output);
+  RefuseOverwritingInput(options.Input, options.Output, "-o");
   if (options.Measure)
   {
     RequireDisplay();
   }
-  vtkSmartPointer<vtkPolyData> mesh = ReadMesh(options.Input);
+  vtkSmartPointer<vtkPolyData> mesh = ReadModelOrMesh(options.Input);
   const vtkIdType inputTriangles = CountTriangles(mesh);
   if (inputTriangles == 0)
   {

@@ -4,6 +4,7 @@
 #include "DataFolder.h"
 #include "Figures.h"
 #include "MeshIO.h"
+#include "ModelInput.h"
 #include "Rendering.h"
 #include "RenderingBackend.h"
 #include "Smoothing.h"
@@ -211,6 +212,7 @@ void Viewer::LoadMesh()
   if (input.empty() || !silhouette_eval::IsModelName(input))
   {
     const std::string path = input.empty() ? JoinPath(dataDirectory, "bunny_coarse.ply") : input;
+    RequireModelOrFile(path);
     this->Mesh = ReadMesh(path);
     this->Original = this->Mesh;
     this->MeshName = std::filesystem::path(path).filename().string();
@@ -221,20 +223,7 @@ void Viewer::LoadMesh()
   }
   else
   {
-    VtkErrorLog::Instance().Clear();
-    try
-    {
-      this->Original = silhouette_eval::MakeOriginal(input, dataDirectory);
-      const int triangles = this->Options.CoarseTriangles > 0
-        ? this->Options.CoarseTriangles
-        : silhouette_eval::DefaultCoarseTriangles(input);
-      this->Mesh = silhouette_eval::Decimate(this->Original, triangles);
-    }
-    catch (const std::runtime_error& error)
-    {
-      throw RuntimeError(input + ": " + error.what());
-    }
-    VtkErrorLog::Instance().ThrowIfErrors("preparing " + input + " failed");
+    this->Mesh = CoarseModel(input, dataDirectory, this->Options.CoarseTriangles, &this->Original);
     this->MeshName = input + " (coarse)";
   }
   this->InputTriangles = CountTriangles(this->Mesh);

@@ -275,6 +275,18 @@ void RequireOutputDirectory(const std::string& path)
   }
 }
 
+void RefuseOverwritingInput(
+  const std::string& input, const std::string& output, const std::string& option)
+{
+  std::error_code error;
+  if (std::filesystem::exists(input, error) && std::filesystem::exists(output, error) &&
+    std::filesystem::equivalent(input, output, error) && !error)
+  {
+    throw UsageError("option '" + option + "' names the input file " + Quoted(output) +
+      ", which would be overwritten; write to another file");
+  }
+}
+
 void CheckMeshOutputPath(const std::string& path)
 {
   const std::string extension = LowercaseExtension(path);

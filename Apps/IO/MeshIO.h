@@ -37,6 +37,12 @@ vtkIdType CountTriangles(vtkPolyData* mesh);
 /// writers only say they could not open the file).
 void RequireOutputDirectory(const std::string& path);
 
+/// Throws UsageError when `output` (given with `option`, "-o") is the file
+/// `input`: both exist and std::filesystem::equivalent says so (./a.ply and
+/// a.ply, a link and its target). A job must not overwrite what it reads.
+void RefuseOverwritingInput(
+  const std::string& input, const std::string& output, const std::string& option);
+
 /// Throws UsageError unless WriteMesh can write `path` (.vtp or .ply);
 /// called before the work so a typo costs nothing.
 void CheckMeshOutputPath(const std::string& path);

@@ -46,6 +46,11 @@ foreach (installed_file IN LISTS installed_files)
   endforeach ()
 endforeach ()
 
+# Every RUNPATH entry of the installed programs and libraries stays inside
+# the prefix (CheckRunpaths.cmake).
+set(PREFIX "${prefix}")
+include("${CMAKE_CURRENT_LIST_DIR}/CheckRunpaths.cmake")
+
 # Every module library loads on its own: a library that needs another
 # module's finds it in the prefix (a program using only the mapper once
 # could not start).

@@ -33,11 +33,75 @@ const char* KindName(double kind)
   return "silhouette";
 }
 
+// The length of the valid UTF-8 sequence at text[i] (1 to 4), or 0 when the
+// bytes there are not one (a stray continuation byte, an overlong form, a
+// surrogate, beyond U+10FFFF, or cut short).
+std::size_t Utf8SequenceLength(const std::string& text, std::size_t i)
+{
+  const auto byte = [&](std::size_t k) {
+    return static_cast<unsigned char>(text[k]);
+  };
+  const unsigned char lead = byte(i);
+  std::size_t length = 0;
+  unsigned long code = 0;
+  if (lead < 0x80)
+  {
+    return 1;
+  }
+  if (lead >= 0xC2 && lead <= 0xDF)
+  {
+    length = 2;
+    code = lead & 0x1Fu;
+  }
+  else if (lead >= 0xE0 && lead <= 0xEF)
+  {
+    length = 3;
+    code = lead & 0x0Fu;
+  }
+  else if (lead >= 0xF0 && lead <= 0xF4)
+  {
+    length = 4;
+    code = lead & 0x07u;
+  }
+  else
+  {
+    return 0;
+  }
+  if (i + length > text.size())
+  {
+    return 0;
+  }
+  for (std::size_t k = 1; k < length; ++k)
+  {
+    if ((byte(i + k) & 0xC0u) != 0x80u)
+    {
+      return 0;
+    }
+    code = (code << 6) | (byte(i + k) & 0x3Fu);
+  }
+  const unsigned long smallest[5] = { 0, 0, 0x80, 0x800, 0x10000 };
+  const bool valid =
+    code >= smallest[length] && code <= 0x10FFFF && !(code >= 0xD800 && code <= 0xDFFF);
+  return valid ? length : 0;
+}
+
+// Text for an XML 1.0 document in UTF-8: markup characters escaped, and
+// control characters and bytes that are not UTF-8 (a file name in another
+// encoding) written as '?', so that the document always parses.
 std::string EscapeXml(const std::string& text)
 {
   std::string escaped;
-  for (const char c : text)
+  for (std::size_t i = 0; i < text.size();)
   {
+    const char c = text[i];
+    const std::size_t length = Utf8SequenceLength(text, i);
+    if (length > 1)
+    {
+      escaped.append(text, i, length);
+      i += length;
+      continue;
+    }
+    ++i;
     switch (c)
     {
       case '&':
@@ -54,7 +118,7 @@ std::string EscapeXml(const std::string& text)
         break;
       default:
         // Control characters are not allowed in XML 1.0 text.
-        escaped += (static_cast<unsigned char>(c) < 0x20 && c != '\t') ? '?' : c;
+        escaped += length == 0 || (static_cast<unsigned char>(c) < 0x20 && c != '\t') ? '?' : c;
     }
   }
   return escaped;

@@ -223,6 +223,24 @@ if code == 0:
     check(same and len(last) > 0,
           "the last drawing is the input's drawing, path for path (within 0.02 px)")
 
+# --- A file name that is not UTF-8 -------------------------------------------
+# The title holds the command line; a byte that is not UTF-8 (a Latin-1 name)
+# is written as '?', so the drawing still parses (it did not).
+latin = os.path.join(os.fsencode(work), b"torus-\xe9.vtp")
+shutil.copyfile(torus, latin)
+latin_svg = os.path.join(work, "latin.svg")
+done = subprocess.run([program, "render", latin, "--style", "lines", "--size", "200x150",
+                       "-o", latin_svg], capture_output=True, timeout=300)
+code, err = done.returncode, done.stderr.decode(errors="replace")
+check(code == 0, "a Latin-1 file name renders: " + err.strip())
+if code == 0:
+    try:
+        title = paths(latin_svg)[0].find(SVG + "title").text
+    except ElementTree.ParseError as error:
+        title = "does not parse: %s" % error
+    check("/torus-?.vtp' --style lines --size 200x150 -o " + latin_svg in title,
+          "the title writes the Latin-1 byte as '?': " + title)
+
 # --- Errors --------------------------------------------------------------------
 code, _, err = run("render", torus, "--progressive", "3", "-o", os.path.join(work, "p"))
 check(code == 2 and "--progressive draws a line style" in err, "--progressive needs a line style")

@@ -35,6 +35,35 @@ ViewGeometry fromAbove()
   return view;
 }
 
+// fromAbove() on a 1000 x 1000 viewport, 100 pixels per unit: a pixel is
+// 0.01 (for the OutlinePixels rules).
+ViewGeometry fromAboveInPixels()
+{
+  ViewGeometry view = fromAbove();
+  view.ViewportWidth = view.ViewportHeight = 1000;
+  view.ModelToClip = glm::dmat4(0.2);
+  view.ModelToClip[3][3] = 1.0;
+  return view;
+}
+
+// The rule the OutlinePixels tests use: a tolerance of 0.2 pixel, a pixel
+// beside the line.
+LineVisibilityParameters outlineRule()
+{
+  LineVisibilityParameters parameters;
+  parameters.Tolerance = 2e-3;
+  parameters.Precision = 1e-10;
+  parameters.Contact = 1e-6;
+  parameters.OutlinePixels = 1.0;
+  return parameters;
+}
+
+// A line along y at x = x0, z = 0, in three vertices.
+std::vector<glm::dvec3> lineAlongY(double x0)
+{
+  return { { x0, -0.5, 0.0 }, { x0, 0.0, 0.0 }, { x0, 0.5, 0.0 } };
+}
+
 // The pieces join end to start bit for bit, alternate, and hold every input
 // vertex in order.
 void expectWellFormed(const std::vector<LinePiece>& pieces, const std::vector<glm::dvec3>& line)
@@ -121,20 +150,13 @@ TEST(LineVisibility, ALineWithinAPixelOfItsSheetsOutlineIsDrawn)
       { { 4, 6, 7 } } };
     return OcclusionMesh(points, triangles);
   };
-  ViewGeometry view = fromAbove();
-  view.ViewportWidth = view.ViewportHeight = 1000;
-  view.ModelToClip = glm::dmat4(0.2); // 100 pixels per unit: a pixel is 0.01
-  view.ModelToClip[3][3] = 1.0;
-  LineVisibilityParameters parameters;
-  parameters.Tolerance = 2e-3;
-  parameters.Precision = 1e-10;
-  parameters.Contact = 1e-6;
-  parameters.OutlinePixels = 1.0;
+  const ViewGeometry view = fromAboveInPixels();
+  const LineVisibilityParameters parameters = outlineRule();
   LineVisibilityParameters off = parameters;
   off.OutlinePixels = 0.0;
   auto visibleAt = [&](const OcclusionMesh& surface, double x0,
                      const LineVisibilityParameters& rule) {
-    const std::vector<glm::dvec3> line{ { x0, -0.5, 0.0 }, { x0, 0.0, 0.0 }, { x0, 0.5, 0.0 } };
+    const std::vector<glm::dvec3> line = lineAlongY(x0);
     const std::vector<LinePiece> pieces = splitByVisibility(surface, view, line, rule);
     EXPECT_EQ(pieces.size(), 1u) << x0;
     return !pieces.empty() && pieces[0].Visible;
@@ -159,19 +181,12 @@ TEST(LineVisibility, ALineWellInsideItsSheetsImageIsHidden)
   const std::vector<Triangle> triangles{ { { 0, 1, 2 } }, { { 0, 2, 3 } }, { { 1, 2, 4 } },
     { { 1, 4, 5 } } };
   const OcclusionMesh fold(points, triangles);
-  ViewGeometry view = fromAbove();
-  view.ViewportWidth = view.ViewportHeight = 1000;
-  view.ModelToClip = glm::dmat4(0.2); // 100 pixels per unit: a pixel is 0.01
-  view.ModelToClip[3][3] = 1.0;
-  LineVisibilityParameters parameters;
-  parameters.Tolerance = 2e-3;
-  parameters.Precision = 1e-10;
-  parameters.Contact = 1e-6;
-  parameters.OutlinePixels = 1.0;
+  const ViewGeometry view = fromAboveInPixels();
+  const LineVisibilityParameters parameters = outlineRule();
   LineVisibilityParameters off = parameters;
   off.OutlinePixels = 0.0;
   auto visibleAt = [&](double x0, const LineVisibilityParameters& rule) {
-    const std::vector<glm::dvec3> line{ { x0, -0.5, 0.0 }, { x0, 0.0, 0.0 }, { x0, 0.5, 0.0 } };
+    const std::vector<glm::dvec3> line = lineAlongY(x0);
     EXPECT_EQ(fold.occlusion(view, line[1], rule), OcclusionMesh::Occlusion::BehindItsOwnSheet)
       << x0;
     const std::vector<LinePiece> pieces = splitByVisibility(fold, view, line, rule);
@@ -202,17 +217,10 @@ TEST(LineVisibility, AShortDipInsideItsSheetsImageLeavesNoGap)
       { { 3, 4, 5 } }, { { 2, 3, 6 } }, { { 2, 6, 7 } } };
     return OcclusionMesh(points, triangles);
   };
-  ViewGeometry view = fromAbove();
-  view.ViewportWidth = view.ViewportHeight = 1000;
-  view.ModelToClip = glm::dmat4(0.2); // 100 pixels per unit: a pixel is 0.01
-  view.ModelToClip[3][3] = 1.0;
-  LineVisibilityParameters parameters;
-  parameters.Tolerance = 2e-3;
-  parameters.Precision = 1e-10;
-  parameters.Contact = 1e-6;
-  parameters.OutlinePixels = 1.0;
+  const ViewGeometry view = fromAboveInPixels();
+  const LineVisibilityParameters parameters = outlineRule();
   ASSERT_EQ(OcclusionMesh::InsideGapOutlines, 8.0);
-  const std::vector<glm::dvec3> line{ { 0.95, -0.5, 0.0 }, { 0.95, 0.0, 0.0 }, { 0.95, 0.5, 0.0 } };
+  const std::vector<glm::dvec3> line = lineAlongY(0.95);
   const std::vector<LinePiece> dip = splitByVisibility(folded(0.02), view, line, parameters);
   ASSERT_EQ(dip.size(), 1u) << "4 pixels under the flap";
   EXPECT_TRUE(dip[0].Visible);

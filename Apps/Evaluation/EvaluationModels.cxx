@@ -371,6 +371,29 @@ long CountBoundaryOrNonManifoldEdges(vtkPolyData* mesh)
   return bad;
 }
 
+double EnclosedVolume(vtkPolyData* mesh)
+{
+  double volume = 0.0;
+  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    if (n < 3)
+    {
+      continue;
+    }
+    double a[3], b[3], c[3], bc[3];
+    mesh->GetPoint(ids[0], a);
+    mesh->GetPoint(ids[1], b);
+    mesh->GetPoint(ids[2], c);
+    vtkMath::Cross(b, c, bc);
+    volume += vtkMath::Dot(a, bc) / 6.0;
+  }
+  return volume;
+}
+
 vtkSmartPointer<vtkPolyData> WeldedTriangles(vtkPolyData* input, vtkIdType* merged)
 {
   vtkNew<vtkTriangleFilter> triangles;
@@ -398,21 +421,7 @@ vtkSmartPointer<vtkPolyData> WeldedTriangles(vtkPolyData* input, vtkIdType* merg
   // A part winds as its first triangle did: when that one was the odd one
   // out, the whole came out inside out. A negative enclosed volume turns
   // it back (the truth evaluation tells outside from inside by it).
-  double volume = 0.0;
-  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    it->GetCurrentCell(n, ids);
-    double a[3], b[3], c[3], bc[3];
-    mesh->GetPoint(ids[0], a);
-    mesh->GetPoint(ids[1], b);
-    mesh->GetPoint(ids[2], c);
-    vtkMath::Cross(b, c, bc);
-    volume += vtkMath::Dot(a, bc);
-  }
-  if (volume < 0.0)
+  if (EnclosedVolume(mesh) < 0.0)
   {
     for (vtkIdType c = 0; c < mesh->GetPolys()->GetNumberOfCells(); ++c)
     {

@@ -90,6 +90,11 @@ void ProjectOntoSurface(vtkPolyData* coarse, vtkPolyData* surface);
 /// closed manifold).
 long CountBoundaryOrNonManifoldEdges(vtkPolyData* mesh);
 
+/// The volume `mesh`'s triangles enclose, positive when they wind outward
+/// (the divergence theorem over the triangles' cones from the origin; only
+/// the first three corners of each polygon count).
+double EnclosedVolume(vtkPolyData* mesh);
+
 /// OpenSubdiv Loop refinement of `original` to `level`, projected to the
 /// limit surface, with limit normals.
 vtkSmartPointer<vtkPolyData> Refine(vtkPolyData* original, int level);

@@ -56,36 +56,18 @@ vtkSmartPointer<vtkPolyData> SoupOf(vtkPolyData* mesh, bool reverseFirst)
   return soup;
 }
 
-double EnclosedVolume(vtkPolyData* mesh)
-{
-  double volume = 0.0;
-  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    it->GetCurrentCell(n, ids);
-    double a[3], b[3], c[3], bc[3];
-    mesh->GetPoint(ids[0], a);
-    mesh->GetPoint(ids[1], b);
-    mesh->GetPoint(ids[2], c);
-    vtkMath::Cross(b, c, bc);
-    volume += vtkMath::Dot(a, bc) / 6.0;
-  }
-  return volume;
-}
-
 bool CheckSoup(vtkPolyData* bunny, bool reverseFirst)
 {
   vtkSmartPointer<vtkPolyData> soup = SoupOf(bunny, reverseFirst);
   vtkIdType merged = 0;
   vtkSmartPointer<vtkPolyData> welded = silhouette_eval::WeldedTriangles(soup, &merged);
-  const double volume = EnclosedVolume(welded);
+  const double volume = silhouette_eval::EnclosedVolume(welded);
   std::printf("bunny soup%s: %lld points merged, %lld points and %lld triangles left, volume %g "
               "(the bunny's %g)\n",
     reverseFirst ? ", first triangle reversed" : "", static_cast<long long>(merged),
     static_cast<long long>(welded->GetNumberOfPoints()),
-    static_cast<long long>(welded->GetNumberOfPolys()), volume, EnclosedVolume(bunny));
+    static_cast<long long>(welded->GetNumberOfPolys()), volume,
+    silhouette_eval::EnclosedVolume(bunny));
   CHECK(merged == soup->GetNumberOfPoints() - bunny->GetNumberOfPoints(), "the merged count");
   CHECK(welded->GetNumberOfPoints() == bunny->GetNumberOfPoints(), "the bunny's points");
   CHECK(welded->GetNumberOfPolys() == bunny->GetNumberOfPolys(), "the bunny's triangles");
@@ -99,7 +81,7 @@ bool CheckSoup(vtkPolyData* bunny, bool reverseFirst)
 int TestEvaluationWelding(int argc, char* argv[])
 {
   const auto bunny = silhouette_test::ReadMesh(silhouette_test::DataFile(argc, argv, "bunny.ply"));
-  if (!bunny || !(EnclosedVolume(bunny) > 0.0))
+  if (!bunny || !(silhouette_eval::EnclosedVolume(bunny) > 0.0))
   {
     std::printf("FAIL: the bunny reads, wound outward\n");
     return EXIT_FAILURE;

@@ -12,7 +12,6 @@
 //   corner (the points renumbered).
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
-#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"

@@ -472,13 +472,13 @@ void appendPiece(LinePiece& piece, const LinePiece& next)
   piece.Along.insert(piece.Along.end(), next.Along.begin() + 1, next.Along.end());
 }
 
-// The length of the piece's image in pixels, or infinity when a point has
-// no image.
-double pixelLength(const LinePiece& piece, const ViewGeometry& view)
+// The length of the piece's image in pixels, counted up to `enough` (the
+// count stops there), or infinity when a point has no image.
+double pixelLength(const LinePiece& piece, const ViewGeometry& view, double enough)
 {
   double length = 0.0;
   glm::dvec2 last;
-  for (std::size_t k = 0; k < piece.Points.size(); ++k)
+  for (std::size_t k = 0; k < piece.Points.size() && length < enough; ++k)
   {
     glm::dvec2 at;
     if (!view.toPixels(piece.Points[k], at))
@@ -491,30 +491,21 @@ double pixelLength(const LinePiece& piece, const ViewGeometry& view)
   return length;
 }
 
-} // namespace
-
-std::vector<LinePiece> OcclusionMesh::closeShortInsideGaps(std::vector<LinePiece> pieces,
-  const ViewGeometry& view, const LineVisibilityParameters& rule) const
+// splitByVisibility's last step before mergeShortPieces: a hidden piece
+// shorter than InsideGapOutlines times OutlinePixels in the image, between
+// two visible pieces, that no probe found hidden by the ray rule
+// (`hiddenByRay`, per piece: only insideTheOutline hid it) joins the pieces
+// on both sides, and the change points inside the joined piece go: the line
+// is as if it had not been split there.
+std::vector<LinePiece> closeShortInsideGaps(std::vector<LinePiece> pieces,
+  const std::vector<unsigned char>& hiddenByRay, const ViewGeometry& view,
+  const LineVisibilityParameters& rule)
 {
-  const double longest = InsideGapOutlines * rule.OutlinePixels;
+  const double longest = OcclusionMesh::InsideGapOutlines * rule.OutlinePixels;
   if (!(longest > 0.0) || pieces.size() < 3)
   {
     return pieces;
   }
-  // Hidden only by insideTheOutline: no point of the piece, and no middle of
-  // its segments, is hidden by the ray rule.
-  auto onlyInside = [&](const LinePiece& piece) {
-    for (std::size_t k = 0; k + 1 < piece.Points.size(); ++k)
-    {
-      const glm::dvec3 middle = 0.5 * (piece.Points[k] + piece.Points[k + 1]);
-      if ((k > 0 && this->occlusion(view, piece.Points[k], rule) == Occlusion::Hidden) ||
-        this->occlusion(view, middle, rule) == Occlusion::Hidden)
-      {
-        return false;
-      }
-    }
-    return true;
-  };
   std::vector<LinePiece> closed;
   std::vector<unsigned char> joined; // per closed piece: a gap was closed in it
   closed.push_back(std::move(pieces[0]));
@@ -522,8 +513,8 @@ std::vector<LinePiece> OcclusionMesh::closeShortInsideGaps(std::vector<LinePiece
   for (std::size_t i = 1; i < pieces.size(); ++i)
   {
     LinePiece& piece = pieces[i];
-    const bool gap = !piece.Visible && i + 1 < pieces.size() && closed.back().Visible &&
-      pixelLength(piece, view) < longest && onlyInside(piece);
+    const bool gap = !piece.Visible && !hiddenByRay[i] && i + 1 < pieces.size() &&
+      closed.back().Visible && pixelLength(piece, view, longest) < longest;
     if (gap || piece.Visible == closed.back().Visible)
     {
       appendPiece(closed.back(), piece);
@@ -535,13 +526,15 @@ std::vector<LinePiece> OcclusionMesh::closeShortInsideGaps(std::vector<LinePiece
       joined.push_back(0);
     }
   }
-  // A closed gap leaves the line as if it had not been split there: the
-  // change points inside the joined piece go (its ends stay).
   for (std::size_t i = 0; i < closed.size(); ++i)
   {
     LinePiece& piece = closed[i];
+    if (!joined[i])
+    {
+      continue;
+    }
     std::size_t kept = 1;
-    for (std::size_t k = 1; joined[i] && k < piece.Points.size(); ++k)
+    for (std::size_t k = 1; k < piece.Points.size(); ++k)
     {
       const bool inside = k + 1 < piece.Points.size();
       if (inside && piece.Along[k] != std::floor(piece.Along[k]))
@@ -552,14 +545,13 @@ std::vector<LinePiece> OcclusionMesh::closeShortInsideGaps(std::vector<LinePiece
       piece.Along[kept] = piece.Along[k];
       ++kept;
     }
-    if (joined[i])
-    {
-      piece.Points.resize(kept);
-      piece.Along.resize(kept);
-    }
+    piece.Points.resize(kept);
+    piece.Along.resize(kept);
   }
   return closed;
 }
+
+} // namespace
 
 std::vector<LinePiece> mergeShortPieces(std::vector<LinePiece> pieces, double minimumLength)
 {
@@ -618,19 +610,26 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
   {
     direction = polyline[i] - polyline[i - 1];
   }
-  auto visible = [&](const glm::dvec3& p) {
+  // Whether p is visible; `byRay` tells a point hidden by the ray rule from
+  // one only insideTheOutline hides (closeShortInsideGaps).
+  auto visible = [&](const glm::dvec3& p, bool& byRay) {
+    byRay = false;
     switch (surface.occlusion(view, p, parameters))
     {
       case OcclusionMesh::Occlusion::Hidden:
-        return surface.nearTheOutline(view, p, direction, parameters);
+        byRay = !surface.nearTheOutline(view, p, direction, parameters);
+        return !byRay;
       case OcclusionMesh::Occlusion::BehindItsOwnSheet:
         return !surface.insideTheOutline(view, p, direction, parameters);
       default:
         return true;
     }
   };
+  std::vector<unsigned char> hiddenByRay; // per piece: some probe of it was
+  bool byRay = false;
   LinePiece current;
-  current.Visible = visible(polyline.front());
+  current.Visible = visible(polyline.front(), byRay);
+  bool currentByRay = byRay;
   current.Points.push_back(polyline.front());
   current.Along.push_back(0.0);
   for (std::size_t i = 1; i < polyline.size(); ++i)
@@ -651,16 +650,30 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
     for (int k = 1; k <= probes; ++k)
     {
       const double at = k == probes ? 1.0 : static_cast<double>(k) / probes;
-      const bool state = visible(k == probes ? b : a + at * (b - a));
-      if (state != current.Visible)
+      const bool state = visible(k == probes ? b : a + at * (b - a), byRay);
+      if (state == current.Visible)
       {
+        currentByRay = currentByRay || byRay;
+      }
+      else
+      {
+        bool nextByRay = byRay;
         // Bisection between the probes: `low` keeps the current state.
         double low = before;
         double high = at;
         for (int step = 0; step < 64 && (high - low) * length > parameters.Precision; ++step)
         {
           const double middle = 0.5 * (low + high);
-          (visible(a + middle * (b - a)) == current.Visible ? low : high) = middle;
+          if (visible(a + middle * (b - a), byRay) == current.Visible)
+          {
+            currentByRay = currentByRay || byRay;
+            low = middle;
+          }
+          else
+          {
+            nextByRay = nextByRay || byRay;
+            high = middle;
+          }
         }
         const double fraction = 0.5 * (low + high);
         const glm::dvec3 change = a + fraction * (b - a);
@@ -668,6 +681,8 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
         current.Points.push_back(change);
         current.Along.push_back(along);
         pieces.push_back(std::move(current));
+        hiddenByRay.push_back(currentByRay ? 1 : 0);
+        currentByRay = nextByRay;
         current = LinePiece();
         current.Visible = state;
         current.Points.push_back(change);
@@ -679,7 +694,8 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
     current.Along.push_back(static_cast<double>(i));
   }
   pieces.push_back(std::move(current));
-  pieces = surface.closeShortInsideGaps(std::move(pieces), view, parameters);
+  hiddenByRay.push_back(currentByRay ? 1 : 0);
+  pieces = closeShortInsideGaps(std::move(pieces), hiddenByRay, view, parameters);
   return mergeShortPieces(std::move(pieces), parameters.MinimumPieceLength);
 }
 

@@ -160,14 +160,12 @@ public:
   static constexpr double InsideOutlineFactor = 1.5;
 
   /// Hidden pieces shorter than this many OutlinePixels in the image, between
-  /// two visible pieces, that only insideTheOutline hides are drawn: where
+  /// two visible pieces, that only insideTheOutline hides (no probe of them
+  /// hidden by the ray rule) are drawn, the line then as if never split
+  /// there (splitByVisibility): where
   /// the smoothed curve dips a little inside a coarse part's outline for a
   /// few pixels (the bunny's ear tip), leaving it out opens the outline.
   static constexpr double InsideGapOutlines = 8.0;
-  /// splitByVisibility's last step before mergeShortPieces: joins such gaps
-  /// with the pieces on both sides.
-  std::vector<LinePiece> closeShortInsideGaps(std::vector<LinePiece> pieces,
-    const ViewGeometry& view, const LineVisibilityParameters& rule) const;
 
   /// How far (in Tolerances) the surface may stand beyond a silhouette for
   /// OutlinePixels' rule: the Wuson's smoothed back stood 1 to 2.6 beyond.

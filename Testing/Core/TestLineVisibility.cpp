@@ -203,34 +203,111 @@ TEST(LineVisibility, ALineWellInsideItsSheetsImageIsHidden)
     fold.occlusion(view, glm::dvec3(0.5, 0, 0), parameters), OcclusionMesh::Occlusion::Clear);
 }
 
+// The square z = 0, x in [0, 1], with a flap over each span [y0, y1] folded
+// at x = 1 back to x = 0.9, 0.001 above it (within the tolerance of
+// outlineRule()), and, when `bar` is given, a separate bar 0.5 above the
+// square over x in [0.8, 1.1], y in the bar's span (an occluder beyond the
+// tolerance).
+OcclusionMesh flaps(const std::vector<std::pair<double, double>>& spans,
+  const std::pair<double, double>* bar = nullptr)
+{
+  std::vector<double> ys{ -1.0, 1.0 };
+  for (const auto& span : spans)
+  {
+    ys.push_back(span.first);
+    ys.push_back(span.second);
+  }
+  std::sort(ys.begin(), ys.end());
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  auto quad = [&](glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, glm::dvec3 d) {
+    const Id first = static_cast<Id>(points.size());
+    points.insert(points.end(), { a, b, c, d });
+    triangles.push_back({ { first, first + 1, first + 2 } });
+    triangles.push_back({ { first, first + 2, first + 3 } });
+  };
+  for (std::size_t k = 0; k + 1 < ys.size(); ++k) // the square, in strips
+  {
+    quad({ 0, ys[k], 0 }, { 1, ys[k], 0 }, { 1, ys[k + 1], 0 }, { 0, ys[k + 1], 0 });
+  }
+  for (const auto& [y0, y1] : spans) // joined to the square at x = 1
+  {
+    quad({ 1, y0, 0 }, { 1, y1, 0 }, { 0.9, y1, 0.001 }, { 0.9, y0, 0.001 });
+  }
+  if (bar)
+  {
+    quad({ 0.8, bar->first, 0.5 }, { 1.1, bar->first, 0.5 }, { 1.1, bar->second, 0.5 },
+      { 0.8, bar->second, 0.5 });
+  }
+  return OcclusionMesh(points, triangles);
+}
+
 // A piece hidden only by that rule, shorter than InsideGapOutlines times
 // OutlinePixels in the image and between two visible pieces, is drawn: the
-// line comes back whole, as if never split. A longer one stays hidden.
+// line comes back whole, as if never split. A longer one stays hidden, and
+// so does a short one that a probe finds hidden by the ray rule, or that
+// starts or ends the line.
 TEST(LineVisibility, AShortDipInsideItsSheetsImageLeavesNoGap)
 {
-  // The square z = 0, x in [0, 1], with a flap over y in [-h, h] folded at
-  // x = 1 back to x = 0.9, 0.001 above it.
-  auto folded = [](double h) {
-    const std::vector<glm::dvec3> points{ { 0, -1, 0 }, { 1, -1, 0 }, { 1, -h, 0 }, { 1, h, 0 },
-      { 1, 1, 0 }, { 0, 1, 0 }, { 0.9, h, 0.001 }, { 0.9, -h, 0.001 } };
-    const std::vector<Triangle> triangles{ { { 0, 1, 2 } }, { { 0, 2, 5 } }, { { 2, 3, 5 } },
-      { { 3, 4, 5 } }, { { 2, 3, 6 } }, { { 2, 6, 7 } } };
-    return OcclusionMesh(points, triangles);
-  };
   const ViewGeometry view = fromAboveInPixels();
-  const LineVisibilityParameters parameters = outlineRule();
+  LineVisibilityParameters parameters = outlineRule();
+  parameters.SampleSpacing = 1e-3;
   ASSERT_EQ(OcclusionMesh::InsideGapOutlines, 8.0);
   const std::vector<glm::dvec3> line = lineAlongY(0.95);
-  const std::vector<LinePiece> dip = splitByVisibility(folded(0.02), view, line, parameters);
+  const std::vector<LinePiece> dip =
+    splitByVisibility(flaps({ { -0.02, 0.02 } }), view, line, parameters);
   ASSERT_EQ(dip.size(), 1u) << "4 pixels under the flap";
   EXPECT_TRUE(dip[0].Visible);
   EXPECT_EQ(dip[0].Points, line);
   EXPECT_EQ(dip[0].Along, (std::vector<double>{ 0.0, 1.0, 2.0 }));
-  const std::vector<LinePiece> run = splitByVisibility(folded(0.2), view, line, parameters);
+
+  const std::vector<LinePiece> run =
+    splitByVisibility(flaps({ { -0.2, 0.2 } }), view, line, parameters);
   ASSERT_EQ(run.size(), 3u) << "40 pixels under the flap";
   EXPECT_FALSE(run[1].Visible);
   EXPECT_NEAR(run[1].Points.front().y, -0.2, 1e-6);
   EXPECT_NEAR(run[1].Points.back().y, 0.2, 1e-6);
+
+  // A bar beyond the tolerance over part of the dip: hidden for good.
+  for (const std::pair<double, double> bar : { std::pair(0.003, 0.013), std::pair(-0.03, -0.01) })
+  {
+    const std::vector<LinePiece> barred =
+      splitByVisibility(flaps({ { -0.02, 0.02 } }, &bar), view, line, parameters);
+    expectWellFormed(barred, line);
+    ASSERT_EQ(barred.size(), 3u) << bar.first;
+    EXPECT_FALSE(barred[1].Visible);
+    EXPECT_LE(barred[1].Points.front().y, std::max(bar.first, -0.02) + 1e-6);
+    EXPECT_GE(barred[1].Points.back().y, bar.second - 1e-6);
+  }
+
+  // Under the flap at the line's start, or at its end: hidden (a bar
+  // elsewhere makes four pieces).
+  const std::pair<double, double> farBar(-0.3, -0.2);
+  const OcclusionMesh barAndFlap = flaps({ { -0.02, 0.02 } }, &farBar);
+  const std::vector<glm::dvec3> starting{ { 0.95, -0.01, 0 }, { 0.95, -0.4, 0 },
+    { 0.95, -0.5, 0 } };
+  const std::vector<LinePiece> start = splitByVisibility(barAndFlap, view, starting, parameters);
+  expectWellFormed(start, starting);
+  ASSERT_EQ(start.size(), 4u);
+  EXPECT_FALSE(start[0].Visible);
+  const std::vector<glm::dvec3> ending{ { 0.95, -0.5, 0 }, { 0.95, -0.1, 0 }, { 0.95, 0.01, 0 } };
+  const std::vector<LinePiece> end = splitByVisibility(barAndFlap, view, ending, parameters);
+  expectWellFormed(end, ending);
+  ASSERT_EQ(end.size(), 4u);
+  EXPECT_FALSE(end[3].Visible);
+
+  // Three dips: one piece, the line itself, with or without the joining of
+  // short pieces after.
+  const OcclusionMesh three = flaps({ { -0.3, -0.27 }, { -0.02, 0.02 }, { 0.2, 0.23 } });
+  for (const double minimum : { 0.0, 0.05 })
+  {
+    parameters.MinimumPieceLength = minimum;
+    const std::vector<LinePiece> dips = splitByVisibility(three, view, line, parameters);
+    expectWellFormed(dips, line);
+    ASSERT_EQ(dips.size(), 1u) << minimum;
+    EXPECT_TRUE(dips[0].Visible);
+    EXPECT_EQ(dips[0].Points, line);
+  }
 }
 
 TEST(LineVisibility, NothingInTheWayGivesTheLineBack)

@@ -35,7 +35,8 @@ const char* KindName(double kind)
 
 // The length of the valid UTF-8 sequence at text[i] (1 to 4), or 0 when the
 // bytes there are not one (a stray continuation byte, an overlong form, a
-// surrogate, beyond U+10FFFF, or cut short).
+// surrogate, beyond U+10FFFF, or cut short), or one of a code point XML
+// 1.0 does not allow (U+FFFE, U+FFFF).
 std::size_t Utf8SequenceLength(const std::string& text, std::size_t i)
 {
   const auto byte = [&](std::size_t k) {
@@ -80,8 +81,9 @@ std::size_t Utf8SequenceLength(const std::string& text, std::size_t i)
     code = (code << 6) | (byte(i + k) & 0x3Fu);
   }
   const unsigned long smallest[5] = { 0, 0, 0x80, 0x800, 0x10000 };
-  const bool valid =
-    code >= smallest[length] && code <= 0x10FFFF && !(code >= 0xD800 && code <= 0xDFFF);
+  // XML 1.0's characters: no surrogates, not U+FFFE or U+FFFF.
+  const bool valid = code >= smallest[length] && code <= 0x10FFFF &&
+    !(code >= 0xD800 && code <= 0xDFFF) && code != 0xFFFE && code != 0xFFFF;
   return valid ? length : 0;
 }
 

@@ -226,20 +226,23 @@ if code == 0:
 # --- A file name that is not UTF-8 -------------------------------------------
 # The title holds the command line; a byte that is not UTF-8 (a Latin-1 name)
 # is written as '?', so the drawing still parses (it did not).
-latin = os.path.join(os.fsencode(work), b"torus-\xe9.vtp")
-shutil.copyfile(torus, latin)
-latin_svg = os.path.join(work, "latin.svg")
-done = subprocess.run([program, "render", latin, "--style", "lines", "--size", "200x150",
-                       "-o", latin_svg], capture_output=True, timeout=300)
-code, err = done.returncode, done.stderr.decode(errors="replace")
-check(code == 0, "a Latin-1 file name renders: " + err.strip())
-if code == 0:
-    try:
-        title = paths(latin_svg)[0].find(SVG + "title").text
-    except ElementTree.ParseError as error:
-        title = "does not parse: %s" % error
-    check("/torus-?.vtp' --style lines --size 200x150 -o " + latin_svg in title,
-          "the title writes the Latin-1 byte as '?': " + title)
+# So is U+FFFF, which is UTF-8 but not an XML 1.0 character.
+for name, shown in ((b"torus-\xe9.vtp", "torus-?.vtp"), (b"torus-\xef\xbf\xbf.vtp", "torus-???.vtp")):
+    odd = os.path.join(os.fsencode(work), name)
+    shutil.copyfile(torus, odd)
+    odd_svg = os.path.join(work, "odd.svg")
+    done = subprocess.run([program, "render", odd, "--style", "lines", "--size", "200x150",
+                           "-o", odd_svg], capture_output=True, timeout=300)
+    code, err = done.returncode, done.stderr.decode(errors="replace")
+    check(code == 0, "a file name %r renders: %s" % (name, err.strip()))
+    if code == 0:
+        try:
+            title = paths(odd_svg)[0].find(SVG + "title").text
+        except ElementTree.ParseError as error:
+            title = "does not parse: %s" % error
+        check("/%s' --style lines --size 200x150 -o %s" % (shown, odd_svg) in title,
+              "the title writes %r with a '?' a byte: %s" % (name, title))
+    os.remove(odd)
 
 # --- Errors --------------------------------------------------------------------
 code, _, err = run("render", torus, "--progressive", "3", "-o", os.path.join(work, "p"))

@@ -143,12 +143,12 @@ void RunSmooth(const SmoothOptions& options)
   if (options.Output)
   {
     CheckMeshOutputPath(*options.Output);
-    RefuseOverwritingInput(options.Input, *options.Output, "-o");
+    RefuseOverwritingModelOrInput(options.Input, *options.Output, "-o");
   }
   if (options.LinesOutput)
   {
     CheckLinesOutputPath(*options.LinesOutput);
-    RefuseOverwritingInput(options.Input, *options.LinesOutput, "--lines-output");
+    RefuseOverwritingModelOrInput(options.Input, *options.LinesOutput, "--lines-output");
   }
   vtkSmartPointer<vtkPolyData> mesh = ReadMeshWithTriangles(options.Input);
   const OffscreenView view = MakeOffscreenView(options.Camera.ViewportSize);
@@ -321,11 +321,11 @@ void RunRender(const RenderOptions& options)
     return;
   }
   CheckRenderOutputPath(options);
-  RefuseOverwritingInput(options.Input, options.Output, "-o");
+  RefuseOverwritingModelOrInput(options.Input, options.Output, "-o");
   if (options.LinesOutput)
   {
     CheckLinesOutputPath(*options.LinesOutput);
-    RefuseOverwritingInput(options.Input, *options.LinesOutput, "--lines-output");
+    RefuseOverwritingModelOrInput(options.Input, *options.LinesOutput, "--lines-output");
   }
   const bool svg = IsSvgPath(options.Output);
   if (!svg)

@@ -63,4 +63,13 @@ vtkSmartPointer<vtkPolyData> ReadModelOrMesh(const std::string& input)
   return ReadMesh(input);
 }
 
+void RefuseOverwritingModelOrInput(
+  const std::string& input, const std::string& output, const std::string& option)
+{
+  const std::string modelFile = silhouette_eval::IsModelName(input)
+    ? silhouette_eval::ModelFile(input, DefaultDataDirectory())
+    : std::string();
+  RefuseOverwritingInput(modelFile.empty() ? input : modelFile, output, option);
+}
+
 } // namespace cli

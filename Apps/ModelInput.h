@@ -30,6 +30,12 @@ vtkSmartPointer<vtkPolyData> CoarseModel(const std::string& name,
 /// file `input` (ReadMesh), after RequireModelOrFile.
 vtkSmartPointer<vtkPolyData> ReadModelOrMesh(const std::string& input);
 
+/// RefuseOverwritingInput (MeshIO.h) for an INPUT word: for a model name,
+/// the file the model is read from (the bunny's PLY in the data folder) is
+/// the input that `output` must not overwrite.
+void RefuseOverwritingModelOrInput(
+  const std::string& input, const std::string& output, const std::string& option);
+
 } // namespace cli
 
 #endif

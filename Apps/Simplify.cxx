@@ -184,7 +184,7 @@ void RunSimplify(const SimplifyOptions& options)
 {
   using Clock = std::chrono::steady_clock;
   CheckMeshOutputPath(options.Output);
-  RefuseOverwritingInput(options.Input, options.Output, "-o");
+  RefuseOverwritingModelOrInput(options.Input, options.Output, "-o");
   if (options.Measure)
   {
     RequireDisplay();

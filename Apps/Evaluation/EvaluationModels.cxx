@@ -312,14 +312,19 @@ vtkSmartPointer<vtkPolyData> SampleAnalytic(const std::string& name, const Sampl
 
 } // namespace
 
+std::string ModelFile(const std::string& name, const std::string& dataDir)
+{
+  return name == "bunny" ? dataDir + "/bunny.ply" : std::string();
+}
+
 vtkSmartPointer<vtkPolyData> MakeOriginal(const std::string& name, const std::string& dataDir)
 {
-  if (name != "bunny")
+  const std::string path = ModelFile(name, dataDir);
+  if (path.empty())
   {
     return SampleAnalytic(name, InfoOf(name).Original); // InfoOf throws for an unknown name
   }
   vtkNew<vtkPLYReader> reader;
-  const std::string path = dataDir + "/bunny.ply";
   reader->SetFileName(path.c_str());
   reader->Update();
   if (reader->GetOutput()->GetNumberOfPolys() == 0)

@@ -44,6 +44,10 @@ std::string ModelDescription(const std::string& name);
 /// The original mesh of a model of the set (dataDir holds bunny.ply), with
 /// exact normals where the shape is analytic. Throws std::runtime_error.
 vtkSmartPointer<vtkPolyData> MakeOriginal(const std::string& name, const std::string& dataDir);
+
+/// The file MakeOriginal reads model `name` from (the bunny's PLY in
+/// `dataDir`), or empty for a model made from its analytic shape.
+std::string ModelFile(const std::string& name, const std::string& dataDir);
 /// The default triangle count of a model's coarse version.
 int DefaultCoarseTriangles(const std::string& name);
 ExactShape ExactShapeOf(const std::string& name);

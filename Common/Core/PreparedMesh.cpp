@@ -18,6 +18,44 @@ namespace silsmooth
 namespace
 {
 
+// PreparedMesh::setBackgroundBuildHook's function. Never destroyed: a
+// detached build may still be running when the program ends.
+struct BackgroundBuildHook
+{
+  std::mutex Mutex;
+  std::function<void()> Hook;
+};
+
+BackgroundBuildHook& backgroundBuildHook()
+{
+  static BackgroundBuildHook* hook = new BackgroundBuildHook;
+  return *hook;
+}
+
+void runBackgroundBuildHook()
+{
+  std::function<void()> hook;
+  {
+    std::lock_guard<std::mutex> lock(backgroundBuildHook().Mutex);
+    hook = backgroundBuildHook().Hook;
+  }
+  if (hook)
+  {
+    hook();
+  }
+}
+
+} // namespace
+
+void PreparedMesh::setBackgroundBuildHook(std::function<void()> hook)
+{
+  std::lock_guard<std::mutex> lock(backgroundBuildHook().Mutex);
+  backgroundBuildHook().Hook = std::move(hook);
+}
+
+namespace
+{
+
 // The feature edges that are edges of the triangles (normalised, sorted).
 std::vector<FeatureEdge> featureEdgesOfTriangles(std::vector<FeatureEdge> featureEdges,
   const std::vector<Triangle>& triangles, const EdgeTable* edges)
@@ -387,6 +425,7 @@ const TriangleGrid* PreparedMesh::foldGuardGridForFrame(IndexBuild build) const
       std::thread([shared, points = this->Points, triangles = this->Triangles] {
         try
         {
+          runBackgroundBuildHook();
           TriangleGrid grid(points, triangles);
           std::call_once(shared->Once, [&] {
             shared->Grid = std::move(grid);
@@ -471,6 +510,7 @@ bool PreparedMesh::findSilhouetteTriangles(const ViewGeometry& view, const Paral
                       triangles = this->Triangles, perspective] {
           try
           {
+            runBackgroundBuildHook();
             shared->Tree = SilhouetteTriangleHierarchy(points, normals, triangles, perspective);
             shared->Ready.store(true, std::memory_order_release);
           }

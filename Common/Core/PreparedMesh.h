@@ -220,6 +220,12 @@ public:
   /// and answers findSilhouetteTriangles (for tests and benchmarks).
   bool silhouetteTreeReady(bool parallel) const;
 
+  /// For tests: a function every background build (IndexBuild::Background)
+  /// calls on its thread before it builds; empty for none (the default).
+  /// A test holds the builds there to see frames run while they are not
+  /// done. Set it while no build is running.
+  static void setBackgroundBuildHook(std::function<void()> hook);
+
 private:
   /// moved()'s: takes earlier's topology.
   PreparedMesh(PreparedMesh& earlier, std::vector<glm::dvec3> points,

@@ -8,6 +8,9 @@
 if (NOT DEFINED PREFIX)
   message(FATAL_ERROR "CheckRunpaths.cmake needs -DPREFIX=...")
 endif ()
+# Compared as an absolute, normal path (a trailing slash or ../ in it would
+# make every entry look outside).
+get_filename_component(PREFIX "${PREFIX}" ABSOLUTE)
 find_program(readelf_program readelf)
 if (readelf_program)
   file(GLOB_RECURSE elf_candidates LIST_DIRECTORIES false "${PREFIX}/bin/*" "${PREFIX}/lib/*.so*")
@@ -29,6 +32,7 @@ if (readelf_program)
       get_filename_component(origin "${binary}" DIRECTORY)
       string(REPLACE ":" ";" folders "${search_path}")
       foreach (folder IN LISTS folders)
+        string(REPLACE "\${ORIGIN}" "$ORIGIN" folder "${folder}")
         if (NOT folder MATCHES "^\\$ORIGIN(/|$)")
           message(FATAL_ERROR "FAILED: ${binary}: RUNPATH entry '${folder}' is not relative to $ORIGIN")
         endif ()

@@ -2,6 +2,7 @@
 // closed-manifold invariants (docs/methods.md, "How the open choices were closed").
 #include "CoreTestMeshes.h"
 #include "FoldGuard.h"
+#include "HeldBackgroundBuilds.h"
 #include "SilhouetteSmoother.h"
 
 #include <glm/geometric.hpp>
@@ -517,15 +518,16 @@ TEST(SilhouetteSmoother, FoldGuardLeavesNoFoldAndIncrementalChecksChangeNothing)
 // The fold guard's grid built on a thread of its own (the default,
 // SmoothingParameters::IndexesInBackground) changes no frame: the frames scan
 // until it is done and use it afterwards, and each equals the frame of a mesh
-// that built its grid in the second frame. The mesh that started the build
-// is dropped during it; its copy shares the grid.
+// that built its grid in the second frame. The builds are held at their
+// start while the mesh that started them is dropped and its copy (which
+// shares the grid) smooths on; then they go.
 TEST(SilhouetteSmoother, FoldGuardGridBuiltInTheBackgroundChangesNoFrame)
 {
-  // About 3,500 triangles, with folds in the frames. (That frames before the
-  // grid is built do not use it: core.PreparedMeshGrid.)
+  // About 3,500 triangles, with folds in the frames.
+  const PreparedMesh reference = noisySphere(50.0, 30, 60);
+  coretest::HeldBackgroundBuilds held;
   auto original = std::make_unique<PreparedMesh>(noisySphere(50.0, 30, 60));
   const PreparedMesh copy = *original;
-  const PreparedMesh reference = noisySphere(50.0, 30, 60);
   SmoothingParameters background;
   ASSERT_TRUE(background.IndexesInBackground);
   SmoothingParameters inCall;
@@ -544,12 +546,18 @@ TEST(SilhouetteSmoother, FoldGuardGridBuiltInTheBackgroundChangesNoFrame)
     fallbacks += c.ChordFallbackTriangles + c.StraightSilhouettePoints + c.PinnedPoints;
   };
   int v = 0;
-  for (; v < 2; ++v) // the second frame starts the build
+  for (; v < 2; ++v) // the second frame starts the builds
   {
     compare(*original, v);
   }
   EXPECT_TRUE(reference.hasTriangleGrid()) << "built in the second frame";
   original.reset();
+  for (; v < 6; ++v)
+  {
+    EXPECT_FALSE(copy.hasTriangleGrid()) << "held";
+    compare(copy, v);
+  }
+  held.release();
   int withGrid = 0;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (withGrid < 4 && std::chrono::steady_clock::now() < deadline)

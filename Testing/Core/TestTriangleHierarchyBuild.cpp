@@ -3,6 +3,7 @@
 // done the passes scan, afterwards it answers, and either way a frame's
 // output is the scan's. A mesh may go while they are still being built.
 #include "CoreTestMeshes.h"
+#include "HeldBackgroundBuilds.h"
 #include "PreparedMesh.h"
 #include "SilhouetteSmoother.h"
 #include "SmoothingResultCheck.h"
@@ -33,9 +34,9 @@ ViewGeometry orbitView(int step)
 
 } // namespace
 
-// The mesh searched twice starts the build and is then dropped: its copy
-// (which shares the tree) goes on. The thread works on copies of the arrays
-// (one that read the dropped mesh's would read freed memory, which the
+// The mesh searched twice starts the build and is then dropped, while the
+// build is held at its start: its copy (which shares the tree) goes on. The thread works on copies
+// of the arrays (one that read the dropped mesh's would read freed memory, which the
 // AddressSanitizer run sees when the build outlives the mesh). The copy's
 // frames equal a scanning pass's before and after the tree is ready, and the
 // tree becomes ready.
@@ -44,6 +45,7 @@ TEST(SilhouetteTriangleHierarchy, BuiltInTheBackgroundAnswersAsTheScanDoes)
   std::vector<glm::dvec3> points;
   std::vector<Triangle> triangles;
   coretest::unitSphere(150, 300, points, triangles); // about 90,000 triangles
+  coretest::HeldBackgroundBuilds held;
   auto original = std::make_unique<PreparedMesh>(points, triangles, points);
   const PreparedMesh copy = *original;
 
@@ -58,7 +60,14 @@ TEST(SilhouetteTriangleHierarchy, BuiltInTheBackgroundAnswersAsTheScanDoes)
     coretest::expectSameSmoothing(smoothSilhouettes(*original, orbitView(step), scanning),
       smoothSilhouettes(*original, orbitView(step), background), "view " + std::to_string(step));
   }
-  original.reset();
+  original.reset(); // while the builds are held: the mesh goes first
+  for (; step < 4; ++step)
+  {
+    EXPECT_FALSE(copy.silhouetteTreeReady(false)) << "held";
+    coretest::expectSameSmoothing(smoothSilhouettes(copy, orbitView(step), scanning),
+      smoothSilhouettes(copy, orbitView(step), background), "view " + std::to_string(step));
+  }
+  held.release();
 
   int answeredByTree = 0;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
@@ -100,20 +109,35 @@ TEST(SilhouetteTriangleHierarchy, BuiltInTheCallIsReadyAfterTheSecondSearch)
 // The fold guard's grid, asked for by a mesh's second frame, is built on a
 // thread: that frame and the next ones get no grid (they scan) until it is
 // built, then the grid, which answers as one built in the call. A deforming
-// mesh's frames build it in the call, for the next frames to adopt.
+// mesh's frames build it in the call, for the next frames to adopt. The
+// build is held at its start until the test lets it go, so no frame can find
+// it done early.
 TEST(PreparedMeshGrid, FramesScanUntilTheBackgroundGridIsBuilt)
 {
   std::vector<glm::dvec3> points;
   std::vector<Triangle> triangles;
-  coretest::unitSphere(150, 300, points, triangles); // about 90,000 triangles
+  coretest::unitSphere(40, 80, points, triangles);
+  coretest::HeldBackgroundBuilds held;
   const PreparedMesh mesh(points, triangles, points);
   EXPECT_EQ(mesh.foldGuardGridForFrame(), nullptr) << "the first frame scans";
-  // Built in a few milliseconds at the least: a grid handed out before then
-  // would be read while it is written.
-  const TriangleGrid* second = mesh.foldGuardGridForFrame();
-  const bool builtByThen = mesh.hasTriangleGrid();
-  EXPECT_TRUE(second == nullptr || builtByThen);
-  const TriangleGrid* grid = second;
+  EXPECT_EQ(mesh.foldGuardGridForFrame(), nullptr) << "the second starts the build, not waiting";
+  EXPECT_EQ(mesh.foldGuardGridForFrame(), nullptr) << "the third scans while it runs";
+  EXPECT_FALSE(mesh.hasTriangleGrid());
+
+  PreparedMesh before(points, triangles, points);
+  EXPECT_EQ(before.foldGuardGridForFrame(), nullptr);
+  std::vector<glm::dvec3> moved = points;
+  for (glm::dvec3& p : moved)
+  {
+    p *= 1.001;
+  }
+  PreparedMesh after(moved, triangles, moved);
+  EXPECT_FALSE(after.adoptTriangleGrid(before)) << "no grid to adopt yet";
+  EXPECT_NE(after.foldGuardGridForFrame(), nullptr) << "a deforming mesh's second frame";
+  EXPECT_TRUE(after.hasTriangleGrid());
+
+  held.release();
+  const TriangleGrid* grid = nullptr;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (grid == nullptr && std::chrono::steady_clock::now() < deadline)
   {
@@ -135,16 +159,4 @@ TEST(PreparedMeshGrid, FramesScanUntilTheBackgroundGridIsBuilt)
     EXPECT_FALSE(a.empty());
     EXPECT_EQ(a, b);
   }
-
-  PreparedMesh before(points, triangles, points);
-  EXPECT_EQ(before.foldGuardGridForFrame(), nullptr);
-  std::vector<glm::dvec3> moved = points;
-  for (glm::dvec3& p : moved)
-  {
-    p *= 1.001;
-  }
-  PreparedMesh after(moved, triangles, moved);
-  EXPECT_FALSE(after.adoptTriangleGrid(before)) << "no grid to adopt yet";
-  EXPECT_NE(after.foldGuardGridForFrame(), nullptr) << "a deforming mesh's second frame";
-  EXPECT_TRUE(after.hasTriangleGrid());
 }

@@ -760,6 +760,11 @@ CommandLine ParseCommandLine(int argc, char* argv[])
   const std::string command = words.front();
   if (command == "--version" || command == "version")
   {
+    if (words.size() == 2 && IsHelpWord(words[1]))
+    {
+      result.HelpText = HelpOf("version"); // as for every other command
+      return result;
+    }
     if (words.size() > 1)
     {
       throw UsageError("'" + command + "' takes no arguments");

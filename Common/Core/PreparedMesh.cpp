@@ -420,13 +420,14 @@ const TriangleGrid* PreparedMesh::foldGuardGridForFrame(IndexBuild build) const
   {
     try
     {
-      // Detached, with copies of the arrays and a share of the lazy state,
-      // as the triangle tree's build (findSilhouetteTriangles).
-      std::thread([shared, points = this->Points, triangles = this->Triangles] {
+      // Detached, with copies of the arrays (shared with a tree build that
+      // runs too) and a share of the lazy state, as the triangle tree's
+      // build (findSilhouetteTriangles).
+      std::thread([shared, arrays = this->buildArrays()] {
         try
         {
           runBackgroundBuildHook();
-          TriangleGrid grid(points, triangles);
+          TriangleGrid grid(arrays->Points, arrays->Triangles);
           std::call_once(shared->Once, [&] {
             shared->Grid = std::move(grid);
             shared->Built.store(true, std::memory_order_release);
@@ -506,12 +507,12 @@ bool PreparedMesh::findSilhouetteTriangles(const ViewGeometry& view, const Paral
         // state: the mesh (and every copy of it) may go before the tree is
         // done, and then nobody waits for it; the thread frees what it
         // holds when it ends.
-        std::thread([shared, points = this->Points, normals = this->Normals,
-                      triangles = this->Triangles, perspective] {
+        std::thread([shared, arrays = this->buildArrays(), perspective] {
           try
           {
             runBackgroundBuildHook();
-            shared->Tree = SilhouetteTriangleHierarchy(points, normals, triangles, perspective);
+            shared->Tree = SilhouetteTriangleHierarchy(
+              arrays->Points, arrays->Normals, arrays->Triangles, perspective);
             shared->Ready.store(true, std::memory_order_release);
           }
           catch (...)
@@ -535,6 +536,19 @@ bool PreparedMesh::findSilhouetteTriangles(const ViewGeometry& view, const Paral
     return false;
   }
   return lazy.Tree.find(view, this->Points, this->Normals, this->Triangles, parallelFor, out);
+}
+
+std::shared_ptr<const PreparedMesh::BuildArrays> PreparedMesh::buildArrays() const
+{
+  std::lock_guard<std::mutex> lock(this->SharedBuildArrays->Mutex);
+  std::shared_ptr<const BuildArrays> arrays = this->SharedBuildArrays->Arrays.lock();
+  if (!arrays)
+  {
+    arrays = std::make_shared<const BuildArrays>(
+      BuildArrays{ this->Points, this->Normals, this->Triangles });
+    this->SharedBuildArrays->Arrays = arrays;
+  }
+  return arrays;
 }
 
 bool PreparedMesh::silhouetteTreeReady(bool parallel) const

@@ -279,6 +279,25 @@ private:
   };
   std::shared_ptr<LazyGrid> Grid = std::make_shared<LazyGrid>();
   double GridSlack = 0.0;
+  /// Copies of the arrays the background builds read, made once for the
+  /// builds that run at the same time (the tree's and the grid's start in
+  /// the same frame): the first build's thread keeps them, the next ones
+  /// share them while it lives (weak: they go when the last build ends).
+  struct BuildArrays
+  {
+    std::vector<glm::dvec3> Points;
+    std::vector<glm::dvec3> Normals;
+    std::vector<Triangle> Triangles;
+  };
+  struct LazyBuildArrays
+  {
+    std::mutex Mutex;
+    std::weak_ptr<const BuildArrays> Arrays;
+  };
+  std::shared_ptr<LazyBuildArrays> SharedBuildArrays = std::make_shared<LazyBuildArrays>();
+  /// The arrays for a background build: the ones a running build holds, or
+  /// new copies.
+  std::shared_ptr<const BuildArrays> buildArrays() const;
   struct LazyTriangleHierarchy
   {
     std::atomic<int> Searches{ 0 };

@@ -256,9 +256,10 @@ std::string ViewHelp()
        silhouette view [MODEL|MESH] --play LOG [--screenshot-dir DIR] [--json] ...
 
 Opens a VTK render window with trackball camera interaction on the mesh,
-smoothed by vtkSilhouetteSmoothingFilter. The filter is fed the window's
-renderer, so it re-runs by itself whenever the camera moves (through the
-pipeline and its MTime). The window needs an X display; the headless modes
+smoothed for the camera whenever it moves: in the shaded style by
+vtkSilhouetteSmoothingMapper while it renders, in the other styles by
+vtkSilhouetteSmoothingFilter fed the window's renderer (through the pipeline
+and its MTime). The window needs an X display; the headless modes
 (--orbit, --play) render through OSMesa where there is none (--backend).
 
 MODEL|MESH: a model of the evaluation set (bunny, sphere, torus, ellipsoid,
@@ -284,14 +285,16 @@ screenshot folder and prints where. VTK's other trackball keys (3 stereo,
 j/t joystick, u user, fly-to, pick) do nothing here.
 
 The overlay (top left) shows the mesh, the style, the triangles in and out,
-the silhouette triangles and new triangles of the last filter run, the
+the silhouette triangles and new triangles of the last smoothing, the
 tolerance, and the times: frames per second from the wall time between the
 ends of the last 20 renders of the main view (a gap of over a second starts
 the count again, so idle time is not averaged in), the renderer's own time
 for the last render (vtkRenderer::GetLastRenderTimeInSeconds, which includes
-running the filter when the view moved) and the filter's time (wall time of
-its last execution). With smoothing off the filter does not run: the output
-is the input and the silhouette and new triangles show as 0.
+the smoothing when the view moved) and the smoothing's time (the mapper's
+for the last view change in the shaded style, the filter's last execution
+in the others; filter_ms in --orbit's table). With smoothing off nothing is
+smoothed: the output is the input and the silhouette and new triangles show
+as 0.
 
 Options:
   --style STYLE          the style to start in: shaded, wireframe,

@@ -445,7 +445,11 @@ bool Viewer::MakeFineReference()
   errors.Clear();
   try
   {
-    this->Fine = silhouette_eval::Refine(this->Original, this->Options.FineLevel);
+    // Merged first, as compare and figure do: Loop refinement joins
+    // triangles by point ids, and a file's seams and hard edges would leave
+    // each piece refined apart, faceted (the Wuson OBJ's reference was).
+    this->Fine = silhouette_eval::Refine(
+      silhouette_eval::WeldedTriangles(this->Original), this->Options.FineLevel);
     errors.ThrowIfErrors("Loop refinement failed");
   }
   catch (const std::exception& error)

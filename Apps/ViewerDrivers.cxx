@@ -133,8 +133,10 @@ void Viewer::RecordOrbit()
   {
     this->Perform(ViewerAction::ToggleFineReference);
   }
-  // Frame 0 runs the filter too (its cache stays), so every frame's time is one run.
+  // Frame 0 smooths too (the caches stay), so every frame's time is one run:
+  // the fine reference's render above has already smoothed this view.
   this->Filter->Modified();
+  this->SmoothMapper->GetSmoothingFilter()->Modified();
   const int frames = this->Options.Frames;
   const double step = this->Options.OrbitDegrees / frames;
   vtkCamera* camera = this->MainRenderer->GetActiveCamera();

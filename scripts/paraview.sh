@@ -12,7 +12,7 @@
 # into it read-only, and builds and tests inside it with chroot.
 #
 # The root lives at $SILHOUETTE_PARAVIEW_ROOT (default
-# /var/cache/silhouette-paraview/root, outside the source tree, about 2.5 GB) and
+# /var/cache/silhouette-paraview/root, outside the source tree, about 3 GB) and
 # is reused by later runs: a run on a ready root only rebuilds and tests. The
 # build is in /build/paraview inside the root. Remove the root with
 #   bash scripts/paraview.sh --remove-root

@@ -13,6 +13,15 @@ namespace cli
 void CheckObjFile(const std::string& path)
 {
   const std::string bytes = ReadFileBytes(path);
+  // A byte-order mark of UTF-16: vtkOBJReader reads bytes, and says only
+  // that the first "line" is too long.
+  const bool utf16 = bytes.size() >= 2 &&
+    ((bytes[0] == '\xFE' && bytes[1] == '\xFF') || (bytes[0] == '\xFF' && bytes[1] == '\xFE'));
+  if (utf16)
+  {
+    throw RuntimeError("cannot read '" + path +
+      "': it is UTF-16 text; OBJ files are read as ASCII or UTF-8 (convert it, e.g. with iconv)");
+  }
   std::vector<std::string> lines;
   TextCursor cursor(bytes);
   for (std::string line; cursor.NextLine(line);)

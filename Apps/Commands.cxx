@@ -9,6 +9,7 @@
 #include "PrintableText.h"
 #include "Rendering.h"
 #include "Smoothing.h"
+#include "TextFormat.h"
 #include "VtkErrorLog.h"
 
 #include <vtkCellArray.h>
@@ -29,6 +30,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace cli
@@ -336,11 +338,15 @@ void RunRender(const RenderOptions& options)
   const OffscreenView view = MakeOffscreenView(options.Camera.ViewportSize);
   SetUpCamera(view.Renderer, mesh->GetBounds(), options.Camera);
   vtkCamera* camera = view.Renderer->GetActiveCamera();
+  std::optional<Figures::LevelOfDetail> lodFigures;
   if (options.Lod)
   {
+    std::cerr << "render: building the level-of-detail hierarchy of "
+              << Grouped(mesh->GetNumberOfPolys()) << " triangles..." << std::endl;
     const LevelOfDetailRun lod = ExtractForView(mesh, camera, options.Camera);
     (options.Json ? std::cerr : std::cout) << lod.summary() << "\n";
     mesh = lod.Mesh;
+    lodFigures = Figures::LevelOfDetail{ lod.InputTriangles, lod.BuildMilliseconds };
   }
 
   const SmoothingRun run = SmoothSilhouette(mesh, camera, options.Camera);
@@ -360,9 +366,10 @@ void RunRender(const RenderOptions& options)
     WriteLines(run.Filter->GetSilhouetteOutput(), *options.LinesOutput, &outputs);
   }
   outputs.Commit();
-  PrintFigures(CollectFigures(options.Input, options.Output, run.Filter->GetOutput(),
-                 run.PrepareMilliseconds, run.MedianMilliseconds, options.Camera, camera),
-    options.Json);
+  Figures figures = CollectFigures(options.Input, options.Output, run.Filter->GetOutput(),
+    run.PrepareMilliseconds, run.MedianMilliseconds, options.Camera, camera);
+  figures.Lod = lodFigures;
+  PrintFigures(figures, options.Json);
 }
 
 } // namespace cli

@@ -172,7 +172,13 @@ void PrintFiguresAsJson(std::ostream& out, const Figures& figures)
       << ", \"focal_point\": " << JsonVector(figures.FocalPoint)
       << ", \"view_up\": " << JsonVector(figures.ViewUp)
       << ", \"view_angle\": " << JsonNumber(figures.ViewAngle)
-      << ", \"parallel\": " << (figures.Parallel ? "true" : "false") << "}}\n";
+      << ", \"parallel\": " << (figures.Parallel ? "true" : "false") << "}";
+  if (figures.Lod)
+  {
+    out << ", \"level_of_detail\": {\"source_triangles\": " << figures.Lod->SourceTriangles
+        << ", \"build_ms\": " << JsonNumber(figures.Lod->BuildMilliseconds) << "}";
+  }
+  out << "}\n";
 }
 
 } // namespace cli

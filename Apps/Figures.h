@@ -41,6 +41,14 @@ struct Figures
   std::array<double, 3> ViewUp{};
   double ViewAngle = 0.0;
   bool Parallel = false;
+  /// With `render --lod`: the file's triangles (InputTriangles are the
+  /// extracted mesh's) and the time the hierarchy and its first cut took.
+  struct LevelOfDetail
+  {
+    long long SourceTriangles = 0;
+    double BuildMilliseconds = 0.0;
+  };
+  std::optional<LevelOfDetail> Lod;
 };
 
 /// `text` as a JSON string literal, quotes and control characters escaped.

@@ -43,6 +43,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -289,9 +290,18 @@ void Viewer::BuildWindow(Mode mode)
   VtkErrorLog::Instance().Clear();
   if (this->Lod)
   {
+    // The hierarchy takes a while on a large mesh (about 30 s at 940k
+    // triangles), before any window shows: say so, and what it took.
+    std::cerr << "view: building the level-of-detail hierarchy of "
+              << Grouped(CountTriangles(this->Loaded)) << " triangles..." << std::endl;
+    const auto started = std::chrono::steady_clock::now();
     this->Lod->SetRenderer(this->MainRenderer);
     this->Lod->Update();
     VtkErrorLog::Instance().ThrowIfErrors("the level of detail failed");
+    const std::chrono::duration<double> took = std::chrono::steady_clock::now() - started;
+    std::cerr << "view: level of detail: " << Grouped(CountTriangles(this->Lod->GetOutput()))
+              << " triangles for this view (" << static_cast<long long>(took.count() * 1000.0 + 0.5)
+              << " ms)" << std::endl;
   }
   this->Filter->Update();
   VtkErrorLog::Instance().ThrowIfErrors("smoothing failed");

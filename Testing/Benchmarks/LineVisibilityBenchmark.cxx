@@ -17,6 +17,9 @@
 // the cusps of the inner contour that verdict is unsure, since it ignores
 // occluders nearer than a tenth of the way).
 //
+// A third column times the ray casts with OutlinePixels 1, as `silhouette
+// render` draws, and judges them the same way.
+//
 // Per frame, both pay for the surface being new (the smoothing re-meshes it
 // every frame): the ray casts build their triangle grid, the depth buffer
 // uploads and renders the mesh. Times are medians of 5 runs.
@@ -305,8 +308,9 @@ int main(int argc, char* argv[])
   camera->SetClippingRange(1.0, 10.0);
 
   std::printf("| triangles | line points | ray casts ms | depth buffer ms | ray casts wrong | "
-              "depth buffer wrong | judged | methods disagree |\n");
-  std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+              "depth buffer wrong | judged | methods disagree | ray casts, outline rules ms | "
+              "their wrong |\n");
+  std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   // ring x ring / 2 quads: about 1k, 10k and 100k triangles for 320.
   const int largest = options.LargestRing;
   const std::vector<int> rings{ std::max(8, largest / 10), std::max(8, largest * 10 / 32),
@@ -328,6 +332,12 @@ int main(int argc, char* argv[])
 
     vtkNew<vtkSilhouetteLineVisibility> rays;
     const std::vector<double> rayTimes = TimeRayCasts(rays, lines, surface, camera);
+    // As `silhouette render` draws: OutlinePixels 1 (the outline within a
+    // pixel drawn, a line inside the surface's image hidden).
+    vtkNew<vtkSilhouetteLineVisibility> outlined;
+    outlined->SetOutlinePixels(1.0);
+    outlined->SetViewportSize(options.Width, options.Height);
+    const std::vector<double> outlinedTimes = TimeRayCasts(outlined, lines, surface, camera);
     std::vector<unsigned char> bufferVisible;
     const std::vector<double> bufferTimes =
       TimeDepthBuffer(window, renderer, surface, lines, bufferVisible);
@@ -335,11 +345,16 @@ int main(int argc, char* argv[])
     Verdicts bufferVerdicts;
     const long disagree = JudgeAgainstTorus(
       lines, rays->GetOutput(), bufferVisible, camera->GetPosition(), rayVerdicts, bufferVerdicts);
-    std::printf("| %lld | %lld | %.2f | %.2f | %ld | %ld | %ld | %ld |\n",
+    Verdicts outlinedVerdicts;
+    Verdicts unused;
+    JudgeAgainstTorus(
+      lines, outlined->GetOutput(), bufferVisible, camera->GetPosition(), outlinedVerdicts, unused);
+    std::printf("| %lld | %lld | %.2f | %.2f | %ld | %ld | %ld | %ld | %.2f | %ld |\n",
       static_cast<long long>(surface->GetNumberOfPolys()),
       static_cast<long long>(lines->GetNumberOfPoints()), benchmark_timing::Median(rayTimes),
       benchmark_timing::Median(bufferTimes), rayVerdicts.Disagree, bufferVerdicts.Disagree,
-      rayVerdicts.Agree + rayVerdicts.Disagree, disagree);
+      rayVerdicts.Agree + rayVerdicts.Disagree, disagree, benchmark_timing::Median(outlinedTimes),
+      outlinedVerdicts.Disagree);
   }
   return EXIT_SUCCESS;
 }

@@ -416,33 +416,17 @@ const TriangleGrid* PreparedMesh::foldGuardGridForFrame(IndexBuild build) const
   {
     return &this->triangleGrid();
   }
-  if (!lazy.BackgroundStarted.exchange(true))
+  // Once per mesh; a grid that fails on its thread leaves the frames scanning.
+  if (!lazy.BackgroundStarted.exchange(true) &&
+    !this->startBackgroundBuild([shared](const BuildArrays& arrays) {
+      TriangleGrid grid(arrays.Points, arrays.Triangles);
+      std::call_once(shared->Once, [&] {
+        shared->Grid = std::move(grid);
+        shared->Built.store(true, std::memory_order_release);
+      });
+    }))
   {
-    try
-    {
-      // Detached, with copies of the arrays (shared with a tree build that
-      // runs too) and a share of the lazy state, as the triangle tree's
-      // build (findSilhouetteTriangles).
-      std::thread([shared, arrays = this->buildArrays()] {
-        try
-        {
-          runBackgroundBuildHook();
-          TriangleGrid grid(arrays->Points, arrays->Triangles);
-          std::call_once(shared->Once, [&] {
-            shared->Grid = std::move(grid);
-            shared->Built.store(true, std::memory_order_release);
-          });
-        }
-        catch (...)
-        {
-          // No grid: the frames keep scanning.
-        }
-      }).detach();
-    }
-    catch (const std::exception&)
-    {
-      return &this->triangleGrid(); // no thread (or no memory for the copies)
-    }
+    return &this->triangleGrid();
   }
   return lazy.Built.load(std::memory_order_acquire) ? &lazy.Grid : nullptr;
 }
@@ -499,33 +483,15 @@ bool PreparedMesh::findSilhouetteTriangles(const ViewGeometry& view, const Paral
   }
   const bool perspective = !view.Parallel;
   std::call_once(lazy.Once, [&] {
-    if (build == IndexBuild::Background)
+    // A tree that fails on its thread leaves every search scanning.
+    if (build == IndexBuild::Background &&
+      this->startBackgroundBuild([shared, perspective](const BuildArrays& arrays) {
+        shared->Tree =
+          SilhouetteTriangleHierarchy(arrays.Points, arrays.Normals, arrays.Triangles, perspective);
+        shared->Ready.store(true, std::memory_order_release);
+      }))
     {
-      try
-      {
-        // Detached, with copies of the arrays and a share of the lazy
-        // state: the mesh (and every copy of it) may go before the tree is
-        // done, and then nobody waits for it; the thread frees what it
-        // holds when it ends.
-        std::thread([shared, arrays = this->buildArrays(), perspective] {
-          try
-          {
-            runBackgroundBuildHook();
-            shared->Tree = SilhouetteTriangleHierarchy(
-              arrays->Points, arrays->Normals, arrays->Triangles, perspective);
-            shared->Ready.store(true, std::memory_order_release);
-          }
-          catch (...)
-          {
-            // No tree: every search keeps scanning.
-          }
-        }).detach();
-        return;
-      }
-      catch (const std::exception&)
-      {
-        // No thread (or no memory for the copies): build it here.
-      }
+      return;
     }
     lazy.Tree =
       SilhouetteTriangleHierarchy(this->Points, this->Normals, this->Triangles, perspective);
@@ -549,6 +515,29 @@ std::shared_ptr<const PreparedMesh::BuildArrays> PreparedMesh::buildArrays() con
     this->SharedBuildArrays->Arrays = arrays;
   }
   return arrays;
+}
+
+bool PreparedMesh::startBackgroundBuild(std::function<void(const BuildArrays&)> build) const
+{
+  try
+  {
+    std::thread([arrays = this->buildArrays(), build = std::move(build)] {
+      try
+      {
+        runBackgroundBuildHook();
+        build(*arrays);
+      }
+      catch (...)
+      {
+        // Nothing built: the frames keep scanning.
+      }
+    }).detach();
+    return true;
+  }
+  catch (const std::exception&)
+  {
+    return false;
+  }
 }
 
 bool PreparedMesh::silhouetteTreeReady(bool parallel) const

@@ -298,6 +298,13 @@ private:
   /// The arrays for a background build: the ones a running build holds, or
   /// new copies.
   std::shared_ptr<const BuildArrays> buildArrays() const;
+  /// Runs `build` on a detached thread of its own, over buildArrays() (the
+  /// mesh, and every copy of it, may go before it is done; the thread frees
+  /// what it holds when it ends), after the test hook. An exception inside
+  /// the thread ends it with nothing built. False, with nothing started,
+  /// when no thread (or no memory for the copies) could be had: the caller
+  /// builds in the call.
+  bool startBackgroundBuild(std::function<void(const BuildArrays&)> build) const;
   struct LazyTriangleHierarchy
   {
     std::atomic<int> Searches{ 0 };

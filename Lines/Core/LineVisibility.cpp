@@ -339,8 +339,8 @@ double OcclusionMesh::toleranceAt(
     rule.Tolerance, std::max(rule.LocalToleranceFactor * longest, 2.0 * rule.Contact));
 }
 
-bool OcclusionMesh::besideInTheImage(const ViewGeometry& view, const glm::dvec3& point,
-  const glm::dvec3& direction, double pixels, glm::dvec3& offset) const
+std::optional<bool> OcclusionMesh::hiddenOnBothSides(const ViewGeometry& view,
+  const glm::dvec3& point, const glm::dvec3& direction, double pixels, double contact) const
 {
   const glm::dvec3 toward = view.towardViewerFrom(point);
   glm::dvec3 across = glm::cross(toward, direction);
@@ -348,7 +348,7 @@ bool OcclusionMesh::besideInTheImage(const ViewGeometry& view, const glm::dvec3&
   const double distance = glm::length(toward);
   if (!(pixels > 0.0) || !(acrossLength > 0.0) || !std::isfinite(acrossLength) || !(distance > 0.0))
   {
-    return false;
+    return std::nullopt;
   }
   across /= acrossLength;
   // Model units per pixel here, from a step small against the distance to
@@ -358,26 +358,24 @@ bool OcclusionMesh::besideInTheImage(const ViewGeometry& view, const glm::dvec3&
   glm::dvec2 beside;
   if (!(step > 0.0) || !view.toPixels(point, at) || !view.toPixels(point + step * across, beside))
   {
-    return false;
+    return std::nullopt;
   }
   const double pixelsPerStep = glm::length(beside - at);
   if (!(pixelsPerStep > 0.0) || !std::isfinite(pixelsPerStep))
   {
-    return false;
+    return std::nullopt;
   }
-  offset = (pixels * step / pixelsPerStep) * across;
-  return true;
+  const glm::dvec3 offset = (pixels * step / pixelsPerStep) * across;
+  return this->hides(view, point + offset, contact) && this->hides(view, point - offset, contact);
 }
 
 bool OcclusionMesh::nearTheOutline(const ViewGeometry& view, const glm::dvec3& point,
   const glm::dvec3& direction, const LineVisibilityParameters& rule) const
 {
-  glm::dvec3 offset;
-  if (!this->besideInTheImage(view, point, direction, rule.OutlinePixels, offset) ||
-    (this->hides(view, point + offset, rule.Contact) &&
-      this->hides(view, point - offset, rule.Contact)))
+  if (this->hiddenOnBothSides(view, point, direction, rule.OutlinePixels, rule.Contact)
+        .value_or(true))
   {
-    return false;
+    return false; // no outline within that distance (or no image to tell)
   }
   // Only the point's own sheet may hide it, and only near it: a surface
   // standing a little beyond its silhouette curve, not an occluder in front
@@ -400,11 +398,10 @@ bool OcclusionMesh::nearTheOutline(const ViewGeometry& view, const glm::dvec3& p
 bool OcclusionMesh::insideTheOutline(const ViewGeometry& view, const glm::dvec3& point,
   const glm::dvec3& direction, const LineVisibilityParameters& rule) const
 {
-  glm::dvec3 offset;
-  return this->besideInTheImage(
-           view, point, direction, InsideOutlineFactor * rule.OutlinePixels, offset) &&
-    this->hides(view, point + offset, rule.Contact) &&
-    this->hides(view, point - offset, rule.Contact);
+  return this
+    ->hiddenOnBothSides(
+      view, point, direction, InsideOutlineFactor * rule.OutlinePixels, rule.Contact)
+    .value_or(false);
 }
 
 bool OcclusionMesh::hides(

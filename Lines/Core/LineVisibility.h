@@ -46,6 +46,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <vector>
 
 namespace silsmooth
@@ -178,10 +179,12 @@ private:
   template<typename Counts>
   bool anyHit(
     const ViewGeometry& view, const glm::dvec3& point, double from, double to, Counts counts) const;
-  /// The offset, in model units, of the point `pixels` beside `point` across
-  /// the line along `direction` in the image; false when there is none.
-  bool besideInTheImage(const ViewGeometry& view, const glm::dvec3& point,
-    const glm::dvec3& direction, double pixels, glm::dvec3& offset) const;
+  /// Whether the points `pixels` to both sides of `point`, across the line
+  /// along `direction` in the image, are hidden by hits farther than
+  /// `contact` (the outline rules' test); nullopt when the image gives no
+  /// such points (no projection there, or a line along the ray).
+  std::optional<bool> hiddenOnBothSides(const ViewGeometry& view, const glm::dvec3& point,
+    const glm::dvec3& direction, double pixels, double contact) const;
   /// The triangles within `contact` of the point: the ones it lies on.
   std::vector<Id> trianglesUnder(const glm::dvec3& point, double contact) const;
   /// The tolerance of a point lying on the triangles `under` (see the

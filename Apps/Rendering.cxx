@@ -11,13 +11,11 @@
 #include <vtkActor.h>
 #include <vtkAppendPolyData.h>
 #include <vtkCamera.h>
-#include <vtkCellArray.h>
-#include <vtkCellArrayIterator.h>
-#include <vtkCellData.h>
 #include <vtkCreaseAndBorderLines.h>
 #include <vtkDataArray.h>
+#include <vtkDataObject.h>
+#include <vtkDataSetMapper.h>
 #include <vtkFaceSilhouetteLines.h>
-#include <vtkFloatArray.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
@@ -31,6 +29,7 @@
 #include <vtkSilhouetteSmoothingFilter.h>
 #include <vtkSilhouetteSmoothingMapper.h>
 #include <vtkStylizedStrokeFilter.h>
+#include <vtkThreshold.h>
 #include <vtkTrivialProducer.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
@@ -62,30 +61,6 @@ vtkSmartPointer<vtkPolyData> InputWithShadingNormals(
 
 // The triangles of the filter's output that the smoothing made (NewGeometry
 // > 0) or kept (== 0), over the output's points.
-vtkSmartPointer<vtkPolyData> SelectByNewGeometry(vtkPolyData* mesh, bool made)
-{
-  auto selected = vtkSmartPointer<vtkPolyData>::New();
-  selected->SetPoints(mesh->GetPoints());
-  vtkNew<vtkCellArray> triangles;
-  vtkDataArray* newGeometry = mesh->GetCellData()->GetArray("NewGeometry");
-  // Cell ids count vertices and lines before polygons.
-  vtkIdType cellId = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
-  auto cell = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  vtkIdType size = 0;
-  const vtkIdType* points = nullptr;
-  for (cell->GoToFirstCell(); !cell->IsDoneWithTraversal(); cell->GoToNextCell(), ++cellId)
-  {
-    const bool isMade = newGeometry && newGeometry->GetTuple1(cellId) > 0.0;
-    if (isMade == made)
-    {
-      cell->GetCurrentCell(size, points);
-      triangles->InsertNextCell(size, points);
-    }
-  }
-  selected->SetPolys(triangles);
-  return selected;
-}
-
 vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithmOutput* source)
 {
   vtkNew<vtkPolyDataMapper> mapper;
@@ -270,12 +245,20 @@ vtkSmartPointer<vtkPolyDataAlgorithm> MakeStrokes(vtkRenderer* renderer,
 } // namespace
 
 void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter, vtkPolyData* input,
-  RenderStyle style, bool smoothed, bool hiddenLines)
+  RenderStyle style, bool smoothed, bool hiddenLines, vtkSilhouetteSmoothingMapper* mapper)
 {
   switch (style)
   {
     case RenderStyle::Shaded:
     {
+      if (smoothed && mapper)
+      {
+        vtkNew<vtkActor> actor;
+        actor->SetMapper(mapper);
+        ShadeAsSurface(actor);
+        renderer->AddActor(actor);
+        break;
+      }
       vtkSmartPointer<vtkActor> actor = smoothed
         ? MakeActor(filter->GetOutputPort(0))
         : MakeActor(InputWithShadingNormals(input, filter));
@@ -301,14 +284,25 @@ void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter,
         break;
       }
       // Two actors, so each can have its edge colour; the red one is drawn
-      // last and wins the edges both share.
-      vtkPolyData* output = filter->GetOutput();
-      vtkSmartPointer<vtkActor> kept = MakeActor(SelectByNewGeometry(output, false));
-      ShowEdges(kept, DarkGrey);
-      vtkSmartPointer<vtkActor> made = MakeActor(SelectByNewGeometry(output, true));
-      ShowEdges(made, Red);
-      renderer->AddActor(kept);
-      renderer->AddActor(made);
+      // last and wins the edges both share. The kept and the made triangles
+      // are selected in the pipeline, so a viewer's follow its camera.
+      for (const bool made : { false, true })
+      {
+        vtkNew<vtkThreshold> select;
+        select->SetInputConnection(filter->GetOutputPort(0));
+        select->SetInputArrayToProcess(
+          0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "NewGeometry");
+        select->SetThresholdFunction(vtkThreshold::THRESHOLD_BETWEEN);
+        select->SetLowerThreshold(made ? 0.5 : -0.5);
+        select->SetUpperThreshold(made ? 255.0 : 0.5);
+        vtkNew<vtkDataSetMapper> mapper;
+        mapper->SetInputConnection(select->GetOutputPort());
+        mapper->ScalarVisibilityOff();
+        vtkNew<vtkActor> actor;
+        actor->SetMapper(mapper);
+        ShowEdges(actor, made ? Red : DarkGrey);
+        renderer->AddActor(actor);
+      }
       break;
     }
     case RenderStyle::Lines:
@@ -434,26 +428,21 @@ void RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
 {
   VtkErrorLog& errors = VtkErrorLog::Instance();
   errors.Clear();
+  vtkNew<vtkSilhouetteSmoothingMapper> mapper;
+  vtkSilhouetteSmoothingMapper* drawnBy = nullptr;
   if (options.Style == RenderStyle::Shaded && !options.NoSmoothing)
   {
+    drawnBy = mapper;
     // Smoothed while it renders, with the same settings (the filter's run
     // gives the figures): the image is the filter's output's, pixel for
     // pixel (module.TestSmoothingMapper).
-    vtkNew<vtkSilhouetteSmoothingMapper> mapper;
     mapper->SetInputData(input);
     mapper->ScalarVisibilityOff();
     ApplySmoothingOptions(mapper->GetSmoothingFilter(), options.Camera);
     errors.Watch(mapper->GetSmoothingFilter());
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    ShadeAsSurface(actor);
-    view.Renderer->AddActor(actor);
   }
-  else
-  {
-    AddStyleActors(
-      view.Renderer, filter, input, options.Style, !options.NoSmoothing, options.HiddenLines);
-  }
+  AddStyleActors(view.Renderer, filter, input, options.Style, !options.NoSmoothing,
+    options.HiddenLines, drawnBy);
   // Clip on what is drawn: the smoothed silhouette bulges past the input's bounds.
   view.Renderer->ResetCameraClippingRange();
 

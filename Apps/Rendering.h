@@ -13,6 +13,7 @@ class vtkPolyData;
 class vtkRenderWindow;
 class vtkRenderer;
 class vtkSilhouetteSmoothingFilter;
+class vtkSilhouetteSmoothingMapper;
 
 namespace cli
 {
@@ -70,12 +71,17 @@ void WriteWindowPng(vtkRenderWindow* window, const std::string& path, FileBatch*
 /**
  * Adds to `renderer` the actors that draw `style`: of the filter's output, or
  * of `input` when `smoothed` is false (shaded then uses the filter's shading
- * normals, so the two differ in geometry only). The filter must be up to date.
- * The line styles draw the visible parts of the lines; `hiddenLines` adds the
- * hidden parts of the lines style in light grey.
+ * normals, so the two differ in geometry only). The actors are fed by the
+ * filter's ports, so a renderer the filter follows (the viewer's) shows each
+ * new view's smoothing. The filter must be up to date. The line styles draw
+ * the visible parts of the lines; `hiddenLines` adds the hidden parts of the
+ * lines style in light grey. With a `mapper` (its input set), the shaded
+ * style smoothed draws through it instead of the filter's output: `render`
+ * and the viewer draw that style at render time.
  */
 void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter, vtkPolyData* input,
-  RenderStyle style, bool smoothed, bool hiddenLines = false);
+  RenderStyle style, bool smoothed, bool hiddenLines = false,
+  vtkSilhouetteSmoothingMapper* mapper = nullptr);
 
 /**
  * Draws `options.Style` of the filter's output (or of `input` with

@@ -18,7 +18,6 @@
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkDataObject.h>
-#include <vtkDataSetMapper.h>
 #include <vtkFieldData.h>
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkInteractorEventRecorder.h>
@@ -38,7 +37,6 @@
 #include <vtkSliderWidget.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
-#include <vtkThreshold.h>
 #include <vtkViewDependentLevelOfDetail.h>
 
 #include <algorithm>
@@ -397,48 +395,12 @@ bool Viewer::UsesMapper() const
 
 void Viewer::AddMainActors()
 {
-  if (this->CurrentStyle == RenderStyle::NewGeometry && this->Smoothing)
-  {
-    this->AddNewGeometryActors();
-    return;
-  }
-  if (this->UsesMapper())
-  {
-    // Smoothed while it renders: the mesh is uploaded once, a frame costs
-    // the silhouette.
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(this->SmoothMapper);
-    ShadeAsSurface(actor);
-    this->MainRenderer->AddActor(actor);
-    return;
-  }
-  // Smoothed, these actors are fed by the filter's ports: the pipeline
-  // re-runs it when the view changes. Unsmoothed, they show the input.
-  AddStyleActors(this->MainRenderer, this->Filter, this->Mesh, this->CurrentStyle, this->Smoothing);
-}
-
-// AddStyleActors' new-geometry style copies the output once (enough for one
-// image); here the kept and the made triangles are selected in the pipeline,
-// so they follow the camera.
-void Viewer::AddNewGeometryActors()
-{
-  for (const bool made : { false, true })
-  {
-    vtkNew<vtkThreshold> select;
-    select->SetInputConnection(this->Filter->GetOutputPort(0));
-    select->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "NewGeometry");
-    select->SetThresholdFunction(vtkThreshold::THRESHOLD_BETWEEN);
-    select->SetLowerThreshold(made ? 0.5 : -0.5);
-    select->SetUpperThreshold(made ? 255.0 : 0.5);
-    vtkNew<vtkDataSetMapper> mapper;
-    mapper->SetInputConnection(select->GetOutputPort());
-    mapper->ScalarVisibilityOff();
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    // The red one is added last and wins the edges both share.
-    ShowEdges(actor, made ? Red : DarkGrey);
-    this->MainRenderer->AddActor(actor);
-  }
+  // Smoothed, the shaded style draws through the render-time mapper (the
+  // mesh is uploaded once, a frame costs the silhouette), and the other
+  // styles are fed by the filter's ports: the pipeline re-runs it when the
+  // view changes. Unsmoothed, they show the input.
+  AddStyleActors(this->MainRenderer, this->Filter, this->Mesh, this->CurrentStyle, this->Smoothing,
+    false, this->SmoothMapper);
 }
 
 bool Viewer::MakeFineReference()

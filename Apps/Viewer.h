@@ -111,7 +111,6 @@ private:
   void ApplyLayout();
   void RebuildActors();
   void AddMainActors();
-  void AddNewGeometryActors();
   bool MakeFineReference();
   void Perform(ViewerAction action);
   void SetTolerance(double tolerance);

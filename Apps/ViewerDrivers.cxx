@@ -13,33 +13,15 @@
 
 #include "EvaluationModels.h"
 
-#include <vtkActor.h>
 #include <vtkCamera.h>
-#include <vtkCommand.h>
-#include <vtkDataArray.h>
-#include <vtkDataObject.h>
-#include <vtkDataSetMapper.h>
-#include <vtkFieldData.h>
-#include <vtkGenericRenderWindowInteractor.h>
 #include <vtkInteractorEventRecorder.h>
-#include <vtkInteractorStyleTrackballCamera.h>
-#include <vtkMath.h>
 #include <vtkNew.h>
-#include <vtkObjectFactory.h>
-#include <vtkPolyData.h>
-#include <vtkProperty.h>
-#include <vtkProperty2D.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
 #include <vtkSilhouetteSmoothingFilter.h>
 #include <vtkSilhouetteSmoothingMapper.h>
-#include <vtkSliderRepresentation2D.h>
 #include <vtkSliderWidget.h>
-#include <vtkTextActor.h>
-#include <vtkTextProperty.h>
-#include <vtkThreshold.h>
-#include <vtkViewDependentLevelOfDetail.h>
 
 #include <algorithm>
 #include <cctype>

@@ -13,21 +13,9 @@
 
 #include "EvaluationModels.h"
 
-#include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
-#include <vtkDataArray.h>
-#include <vtkDataObject.h>
-#include <vtkDataSetMapper.h>
-#include <vtkFieldData.h>
-#include <vtkGenericRenderWindowInteractor.h>
-#include <vtkInteractorEventRecorder.h>
-#include <vtkInteractorStyleTrackballCamera.h>
-#include <vtkMath.h>
-#include <vtkNew.h>
-#include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
-#include <vtkProperty.h>
 #include <vtkProperty2D.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
@@ -38,7 +26,6 @@
 #include <vtkSliderWidget.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
-#include <vtkThreshold.h>
 #include <vtkViewDependentLevelOfDetail.h>
 
 #include <algorithm>

@@ -60,6 +60,15 @@ std::optional<ScalarType> ScalarTypeNamed(const std::string& name)
   return std::nullopt;
 }
 
+// A value of type T from its bytes, already in host order.
+template<typename T>
+double FromBytes(const unsigned char* raw)
+{
+  T value;
+  std::memcpy(&value, raw, sizeof(T));
+  return static_cast<double>(value);
+}
+
 std::size_t SizeOf(ScalarType type)
 {
   switch (type)
@@ -536,46 +545,22 @@ private:
     switch (type)
     {
       case ScalarType::Int8:
-        return static_cast<std::int8_t>(raw[0]);
+        return FromBytes<std::int8_t>(raw);
       case ScalarType::UInt8:
-        return raw[0];
+        return FromBytes<std::uint8_t>(raw);
       case ScalarType::Int16:
-      {
-        std::int16_t v;
-        std::memcpy(&v, raw, 2);
-        return v;
-      }
+        return FromBytes<std::int16_t>(raw);
       case ScalarType::UInt16:
-      {
-        std::uint16_t v;
-        std::memcpy(&v, raw, 2);
-        return v;
-      }
+        return FromBytes<std::uint16_t>(raw);
       case ScalarType::Int32:
-      {
-        std::int32_t v;
-        std::memcpy(&v, raw, 4);
-        return v;
-      }
+        return FromBytes<std::int32_t>(raw);
       case ScalarType::UInt32:
-      {
-        std::uint32_t v;
-        std::memcpy(&v, raw, 4);
-        return v;
-      }
+        return FromBytes<std::uint32_t>(raw);
       case ScalarType::Float32:
-      {
-        float v;
-        std::memcpy(&v, raw, 4);
-        return v;
-      }
+        return FromBytes<float>(raw);
       case ScalarType::Float64:
       default:
-      {
-        double v;
-        std::memcpy(&v, raw, 8);
-        return v;
-      }
+        return FromBytes<double>(raw);
     }
   }
 

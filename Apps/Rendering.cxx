@@ -178,6 +178,10 @@ vtkSmartPointer<vtkSilhouetteLineVisibility> MakeVisibleLines(
   // smoothed surface's flat triangles can stand a pixel or two beyond the
   // curve and cut gaps into a drawing's outline (the Wuson's back).
   visible->SetOutlinePixels(1.0);
+  // One vertex where the filter made one: with --weld-tolerance, the near
+  // copies an exporter left would otherwise cut the surface, and the sliver
+  // triangles between them would draw creases.
+  edges->SetWeldTolerance(filter->GetWeldCoincidentPoints() ? filter->GetWeldTolerance() : 0.0);
   if (smoothed)
   {
     // The smoothed surface marks its creases by a normal per side.

@@ -26,6 +26,8 @@ vtkCreaseAndBorderLines::~vtkCreaseAndBorderLines() = default;
 
 vtkSilhouetteCheckedSetterMacro(vtkCreaseAndBorderLines, NormalJumpAngle, double, 0.0, 180.0);
 vtkSilhouetteCheckedSetterMacro(vtkCreaseAndBorderLines, FeatureAngle, double, 0.0, 180.0);
+vtkSilhouetteCheckedSetterMacro(
+  vtkCreaseAndBorderLines, WeldTolerance, double, 0.0, VTK_DOUBLE_MAX);
 
 int vtkCreaseAndBorderLines::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
@@ -47,6 +49,7 @@ int vtkCreaseAndBorderLines::RequestData(
   parameters.Borders = this->Borders != 0;
   parameters.NormalJumpDegrees = this->NormalJumpAngle;
   parameters.CreaseAngleDegrees = this->FeatureAngle;
+  parameters.WeldTolerance = this->WeldTolerance;
   const std::vector<silsmooth::SurfaceEdgeLine> lines =
     silsmooth::surfaceEdgeLines(triangles.Points, triangles.Cells, triangles.Normals, parameters);
   if (!support::ReportProgress(this, 0.8))
@@ -106,4 +109,5 @@ void vtkCreaseAndBorderLines::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Borders: " << (this->Borders ? "On" : "Off") << "\n";
   os << indent << "NormalJumpAngle: " << this->NormalJumpAngle << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
+  os << indent << "WeldTolerance: " << this->WeldTolerance << "\n";
 }

@@ -3,9 +3,9 @@
  * @brief   the creases and open borders of a surface as polylines, for a line drawing
  *
  * Input: a surface (polygons and strips are read as triangles; vertex and
- * line cells are ignored). Points at equal coordinates are one vertex, so
- * the copies a surface keeps along its hard edges and texture seams do not
- * open it. An edge is drawn as
+ * line cells are ignored). Points at equal coordinates (or within
+ * WeldTolerance) are one vertex, so the copies a surface keeps along its
+ * hard edges and texture seams do not open it. An edge is drawn as
  * - a border (LineKind 2) when one triangle has it;
  * - a crease (LineKind 1) when the surface has point normals and they jump
  *   across the edge: the two sides use copies of an end whose normals
@@ -76,6 +76,21 @@ public:
   vtkGetMacro(FeatureAngle, double);
   ///@}
 
+  ///@{
+  /**
+   * 0 (the default): points at equal coordinates are one vertex. d > 0:
+   * points within d of each other are, transitively, as
+   * vtkSilhouetteSmoothingFilter welds with its WeldTolerance; draw a
+   * surface that filter made with the tolerance it used. Otherwise the near
+   * copies an exporter leaves (OpenSCAD's STL files round the points where
+   * two solids meet, joined by sliver triangles) cut the surface, and the
+   * slivers' arbitrary facets and normals make creases along them. Clamped
+   * to at least 0.
+   */
+  virtual void SetWeldTolerance(double tolerance);
+  vtkGetMacro(WeldTolerance, double);
+  ///@}
+
 protected:
   vtkCreaseAndBorderLines();
   ~vtkCreaseAndBorderLines() override;
@@ -86,6 +101,7 @@ protected:
   vtkTypeBool Borders = 1;
   double NormalJumpAngle = 1.0;
   double FeatureAngle = 30.0;
+  double WeldTolerance = 0.0;
 
 private:
   vtkCreaseAndBorderLines(const vtkCreaseAndBorderLines&) = delete;

@@ -2,6 +2,7 @@
 
 #include "EdgeClassification.h"
 #include "PositionHash.h"
+#include "SurfaceWelding.h"
 
 #include <glm/geometric.hpp>
 
@@ -61,7 +62,9 @@ std::vector<SurfaceEdgeLine> surfaceEdgeLines(const std::vector<glm::dvec3>& poi
   const std::vector<Triangle>& triangles, const std::vector<glm::dvec3>& normals,
   const SurfaceEdgeLineParameters& parameters)
 {
-  const std::vector<Id> welded = weldByPosition(points);
+  const std::vector<Id> welded = parameters.WeldTolerance > 0.0
+    ? weldCoincidentPoints(points, parameters.WeldTolerance)
+    : weldByPosition(points);
   const bool withNormals = !normals.empty() && normals.size() == points.size();
 
   std::vector<EdgeSide> sides;

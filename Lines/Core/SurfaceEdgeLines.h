@@ -2,11 +2,10 @@
 // 2004 3.3): creases and open borders, chained into polylines.
 //
 // Positions, not point ids, decide what is one vertex: points at equal
-// coordinates are welded first, because a surface marks its creases by
-// giving each side its own copy of the points there (one shading normal per
-// side, as vtkSilhouetteSmoothingFilter's output and vtkPolyDataNormals with
-// splitting do), and asset files split points along texture seams too.
-// After welding, an edge is
+// coordinates (or within WeldTolerance of each other) are welded first, because a surface marks its
+// creases by giving each side its own copy of the points there (one shading normal per side, as
+// vtkSilhouetteSmoothingFilter's output and vtkPolyDataNormals with splitting do), and asset files
+// split points along texture seams too. After welding, an edge is
 // - a border when one triangle has it;
 // - a crease when two triangles have it and the surface's point normals
 //   jump across it: at either end, the copies the two triangles use carry
@@ -51,11 +50,18 @@ struct SurfaceEdgeLineParameters
   double NormalJumpDegrees = 1.0;
   /// Without point normals: faces meeting at more than this make a crease.
   double CreaseAngleDegrees = 30.0;
+  /// 0: points at equal coordinates are one vertex. d > 0: points within d
+  /// of each other are, transitively (weldCoincidentPoints), as the
+  /// smoothing filter welds with its WeldTolerance. A surface smoothed with
+  /// a tolerance must be drawn with the same one: its near copies (an
+  /// exporter's rounded points, joined by sliver triangles) would otherwise
+  /// cut it, and the slivers' arbitrary facets make creases.
+  double WeldTolerance = 0.0;
 };
 
 struct SurfaceEdgeLine
 {
-  /// Point ids of the surface (the first id of each welded position).
+  /// Point ids of the surface (the lowest id of each welded vertex).
   std::vector<Id> Points;
   LineKind Kind = LineKind::Crease;
 };

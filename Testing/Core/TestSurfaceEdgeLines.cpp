@@ -185,3 +185,37 @@ TEST(SurfaceEdgeLines, DegenerateTrianglesTakeNoPart)
   const std::vector<glm::dvec3> points{ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 0, 0 } };
   EXPECT_TRUE(surfaceEdgeLines(points, { { 0, 1, 2 } }, {}, {}).empty());
 }
+
+// An OpenSCAD STL where two solids meet (issue 16's boss on its fillet ring):
+// the exporter rounds two copies of a point to positions 1e-4 apart and
+// joins them by a sliver triangle standing across the surface. Welded with
+// the smoothing filter's WeldTolerance, the sliver has two corners on one
+// vertex and the strip is one flat sheet: its border and nothing else.
+TEST(SurfaceEdgeLines, NearCopiesWeldWithTheToleranceAndTheirSliverDrawsNoCrease)
+{
+  const std::vector<glm::dvec3> points{ { 0, 0, 0 }, { 0, 1, 0 }, { 1, 1, 0 }, { 1, 0, 0 },
+    { 1, 0, 1e-4 }, { 2, 0, 0 }, { 2, 1, 0 } };
+  const std::vector<Triangle> triangles{ { { 0, 3, 2 } }, { { 0, 2, 1 } }, { { 3, 4, 2 } },
+    { { 4, 5, 6 } }, { { 4, 6, 2 } } };
+  const std::set<std::pair<Id, Id>> outline{ { 0, 1 }, { 0, 3 }, { 3, 5 }, { 5, 6 }, { 2, 6 },
+    { 1, 2 } };
+
+  SurfaceEdgeLineParameters welded;
+  welded.WeldTolerance = 1e-3;
+  const std::vector<SurfaceEdgeLine> lines = surfaceEdgeLines(points, triangles, {}, welded);
+  EXPECT_TRUE(edgesOf(lines, LineKind::Crease).empty());
+  EXPECT_EQ(edgesOf(lines, LineKind::Border), outline);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(lines[0].Points.front(), lines[0].Points.back());
+
+  // With normals (one per point, the same on both copies) too.
+  const std::vector<glm::dvec3> up(points.size(), glm::dvec3(0, 0, 1));
+  const std::vector<SurfaceEdgeLine> shaded = surfaceEdgeLines(points, triangles, up, welded);
+  EXPECT_TRUE(edgesOf(shaded, LineKind::Crease).empty());
+  EXPECT_EQ(edgesOf(shaded, LineKind::Border), outline);
+
+  // The wrong variant, equal coordinates only: the sliver's facet, at 90
+  // degrees to the strip, makes creases of both its long edges.
+  const std::vector<SurfaceEdgeLine> exact = surfaceEdgeLines(points, triangles, {}, {});
+  EXPECT_EQ(edgesOf(exact, LineKind::Crease), (std::set<std::pair<Id, Id>>{ { 2, 3 }, { 2, 4 } }));
+}

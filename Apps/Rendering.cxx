@@ -12,7 +12,6 @@
 #include <vtkAppendPolyData.h>
 #include <vtkCamera.h>
 #include <vtkCreaseAndBorderLines.h>
-#include <vtkDataArray.h>
 #include <vtkDataObject.h>
 #include <vtkDataSetMapper.h>
 #include <vtkFaceSilhouetteLines.h>
@@ -59,8 +58,6 @@ vtkSmartPointer<vtkPolyData> InputWithShadingNormals(
   return base;
 }
 
-// The triangles of the filter's output that the smoothing made (NewGeometry
-// > 0) or kept (== 0), over the output's points.
 vtkSmartPointer<vtkActor> MakeActor(vtkAlgorithmOutput* source)
 {
   vtkNew<vtkPolyDataMapper> mapper;

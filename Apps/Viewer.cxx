@@ -13,21 +13,13 @@
 
 #include "EvaluationModels.h"
 
-#include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkCommand.h>
-#include <vtkDataArray.h>
-#include <vtkDataObject.h>
-#include <vtkFieldData.h>
 #include <vtkGenericRenderWindowInteractor.h>
-#include <vtkInteractorEventRecorder.h>
 #include <vtkInteractorStyleTrackballCamera.h>
 #include <vtkMath.h>
-#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
-#include <vtkProperty.h>
-#include <vtkProperty2D.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
@@ -36,7 +28,6 @@
 #include <vtkSliderRepresentation2D.h>
 #include <vtkSliderWidget.h>
 #include <vtkTextActor.h>
-#include <vtkTextProperty.h>
 #include <vtkViewDependentLevelOfDetail.h>
 
 #include <algorithm>
@@ -400,7 +391,7 @@ void Viewer::AddMainActors()
   // styles are fed by the filter's ports: the pipeline re-runs it when the
   // view changes. Unsmoothed, they show the input.
   AddStyleActors(this->MainRenderer, this->Filter, this->Mesh, this->CurrentStyle, this->Smoothing,
-    false, this->SmoothMapper);
+    false, this->UsesMapper() ? this->SmoothMapper.Get() : nullptr);
 }
 
 bool Viewer::MakeFineReference()

@@ -16,6 +16,7 @@
 #include <vtkCamera.h>
 #include <vtkInteractorEventRecorder.h>
 #include <vtkNew.h>
+#include <vtkPolyData.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>

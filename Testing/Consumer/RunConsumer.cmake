@@ -5,7 +5,7 @@
 # runs the downstream project of this folder against the moved prefix, runs
 # the installed CLI (a job on a file, and the viewer's headless orbit of its
 # default mesh, which it finds in the prefix), builds and runs the README's
-# C++ program (with X and with OSMesa), and imports the installed
+# programs (with X and with OSMesa), and imports the installed
 # Python package with Debian's python3.
 #   cmake -DBUILD_DIR=... -DSOURCE_DIR=... -DWORK_DIR=... -DPYTHON=... -DPYTHON_DESTINATION=... -P RunConsumer.cmake
 foreach (name BUILD_DIR SOURCE_DIR WORK_DIR)
@@ -80,52 +80,16 @@ if (NOT EXISTS "${WORK_DIR}/orbit/frame_0000.png")
   message(FATAL_ERROR "FAILED: the installed viewer's orbit wrote no frame")
 endif ()
 
-# The README's C++ program and its CMakeLists.txt, as written: built against
-# the moved prefix and run from a folder with Data/ beside it, under this
-# test's X server and then with no X server through the installed OSMesa
-# library, as the README's commands do; each run writes smoothed.png.
-file(READ "${SOURCE_DIR}/README.md" readme)
-foreach (language cpp cmake)
-  string(REGEX MATCH "```${language}\n([^`]*)```" block "${readme}")
-  if (NOT block)
-    message(FATAL_ERROR "FAILED: the README has no ```${language} block")
-  endif ()
-  set(readme_${language} "${CMAKE_MATCH_1}")
-endforeach ()
-set(app "${WORK_DIR}/readme_app")
-file(WRITE "${app}/smooth.cxx" "${readme_cpp}")
-file(WRITE "${app}/CMakeLists.txt" "${readme_cmake}")
-run("${CMAKE_COMMAND}" -S "${app}" -B "${app}/build" "-DCMAKE_PREFIX_PATH=${prefix}"
-  -DCMAKE_BUILD_TYPE=Release)
-run("${CMAKE_COMMAND}" --build "${app}/build")
-set(run_folder "${WORK_DIR}/readme_run")
-file(MAKE_DIRECTORY "${run_folder}")
-file(CREATE_LINK "${SOURCE_DIR}/Data" "${run_folder}/Data" SYMBOLIC)
-set(osmesa_run "${CMAKE_COMMAND}" -E env --unset=DISPLAY
-  "LD_PRELOAD=${prefix}/lib/libsilhouette_osmesa.so" "${app}/build/smooth")
-foreach (way "x" "osmesa")
-  file(REMOVE "${run_folder}/smoothed.png")
-  if (way STREQUAL "x")
-    if (NOT DEFINED ENV{DISPLAY})
-      continue() # no X server here: the OSMesa run alone
-    endif ()
-    set(command "${app}/build/smooth")
-  else ()
-    set(command ${osmesa_run})
-  endif ()
-  execute_process(COMMAND ${command} WORKING_DIRECTORY "${run_folder}" RESULT_VARIABLE code
-    ERROR_VARIABLE err)
-  if (NOT code EQUAL 0)
-    message(FATAL_ERROR "FAILED: the README's C++ program (${way}) exits ${code}: ${err}")
-  endif ()
-  file(SIZE "${run_folder}/smoothed.png" bytes)
-  # A 640x480 PNG of the shaded bunny is about 33 kB; one without the actor, 1 kB.
-  if (bytes LESS 8000)
-    message(FATAL_ERROR "FAILED: the README's C++ program (${way}) wrote a blank smoothed.png "
-      "(${bytes} bytes)")
-  endif ()
-  message(STATUS "README C++ program (${way}): smoothed.png, ${bytes} bytes")
-endforeach ()
+# The README's C++ program with its CMakeLists.txt, and its Python program,
+# as written, against the moved prefix and its installed data, with X and
+# with OSMesa: each image shows the smoothed bunny, the same pixel for pixel
+# (RunReadmePrograms.py).
+if (PYTHON AND PYTHON_DESTINATION)
+  run("${PYTHON}" "${CMAKE_CURRENT_LIST_DIR}/RunReadmePrograms.py" "${SOURCE_DIR}/README.md"
+    "${prefix}" "${prefix}/${PYTHON_DESTINATION}" "${WORK_DIR}")
+else ()
+  message(FATAL_ERROR "FAILED: install.consumer needs PYTHON and PYTHON_DESTINATION for the README's programs")
+endif ()
 
 if (PYTHON AND PYTHON_DESTINATION)
   set(ENV{PYTHONPATH} "${prefix}/${PYTHON_DESTINATION}")

@@ -1,8 +1,11 @@
 """The documentation's links hold (issue 17): every relative link of the
 README, of docs/*.md and of the other Markdown files the repository keeps
-names a file of the repository, and its #anchor, if any, a heading of that
-file (GitHub's anchors: lower case, punctuation dropped, spaces to hyphens);
-no link and no text points outside the repository (../shared, DESIGN.md).
+(inline links and images, with or without a title or angle brackets, over
+line breaks; reference definitions) names a file git keeps (any file, when
+the tree is not a git checkout), and its #anchor, if any, a heading of that
+file (GitHub's anchors: lower case, punctuation dropped, spaces to
+hyphens); no link and no text points outside the repository (../shared,
+DESIGN.md). Code blocks and code spans are not text.
 
 Usage: CheckDocLinks.py SOURCE_DIR [FILE.md ...]
   With files, only those are checked (the test's wrong variant).
@@ -11,10 +14,15 @@ import os
 import re
 import subprocess
 import sys
+import urllib.parse
 
-LINK = re.compile(r"\[[^\]]*\]\(([^)\s]+)\)")
+# [text](target) or ![alt](target), the target bare or in <>, an optional
+# "title"; the text may run over lines (no blank line in it).
+INLINE = re.compile(r"!?\[(?:[^\[\]]|\n(?!\n))*?\]\(\s*(<[^>\n]*>|[^)\s]+)(?:\s+\"[^\"]*\")?\s*\)")
+DEFINITION = re.compile(r"^ {0,3}\[[^\]]+\]:\s*(<[^>\n]*>|\S+)", re.M)
 HEADING = re.compile(r"^#{1,6}\s+(.*?)\s*#*\s*$")
 FENCE = re.compile(r"^(```|~~~)")
+CODE_SPAN = re.compile(r"(`+)(?:(?!\1).)+?\1", re.S)
 
 
 def github_anchor(heading):
@@ -49,44 +57,77 @@ def anchors(path):
     return found
 
 
-def check(source, path):
+def prose(path):
+    """The file's text outside code blocks and code spans, with its line
+    numbers kept (code is blanked, not removed)."""
+    kept = []
+    for number, line in prose_lines(path):
+        while len(kept) < number - 1:
+            kept.append("")
+        kept.append(line.rstrip("\n"))
+    text = "\n".join(kept)
+    return CODE_SPAN.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
+
+
+def check(source, path, tracked):
     problems = []
     folder = os.path.dirname(path)
-    for number, line in prose_lines(path):
-        where = "%s:%d" % (os.path.relpath(path, source), number)
+    text = prose(path)
+    for number, line in enumerate(text.split("\n"), 1):
         if "../shared" in line or "DESIGN.md" in line:
-            problems.append("%s points outside the repository: %s" % (where, line.strip()))
-        for target in LINK.findall(line):
-            if re.match(r"^[a-z][a-z0-9+.-]*:", target):
-                continue  # http:, https:, mailto:
-            name, _, anchor = target.partition("#")
-            linked = os.path.normpath(os.path.join(folder, name)) if name else path
-            if not os.path.abspath(linked).startswith(os.path.abspath(source) + os.sep):
-                problems.append("%s links outside the repository: %s" % (where, target))
-            elif not os.path.exists(linked):
-                problems.append("%s links to a missing file: %s" % (where, target))
-            elif anchor and linked.endswith(".md") and anchor not in anchors(linked):
-                problems.append("%s links to a missing heading: %s" % (where, target))
+            problems.append("%s:%d points outside the repository: %s" %
+                            (os.path.relpath(path, source), number, line.strip()))
+    targets = [(m.start(), m.group(1)) for m in INLINE.finditer(text)]
+    targets += [(m.start(), m.group(1)) for m in DEFINITION.finditer(text)]
+    for start, target in sorted(targets):
+        where = "%s:%d" % (os.path.relpath(path, source), text.count("\n", 0, start) + 1)
+        target = target[1:-1] if target.startswith("<") else target
+        if re.match(r"^[a-z][a-z0-9+.-]*:", target):
+            continue  # http:, https:, mailto:
+        name, _, anchor = target.partition("#")
+        name = urllib.parse.unquote(name)
+        linked = os.path.normpath(os.path.join(folder, name)) if name else path
+        relative = os.path.relpath(linked, source)
+        if relative == ".." or relative.startswith(".." + os.sep):
+            problems.append("%s links outside the repository: %s" % (where, target))
+        elif not os.path.exists(linked) or (tracked is not None and relative not in tracked):
+            problems.append("%s links to a missing file: %s" % (where, target))
+        elif anchor and linked.endswith(".md") and anchor not in anchors(linked):
+            problems.append("%s links to a missing heading: %s" % (where, target))
     return problems
+
+
+def tracked_paths(source):
+    """What git keeps below source, files and their folders, or None."""
+    listed = subprocess.run(["git", "-C", source, "ls-files"], capture_output=True, text=True,
+                            check=False)
+    if listed.returncode != 0 or not listed.stdout.strip():
+        return None
+    paths = {"."}
+    for name in listed.stdout.split("\n"):
+        while name:
+            paths.add(os.path.normpath(name))
+            name = os.path.dirname(name)
+    return paths
 
 
 def main():
     source = os.path.abspath(sys.argv[1])
     files = [os.path.abspath(f) for f in sys.argv[2:]]
+    tracked = tracked_paths(source)
     if not files:
-        tracked = subprocess.run(["git", "-C", source, "ls-files", "*.md"], capture_output=True,
-                                 text=True, check=False)
-        if tracked.returncode == 0 and tracked.stdout.strip():
+        if tracked is not None:
             # The wrong variant's page is broken on purpose.
-            files = [os.path.join(source, f) for f in tracked.stdout.split()
-                     if f != "Testing/Data/BrokenLinks.md"]
+            files = [os.path.join(source, f) for f in sorted(tracked)
+                     if f.endswith(".md") and f != "Testing/Data/BrokenLinks.md"
+                     and os.path.isfile(os.path.join(source, f))]
         else:  # a source tree without git: the README and docs/
             files = [os.path.join(source, "README.md")] + [
                 os.path.join(source, "docs", f) for f in sorted(os.listdir(os.path.join(source, "docs")))
                 if f.endswith(".md")]
     problems = []
     for path in files:
-        problems += check(source, path)
+        problems += check(source, path, tracked)
     for problem in problems:
         print(problem)
     print("%d Markdown files checked, %d problems" % (len(files), len(problems)))

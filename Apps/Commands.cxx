@@ -116,7 +116,7 @@ void PrintWarnings(const SmoothingRun& run)
 {
   for (const std::string& warning : run.Warnings)
   {
-    std::cerr << "silhouette: warning: " << PrintableText(warning) << "\n";
+    PrintFilterWarning(warning);
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include "CameraOptions.h"
 #include "CliErrors.h"
+#include "PrintableText.h"
 #include "VtkErrorLog.h"
 
 #include <vtkPolyData.h>
@@ -9,6 +10,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstring>
+#include <iostream>
+#include <utility>
 #include <vector>
 
 namespace cli
@@ -75,6 +79,36 @@ void ApplySmoothingOptions(vtkSilhouetteSmoothingFilter* filter, const CameraOpt
   {
     filter->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
   }
+}
+
+namespace
+{
+
+// A filter warning in the program's words: the filter's settings it names
+// become the options that set them.
+std::string InTheProgramsWords(std::string warning)
+{
+  static const std::pair<const char*, const char*> options[] = {
+    { "WeldTolerance", "--weld-tolerance" },
+    { "FlatCreaseDetection", "--flat-crease-angle" },
+    { "FeatureEdgeDetection", "--feature-angle" },
+  };
+  for (const auto& [setting, option] : options)
+  {
+    for (std::size_t at = warning.find(setting); at != std::string::npos;
+         at = warning.find(setting, at + std::strlen(option)))
+    {
+      warning.replace(at, std::strlen(setting), option);
+    }
+  }
+  return warning;
+}
+
+} // namespace
+
+void PrintFilterWarning(const std::string& warning)
+{
+  std::cerr << "silhouette: warning: " << PrintableText(InTheProgramsWords(warning)) << "\n";
 }
 
 } // namespace cli

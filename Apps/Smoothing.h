@@ -41,6 +41,11 @@ struct SmoothingRun
  */
 SmoothingRun SmoothSilhouette(vtkPolyData* mesh, vtkCamera* camera, const CameraOptions& options);
 
+/// Writes one of the filter's warnings to stderr as one line
+/// ("silhouette: warning: ..."), the filter's settings it names given as the
+/// options that set them (WeldTolerance as --weld-tolerance).
+void PrintFilterWarning(const std::string& warning);
+
 /// Sets the filter's tolerance, feature and perturbation options from `options`.
 void ApplySmoothingOptions(vtkSilhouetteSmoothingFilter* filter, const CameraOptions& options);
 

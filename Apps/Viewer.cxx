@@ -294,6 +294,10 @@ void Viewer::BuildWindow(Mode mode)
   }
   this->Filter->Update();
   VtkErrorLog::Instance().ThrowIfErrors("smoothing failed");
+  for (const std::string& warning : VtkErrorLog::Instance().Warnings())
+  {
+    PrintFilterWarning(warning); // about the input: once, as smooth and render say them
+  }
   this->FilterRunsAtLastFrame = this->FilterRuns; // that run belongs to no frame
 
   if (mode == Mode::Interactive || mode == Mode::Playback)

@@ -286,6 +286,17 @@ bool vtkSilhouetteSmoothingFilter::Internals::Prepare(
       "normals are computed, and creases come from FlatCreaseDetection and "
       "FeatureEdgeDetection.");
   }
+  if (rebuilt && statistics.NearCopyEdgeCount > 0)
+  {
+    // Twice the longest: a tolerance that joins them with room for rounding.
+    const bool one = statistics.NearCopyEdgeCount == 1;
+    vtkWarningWithObjectMacro(self,
+      << statistics.NearCopyEdgeCount << (one ? " edge is" : " edges are")
+      << " shorter than 1e-5 of the mesh's size (near copies of points, as some exporters "
+         "write them): their ends stay apart, with the normals of one side each, which bends "
+         "the silhouette near them; WeldTolerance "
+      << 2.0 * statistics.LongestNearCopyEdge << " welds them.");
+  }
   if (rebuilt && statistics.InconsistentEdgeCount > 0)
   {
     vtkWarningWithObjectMacro(

@@ -236,7 +236,9 @@ public:
    * they are in, so texture seams stay seams (an added point on a seam is
    * made once per side, at one position). Default on. WeldTolerance 0 (the
    * default) joins equal coordinates only; d > 0 joins points within d of
-   * each other, transitively.
+   * each other, transitively. Edges shorter than 1e-5 of the mesh's size
+   * (near copies of a point, as some exporters write them) draw a warning
+   * that gives a tolerance that welds them.
    */
   vtkSetMacro(WeldCoincidentPoints, bool);
   vtkGetMacro(WeldCoincidentPoints, bool);

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <tuple>
 #include <unordered_map>
@@ -126,6 +127,44 @@ std::vector<Id> weldCoincidentPoints(const std::vector<glm::dvec3>& points, doub
 {
   return tolerance > 0.0 && std::isfinite(tolerance) ? weldWithin(points, tolerance)
                                                      : weldExactly(points);
+}
+
+NearCopies nearCopyEdges(
+  const std::vector<glm::dvec3>& points, const EdgeTable& table, double relative)
+{
+  NearCopies found;
+  glm::dvec3 low(std::numeric_limits<double>::max());
+  glm::dvec3 high(std::numeric_limits<double>::lowest());
+  for (const glm::dvec3& p : points)
+  {
+    if (isFinite(p))
+    {
+      low = glm::min(low, p);
+      high = glm::max(high, p);
+    }
+  }
+  if (!(low.x <= high.x))
+  {
+    return found; // no finite point
+  }
+  const double limit = relative * glm::length(high - low);
+  for (std::size_t e = 0; e < table.edgeCount(); ++e)
+  {
+    const Edge& edge = table.edge(static_cast<Id>(e));
+    const glm::dvec3& a = points[static_cast<std::size_t>(edge.low)];
+    const glm::dvec3& b = points[static_cast<std::size_t>(edge.high)];
+    if (!isFinite(a) || !isFinite(b) || a == b)
+    {
+      continue;
+    }
+    const double length = glm::length(b - a);
+    if (length <= limit)
+    {
+      ++found.EdgeCount;
+      found.LongestEdge = std::max(found.LongestEdge, length);
+    }
+  }
+  return found;
 }
 
 std::vector<Triangle> weldTriangles(

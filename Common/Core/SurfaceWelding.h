@@ -29,6 +29,25 @@ constexpr double NormalSeamAngleDegrees = 1.0;
 /// non-finite coordinates are never welded.
 std::vector<Id> weldCoincidentPoints(const std::vector<glm::dvec3>& points, double tolerance = 0.0);
 
+/// Edges far shorter than the mesh: what exporters leave where they write
+/// one point twice with rounded coordinates (OpenSCAD's STL writes copies
+/// 1e-5 to 1e-4 apart, joined by sliver triangles). Welding equal
+/// coordinates keeps such copies apart: each carries the normals of one side
+/// only, and a copy used by slivers alone gets a sliver's normal.
+struct NearCopies
+{
+  /// Edges between distinct points at most `relative` times the points'
+  /// bounding-box diagonal long (each edge once).
+  std::size_t EdgeCount = 0;
+  /// The longest of them: a weld tolerance just above it joins their ends.
+  double LongestEdge = 0.0;
+};
+
+/// The near copies joined by an edge of `table` (built over `points`'
+/// ids). Non-finite points are left out. O(points + edges).
+NearCopies nearCopyEdges(
+  const std::vector<glm::dvec3>& points, const EdgeTable& table, double relative = 1e-5);
+
 /// The triangles with every corner replaced by its surface vertex.
 std::vector<Triangle> weldTriangles(
   const std::vector<Triangle>& triangles, const std::vector<Id>& vertex);

@@ -86,6 +86,9 @@ WeldedSurface::GivenNormals WeldedSurface::weldAndOrient(const std::vector<glm::
   // One edge table for the whole preparation: built for the welded
   // triangles, its sides turned with the triangles once they are oriented.
   EdgeTable table(welded);
+  const NearCopies nearCopies = nearCopyEdges(points, table);
+  this->Statistics.NearCopyEdgeCount = nearCopies.EdgeCount;
+  this->Statistics.LongestNearCopyEdge = nearCopies.LongestEdge;
   GivenNormals given = this->examineNormals(points, normals, &welded, &table);
   std::vector<glm::dvec3> cornerNormals;
   if (given.Use)

@@ -76,6 +76,10 @@ struct SurfaceStatistics
   /// triangles carries its triangle's normal): they say nothing about the
   /// smooth surface or its creases, so they were not used.
   bool FlatShadedNormals = false;
+  /// Edges between distinct welded points at most 1e-5 of the mesh's size
+  /// long (nearCopyEdges, SurfaceWelding.h), and the longest of them.
+  std::size_t NearCopyEdgeCount = 0;
+  double LongestNearCopyEdge = 0.0;
 };
 
 /// One frame's output, in output point ids (see the header comment).

@@ -65,6 +65,36 @@ TEST(SurfaceWelding, ToleranceJoinsNearPointsTransitively)
   EXPECT_EQ(weldCoincidentPoints(points, 1e-4), (std::vector<Id>{ 0, 1, 2, 3, 4 }));
 }
 
+TEST(SurfaceWelding, NearCopiesAreEdgesBelowAHundredThousandthOfTheDiagonal)
+{
+  // A unit square (diagonal sqrt 2) split in two, corner 2 with a copy (4)
+  // `gap` away joined to it by a sliver; a NaN point with an edge of its own.
+  auto square = [](double gap) {
+    return std::vector<glm::dvec3>{ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 },
+      { 1, 1, gap }, { std::nan(""), 0, 0 } };
+  };
+  const std::vector<Triangle> triangles{ { 0, 1, 2 }, { 0, 4, 3 }, { 0, 2, 4 }, { 3, 4, 5 } };
+  const EdgeTable table(triangles);
+  const double limit = 1e-5 * std::sqrt(2.0);
+  // Edge 2-4 at 0.9 of the limit is a near copy (one edge, both slivers'
+  // sides), and its length the longest.
+  const NearCopies found = nearCopyEdges(square(0.9 * limit), table);
+  EXPECT_EQ(found.EdgeCount, 1u);
+  EXPECT_DOUBLE_EQ(found.LongestEdge, 0.9 * limit);
+  // The wrong side of the threshold: 1.1 of the limit is an edge as any other.
+  EXPECT_EQ(nearCopyEdges(square(1.1 * limit), table).EdgeCount, 0u);
+  // Equal coordinates are one point (the exact weld's business), not a near copy.
+  EXPECT_EQ(nearCopyEdges(square(0.0), table).EdgeCount, 0u);
+  // The threshold follows the mesh's size: scaled by 1e6, the same mesh has
+  // the same near copy.
+  std::vector<glm::dvec3> large = square(0.9 * limit);
+  for (glm::dvec3& p : large)
+  {
+    p *= 1e6;
+  }
+  EXPECT_EQ(nearCopyEdges(large, table).EdgeCount, 1u);
+}
+
 TEST(SurfaceWelding, NormalSeamsOfASplitCubeAreItsTwelveEdges)
 {
   // A cube as exporters write one: 4 points per face with the face normal.

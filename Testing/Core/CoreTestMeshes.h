@@ -3,7 +3,6 @@
 
 #include "MeshTopology.h"
 #include "ViewGeometry.h"
-#include "WeldedSurface.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -199,15 +198,6 @@ inline SphereAndSoup sphereAndSoup(int rings, int sectors)
   unitSphere(rings, sectors, meshes.Points, meshes.Triangles);
   makeSoup(meshes.Points, meshes.Triangles, meshes.SoupPoints, meshes.SoupTriangles);
   return meshes;
-}
-
-/// Surface options without the flat-sided crease detection, for meshes
-/// whose creases the tests name themselves.
-inline silsmooth::SurfaceOptions plainOptions()
-{
-  silsmooth::SurfaceOptions options;
-  options.DetectFlatCreases = false;
-  return options;
 }
 
 } // namespace coretest

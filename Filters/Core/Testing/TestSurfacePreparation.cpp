@@ -1,6 +1,7 @@
 // Asset-file meshes: welding coincident points, normal seams, consistent
 // orientation, and WeldedSurface's output on the input's own points.
 #include "CoreTestMeshes.h"
+#include "PlainSurfaceOptions.h"
 #include "SurfaceOrientation.h"
 #include "SurfaceWelding.h"
 #include "WeldedSurface.h"

@@ -2,6 +2,7 @@
 // what WeldedSurface::movePoints keeps and redoes, the prepared mesh's edge
 // table and triangle grid, and assembleChanges against the whole frame.
 #include "CoreTestMeshes.h"
+#include "PlainSurfaceOptions.h"
 #include "TriangleGrid.h"
 #include "WeldedSurface.h"
 

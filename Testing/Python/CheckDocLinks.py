@@ -4,8 +4,10 @@ README, of docs/*.md and of the other Markdown files the repository keeps
 line breaks; reference definitions) names a file git keeps (any file, when
 the tree is not a git checkout), and its #anchor, if any, a heading of that
 file (GitHub's anchors: lower case, punctuation dropped, spaces to
-hyphens); no link and no text points outside the repository (../shared,
-DESIGN.md). Code blocks and code spans are not text.
+hyphens); a path in the text (a word that starts with ../) names such a
+file too, and neither leads outside the repository: a clone has nothing
+there. Code blocks and
+code spans are not text.
 
 Usage: CheckDocLinks.py SOURCE_DIR [FILE.md ...]
   With files, only those are checked (the test's wrong variant).
@@ -22,6 +24,8 @@ INLINE = re.compile(r"!?\[(?:[^\[\]]|\n(?!\n))*?\]\(\s*(<[^>\n]*>|[^)\s]+)(?:\s+
 DEFINITION = re.compile(r"^ {0,3}\[[^\]]+\]:\s*(<[^>\n]*>|\S+)", re.M)
 HEADING = re.compile(r"^#{1,6}\s+(.*?)\s*#*\s*$")
 FENCE = re.compile(r"^(```|~~~)")
+# A path in the text: ../ once or more, then a name.
+TEXT_PATH = re.compile(r"(?<![\w/.])((?:\.\./)+[\w.-][\w./-]*)")
 CODE_SPAN = re.compile(r"(`+)(?:(?!\1).)+?\1", re.S)
 
 
@@ -69,14 +73,34 @@ def prose(path):
     return CODE_SPAN.sub(lambda m: re.sub(r"[^\n]", " ", m.group(0)), text)
 
 
+def inside(source, path):
+    """Whether `path` lies in the repository at `source`."""
+    relative = os.path.relpath(os.path.normpath(path), source)
+    return relative != ".." and not relative.startswith(".." + os.sep)
+
+
+def kept(source, path, tracked):
+    """Whether `path` (inside the repository) exists and git keeps it, or
+    exists, when the tree is not a git checkout."""
+    return os.path.exists(path) and (
+        tracked is None or os.path.relpath(path, source) in tracked)
+
+
 def check(source, path, tracked):
     problems = []
     folder = os.path.dirname(path)
     text = prose(path)
-    for number, line in enumerate(text.split("\n"), 1):
-        if "../shared" in line or "DESIGN.md" in line:
-            problems.append("%s:%d points outside the repository: %s" %
-                            (os.path.relpath(path, source), number, line.strip()))
+    # The paths of the text itself: links and definitions are checked below.
+    blank = lambda m: re.sub(r"[^\n]", " ", m.group(0))
+    words = DEFINITION.sub(blank, INLINE.sub(blank, text))
+    for number, line in enumerate(words.split("\n"), 1):
+        for named in (found.rstrip(".,;:") for found in TEXT_PATH.findall(line)):
+            where = "%s:%d" % (os.path.relpath(path, source), number)
+            named_path = os.path.normpath(os.path.join(folder, named.split("#")[0]))
+            if not inside(source, named_path):
+                problems.append("%s points outside the repository: %s" % (where, named))
+            elif not kept(source, named_path, tracked):
+                problems.append("%s names a missing file: %s" % (where, named))
     targets = [(m.start(), m.group(1)) for m in INLINE.finditer(text)]
     targets += [(m.start(), m.group(1)) for m in DEFINITION.finditer(text)]
     for start, target in sorted(targets):
@@ -87,10 +111,9 @@ def check(source, path, tracked):
         name, _, anchor = target.partition("#")
         name = urllib.parse.unquote(name)
         linked = os.path.normpath(os.path.join(folder, name)) if name else path
-        relative = os.path.relpath(linked, source)
-        if relative == ".." or relative.startswith(".." + os.sep):
+        if not inside(source, linked):
             problems.append("%s links outside the repository: %s" % (where, target))
-        elif not os.path.exists(linked) or (tracked is not None and relative not in tracked):
+        elif not kept(source, linked, tracked):
             problems.append("%s links to a missing file: %s" % (where, target))
         elif anchor and linked.endswith(".md") and anchor not in anchors(linked):
             problems.append("%s links to a missing heading: %s" % (where, target))

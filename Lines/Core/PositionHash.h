@@ -1,5 +1,5 @@
 // A hash of a point's exact coordinates, for welding points at one position
-// (SurfaceEdgeLines, LineVisibility). -0 and +0 hash alike when the caller
+// (LineVisibility). -0 and +0 hash alike when the caller
 // adds 0.0 first.
 #pragma once
 

@@ -1,16 +1,12 @@
 #include "SurfaceEdgeLines.h"
 
 #include "EdgeClassification.h"
-#include "PositionHash.h"
 #include "SurfaceWelding.h"
 
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
-#include <tuple>
-#include <unordered_map>
 
 namespace silsmooth
 {
@@ -18,19 +14,6 @@ namespace
 {
 
 constexpr double DegreesToRadians = 3.14159265358979323846 / 180.0;
-
-/// For each point, the first point id at its position.
-std::vector<Id> weldByPosition(const std::vector<glm::dvec3>& points)
-{
-  std::unordered_map<glm::dvec3, Id, PositionHash> first;
-  first.reserve(points.size());
-  std::vector<Id> welded(points.size());
-  for (std::size_t i = 0; i < points.size(); ++i)
-  {
-    welded[i] = first.emplace(points[i] + glm::dvec3(0.0), static_cast<Id>(i)).first->second;
-  }
-  return welded;
-}
 
 /// One side of an edge: the triangle and the point ids it uses at the
 /// edge's welded ends.
@@ -62,9 +45,7 @@ std::vector<SurfaceEdgeLine> surfaceEdgeLines(const std::vector<glm::dvec3>& poi
   const std::vector<Triangle>& triangles, const std::vector<glm::dvec3>& normals,
   const SurfaceEdgeLineParameters& parameters)
 {
-  const std::vector<Id> welded = parameters.WeldTolerance > 0.0
-    ? weldCoincidentPoints(points, parameters.WeldTolerance)
-    : weldByPosition(points);
+  const std::vector<Id> welded = weldCoincidentPoints(points, parameters.WeldTolerance);
   const bool withNormals = !normals.empty() && normals.size() == points.size();
 
   std::vector<EdgeSide> sides;

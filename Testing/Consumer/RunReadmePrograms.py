@@ -67,6 +67,14 @@ def run(command, **kwargs):
     return done
 
 
+def check_new_triangles(output, label):
+    """The Python program's printed count of new triangles is above 0."""
+    match = re.search(r"new triangles: (\d+)", output)
+    if not match or int(match.group(1)) == 0:
+        fail("%s prints no count of new triangles above 0: %s" % (label, output))
+    print("%s: %s" % (label, match.group(0)))
+
+
 def pixels_of(path):
     if not os.path.exists(path):
         fail("no " + path)
@@ -145,10 +153,7 @@ def main():
             if re.search(r"ERROR|Warning", done.stderr):
                 fail("%s writes VTK errors or warnings:\n%s" % (label, done.stderr))
             if language == "Python":
-                match = re.search(r"new triangles: (\d+)", done.stdout)
-                if not match or int(match.group(1)) == 0:
-                    fail("%s prints no count of new triangles above 0: %s" % (label, done.stdout))
-                print("%s: %s" % (label, match.group(0)))
+                check_new_triangles(done.stdout, label)
             reference = check_image(image, reference, label)
             shutil.copy(image, os.path.join(folder, "smoothed_%s_%s.png" % (language, way)))
     print("the README's programs: passed")

@@ -12,6 +12,7 @@ code spans are not text.
 Usage: CheckDocLinks.py SOURCE_DIR [FILE.md ...]
   With files, only those are checked (the test's wrong variant).
 """
+import functools
 import os
 import re
 import subprocess
@@ -47,7 +48,8 @@ def prose_lines(path):
                 yield number, line
 
 
-def anchors(path):
+@functools.lru_cache(maxsize=None)
+def anchors(path):  # read once per file, however many links name it
     found = set()
     counts = {}
     for _, line in prose_lines(path):

@@ -9,6 +9,7 @@
 #include "vtkDataSetAttributes.h"
 #include "vtkFieldData.h"
 #include "vtkIdTypeArray.h"
+#include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
@@ -91,6 +92,8 @@ struct vtkSilhouetteSmoothingMapper::Internals
   vtkMTimeType PatchViewTime = 0;
   bool HavePatch = false;
   bool PatchSmoothed = false;
+  // Whether the patch drawn is Changes (not the base mesh alone).
+  bool PatchDrawsChanges = false;
   vtkMTimeType CopiedSettingsTime = 0;
 
   void UpdateBase(vtkSilhouetteSmoothingMapper* self, vtkPolyData* input)
@@ -153,6 +156,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
     this->PatchViewTime = viewTime;
     this->HavePatch = true;
     this->PatchSmoothed = smooth;
+    this->PatchDrawsChanges = false;
     self->ReplacedTriangleCount = 0;
     self->PatchTriangleCount = 0;
     self->CulledTriangleCount = 0;
@@ -172,6 +176,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
     this->Drawn->SetPatch(hidden, this->Changes,
       vtkIdTypeArray::SafeDownCast(this->Changes->GetCellData()->GetArray("OriginalCellId")),
       PointSources(this->Changes));
+    this->PatchDrawsChanges = true;
     self->ReplacedTriangleCount = this->Replaced->GetNumberOfValues();
     self->PatchTriangleCount = this->Changes->GetNumberOfPolys();
     vtkFieldData* figures = this->Changes->GetFieldData();
@@ -211,6 +216,30 @@ vtkSilhouetteSmoothingFilter* vtkSilhouetteSmoothingMapper::GetSmoothingFilter()
 vtkMTimeType vtkSilhouetteSmoothingMapper::GetMTime()
 {
   return std::max(this->Superclass::GetMTime(), this->Internal->Smoother->GetMTime());
+}
+
+double* vtkSilhouetteSmoothingMapper::GetBounds()
+{
+  double* bounds = this->Superclass::GetBounds(); // the input's
+  const Internals& internal = *this->Internal;
+  vtkPolyData* input = this->GetInput();
+  // The patch counts while smoothing is on and it was made for this input as
+  // it is now (UpdateBase keeps the base mesh's input and time).
+  const bool current = this->Smoothing && internal.HavePatch && internal.PatchDrawsChanges &&
+    input && input == internal.BaseInput && input->GetMTime() == internal.BaseInputTime;
+  if (!bounds || !current || internal.Changes->GetNumberOfPolys() == 0 ||
+    !vtkMath::AreBoundsInitialized(bounds))
+  {
+    return bounds;
+  }
+  double patch[6];
+  internal.Changes->GetBounds(patch);
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    bounds[2 * axis] = std::min(bounds[2 * axis], patch[2 * axis]);
+    bounds[2 * axis + 1] = std::max(bounds[2 * axis + 1], patch[2 * axis + 1]);
+  }
+  return bounds;
 }
 
 void vtkSilhouetteSmoothingMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)

@@ -36,6 +36,12 @@
  *
  * Smoothing off (SmoothingOff()) draws the base mesh alone: the coarse
  * outline, with the same shading normals.
+ *
+ * GetBounds, as a vtkPolyDataMapper's fed by the filter, holds what the last
+ * rendered view drew: the input's bounds joined with those of that view's
+ * smoothed triangles, which bulge beyond the coarse mesh (by up to 5% of
+ * its size on an icosahedron). Before the first render, and after the input
+ * changes, they are the input's.
  */
 #ifndef vtkSilhouetteSmoothingMapper_h
 #define vtkSilhouetteSmoothingMapper_h
@@ -111,6 +117,15 @@ public:
   void ProcessSelectorPixelBuffers(
     vtkHardwareSelector* sel, std::vector<unsigned int>& pixeloffsets, vtkProp* prop) override;
   vtkMTimeType GetMTime() override;
+
+  ///@{
+  /**
+   * The input's bounds, joined with those of the smoothed triangles the last
+   * rendered view of this input drew (see above).
+   */
+  double* GetBounds() VTK_SIZEHINT(6) override;
+  void GetBounds(double bounds[6]) override { this->Superclass::GetBounds(bounds); }
+  ///@}
 
 protected:
   vtkSilhouetteSmoothingMapper();

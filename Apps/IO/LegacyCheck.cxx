@@ -17,8 +17,9 @@ namespace cli
 namespace
 {
 
-// vtkDataReader reads header lines into 256-character buffers.
-constexpr std::size_t MaximumLine = 255;
+// vtkDataReader reads words (vtkDataReader::ReadString) into 256-character
+// buffers: a longer word is read as two.
+constexpr std::size_t MaximumWord = 255;
 
 // Bytes per value of a legacy data type in a BINARY file; 0 if unknown.
 std::size_t BinarySize(const std::string& type)
@@ -63,7 +64,9 @@ public:
     this->MajorVersion =
       std::sscanf(version.c_str(), "# vtk DataFile Version %d.%d", &major, &minor) == 2 ? major : 0;
     this->Line(); // the title
-    const std::string format = Lowercase(this->Line());
+    // The format is a word, not a line: what follows it on its line is read
+    // as the next word (the DATASET keyword).
+    const std::string format = Lowercase(this->Word());
     this->Binary = format.rfind("binary", 0) == 0;
     if (!this->Binary && format.rfind("ascii", 0) != 0)
     {
@@ -246,14 +249,16 @@ private:
     throw RuntimeError("cannot read '" + this->Path + "': malformed legacy VTK file: " + problem);
   }
 
-  // A header line, as vtkDataReader reads it into a 256-byte buffer.
+  // The version line or the title. Only the version line's start matters,
+  // so a long one, a long title say, is read whole: vtkDataReader reads the
+  // start of it and skips the rest.
   std::string Line()
   {
     std::string line;
     bool ended = false;
-    if (!this->Text.NextLine(line, &ended) || !ended || line.size() > MaximumLine)
+    if (!this->Text.NextLine(line, &ended) || !ended)
     {
-      this->Fail("a header line is missing or longer than 255 characters");
+      this->Fail("the file ends inside its header");
     }
     return line;
   }
@@ -262,7 +267,7 @@ private:
   // Words are read as vtkDataReader::ReadString reads them, into 256-byte
   // buffers: a longer word is two (its name, then its type, for a SCALARS
   // line). Numbers are read whole, as iostream reads them.
-  std::string Word(std::size_t limit = MaximumLine) { return this->Text.Word(limit); }
+  std::string Word(std::size_t limit = MaximumWord) { return this->Text.Word(limit); }
 
   // An ASCII integer as iostream reads it: digits only, in range.
   long long Integer(const std::string& what)

@@ -8,6 +8,7 @@
 #include "vtkHardwareSelector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
+#include "vtkProperty.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSilhouetteSmoothingMapper.h"
@@ -67,6 +68,13 @@ vtkIdType CountGhostCells(vtkPolyData* pd)
 struct vtkSilhouetteCompositeMapper::Leaf
 {
   vtkNew<vtkSilhouetteSmoothingMapper> Mapper;
+  // For a leaf with a colour or opacity of its own: the actor it is drawn
+  // with (the real one's matrix, texture and pass) and its property (the
+  // real one's, copied when that changes, with the block's look).
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkProperty> Property;
+  vtkProperty* CopiedProperty = nullptr;
+  vtkMTimeType CopiedPropertyTime = 0;
   vtkMTimeType CopiedMapperTime = 0;
   vtkMTimeType CopiedSettingsTime = 0;
   // The leaf's ghost cells, counted when it changes.
@@ -124,9 +132,17 @@ void vtkSilhouetteCompositeMapper::Render(vtkRenderer* ren, vtkActor* act)
   {
     return;
   }
+  // Each leaf in its pass: translucent ones in the translucent pass, the
+  // others in the opaque one. The actor asks for a pass only when the
+  // superclass says it has geometry for it (block opacities counted); an
+  // actor that skips one (its property translucent, ForceOpaque, ...) has
+  // every leaf drawn in the other.
+  this->TranslucentPass = act->IsRenderingTranslucentPolygonalGeometry();
+  this->OtherPassDrawn = this->TranslucentPass ? act->HasOpaqueGeometry() != 0
+                                               : act->HasTranslucentPolygonalGeometry() != 0;
   std::map<unsigned int, std::unique_ptr<Leaf>> used;
   unsigned int flatIndex = 0;
-  this->RenderLeaf(ren, act, input, flatIndex, true, used);
+  this->RenderLeaf(ren, act, input, flatIndex, BlockLook(), used);
   // Leaves gone or hidden: their buffers go.
   for (auto& leaf : this->Leaves)
   {
@@ -136,14 +152,25 @@ void vtkSilhouetteCompositeMapper::Render(vtkRenderer* ren, vtkActor* act)
 }
 
 // Walks the tree as vtkCompositePolyDataMapper2::BuildRenderValues does, so
-// that the flat indices and the inherited block visibility are the same.
+// that the flat indices and the inherited block visibility, colour and
+// opacity are the same.
 void vtkSilhouetteCompositeMapper::RenderLeaf(vtkRenderer* ren, vtkActor* act, vtkDataObject* dobj,
-  unsigned int& flatIndex, bool visible, std::map<unsigned int, std::unique_ptr<Leaf>>& used)
+  unsigned int& flatIndex, BlockLook look, std::map<unsigned int, std::unique_ptr<Leaf>>& used)
 {
   vtkCompositeDataDisplayAttributes* attributes = this->GetCompositeDataDisplayAttributes();
   if (attributes && attributes->HasBlockVisibility(dobj))
   {
-    visible = attributes->GetBlockVisibility(dobj);
+    look.Visible = attributes->GetBlockVisibility(dobj);
+  }
+  if (attributes && attributes->HasBlockColor(dobj))
+  {
+    look.HasColor = true;
+    attributes->GetBlockColor(dobj, look.Color);
+  }
+  if (attributes && attributes->HasBlockOpacity(dobj))
+  {
+    look.HasOpacity = true;
+    look.Opacity = attributes->GetBlockOpacity(dobj);
   }
   const unsigned int index = flatIndex++;
   if (auto tree = vtkDataObjectTree::SafeDownCast(dobj))
@@ -156,15 +183,20 @@ void vtkSilhouetteCompositeMapper::RenderLeaf(vtkRenderer* ren, vtkActor* act, v
       }
       else
       {
-        this->RenderLeaf(ren, act, child, flatIndex, visible, used);
+        this->RenderLeaf(ren, act, child, flatIndex, look, used);
       }
     }
     return;
   }
   vtkPolyData* pd = vtkPolyData::SafeDownCast(dobj);
-  if (!visible || !pd || !pd->GetPoints() || pd->GetNumberOfPoints() == 0)
+  if (!look.Visible || !pd || !pd->GetPoints() || pd->GetNumberOfPoints() == 0)
   {
     return;
+  }
+  const double opacity = look.HasOpacity ? look.Opacity : act->GetProperty()->GetOpacity();
+  if ((opacity < 1.0) != this->TranslucentPass && this->OtherPassDrawn)
+  {
+    return; // the other pass's leaf
   }
   std::unique_ptr<Leaf>& leaf = used[index];
   auto known = this->Leaves.find(index);
@@ -200,13 +232,45 @@ void vtkSilhouetteCompositeMapper::RenderLeaf(vtkRenderer* ren, vtkActor* act, v
   {
     mapper->SetInputData(pd);
   }
-  mapper->Render(ren, act); // Static: straight to RenderPiece
+  mapper->Render(ren, this->ActorForLeaf(act, *leaf, look)); // Static: straight to RenderPiece
   this->ReplacedTriangleCount += mapper->GetReplacedTriangleCount();
   this->PatchTriangleCount += mapper->GetPatchTriangleCount();
   ++this->RenderedLeaves;
   const vtkIdType ghosts = leaf->Ghosts(pd);
   this->DrawnCells += pd->GetNumberOfCells() - ghosts;
   this->SkippedGhostCells += ghosts;
+}
+
+// The actor itself, or for a leaf with a colour or opacity of its own, the
+// leaf's actor: the real one's state (matrix, texture, pass) with a copy of
+// its property that has the block's look. Setters leave the MTime alone when
+// the value is the same, so an unchanged look rebuilds nothing.
+vtkActor* vtkSilhouetteCompositeMapper::ActorForLeaf(
+  vtkActor* act, Leaf& leaf, const BlockLook& look)
+{
+  if (!look.HasColor && !look.HasOpacity)
+  {
+    return act;
+  }
+  vtkProperty* property = act->GetProperty();
+  if (property != leaf.CopiedProperty || property->GetMTime() != leaf.CopiedPropertyTime)
+  {
+    leaf.Property->DeepCopy(property);
+    leaf.CopiedProperty = property;
+    leaf.CopiedPropertyTime = property->GetMTime();
+  }
+  if (look.HasColor)
+  {
+    leaf.Property->SetAmbientColor(look.Color[0], look.Color[1], look.Color[2]);
+    leaf.Property->SetDiffuseColor(look.Color[0], look.Color[1], look.Color[2]);
+  }
+  leaf.Property->SetOpacity(look.HasOpacity ? look.Opacity : property->GetOpacity());
+  leaf.Actor->ShallowCopy(act);
+  leaf.Actor->SetMapper(nullptr); // this mapper holds the leaf: no cycle
+  leaf.Actor->SetProperty(leaf.Property);
+  leaf.Actor->SetIsRenderingTranslucentPolygonalGeometry(
+    act->IsRenderingTranslucentPolygonalGeometry());
+  return leaf.Actor;
 }
 
 void vtkSilhouetteCompositeMapper::ReleaseGraphicsResources(vtkWindow* win)

@@ -22,9 +22,12 @@
  *   are not drawn (the stock mapper of VTK 9.2 draws them): the leaf's
  *   vtkSilhouetteSmoothingMapper smooths with them and never draws them, so
  *   a mesh split across ranks with a ghost layer draws each cell once;
- * - block visibility is honoured (inherited as the superclass does), block
- *   colour, opacity and pickability are not: every leaf is drawn with the
- *   actor's property;
+ * - block visibility, colour and opacity are honoured, inherited down the
+ *   tree as the superclass does: a leaf with a block colour or opacity of
+ *   its own is drawn with a copy of the actor's property that has them (the
+ *   colour as the ambient and diffuse colour, which scalar colouring
+ *   overrides), a leaf whose opacity is below 1 in the translucent pass and
+ *   the others in the opaque pass;
  * - hardware selection passes are rendered by the superclass, that is with the
  *   leaves as they are (not smoothed): the ids ParaView needs
  *   (vtkOriginalCellIds/PointIds, vtkProcessId, vtkCompositeIndex, the block's
@@ -97,9 +100,22 @@ private:
   void operator=(const vtkSilhouetteCompositeMapper&) = delete;
 
   struct Leaf;
+  /// What a block passes down to its children (vtkCompositeDataDisplayAttributes).
+  struct BlockLook
+  {
+    bool Visible = true;
+    bool HasColor = false;
+    double Color[3] = { 1.0, 1.0, 1.0 };
+    bool HasOpacity = false;
+    double Opacity = 1.0;
+  };
   void RenderLeaf(vtkRenderer* ren, vtkActor* act, vtkDataObject* dobj, unsigned int& flatIndex,
-    bool visible, std::map<unsigned int, std::unique_ptr<Leaf>>& used);
+    BlockLook look, std::map<unsigned int, std::unique_ptr<Leaf>>& used);
+  vtkActor* ActorForLeaf(vtkActor* act, Leaf& leaf, const BlockLook& look);
 
+  // The pass being rendered, and whether the actor renders the other one.
+  bool TranslucentPass = false;
+  bool OtherPassDrawn = false;
   vtkNew<vtkSilhouetteSmoothingFilter> Settings;
   std::map<unsigned int, std::unique_ptr<Leaf>> Leaves; // by flat index
 };

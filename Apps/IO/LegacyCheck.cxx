@@ -27,7 +27,9 @@ std::size_t BinarySize(const std::string& type)
   static const std::pair<const char*, std::size_t> sizes[] = { { "char", 1 },
     { "unsigned_char", 1 }, { "short", 2 }, { "unsigned_short", 2 }, { "int", 4 },
     { "unsigned_int", 4 }, { "long", 8 }, { "unsigned_long", 8 }, { "float", 4 }, { "double", 8 },
-    { "vtktypeint64", 8 }, { "vtktypeuint64", 8 }, { "vtkidtype", 8 } };
+    { "vtktypeint64", 8 }, { "vtktypeuint64", 8 }, { "signed_char", 1 },
+    // vtkDataWriter writes vtkIdType as int, and the reader reads it so.
+    { "vtkidtype", 4 } };
   for (const auto& size : sizes)
   {
     if (type == size.first)
@@ -181,7 +183,7 @@ private:
         const std::string rest = this->Text.RestOfLine();
         const int components =
           rest.find_first_not_of(" \t\r") == std::string::npos ? 1 : std::atoi(rest.c_str());
-        if (components < 1 || components > 4)
+        if (components < 1)
         {
           this->Fail("SCALARS: " + std::to_string(components) + " components");
         }
@@ -307,7 +309,25 @@ private:
     {
       this->Fail(what + ": " + std::to_string(count) + " values cannot fit in the file");
     }
-    const std::size_t size = BinarySize(type);
+    if (type == "string" || type == "utf8_string")
+    {
+      this->Strings(count, what);
+      return kept;
+    }
+    if (type == "bit" && this->Binary)
+    {
+      // Packed, eight values to a byte.
+      this->Text.SkipToNextLine();
+      if (static_cast<unsigned long long>(count + 7) / 8 >
+        this->Bytes.size() - this->Text.Position())
+      {
+        this->Fail(what + ": the file ends inside the data (truncated binary data)");
+      }
+      this->Text.Skip(static_cast<std::size_t>(count + 7) / 8);
+      return kept;
+    }
+    // ASCII bits are integers.
+    const std::size_t size = type == "bit" ? 1 : BinarySize(type);
     if (size == 0)
     {
       this->Fail(what + ": unknown data type '" + Excerpt(type) + "'");
@@ -373,6 +393,45 @@ private:
       }
     }
     return kept;
+  }
+
+  // `count` strings: in ASCII a line each (percent-encoded) after the line
+  // of the array's header; in binary each after a big-endian length whose
+  // first byte's top two bits say its size (11: one byte, 10: two, 01: four,
+  // 00: eight), as vtkDataWriter writes them.
+  void Strings(long long count, const std::string& what)
+  {
+    this->Text.SkipToNextLine();
+    for (long long i = 0; i < count; ++i)
+    {
+      if (!this->Binary)
+      {
+        std::string line;
+        if (!this->Text.NextLine(line))
+        {
+          this->Fail(what + ": the file ends inside the data");
+        }
+        continue;
+      }
+      const std::size_t at = this->Text.Position();
+      const std::size_t left = this->Bytes.size() - at;
+      const auto* raw = reinterpret_cast<const unsigned char*>(this->Bytes.data() + at);
+      const std::size_t header = left == 0 ? 1 : std::size_t{ 1 } << (3 - (raw[0] >> 6));
+      if (left < header)
+      {
+        this->Fail(what + ": the file ends inside the data (truncated binary data)");
+      }
+      unsigned long long length = raw[0] & 0x3fu; // below the two bits of the size
+      for (std::size_t b = 1; b < header; ++b)
+      {
+        length = (length << 8) | raw[b];
+      }
+      if (length > left - header)
+      {
+        this->Fail(what + ": the file ends inside the data (truncated binary data)");
+      }
+      this->Text.Skip(header + static_cast<std::size_t>(length));
+    }
   }
 
   void Cells(const std::string& keyword)

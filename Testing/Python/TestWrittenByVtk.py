@@ -1,0 +1,85 @@
+"""Files VTK's own writers make are read (the file pre-checks must not refuse
+what the readers read well).
+
+Writes an octahedron with a point data array of every type vtkPolyDataWriter
+writes (bit, char, signed char, unsigned char, short, unsigned short, int,
+unsigned int, vtkIdType, long long, unsigned long long, float, double,
+string) and a six-component one, plus a string field array, as legacy VTK in
+ASCII and in binary, in the 4.2 and 5.1 layouts; `silhouette smooth` must read
+each (8 input triangles). Each binary file cut at 60% of its length, inside
+its arrays, must be refused with one line (the check still checks).
+Usage: TestWrittenByVtk.py SILHOUETTE_PROGRAM WORK_DIR
+"""
+import os
+import re
+import sys
+
+import cli_checks  # beside this script
+from vtkmodules import vtkCommonCore as core
+from vtkmodules.vtkCommonDataModel import vtkPolyData
+from vtkmodules.vtkFiltersSources import vtkPlatonicSolidSource
+from vtkmodules.vtkIOLegacy import vtkPolyDataWriter
+
+program, work = sys.argv[1], sys.argv[2]
+os.makedirs(work, exist_ok=True)
+check = cli_checks.check
+
+solid = vtkPlatonicSolidSource()
+solid.SetSolidTypeToOctahedron()
+solid.Update()
+mesh = vtkPolyData()
+mesh.DeepCopy(solid.GetOutput())
+mesh.GetPointData().Initialize()
+mesh.GetCellData().Initialize()
+points = mesh.GetNumberOfPoints()
+array_types = [core.vtkBitArray, core.vtkCharArray, core.vtkSignedCharArray, core.vtkUnsignedCharArray,
+    core.vtkShortArray, core.vtkUnsignedShortArray, core.vtkIntArray, core.vtkUnsignedIntArray,
+    core.vtkIdTypeArray, core.vtkLongLongArray, core.vtkUnsignedLongLongArray, core.vtkFloatArray,
+    core.vtkDoubleArray]
+for make in array_types:
+    array = make()
+    array.SetName(make.__name__)
+    for p in range(points):
+        array.InsertNextTuple1(p % 2 if make is core.vtkBitArray else p)
+    mesh.GetPointData().AddArray(array)
+six = core.vtkFloatArray()
+six.SetName("six components")
+six.SetNumberOfComponents(6)
+for p in range(points):
+    six.InsertNextTuple([p + k / 10.0 for k in range(6)])
+mesh.GetPointData().AddArray(six)
+names = core.vtkStringArray()
+names.SetName("point names")
+for p in range(points):
+    names.InsertNextValue("point %d, of %d" % (p, points))
+mesh.GetPointData().AddArray(names)
+author = core.vtkStringArray()
+author.SetName("author")
+author.InsertNextValue("Jane Doe")
+mesh.GetFieldData().AddArray(author)
+
+for binary in (False, True):
+    for version in (42, 51):
+        name = os.path.join(work, "octahedron_%s_%d.vtk" % ("binary" if binary else "ascii", version))
+        writer = vtkPolyDataWriter()
+        writer.SetInputData(mesh)
+        writer.SetFileName(name)
+        if version == 42:
+            writer.SetFileVersion(writer.VTK_LEGACY_READER_VERSION_4_2)
+        if binary:
+            writer.SetFileTypeToBinary()
+        check(writer.Write() == 1, "vtkPolyDataWriter wrote %s" % name)
+        code, out, err = cli_checks.run(program, "smooth", name)
+        check(code == 0 and re.search(r"^input triangles: +8$", out, re.M) and not err,
+            "%s is read (exit %d, stderr %r)" % (os.path.basename(name), code, err.strip()))
+        if binary:
+            short = name.replace(".vtk", "_short.vtk")
+            with open(name, "rb") as whole, open(short, "wb") as cut:
+                data = whole.read()
+                cut.write(data[:len(data) * 6 // 10])
+            code, out, err = cli_checks.run(program, "smooth", short)
+            check(code == 1 and err.count("\n") == 1 and err.startswith("silhouette: "),
+                "%s, cut short, is refused with one line (exit %d: %r)"
+                % (os.path.basename(short), code, err.strip()))
+
+sys.exit(1 if cli_checks.failures else 0)

@@ -3,6 +3,7 @@
 #include "CliErrors.h"
 #include "TextScanning.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -22,12 +23,50 @@ void CheckObjFile(const std::string& path)
     throw RuntimeError("cannot read '" + path +
       "': it is UTF-16 text; OBJ files are read as ASCII or UTF-8 (convert it, e.g. with iconv)");
   }
+  // Statements, each with the number of its first line: a line that ends
+  // in a backslash after white space goes on on the next line, as
+  // vtkOBJReader joins them.
   std::vector<std::string> lines;
+  std::vector<std::size_t> lineNumbers;
   TextCursor cursor(bytes);
+  bool continued = false;
+  std::size_t read = 0;
   for (std::string line; cursor.NextLine(line);)
   {
-    lines.push_back(std::move(line));
+    ++read;
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    if (continued)
+    {
+      lines.back() += line;
+    }
+    else
+    {
+      lines.push_back(line);
+      lineNumbers.push_back(read);
+    }
+    std::string& statement = lines.back();
+    continued = statement.size() >= 2 && statement.back() == '\\' &&
+      (statement[statement.size() - 2] == ' ' || statement[statement.size() - 2] == '\t');
+    if (continued)
+    {
+      statement.back() = ' ';
+    }
   }
+  // The words of statement k; on a vertex or normal, up to a comment (the
+  // reader reads the numbers before it).
+  const auto wordsOf = [&lines](std::size_t k) {
+    std::vector<std::string> words = WordsOf(lines[k]);
+    if (!words.empty() && (words[0] == "v" || words[0] == "vn"))
+    {
+      const auto comment = std::find_if(
+        words.begin(), words.end(), [](const std::string& word) { return word[0] == '#'; });
+      words.erase(comment, words.end());
+    }
+    return words;
+  };
   // A coordinate of a vertex or a normal: vtkOBJReader 9.1 reads "nan",
   // "inf" and "0x10" as 0, a word that is no number as 0, and a number
   // beyond the range of a float as FLT_MAX or garbage, all without a word.
@@ -54,9 +93,10 @@ void CheckObjFile(const std::string& path)
   // First the vertices and normals, and the counts of texture coordinates
   // and normals, which faces may refer to before they appear.
   long long vertex = 0, textureCoordinates = 0, normals = 0;
-  for (std::size_t number = 0; number < lines.size(); ++number)
+  for (std::size_t k = 0; k < lines.size(); ++k)
   {
-    const std::vector<std::string> words = WordsOf(lines[number]);
+    const std::size_t number = lineNumbers[k] - 1;
+    const std::vector<std::string> words = wordsOf(k);
     const std::string keyword = words.empty() ? std::string() : words[0];
     textureCoordinates += keyword == "vt";
     if (keyword == "vn")
@@ -94,16 +134,21 @@ void CheckObjFile(const std::string& path)
   // Then the corners of faces, lines and points: v, v/vt, v//vn or v/vt/vn.
   // VTK 9.1's reader crashes on a corner such as "1/" and on a texture
   // coordinate or normal index with none to refer to.
-  long long verticesBefore = 0; // a negative point index counts back from here
+  // A negative index counts back from the points, texture coordinates or
+  // normals before its line.
+  long long verticesBefore = 0, textureCoordinatesBefore = 0, normalsBefore = 0;
   // Whether a face's texture or normal index differs from its point's, and
   // the line of the first face without normal indices (0: none).
   bool indexedApart = false;
   std::size_t faceWithoutNormals = 0;
-  for (std::size_t number = 0; number < lines.size(); ++number)
+  for (std::size_t k = 0; k < lines.size(); ++k)
   {
-    const std::vector<std::string> words = WordsOf(lines[number]);
+    const std::size_t number = lineNumbers[k] - 1;
+    const std::vector<std::string> words = wordsOf(k);
     const std::string keyword = words.empty() ? std::string() : words[0];
     verticesBefore += keyword == "v";
+    textureCoordinatesBefore += keyword == "vt";
+    normalsBefore += keyword == "vn";
     if (keyword != "f" && keyword != "l" && keyword != "p")
     {
       continue;
@@ -156,24 +201,37 @@ void CheckObjFile(const std::string& path)
           std::to_string(0ULL - static_cast<unsigned long long>(point)) +
           " back from this line, but only " + std::to_string(verticesBefore) + " come before it");
       }
-      const auto requireInRange = [&](const std::string& part, long long count, const char* what) {
-        if (!part.empty() && ParseWholeInteger(part, index) && (index < 1 || index > count))
+      const auto requireInRange = [&](const std::string& part, long long count, long long before,
+                                    const char* what) {
+        if (part.empty() || !ParseWholeInteger(part, index))
+        {
+          return;
+        }
+        const long long resolved = index < 0 ? before + index + 1 : index;
+        if (index == 0 || index > count)
         {
           throw RuntimeError(where + ": '" + corner + "' refers to " + what + " " + part +
             " but there are " + std::to_string(count));
         }
-        if (!part.empty() && keyword == "f" && index != resolvedPoint)
+        if (resolved < 1)
+        {
+          throw RuntimeError(where + ": '" + corner + "' refers to " + what + " " + part + ", " +
+            std::to_string(0ULL - static_cast<unsigned long long>(index)) +
+            " back from this line, but only " + std::to_string(before) + " come before it");
+        }
+        if (keyword == "f" && resolved != resolvedPoint)
         {
           indexedApart = true;
         }
       };
       if (parts.size() > 1)
       {
-        requireInRange(parts[1], textureCoordinates, "texture coordinate");
+        requireInRange(
+          parts[1], textureCoordinates, textureCoordinatesBefore, "texture coordinate");
       }
       if (parts.size() > 2)
       {
-        requireInRange(parts[2], normals, "normal");
+        requireInRange(parts[2], normals, normalsBefore, "normal");
         withNormals = true;
       }
     }

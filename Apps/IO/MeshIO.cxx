@@ -110,9 +110,11 @@ void RequireLegacyPolyData(vtkPolyDataReader* reader, const std::string& path)
 // The pre-check for the format, then VTK's reader.
 vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, const std::string& extension)
 {
+  bool faceTextureCoordinates = false;
   if (extension == ".ply")
   {
-    CheckPlyFile(path); // vtkPLYReader crashes on some malformed files
+    // vtkPLYReader crashes on some malformed files.
+    faceTextureCoordinates = CheckPlyFile(path);
   }
   else if (extension == ".obj")
   {
@@ -131,6 +133,11 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, const std::str
   {
     throw RuntimeError(Quoted(path) + ": unknown mesh format '" + extension +
       "'; expected .ply, .obj, .stl, .vtp or .vtk");
+  }
+  if (faceTextureCoordinates)
+  {
+    // Its splitting of points can give a face another face's point.
+    vtkPLYReader::SafeDownCast(reader)->SetDuplicatePointsForFaceTexture(false);
   }
   if (extension == ".vtk")
   {
@@ -151,6 +158,16 @@ vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::str
   errors.Watch(reader);
   reader->Update();
   errors.ThrowIfErrors("cannot read " + Quoted(path));
+  if (auto* ply = vtkPLYReader::SafeDownCast(reader);
+      ply && !ply->GetDuplicatePointsForFaceTexture())
+  {
+    errors.Record(VtkErrorLog::Kind::Warning, true,
+      (Quoted(path) +
+        ": its faces give texture coordinates per corner, which vtkPLYReader 9.1 "
+        "can attach to the wrong points; they are read one per point, so texture "
+        "seams are lost")
+        .c_str());
+  }
   vtkPolyData* read = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
   if (!read)
   {

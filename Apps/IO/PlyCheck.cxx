@@ -154,7 +154,8 @@ public:
   PlyChecker(const PlyChecker&) = delete;
   PlyChecker& operator=(const PlyChecker&) = delete;
 
-  void Check()
+  // Whether the faces have texture coordinates per corner (CheckPlyFile).
+  bool Check()
   {
     const Header header = this->ReadHeader();
     this->CheckElements(header);
@@ -181,6 +182,11 @@ public:
       this->Unsupported("its last line has no line end, which vtkPLYReader 9.1 cannot read (it "
                         "crashes); end the file with a newline");
     }
+    return std::any_of(header.Elements.begin(), header.Elements.end(), [](const Element& e) {
+      return e.Name == "face" &&
+        std::any_of(e.Properties.begin(), e.Properties.end(),
+          [](const Property& p) { return p.IsList && p.Name == "texcoord"; });
+    });
   }
 
 private:
@@ -199,7 +205,8 @@ private:
   // spaces and tabs only, where we split at any white space: a NUL byte, a
   // control character (a vertical tab, say) or a longer line would give the
   // two of us different words, and it crashes reading the ones it lacks.
-  void CheckLineText(const std::string& line, const std::string& where) const
+  void CheckLineText(
+    const std::string& line, const std::string& where, bool controlsAllowed = false) const
   {
     if (line.size() > MaximumLineLength)
     {
@@ -213,7 +220,7 @@ private:
       {
         this->Fail(where + " holds a NUL byte");
       }
-      if ((c < 0x20 && c != '\t') || c == 0x7f)
+      if (!controlsAllowed && ((c < 0x20 && c != '\t') || c == 0x7f))
       {
         this->Fail(where + " holds a control character (byte " + std::to_string(c) + ")");
       }
@@ -234,7 +241,9 @@ private:
       {
         this->Fail(lineNumber == 0 ? "empty file" : "the header has no end_header line");
       }
-      this->CheckLineText(line, "header line " + std::to_string(lineNumber + 1));
+      // A comment's words are not read: control characters there are text.
+      const bool comment = line.rfind("comment", 0) == 0 || line.rfind("obj_info", 0) == 0;
+      this->CheckLineText(line, "header line " + std::to_string(lineNumber + 1), comment);
       ++lineNumber;
       if (!line.empty() && line.back() == '\r')
       {
@@ -349,7 +358,10 @@ private:
       const Element& element = header.Elements[e];
       for (std::size_t other = 0; other < e; ++other)
       {
-        if (header.Elements[other].Name == element.Name)
+        // The reader looks the vertices and faces up by name; it skips other
+        // elements whatever their names.
+        if (header.Elements[other].Name == element.Name &&
+          (element.Name == "vertex" || element.Name == "face"))
         {
           this->Fail("element '" + element.Name + "' appears twice");
         }
@@ -486,6 +498,14 @@ private:
       if (value < RangeOf(type).first || value > RangeOf(type).second)
       {
         this->Fail(where + " has a value out of range for its type: '" + word.substr(0, 40) + "'");
+      }
+      // The reader reads an integer's leading decimal digits (atoi).
+      const long long leading = std::strtoll(word.c_str(), nullptr, 10);
+      if (IsInteger(type) && static_cast<double>(leading) != value)
+      {
+        this->Fail(where + " has the integer '" + word.substr(0, 40) +
+          "', which vtkPLYReader reads as " + std::to_string(leading) +
+          "; write it in decimal digits");
       }
       return value;
     };
@@ -635,9 +655,9 @@ private:
 
 } // namespace
 
-void CheckPlyFile(const std::string& path)
+bool CheckPlyFile(const std::string& path)
 {
-  PlyChecker(path, ReadFileBytes(path)).Check();
+  return PlyChecker(path, ReadFileBytes(path)).Check();
 }
 
 } // namespace cli

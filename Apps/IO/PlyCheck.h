@@ -13,9 +13,15 @@ namespace cli
  * body line for the end of the file and ignores what follows the elements
  * the header declares; this walks the header and the whole body (ASCII or
  * binary, either byte order) and throws RuntimeError with one line naming the
- * first problem.
+ * first problem. An integer is read as the reader reads it (its leading
+ * decimal digits), so one written otherwise ("0x1", "1e1") is refused.
+ *
+ * Returns whether the faces carry texture coordinates per corner (a
+ * `texcoord` list, as MeshLab writes): vtkPLYReader 9.1's splitting of
+ * points for them can give a face another face's point, so the caller reads
+ * them one per point instead.
  */
-void CheckPlyFile(const std::string& path);
+bool CheckPlyFile(const std::string& path);
 
 } // namespace cli
 

@@ -66,14 +66,15 @@ std::string DecodeBase64Prefix(
   return bytes;
 }
 
-// Little-endian unsigned word `index` of `width` bytes (4 or 8).
-std::uint64_t Word(const std::string& bytes, std::size_t index, std::size_t width)
+// Unsigned word `index` of `width` bytes (4 or 8), in the file's byte order.
+std::uint64_t Word(const std::string& bytes, std::size_t index, std::size_t width, bool bigEndian)
 {
   std::uint64_t value = 0;
   for (std::size_t b = 0; b < width; ++b)
   {
+    const std::size_t shift = bigEndian ? width - 1 - b : b;
     value |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[index * width + b]))
-      << (8 * b);
+      << (8 * shift);
   }
   return value;
 }
@@ -179,6 +180,7 @@ struct VtpFile
   std::uint64_t Size = 0;
   std::uint64_t Limit = 0; ///< the most bytes or items a file of Size bytes can declare
   std::size_t Width = 4;   ///< bytes of a header word (UInt32 or UInt64)
+  bool BigEndian = false;  ///< byte_order="BigEndian"
   bool Compressed = false;
   std::string Where; ///< the start of every message
   std::size_t RootEnd = 0;
@@ -321,9 +323,9 @@ std::uint64_t CompressedBytes(
   const VtpFile& file, const ArrayBytes& bytes, const std::string& header)
 {
   const std::size_t width = file.Width;
-  const std::uint64_t blocks = Word(header, 0, width);
-  const std::uint64_t blockSize = Word(header, 1, width);
-  const std::uint64_t lastSize = Word(header, 2, width);
+  const std::uint64_t blocks = Word(header, 0, width, file.BigEndian);
+  const std::uint64_t blockSize = Word(header, 1, width, file.BigEndian);
+  const std::uint64_t lastSize = Word(header, 2, width, file.BigEndian);
   if (blocks > file.Size)
   {
     std::ostringstream message;
@@ -336,7 +338,7 @@ std::uint64_t CompressedBytes(
   const std::string sizes = bytes.prefix(file.Text, (3 + blocks) * width);
   for (std::uint64_t b = 0; (3 + b + 1) * width <= sizes.size(); ++b)
   {
-    const std::uint64_t compressedSize = Word(sizes, 3 + b, width);
+    const std::uint64_t compressedSize = Word(sizes, 3 + b, width, file.BigEndian);
     if (compressedSize > file.Size)
     {
       std::ostringstream message;
@@ -376,7 +378,7 @@ void CheckDataArray(const VtpFile& file, const Tag& array)
     return; // too short to declare anything: the reader reports it
   }
   const std::uint64_t declared =
-    file.Compressed ? CompressedBytes(file, bytes, header) : Word(header, 0, width);
+    file.Compressed ? CompressedBytes(file, bytes, header) : Word(header, 0, width, file.BigEndian);
   if (declared > file.Limit)
   {
     std::ostringstream message;
@@ -421,6 +423,7 @@ void CheckVtpFile(const std::string& path)
   file.Size = static_cast<std::uint64_t>(text.size());
   file.Limit = 1024 * file.Size + 65536;
   file.Width = rootTag.Attribute("header_type") == "UInt64" ? 8 : 4;
+  file.BigEndian = rootTag.Attribute("byte_order") == "BigEndian";
   file.Compressed = !rootTag.Attribute("compressor").empty();
   file.Where = "cannot read '" + path + "': VTK XML: ";
   file.RootEnd = rootTag.End;

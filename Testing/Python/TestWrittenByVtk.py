@@ -7,7 +7,10 @@ unsigned int, vtkIdType, long long, unsigned long long, float, double,
 string) and a six-component one, plus a string field array, as legacy VTK in
 ASCII and in binary, in the 4.2 and 5.1 layouts; `silhouette smooth` must read
 each (8 input triangles). Each binary file cut at 60% of its length, inside
-its arrays, must be refused with one line (the check still checks).
+its arrays, must be refused with one line (the check still checks). Then
+the same mesh as VTK XML in every byte order, header width (UInt32,
+UInt64), encoding (ASCII, binary, appended raw and base64) and compression
+(none, zlib) vtkXMLPolyDataWriter writes: each must be read.
 Usage: TestWrittenByVtk.py SILHOUETTE_PROGRAM WORK_DIR
 """
 import os
@@ -81,5 +84,37 @@ for binary in (False, True):
             check(code == 1 and err.count("\n") == 1 and err.startswith("silhouette: "),
                 "%s, cut short, is refused with one line (exit %d: %r)"
                 % (os.path.basename(short), code, err.strip()))
+
+# XML: every byte order, header width, encoding and compression vtkXMLPolyDataWriter writes.
+from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+for order in ("BigEndian", "LittleEndian"):
+    for header in ("UInt32", "UInt64"):
+        for mode in ("ascii", "binary", "appended_raw", "appended_base64"):
+            for compressed in (False, True):
+                if mode == "ascii" and compressed:
+                    continue
+                name = os.path.join(work, "octahedron_%s_%s_%s%s.vtp"
+                    % (order, header, mode, "_zlib" if compressed else ""))
+                writer = vtkXMLPolyDataWriter()
+                writer.SetInputData(mesh)
+                writer.SetFileName(name)
+                getattr(writer, "SetByteOrderTo" + order)()
+                getattr(writer, "SetHeaderTypeTo" + header)()
+                if mode == "ascii":
+                    writer.SetDataModeToAscii()
+                elif mode == "binary":
+                    writer.SetDataModeToBinary()
+                else:
+                    writer.SetDataModeToAppended()
+                    writer.SetEncodeAppendedData(mode == "appended_base64")
+                if compressed:
+                    writer.SetCompressorTypeToZLib()
+                else:
+                    writer.SetCompressorTypeToNone()
+                check(writer.Write() == 1, "vtkXMLPolyDataWriter wrote %s" % os.path.basename(name))
+                code, out, err = cli_checks.run(program, "smooth", name)
+                check(code == 0 and re.search(r"^input triangles: +8$", out, re.M) and not err,
+                    "%s is read (exit %d, stderr %r)" % (os.path.basename(name), code, err.strip()))
 
 sys.exit(1 if cli_checks.failures else 0)

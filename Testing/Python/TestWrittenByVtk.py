@@ -10,7 +10,8 @@ each (8 input triangles). Each binary file cut at 60% of its length, inside
 its arrays, must be refused with one line (the check still checks). Then
 the same mesh as VTK XML in every byte order, header width (UInt32,
 UInt64), encoding (ASCII, binary, appended raw and base64) and compression
-(none, zlib) vtkXMLPolyDataWriter writes: each must be read.
+(none, zlib) vtkXMLPolyDataWriter writes, and as PLY (ASCII, binary in either
+byte order, with colours), STL (ASCII, binary) and OBJ: each must be read.
 Usage: TestWrittenByVtk.py SILHOUETTE_PROGRAM WORK_DIR
 """
 import os
@@ -116,5 +117,45 @@ for order in ("BigEndian", "LittleEndian"):
                 code, out, err = cli_checks.run(program, "smooth", name)
                 check(code == 0 and re.search(r"^input triangles: +8$", out, re.M) and not err,
                     "%s is read (exit %d, stderr %r)" % (os.path.basename(name), code, err.strip()))
+
+# PLY (ASCII, binary in either byte order, with point colours), STL (ASCII,
+# binary) and OBJ as VTK writes them.
+from vtkmodules.vtkIOGeometry import vtkOBJWriter, vtkSTLWriter
+from vtkmodules.vtkIOPLY import vtkPLYWriter
+
+colours = core.vtkUnsignedCharArray()
+colours.SetName("colours")
+colours.SetNumberOfComponents(3)
+for p in range(points):
+    colours.InsertNextTuple3(40 * p, 255 - 40 * p, 128)
+coloured = vtkPolyData()
+coloured.ShallowCopy(solid.GetOutput())
+coloured.GetPointData().SetScalars(colours)
+others = []
+for kind in ("ascii", "little", "big"):
+    writer = vtkPLYWriter()
+    writer.SetInputData(coloured)
+    writer.SetArrayName("colours")
+    if kind == "ascii":
+        writer.SetFileTypeToASCII()
+    else:
+        writer.SetFileTypeToBinary()
+        getattr(writer, "SetDataByteOrderTo" + ("LittleEndian" if kind == "little" else "BigEndian"))()
+    others.append((writer, "octahedron_%s.ply" % kind))
+for kind in ("ascii", "binary"):
+    writer = vtkSTLWriter()
+    writer.SetInputData(solid.GetOutput())
+    getattr(writer, "SetFileTypeTo" + ("ASCII" if kind == "ascii" else "Binary"))()
+    others.append((writer, "octahedron_%s.stl" % kind))
+writer = vtkOBJWriter()
+writer.SetInputData(solid.GetOutput())
+others.append((writer, "octahedron.obj"))
+for writer, base in others:
+    name = os.path.join(work, base)
+    writer.SetFileName(name)
+    check(writer.Write() == 1, "%s wrote %s" % (writer.GetClassName(), base))
+    code, out, err = cli_checks.run(program, "smooth", name)
+    check(code == 0 and re.search(r"^input triangles: +8$", out, re.M) and not err,
+        "%s is read (exit %d, stderr %r)" % (base, code, err.strip()))
 
 sys.exit(1 if cli_checks.failures else 0)

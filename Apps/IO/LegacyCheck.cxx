@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace cli
@@ -40,6 +41,29 @@ std::size_t BinarySize(const std::string& type)
   return 0;
 }
 
+// The values an integer type of the legacy format holds (a bit: 0 or 1).
+std::pair<long double, long double> IntegerRange(const std::string& type)
+{
+  if (type == "bit")
+  {
+    return { 0, 1 };
+  }
+  if (type == "unsigned_char" || type == "unsigned_short" || type == "unsigned_int" ||
+    type == "unsigned_long" || type == "vtktypeuint64")
+  {
+    return { 0, std::ldexp(1.0L, 8 * static_cast<int>(BinarySize(type))) - 1 };
+  }
+  const long double half = std::ldexp(1.0L, 8 * static_cast<int>(BinarySize(type)) - 1);
+  return { -half, half - 1 };
+}
+
+std::string Uppercase(std::string text)
+{
+  std::transform(text.begin(), text.end(), text.begin(),
+    [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+  return text;
+}
+
 class LegacyChecker
 {
 public:
@@ -63,8 +87,10 @@ public:
     // As vtkDataReader parses it: a version it cannot read as "%d.%d" counts
     // as 0, and cells then have the legacy layout, however 5-like the line.
     int major = 0, minor = 0;
+    // It reads the line's first 255 characters (a 256-byte buffer).
+    const std::string read = version.substr(0, 255);
     this->MajorVersion =
-      std::sscanf(version.c_str(), "# vtk DataFile Version %d.%d", &major, &minor) == 2 ? major : 0;
+      std::sscanf(read.c_str(), "# vtk DataFile Version %d.%d", &major, &minor) == 2 ? major : 0;
     this->Line(); // the title
     // The format is a word, not a line: what follows it on its line is read
     // as the next word (the DATASET keyword).
@@ -78,9 +104,22 @@ public:
     {
       this->Fail("no 'DATASET POLYDATA' line");
     }
+    std::vector<std::string> sections; // the geometry's, each at most once
     while (true)
     {
       const std::string keyword = Lowercase(this->Word());
+      const bool geometry = keyword == "points" || keyword == "vertices" || keyword == "lines" ||
+        keyword == "polygons" || keyword == "triangle_strips";
+      if (geometry && std::find(sections.begin(), sections.end(), keyword) != sections.end())
+      {
+        this->Fail("a second " + Uppercase(keyword) +
+          " section, which vtkPolyDataReader reads "
+          "in place of the first");
+      }
+      if (geometry)
+      {
+        sections.push_back(keyword);
+      }
       if (keyword == "points")
       {
         const long long count = this->Count("POINTS");
@@ -361,9 +400,12 @@ private:
       if (integer)
       {
         const long long value = this->Integer(what);
-        if (size == 4 && (value < INT32_MIN || value > UINT32_MAX))
+        // The reader reads an integer and casts it to the array's type: a
+        // value beyond the type's range would wrap without a word.
+        const std::pair<long double, long double> range = IntegerRange(type);
+        if (value < range.first || value > range.second)
         {
-          this->Fail(what + ": " + std::to_string(value) + " does not fit in 32 bits");
+          this->Fail(what + ": " + std::to_string(value) + " does not fit in its type, " + type);
         }
         if (keep)
         {
@@ -436,9 +478,7 @@ private:
 
   void Cells(const std::string& keyword)
   {
-    std::string what = keyword;
-    std::transform(what.begin(), what.end(), what.begin(),
-      [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    const std::string what = Uppercase(keyword);
     const long long first = this->Count(what);
     const long long second = this->Count(what);
     if (this->MajorVersion >= 5)

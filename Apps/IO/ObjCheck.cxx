@@ -23,9 +23,26 @@ void CheckObjFile(const std::string& path)
     throw RuntimeError("cannot read '" + path +
       "': it is UTF-16 text; OBJ files are read as ASCII or UTF-8 (convert it, e.g. with iconv)");
   }
-  // Statements, each with the number of its first line: a line that ends
-  // in a backslash after white space goes on on the next line, as
-  // vtkOBJReader joins them.
+  // A UTF-8 byte-order mark: the reader takes it for part of the first
+  // statement's keyword and drops that statement (a first vertex lost
+  // shifts every index after it). Before a comment or a blank line it is
+  // harmless.
+  if (bytes.rfind("\xEF\xBB\xBF", 0) == 0)
+  {
+    const std::size_t end = bytes.find('\n');
+    const std::vector<std::string> first =
+      WordsOf(bytes.substr(3, end == std::string::npos ? end : end - 3));
+    if (!first.empty() && first[0][0] != '#')
+    {
+      throw RuntimeError("cannot read '" + path +
+        "': it starts with a UTF-8 byte-order mark, which vtkOBJReader 9.1 reads as part of the "
+        "first line's keyword and so drops that line; remove the mark");
+    }
+  }
+  // Statements, each with the number of its first line: a face, line or
+  // point statement that ends in a backslash after white space goes on on
+  // the next line, as vtkOBJReader joins them (it joins no other statement:
+  // a vertex's backslash is read as the end of its numbers).
   std::vector<std::string> lines;
   std::vector<std::size_t> lineNumbers;
   TextCursor cursor(bytes);
@@ -48,7 +65,9 @@ void CheckObjFile(const std::string& path)
       lineNumbers.push_back(read);
     }
     std::string& statement = lines.back();
-    continued = statement.size() >= 2 && statement.back() == '\\' &&
+    const std::vector<std::string> first = WordsOf(statement);
+    const bool joinable = !first.empty() && (first[0] == "f" || first[0] == "l" || first[0] == "p");
+    continued = joinable && statement.size() >= 2 && statement.back() == '\\' &&
       (statement[statement.size() - 2] == ' ' || statement[statement.size() - 2] == '\t');
     if (continued)
     {
@@ -219,7 +238,20 @@ void CheckObjFile(const std::string& path)
             std::to_string(0ULL - static_cast<unsigned long long>(index)) +
             " back from this line, but only " + std::to_string(before) + " come before it");
         }
-        if (keyword == "f" && resolved != resolvedPoint)
+        // The reader compares the indices as written: equal ones make it give
+        // each point the entry of its own position in the file (the texture
+        // coordinate or normal arrays taken whole), which is right only when
+        // they resolve to the same entry.
+        if (keyword == "f" && index == point && resolved != resolvedPoint)
+        {
+          throw RuntimeError(where + ": '" + corner + "' refers to point and " + what + " " + part +
+            ", which resolve to point " + std::to_string(resolvedPoint) + " and " + what + " " +
+            std::to_string(resolved) +
+            "; vtkOBJReader 9.1 compares them as written and "
+            "would give the point " +
+            what + " " + std::to_string(resolvedPoint) + " (write them as counted from the start)");
+        }
+        if (keyword == "f" && index != point)
         {
           indexedApart = true;
         }

@@ -182,11 +182,18 @@ public:
       this->Unsupported("its last line has no line end, which vtkPLYReader 9.1 cannot read (it "
                         "crashes); end the file with a newline");
     }
-    return std::any_of(header.Elements.begin(), header.Elements.end(), [](const Element& e) {
-      return e.Name == "face" &&
-        std::any_of(e.Properties.begin(), e.Properties.end(),
-          [](const Property& p) { return p.IsList && p.Name == "texcoord"; });
-    });
+    // The reader takes texture coordinates from the vertices when they have
+    // them (u and v, or texture_u and texture_v), and then ignores the faces'.
+    const auto has = [&header](const char* element, const char* property) {
+      return std::any_of(header.Elements.begin(), header.Elements.end(), [&](const Element& e) {
+        return e.Name == element &&
+          std::any_of(e.Properties.begin(), e.Properties.end(),
+            [&](const Property& p) { return p.Name == property; });
+      });
+    };
+    const bool vertexTextures = (has("vertex", "u") && has("vertex", "v")) ||
+      (has("vertex", "texture_u") && has("vertex", "texture_v"));
+    return has("face", "texcoord") && !vertexTextures;
   }
 
 private:
@@ -370,6 +377,18 @@ private:
       {
         vertices = &element;
       }
+      // The reader reads faces from the face element only: strips (a
+      // 'tristrips' element) or faces under another name would be lost.
+      const bool indexed =
+        std::any_of(element.Properties.begin(), element.Properties.end(), [](const Property& p) {
+          return p.IsList && (p.Name == "vertex_indices" || p.Name == "vertex_index");
+        });
+      if (element.Name != "face" && indexed && element.Count > 0)
+      {
+        this->Unsupported("its element '" + element.Name +
+          "' holds vertex indices, which vtkPLYReader 9.1 does not read (it reads the 'face' "
+          "element only); write them as faces");
+      }
       // The reader frees an uninitialised pointer for each face without
       // indices, and crashes closing the file when the face element has none
       // even with no faces (found by fuzz_mesh_io).
@@ -450,6 +469,15 @@ private:
       std::ostringstream problem;
       problem << "face " << face << " refers to vertex " << std::fixed << std::setprecision(0)
               << index << " but there are " << this->VertexCount << " vertices";
+      this->Fail(problem.str());
+    }
+    // Indices in a list of floats: the reader truncates them.
+    if (index != std::trunc(index))
+    {
+      std::ostringstream problem;
+      problem << "face " << face << " refers to vertex " << index
+              << ", which is not a whole number (vtkPLYReader would take vertex "
+              << static_cast<long long>(index) << ")";
       this->Fail(problem.str());
     }
   }

@@ -68,6 +68,31 @@ void CheckStlFile(const std::string& path)
     throw RuntimeError(where + "the header declares " + std::to_string(declared) +
       " triangles but the file holds " + std::to_string(held) + " (truncated?)");
   }
+  // The reader reads records to the end of the file, whatever the count: any
+  // beyond it that is not zero padding (which reads as a point, and is left
+  // out) would add triangles the header does not declare.
+  file.seekg(static_cast<std::streamoff>(HeaderBytes + declared * TriangleBytes));
+  std::uint64_t left = (held - declared) * TriangleBytes;
+  char buffer[4096];
+  while (left > 0)
+  {
+    const std::uint64_t chunk = left < sizeof buffer ? left : sizeof buffer;
+    file.read(buffer, static_cast<std::streamsize>(chunk));
+    if (!file)
+    {
+      break;
+    }
+    for (std::uint64_t i = 0; i < chunk; ++i)
+    {
+      if (buffer[i] != 0)
+      {
+        throw RuntimeError(where + "the header declares " + std::to_string(declared) +
+          " triangles but the file holds " + std::to_string(held) +
+          ", which vtkSTLReader reads all of; correct the count");
+      }
+    }
+    left -= chunk;
+  }
 }
 
 } // namespace cli

@@ -196,11 +196,21 @@ struct VtpFile
 
 // The reader also allocates for the counts each Piece declares. False when a
 // tag is cut short (the reader reports that itself).
+//
+// Several pieces: vtkXMLPolyDataReader 9.1 offsets a piece's cells by the
+// points of the pieces before it only when an earlier piece has cells of
+// that kind, so cells of a kind that first appears after a piece with points
+// would take that piece's points.
 bool CheckPieceCounts(const VtpFile& file)
 {
   const std::string& text = file.Text;
+  static const char* const cellKinds[] = { "NumberOfVerts", "NumberOfLines", "NumberOfStrips",
+    "NumberOfPolys" };
+  std::uint64_t pointsBefore = 0;
+  bool kindSeen[4] = { false, false, false, false };
+  int index = 0;
   for (std::size_t piece = text.find("<Piece", file.RootEnd); piece < file.XmlEnd;
-       piece = text.find("<Piece", piece + 1))
+       piece = text.find("<Piece", piece + 1), ++index)
   {
     const Tag pieceTag = ParseTag(text, piece);
     if (pieceTag.End == std::string::npos)
@@ -222,6 +232,29 @@ bool CheckPieceCounts(const VtpFile& file)
                 << file.Size << " bytes can hold";
         file.fail(message.str());
       }
+    }
+    for (int k = 0; k < 4; ++k)
+    {
+      std::uint64_t cells = 0;
+      if (!ParseCount(pieceTag.Attribute(cellKinds[k]), cells) || cells == 0)
+      {
+        continue;
+      }
+      if (!kindSeen[k] && pointsBefore > 0)
+      {
+        std::ostringstream message;
+        message << "piece " << index + 1 << " has the first " << (cellKinds[k] + 8)
+                << " after pieces with points, which vtkXMLPolyDataReader 9.1 would attach to "
+                   "those pieces' points; write the pieces as one, or give the first piece its "
+                << (cellKinds[k] + 8);
+        file.fail(message.str());
+      }
+      kindSeen[k] = true;
+    }
+    std::uint64_t points = 0;
+    if (ParseCount(pieceTag.Attribute("NumberOfPoints"), points))
+    {
+      pointsBefore += points;
     }
   }
   return true;

@@ -7,7 +7,10 @@ it (within 12 of 255 per channel): red, and blue mixed with the white
 background through the sphere's two sheets. The red sphere must be drawn smoothed (its
 smoothed outline covers more pixels than the chord outline). The checks must
 fail for what the representation drew before it honoured the blocks: with the
-block colours and opacities cleared, neither centre passes. Settings come from
+block colours and opacities cleared, neither centre passes. A second frame
+must find both blocks (the opaque one drawn in the opaque pass, the other in
+the translucent pass), and a block that loses its colour but keeps its
+opacity must go back to the actor's colour, as on Surface. Settings come from
 ctest through the environment."""
 import os
 
@@ -115,6 +118,27 @@ print("red pixels: %d smoothed, %d with the chord outline" % (smooth_red, chord_
 if smooth_red <= chord_red:
     failures.append("the red sphere is not drawn smoothed (%d red pixels, chord outline %d)"
         % (smooth_red, chord_red))
+
+# Both leaves persist across passes: the opaque one is drawn in the opaque
+# pass, the translucent one in the translucent pass, and a second frame
+# finds both (the figures count the two).
+image()
+display.SMProxy.UpdatePropertyInformation()
+blocks = display.GetPropertyValue("SilhouetteRenderedBlocks")
+print("blocks counted after a second frame: %d" % blocks)
+if blocks != 2:
+    failures.append("%d blocks counted after a second frame, not 2" % blocks)
+
+# The second block loses its colour but keeps its opacity: the actor's
+# colour again, as Surface draws it.
+looks(["/Root/Sphere1", "1", "0", "0"], block_opacities)
+display.Representation = "Surface"
+surface_right = pixel(image(), 300, 100)
+display.Representation = "Smooth Silhouette Surface"
+uncoloured_right = pixel(image(), 300, 100)
+print("second block without its colour: %s (Surface: %s)" % (uncoloured_right, surface_right))
+if not near(uncoloured_right, surface_right):
+    failures.append("the second block kept a colour it lost: %s, Surface %s" % (uncoloured_right, surface_right))
 
 # The wrong variant: the actor's look on every block, as before.
 looks([], [])

@@ -81,6 +81,8 @@ struct vtkSilhouetteCompositeMapper::Leaf
   vtkPolyData* Counted = nullptr;
   vtkMTimeType CountedTime = 0;
   vtkIdType GhostCells = 0;
+  // Its cells drawn at its last render (ghost cells not counted).
+  vtkIdType DrawnCells = 0;
 
   vtkIdType Ghosts(vtkPolyData* pd)
   {
@@ -149,6 +151,16 @@ void vtkSilhouetteCompositeMapper::Render(vtkRenderer* ren, vtkActor* act)
     leaf.second->Mapper->ReleaseGraphicsResources(ren->GetRenderWindow());
   }
   this->Leaves.swap(used);
+  // The figures of every leaf's last render, in whichever pass it was drawn.
+  for (const auto& entry : this->Leaves)
+  {
+    const Leaf& leaf = *entry.second;
+    this->ReplacedTriangleCount += leaf.Mapper->GetReplacedTriangleCount();
+    this->PatchTriangleCount += leaf.Mapper->GetPatchTriangleCount();
+    ++this->RenderedLeaves;
+    this->DrawnCells += leaf.DrawnCells;
+    this->SkippedGhostCells += leaf.GhostCells;
+  }
 }
 
 // Walks the tree as vtkCompositePolyDataMapper2::BuildRenderValues does, so
@@ -194,12 +206,22 @@ void vtkSilhouetteCompositeMapper::RenderLeaf(vtkRenderer* ren, vtkActor* act, v
     return;
   }
   const double opacity = look.HasOpacity ? look.Opacity : act->GetProperty()->GetOpacity();
-  if ((opacity < 1.0) != this->TranslucentPass && this->OtherPassDrawn)
-  {
-    return; // the other pass's leaf
-  }
   std::unique_ptr<Leaf>& leaf = used[index];
   auto known = this->Leaves.find(index);
+  if ((opacity < 1.0) != this->TranslucentPass && this->OtherPassDrawn)
+  {
+    // The other pass's leaf: kept as it is (its buffers, its patch).
+    if (known != this->Leaves.end())
+    {
+      leaf = std::move(known->second);
+      this->Leaves.erase(known);
+    }
+    else
+    {
+      used.erase(index);
+    }
+    return;
+  }
   if (known != this->Leaves.end())
   {
     leaf = std::move(known->second);
@@ -233,12 +255,8 @@ void vtkSilhouetteCompositeMapper::RenderLeaf(vtkRenderer* ren, vtkActor* act, v
     mapper->SetInputData(pd);
   }
   mapper->Render(ren, this->ActorForLeaf(act, *leaf, look)); // Static: straight to RenderPiece
-  this->ReplacedTriangleCount += mapper->GetReplacedTriangleCount();
-  this->PatchTriangleCount += mapper->GetPatchTriangleCount();
-  ++this->RenderedLeaves;
   const vtkIdType ghosts = leaf->Ghosts(pd);
-  this->DrawnCells += pd->GetNumberOfCells() - ghosts;
-  this->SkippedGhostCells += ghosts;
+  leaf->DrawnCells = pd->GetNumberOfCells() - ghosts;
 }
 
 // The actor itself, or for a leaf with a colour or opacity of its own, the
@@ -259,11 +277,11 @@ vtkActor* vtkSilhouetteCompositeMapper::ActorForLeaf(
     leaf.CopiedProperty = property;
     leaf.CopiedPropertyTime = property->GetMTime();
   }
-  if (look.HasColor)
-  {
-    leaf.Property->SetAmbientColor(look.Color[0], look.Color[1], look.Color[2]);
-    leaf.Property->SetDiffuseColor(look.Color[0], look.Color[1], look.Color[2]);
-  }
+  // The block's colour, or the actor's again when the block lost its own.
+  const double* ambient = look.HasColor ? look.Color : property->GetAmbientColor();
+  const double* diffuse = look.HasColor ? look.Color : property->GetDiffuseColor();
+  leaf.Property->SetAmbientColor(ambient[0], ambient[1], ambient[2]);
+  leaf.Property->SetDiffuseColor(diffuse[0], diffuse[1], diffuse[2]);
   leaf.Property->SetOpacity(look.HasOpacity ? look.Opacity : property->GetOpacity());
   leaf.Actor->ShallowCopy(act);
   leaf.Actor->SetMapper(nullptr); // this mapper holds the leaf: no cycle

@@ -70,8 +70,9 @@ public:
 
   ///@{
   /**
-   * Of the last render, summed over the leaves: the input triangles replaced,
-   * the triangles drawn in their place, the leaves drawn, their cells drawn
+   * Summed over the leaves, each as of its last render (in the opaque or the
+   * translucent pass, whichever draws it): the input triangles replaced, the
+   * triangles drawn in their place, the leaves drawn, their cells drawn
    * (ghost cells not counted) and their ghost cells (not drawn).
    */
   vtkIdType GetReplacedTriangleCount() const { return this->ReplacedTriangleCount; }

@@ -13,7 +13,6 @@
 #include "vtkCamera.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
-#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
@@ -141,11 +140,9 @@ bool CheckMesh(const std::string& name, vtkPolyData* mesh, bool& leftInput)
   mapper->GetBounds(mapperBounds);
   const bool offIsInput = SameBounds(mapperBounds, inputBounds);
   mapper->SmoothingOn();
-  // A changed input: its own bounds until it is rendered.
-  vtkNew<vtkPolyData> moved;
-  moved->DeepCopy(mesh);
-  moved->GetPoints()->Modified();
-  mapper->SetInputData(moved);
+  // The input changed in place since the last render: its own bounds until
+  // it is rendered again.
+  mesh->Modified();
   mapper->GetBounds(mapperBounds);
   const bool newInputIsInput = SameBounds(mapperBounds, inputBounds);
   if (!offIsInput || !newInputIsInput)

@@ -1,6 +1,7 @@
 #include "StlCheck.h"
 
 #include "CliErrors.h"
+#include "TextScanning.h"
 
 #include <vtkSTLReader.h>
 
@@ -8,6 +9,8 @@
 #include <cstdint>
 #include <cstring>
 #include <fstream>
+#include <string>
+#include <vector>
 
 namespace cli
 {
@@ -36,6 +39,35 @@ public:
 constexpr std::uint64_t HeaderBytes = 84; // 80 bytes of text, a 32-bit triangle count
 constexpr std::uint64_t TriangleBytes = 50;
 
+// ASCII: the reader reads a vertex's three numbers with strtod, each from
+// where the last stopped, and ignores what follows them, so "1,5" reads as 1
+// and "1-1" as 1 and -1. A vertex must be three whole numbers.
+void CheckAsciiVertices(const std::string& path)
+{
+  const std::string bytes = ReadFileBytes(path);
+  TextCursor cursor(bytes);
+  std::size_t number = 0;
+  for (std::string line; cursor.NextLine(line);)
+  {
+    ++number;
+    const std::vector<std::string> words = WordsOf(line);
+    if (words.empty() || Lowercase(words[0]) != "vertex")
+    {
+      continue;
+    }
+    double value = 0.0;
+    const bool three = words.size() == 4 && ParseWholeNumber(words[1], value) &&
+      ParseWholeNumber(words[2], value) && ParseWholeNumber(words[3], value);
+    if (!three)
+    {
+      throw RuntimeError("cannot read '" + path + "': ASCII STL: line " + std::to_string(number) +
+        ": '" + Excerpt(line) +
+        "' is not a vertex of three numbers, which vtkSTLReader would "
+        "misread");
+    }
+  }
+}
+
 } // namespace
 
 void CheckStlFile(const std::string& path)
@@ -49,6 +81,7 @@ void CheckStlFile(const std::string& path)
   auto probe = vtkSmartPointer<StlTypeProbe>::New();
   if (!probe->IsBinary(path))
   {
+    CheckAsciiVertices(path);
     return;
   }
   const std::string where = "cannot read '" + path + "': binary STL: ";

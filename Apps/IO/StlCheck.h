@@ -10,8 +10,10 @@ namespace cli
  * Checks a binary STL file before vtkSTLReader sees it. VTK 9.1's reader
  * allocates for the triangle count the header declares, however short the
  * file (gigabytes for a 134-byte file), and misreads a file shorter than the
- * 84-byte header; this throws RuntimeError with one line for either. ASCII
- * files (as vtkSTLReader tells them apart) are left to the reader.
+ * 84-byte header, and reads records past the count the header declares;
+ * this throws RuntimeError with one line for each. In an ASCII file (as
+ * vtkSTLReader tells them apart) every vertex must be three whole numbers:
+ * the reader reads "1,5" as 1 and "1-1" as two numbers, without a word.
  */
 void CheckStlFile(const std::string& path);
 

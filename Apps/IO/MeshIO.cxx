@@ -107,8 +107,10 @@ void RequireLegacyPolyData(vtkPolyDataReader* reader, const std::string& path)
   throw RuntimeError(Quoted(path) + " is not a readable legacy VTK POLYDATA file");
 }
 
-// The pre-check for the format, then VTK's reader.
-vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, const std::string& extension)
+// The pre-check for the format, then VTK's reader. `stlFacets`: the facets
+// an STL file holds.
+vtkSmartPointer<vtkAlgorithm> MakeReader(
+  const std::string& path, const std::string& extension, std::uint64_t& stlFacets)
 {
   bool faceTextureCoordinates = false;
   if (extension == ".ply")
@@ -122,7 +124,8 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(const std::string& path, const std::str
   }
   else if (extension == ".stl")
   {
-    CheckStlFile(path); // vtkSTLReader allocates for any triangle count a binary header declares
+    // vtkSTLReader allocates for any triangle count a binary header declares.
+    stlFacets = CheckStlFile(path);
   }
   else if (extension == ".vtp")
   {
@@ -153,7 +156,8 @@ vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::str
 {
   VtkErrorLog& errors = VtkErrorLog::Instance();
   errors.Clear();
-  vtkSmartPointer<vtkAlgorithm> reader = MakeReader(path, extension);
+  std::uint64_t stlFacets = 0;
+  vtkSmartPointer<vtkAlgorithm> reader = MakeReader(path, extension, stlFacets);
   errors.Clear();
   errors.Watch(reader);
   reader->Update();
@@ -172,6 +176,18 @@ vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::str
   if (!read)
   {
     throw RuntimeError("cannot read " + Quoted(path) + ": the reader gave no polygonal mesh");
+  }
+  // vtkSTLReader merges equal points and drops a facet left with two corners
+  // at one point, without a word.
+  const auto polys = static_cast<std::uint64_t>(read->GetNumberOfPolys());
+  if (extension == ".stl" && polys < stlFacets)
+  {
+    const std::uint64_t dropped = stlFacets - polys;
+    errors.Record(VtkErrorLog::Kind::Warning, true,
+      (Quoted(path) + ": left out " + std::to_string(dropped) +
+        (dropped == 1 ? " facet" : " facets") +
+        " with two corners at one point (vtkSTLReader merges them away)")
+        .c_str());
   }
   // A copy of our own, so the reader's pipeline can go.
   auto mesh = vtkSmartPointer<vtkPolyData>::New();

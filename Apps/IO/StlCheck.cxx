@@ -42,8 +42,9 @@ constexpr std::uint64_t TriangleBytes = 50;
 // ASCII: the reader reads a vertex's three numbers with strtod, each from
 // where the last stopped, and ignores what follows them, so "1,5" reads as 1
 // and "1-1" as 1 and -1. A vertex must be three whole numbers.
-void CheckAsciiVertices(const std::string& path)
+std::uint64_t CheckAsciiVertices(const std::string& path)
 {
+  std::uint64_t vertices = 0;
   const std::string bytes = ReadFileBytes(path);
   TextCursor cursor(bytes);
   std::size_t number = 0;
@@ -65,12 +66,14 @@ void CheckAsciiVertices(const std::string& path)
         "' is not a vertex of three numbers, which vtkSTLReader would "
         "misread");
     }
+    ++vertices;
   }
+  return vertices / 3;
 }
 
 } // namespace
 
-void CheckStlFile(const std::string& path)
+std::uint64_t CheckStlFile(const std::string& path)
 {
   std::ifstream file(path, std::ios::binary | std::ios::ate);
   if (!file)
@@ -81,8 +84,7 @@ void CheckStlFile(const std::string& path)
   auto probe = vtkSmartPointer<StlTypeProbe>::New();
   if (!probe->IsBinary(path))
   {
-    CheckAsciiVertices(path);
-    return;
+    return CheckAsciiVertices(path);
   }
   const std::string where = "cannot read '" + path + "': binary STL: ";
   if (size < HeaderBytes)
@@ -126,6 +128,7 @@ void CheckStlFile(const std::string& path)
     }
     left -= chunk;
   }
+  return declared;
 }
 
 } // namespace cli

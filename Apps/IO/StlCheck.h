@@ -1,6 +1,7 @@
 #ifndef StlCheck_h
 #define StlCheck_h
 
+#include <cstdint>
 #include <string>
 
 namespace cli
@@ -15,7 +16,9 @@ namespace cli
  * vtkSTLReader tells them apart) every vertex must be three whole numbers:
  * the reader reads "1,5" as 1 and "1-1" as two numbers, without a word.
  */
-void CheckStlFile(const std::string& path);
+/// Returns the facets the file holds (the binary header's count, or the
+/// ASCII vertices over three).
+std::uint64_t CheckStlFile(const std::string& path);
 
 } // namespace cli
 

@@ -107,16 +107,21 @@ void RequireLegacyPolyData(vtkPolyDataReader* reader, const std::string& path)
   throw RuntimeError(Quoted(path) + " is not a readable legacy VTK POLYDATA file");
 }
 
-// The pre-check for the format, then VTK's reader. `stlFacets`: the facets
-// an STL file holds.
-vtkSmartPointer<vtkAlgorithm> MakeReader(
-  const std::string& path, const std::string& extension, std::uint64_t& stlFacets)
+// What the pre-checks learnt of the file that reading it needs.
+struct FileFacts
 {
-  bool faceTextureCoordinates = false;
+  std::uint64_t StlFacets = 0; ///< the facets an STL file holds
+  PlyFacts Ply;
+};
+
+// The pre-check for the format, then VTK's reader.
+vtkSmartPointer<vtkAlgorithm> MakeReader(
+  const std::string& path, const std::string& extension, FileFacts& facts)
+{
   if (extension == ".ply")
   {
     // vtkPLYReader crashes on some malformed files.
-    faceTextureCoordinates = CheckPlyFile(path);
+    facts.Ply = CheckPlyFile(path);
   }
   else if (extension == ".obj")
   {
@@ -125,7 +130,7 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(
   else if (extension == ".stl")
   {
     // vtkSTLReader allocates for any triangle count a binary header declares.
-    stlFacets = CheckStlFile(path);
+    facts.StlFacets = CheckStlFile(path);
   }
   else if (extension == ".vtp")
   {
@@ -137,7 +142,7 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(
     throw RuntimeError(Quoted(path) + ": unknown mesh format '" + extension +
       "'; expected .ply, .obj, .stl, .vtp or .vtk");
   }
-  if (faceTextureCoordinates)
+  if (facts.Ply.FaceTextureCoordinates)
   {
     // Its splitting of points can give a face another face's point.
     vtkPLYReader::SafeDownCast(reader)->SetDuplicatePointsForFaceTexture(false);
@@ -156,14 +161,21 @@ vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::str
 {
   VtkErrorLog& errors = VtkErrorLog::Instance();
   errors.Clear();
-  std::uint64_t stlFacets = 0;
-  vtkSmartPointer<vtkAlgorithm> reader = MakeReader(path, extension, stlFacets);
+  FileFacts facts;
+  vtkSmartPointer<vtkAlgorithm> reader = MakeReader(path, extension, facts);
   errors.Clear();
   errors.Watch(reader);
   reader->Update();
   errors.ThrowIfErrors("cannot read " + Quoted(path));
-  if (auto* ply = vtkPLYReader::SafeDownCast(reader);
-      ply && !ply->GetDuplicatePointsForFaceTexture())
+  if (facts.Ply.UnreadVertexTextureCoordinates)
+  {
+    errors.Record(VtkErrorLog::Kind::Warning, true,
+      (Quoted(path) +
+        ": its vertices' texture coordinates ('s' and 't') are left out: vtkPLYReader 9.1 "
+        "reads 'u' and 'v' (or 'texture_u' and 'texture_v') only")
+        .c_str());
+  }
+  if (facts.Ply.FaceTextureCoordinates)
   {
     errors.Record(VtkErrorLog::Kind::Warning, true,
       (Quoted(path) +
@@ -180,9 +192,9 @@ vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::str
   // vtkSTLReader merges equal points and drops a facet left with two corners
   // at one point, without a word.
   const auto polys = static_cast<std::uint64_t>(read->GetNumberOfPolys());
-  if (extension == ".stl" && polys < stlFacets)
+  if (extension == ".stl" && polys < facts.StlFacets)
   {
-    const std::uint64_t dropped = stlFacets - polys;
+    const std::uint64_t dropped = facts.StlFacets - polys;
     errors.Record(VtkErrorLog::Kind::Warning, true,
       (Quoted(path) + ": left out " + std::to_string(dropped) +
         (dropped == 1 ? " facet" : " facets") +

@@ -154,8 +154,7 @@ public:
   PlyChecker(const PlyChecker&) = delete;
   PlyChecker& operator=(const PlyChecker&) = delete;
 
-  // Whether the faces have texture coordinates per corner (CheckPlyFile).
-  bool Check()
+  PlyFacts Check()
   {
     const Header header = this->ReadHeader();
     this->CheckElements(header);
@@ -193,7 +192,12 @@ public:
     };
     const bool vertexTextures = (has("vertex", "u") && has("vertex", "v")) ||
       (has("vertex", "texture_u") && has("vertex", "texture_v"));
-    return has("face", "texcoord") && !vertexTextures;
+    PlyFacts facts;
+    facts.FaceTextureCoordinates = has("face", "texcoord") && !vertexTextures;
+    facts.UnreadVertexTextureCoordinates = !vertexTextures &&
+      ((has("vertex", "s") && has("vertex", "t")) ||
+        (has("vertex", "texture_s") && has("vertex", "texture_t")));
+    return facts;
   }
 
 private:
@@ -683,7 +687,7 @@ private:
 
 } // namespace
 
-bool CheckPlyFile(const std::string& path)
+PlyFacts CheckPlyFile(const std::string& path)
 {
   return PlyChecker(path, ReadFileBytes(path)).Check();
 }

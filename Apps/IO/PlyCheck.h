@@ -16,12 +16,20 @@ namespace cli
  * first problem. An integer is read as the reader reads it (its leading
  * decimal digits), so one written otherwise ("0x1", "1e1") is refused.
  *
- * Returns whether the faces carry texture coordinates per corner (a
- * `texcoord` list, as MeshLab writes): vtkPLYReader 9.1's splitting of
- * points for them can give a face another face's point, so the caller reads
- * them one per point instead.
+ * Returns what the caller must know of the file to read it right (PlyFacts).
  */
-bool CheckPlyFile(const std::string& path);
+struct PlyFacts
+{
+  /// The faces carry texture coordinates per corner (a `texcoord` list, as
+  /// MeshLab writes): vtkPLYReader 9.1's splitting of points for them can
+  /// give a face another face's point, so the caller reads them one per
+  /// point instead.
+  bool FaceTextureCoordinates = false;
+  /// The vertices carry texture coordinates the reader does not read (`s`
+  /// and `t`, as assimp writes; it reads `u`/`v` and `texture_u`/`texture_v`).
+  bool UnreadVertexTextureCoordinates = false;
+};
+PlyFacts CheckPlyFile(const std::string& path);
 
 } // namespace cli
 

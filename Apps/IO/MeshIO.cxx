@@ -270,8 +270,8 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
   }
   const std::uint64_t bytes = RequireReadableFile(path);
   VtkErrorLog::Instance().Clear();
-  vtkSmartPointer<vtkPolyData> mesh = ReadInSandbox(
-    Quoted(path), [&] { return ReadWithVtk(path, extension); }, ReadLimits::ForFileOfSize(bytes));
+  vtkSmartPointer<vtkPolyData> mesh =
+    ReadInSandbox(Quoted(path), path, ReadLimits::ForFileOfSize(bytes));
   // Again on this side: the child ran a reader on hostile bytes, and what it
   // sent is trusted no more than the file.
   RequireConsistentMesh(mesh, Quoted(path));
@@ -282,6 +282,11 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path)
   }
   VtkErrorLog::Instance().Clear();
   return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> ReadMeshInThisProcess(const std::string& path)
+{
+  return ReadWithVtk(path, LowercaseExtension(path));
 }
 
 vtkIdType CountTriangles(vtkPolyData* mesh)

@@ -30,6 +30,11 @@ vtkSmartPointer<vtkAlgorithm> NewVtkReader(const std::string& path);
  */
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path);
 
+/// What the reading process (silhouette-read) runs: ReadMesh's pre-check,
+/// VTK's reader and the checks after it, in this process, with no limits.
+/// Only for that process: VTK 9.1's readers crash and loop on hostile files.
+vtkSmartPointer<vtkPolyData> ReadMeshInThisProcess(const std::string& path);
+
 /// The triangles the filter will see: polygons fanned, strips split.
 vtkIdType CountTriangles(vtkPolyData* mesh);
 

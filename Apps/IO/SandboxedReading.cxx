@@ -17,6 +17,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fcntl.h>
+#include <filesystem>
 #include <fstream>
 #include <new>
 #include <poll.h>
@@ -24,6 +25,8 @@
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+
+extern char** environ;
 
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
 #define SILHOUETTE_SANITIZED 1
@@ -88,37 +91,68 @@ std::uint64_t CurrentAddressSpace()
   return pages * static_cast<std::uint64_t>(::sysconf(_SC_PAGESIZE));
 }
 
+// In the forked child, before exec: system calls only (the copy of a
+// process with threads may hold any lock; allocating could wait forever).
+[[noreturn]] void ExecReadingProgram(
+  int answerFd, int nullFd, const ReadLimits& limits, char* const* argv, char* const* envp)
+{
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  ::dup2(nullFd, STDIN_FILENO);
+  ::dup2(answerFd, STDOUT_FILENO); // dup2 clears close-on-exec
+  ::dup2(nullFd, STDERR_FILENO);
+  const rlimit none{ 0, 0 };
+  ::setrlimit(RLIMIT_CORE, &none);
+  ::setrlimit(RLIMIT_FSIZE, &none);
+  // The soft limit sends SIGXCPU, the hard one a second later SIGKILL.
+  const rlimit cpu{ limits.CpuSeconds, limits.CpuSeconds + 1 };
+  ::setrlimit(RLIMIT_CPU, &cpu);
+  ::execve(argv[0], argv, envp);
+  ::_exit(127);
+}
+
 void SetLimit(int resource, rlim_t value)
 {
   const rlimit limit{ value, value };
   ::setrlimit(resource, &limit);
 }
 
-void ConfineChild(const ReadLimits& limits)
+// The parent's environment; under AddressSanitizer, with its signal
+// handlers off, so that a reader's crash ends the child by its signal (as
+// in a plain build) rather than by ASan's report and exit status.
+std::vector<std::string> ChildEnvironment()
 {
-  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-  // A crash ends the child by its signal, whatever handlers the parent has
-  // (libFuzzer's would report the child's crash as the fuzzer's own).
-  for (const int signal : { SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL, SIGXCPU })
+  std::vector<std::string> environment;
+  std::string asanOptions;
+  for (char** variable = environ; variable && *variable; ++variable)
   {
-    std::signal(signal, SIG_DFL);
+    const std::string entry = *variable;
+    if (entry.rfind("ASAN_OPTIONS=", 0) == 0)
+    {
+      asanOptions = entry.substr(13);
+      continue;
+    }
+    environment.push_back(entry);
   }
-  const int null = ::open("/dev/null", O_RDWR);
-  if (null >= 0)
-  {
-    ::dup2(null, STDIN_FILENO);
-    ::dup2(null, STDOUT_FILENO);
-    ::dup2(null, STDERR_FILENO);
-    ::close(null);
-  }
-  SetLimit(RLIMIT_CORE, 0);
-  SetLimit(RLIMIT_FSIZE, 0);
-  // The soft limit sends SIGXCPU, the hard one a second later SIGKILL.
-  const rlimit cpu{ limits.CpuSeconds, limits.CpuSeconds + 1 };
-  ::setrlimit(RLIMIT_CPU, &cpu);
-#ifndef SILHOUETTE_SANITIZED
-  SetLimit(RLIMIT_AS, CurrentAddressSpace() + limits.MemoryBytes);
+#ifdef SILHOUETTE_SANITIZED
+  asanOptions += std::string(asanOptions.empty() ? "" : ":") +
+    "handle_segv=0:handle_sigbus=0:handle_abort=0:handle_sigfpe=0:handle_sigill=0";
 #endif
+  if (!asanOptions.empty())
+  {
+    environment.push_back("ASAN_OPTIONS=" + asanOptions);
+  }
+  return environment;
+}
+
+std::vector<char*> Pointers(std::vector<std::string>& strings)
+{
+  std::vector<char*> pointers;
+  for (std::string& text : strings)
+  {
+    pointers.push_back(text.data());
+  }
+  pointers.push_back(nullptr);
+  return pointers;
 }
 
 // Legacy binary VTK, not VTP: array names come from files and need not be
@@ -135,38 +169,6 @@ std::string MeshAsLegacyVtk(vtkPolyData* mesh)
   }
   return std::string(
     writer->GetOutputString(), static_cast<std::size_t>(writer->GetOutputStringLength()));
-}
-
-[[noreturn]] void RunChild(int fd, const std::string& quotedFile,
-  const std::function<vtkSmartPointer<vtkPolyData>()>& read, const ReadLimits& limits)
-{
-  ConfineChild(limits);
-  VtkErrorLog& log = VtkErrorLog::Instance();
-  try
-  {
-    vtkSmartPointer<vtkPolyData> mesh = read();
-    for (const std::string& warning : log.Warnings())
-    {
-      SendFrame(fd, Frame::Warning, warning);
-    }
-    SendFrame(fd, Frame::Mesh, MeshAsLegacyVtk(mesh));
-  }
-  catch (const RuntimeError& error)
-  {
-    SendFrame(fd, Frame::Error, error.what());
-  }
-  catch (const std::bad_alloc&)
-  {
-    SendFrame(fd, Frame::Error,
-      "cannot read " + quotedFile + ": reading it needed more than the " +
-        std::to_string(limits.MemoryBytes / MiB) + " MiB of memory allowed for a file of its size");
-  }
-  catch (const std::exception& error)
-  {
-    SendFrame(fd, Frame::Error, "cannot read " + quotedFile + ": " + error.what());
-  }
-  ::close(fd);
-  ::_exit(0);
 }
 
 // --------------------------------------------------------------- the parent
@@ -281,6 +283,10 @@ std::string WhyTheChildFailed(
     }
     return "VTK's reader crashed on it (" + SignalName(signal) + ")";
   }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
+  {
+    return "the reading program could not be started";
+  }
   if (WIFEXITED(status) && WEXITSTATUS(status) != 0)
   {
     return "the reading process failed (exit status " + std::to_string(WEXITSTATUS(status)) + ")";
@@ -325,14 +331,56 @@ ReadLimits ReadLimits::ForFileOfSize(std::uint64_t fileBytes)
   return limits;
 }
 
-vtkSmartPointer<vtkPolyData> ReadInSandbox(const std::string& quotedFile,
-  const std::function<vtkSmartPointer<vtkPolyData>()>& read, const ReadLimits& limits)
+std::vector<std::string> ReadingProgramCandidates()
 {
-  int fds[2];
-  if (::pipe2(fds, O_CLOEXEC) != 0)
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (error)
   {
+    return {};
+  }
+  const std::filesystem::path dir = self.parent_path();
+  return { (dir / "silhouette-read").string(),
+    (dir / ".." / SILHOUETTE_LIBEXEC_DIR / "silhouette-read").lexically_normal().string() };
+}
+
+vtkSmartPointer<vtkPolyData> ReadInSandbox(
+  const std::string& quotedFile, const std::string& path, const ReadLimits& limits)
+{
+  std::string program;
+  for (const std::string& candidate : ReadingProgramCandidates())
+  {
+    if (::access(candidate.c_str(), X_OK) == 0)
+    {
+      program = candidate;
+      break;
+    }
+  }
+  if (program.empty())
+  {
+    const std::vector<std::string> places = ReadingProgramCandidates();
+    throw RuntimeError("cannot read " + quotedFile +
+      ": the reading program silhouette-read is not installed " +
+      (places.empty() ? std::string("beside this program")
+                      : "(looked for " + places.front() + " and " + places.back() + ")"));
+  }
+  // Everything exec needs, made before the fork.
+  std::vector<std::string> arguments{ program, path, std::to_string(limits.MemoryBytes),
+    quotedFile };
+  std::vector<std::string> environment = ChildEnvironment();
+  std::vector<char*> argv = Pointers(arguments);
+  std::vector<char*> envp = Pointers(environment);
+  const int null = ::open("/dev/null", O_RDWR | O_CLOEXEC);
+  int fds[2];
+  if (null < 0 || ::pipe2(fds, O_CLOEXEC) != 0)
+  {
+    const int error = errno;
+    if (null >= 0)
+    {
+      ::close(null);
+    }
     throw RuntimeError("cannot read " + quotedFile + ": no pipe to a reading process (" +
-      std::strerror(errno) + ")");
+      std::strerror(error) + ")");
   }
   std::fflush(nullptr);
   const pid_t child = ::fork();
@@ -341,14 +389,15 @@ vtkSmartPointer<vtkPolyData> ReadInSandbox(const std::string& quotedFile,
     const int error = errno;
     ::close(fds[0]);
     ::close(fds[1]);
+    ::close(null);
     throw RuntimeError(
       "cannot read " + quotedFile + ": no reading process (" + std::strerror(error) + ")");
   }
   if (child == 0)
   {
-    ::close(fds[0]);
-    RunChild(fds[1], quotedFile, read, limits);
+    ExecReadingProgram(fds[1], null, limits, argv.data(), envp.data());
   }
+  ::close(null);
   ::close(fds[1]);
   const ChildAnswer answer = Collect(fds[0], child, limits);
   ::close(fds[0]);
@@ -386,6 +435,56 @@ vtkSmartPointer<vtkPolyData> ReadInSandbox(const std::string& quotedFile,
     }
   }
   throw RuntimeError("cannot read " + quotedFile + ": " + WhyTheChildFailed(end, answer, limits));
+}
+
+// ------------------------------------------------------ the reading program
+
+int ReadingProcessMain(int argc, char** argv,
+  const std::function<vtkSmartPointer<vtkPolyData>(const std::string&)>& read)
+{
+  constexpr int fd = STDOUT_FILENO;
+  if (argc != 4)
+  {
+    return 2;
+  }
+  const std::string path = argv[1];
+  const std::string quotedFile = argv[3];
+  const std::uint64_t memory = std::strtoull(argv[2], nullptr, 10);
+  // The parent dies: so does this process (set before exec too; checked
+  // again in case the parent died in between).
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (::getppid() == 1)
+  {
+    return 3;
+  }
+#ifndef SILHOUETTE_SANITIZED
+  SetLimit(RLIMIT_AS, CurrentAddressSpace() + memory);
+#endif
+  VtkErrorLog& log = VtkErrorLog::Instance();
+  try
+  {
+    vtkSmartPointer<vtkPolyData> mesh = read(path);
+    for (const std::string& warning : log.Warnings())
+    {
+      SendFrame(fd, Frame::Warning, warning);
+    }
+    SendFrame(fd, Frame::Mesh, MeshAsLegacyVtk(mesh));
+  }
+  catch (const RuntimeError& error)
+  {
+    SendFrame(fd, Frame::Error, error.what());
+  }
+  catch (const std::bad_alloc&)
+  {
+    SendFrame(fd, Frame::Error,
+      "cannot read " + quotedFile + ": reading it needed more than the " +
+        std::to_string(memory / MiB) + " MiB of memory allowed for a file of its size");
+  }
+  catch (const std::exception& error)
+  {
+    SendFrame(fd, Frame::Error, "cannot read " + quotedFile + ": " + error.what());
+  }
+  return 0;
 }
 
 } // namespace cli

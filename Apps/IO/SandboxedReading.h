@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 class vtkPolyData;
 
@@ -38,25 +39,48 @@ struct ReadLimits
 };
 
 /**
- * Runs `read` in a child process (fork) under `limits` and returns the mesh
- * it produced, copied back through a pipe as binary legacy VTK (all points,
+ * Reads `path` in a child process under `limits` and returns the mesh it
+ * produced, copied back through a pipe as binary legacy VTK (all points,
  * cells and point, cell and field data arrays, in their own types, with
  * their names whatever bytes they hold, and the active attributes).
+ *
+ * The child is a program of its own, `silhouette-read` (ReadingProcessMain),
+ * found beside the running program or in ../libexec from it: the process
+ * forks and at once executes it. Forking alone, and reading in the copy,
+ * deadlocked: a copy of a process with other threads (a background index
+ * build, Mesa's, a fuzzer's) may inherit a lock one of them held, and
+ * wait for it forever (the allocator's, seen under AddressSanitizer).
+ * Between fork and exec the child only makes system calls.
  *
  * Rules:
  * - the child writes no files (RLIMIT_FSIZE 0), dumps no core, and dies with
  *   the parent; its standard streams go to /dev/null, so a reader's own
  *   output or a C library abort message never reaches the terminal;
  * - the child's VTK warnings (VtkErrorLog) are recorded in the parent's log;
- * - a RuntimeError thrown by `read` becomes the same RuntimeError in the
- *   parent, prefixed by nothing; any other failure becomes a RuntimeError
- *   "cannot read <file>: <why>": the reader crashed (with the signal), ran
- *   out of memory, processor time or waiting time, or sent too much.
+ * - a RuntimeError thrown by the child's reading becomes the same
+ *   RuntimeError in the parent, prefixed by nothing; any other failure
+ *   becomes a RuntimeError "cannot read <file>: <why>": the reader crashed
+ *   (with the signal), ran out of memory, processor time or waiting time,
+ *   sent too much, or the reading program could not be started.
  *
  * `quotedFile` names the file in those messages.
  */
-vtkSmartPointer<vtkPolyData> ReadInSandbox(const std::string& quotedFile,
-  const std::function<vtkSmartPointer<vtkPolyData>()>& read, const ReadLimits& limits);
+vtkSmartPointer<vtkPolyData> ReadInSandbox(
+  const std::string& quotedFile, const std::string& path, const ReadLimits& limits);
+
+/**
+ * The reading program's main: `silhouette-read FILE MEMORY_BYTES QUOTED_FILE`
+ * (the name its messages give the file), its
+ * standard output the pipe to the parent. Limits its address space to what
+ * it has plus MEMORY_BYTES (not under a sanitizer), runs `read(FILE)`, and
+ * sends back the warnings VtkErrorLog recorded and the mesh, or the error.
+ * Returns the exit status.
+ */
+int ReadingProcessMain(int argc, char** argv,
+  const std::function<vtkSmartPointer<vtkPolyData>(const std::string&)>& read);
+
+/// Where ReadInSandbox looks for the reading program, in order.
+std::vector<std::string> ReadingProgramCandidates();
 
 } // namespace cli
 

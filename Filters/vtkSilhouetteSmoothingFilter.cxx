@@ -33,7 +33,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <exception>
 #include <functional>
+#include <new>
 #include <numeric>
 #include <string>
 #include <unordered_map>
@@ -290,12 +292,12 @@ bool vtkSilhouetteSmoothingFilter::Internals::Prepare(
   {
     // Twice the longest: a tolerance that joins them with room for rounding.
     const bool one = statistics.NearCopyEdgeCount == 1;
-    vtkWarningWithObjectMacro(self,
-      << statistics.NearCopyEdgeCount << (one ? " edge is" : " edges are")
-      << " shorter than 1e-5 of the mesh's size (near copies of points, as some exporters "
-         "write them): their ends stay apart, with the normals of one side each, which bends "
-         "the silhouette near them; WeldTolerance "
-      << 2.0 * statistics.LongestNearCopyEdge << " welds them.");
+    vtkWarningWithObjectMacro(
+      self, << statistics.NearCopyEdgeCount << (one ? " edge is" : " edges are")
+            << " shorter than 1e-5 of the mesh's size (near copies of points, as some exporters "
+               "write them): their ends stay apart, with the normals of one side each, which bends "
+               "the silhouette near them; WeldTolerance "
+            << 2.0 * statistics.LongestNearCopyEdge << " welds them.");
   }
   if (rebuilt && statistics.InconsistentEdgeCount > 0)
   {
@@ -456,6 +458,38 @@ int vtkSilhouetteSmoothingFilter::RequestViewData(vtkInformation*,
   return 1;
 }
 
+namespace
+{
+// What RequestData gets from vtkSilhouettePolyDataAlgorithm::ProcessRequest,
+// for the calls a mapper makes outside the pipeline: arrays of the wrong
+// length refused (they would be read past their end), and an exception
+// turned into an error and a failed call (it would leave a render).
+template<typename Build>
+int GuardedBuild(vtkSilhouetteSmoothingFilter* self, vtkPolyData* input, Build build)
+{
+  const std::string mismatched = vtkSilhouetteFilterSupport::MismatchedArrayError(input);
+  if (!mismatched.empty())
+  {
+    vtkErrorWithObjectMacro(self, << mismatched);
+    return 0;
+  }
+  try
+  {
+    return build();
+  }
+  catch (const std::bad_alloc&)
+  {
+    vtkErrorWithObjectMacro(
+      self, "Out of memory: smoothing needs more memory than the system gives.");
+  }
+  catch (const std::exception& error)
+  {
+    vtkErrorWithObjectMacro(self, "Smoothing failed: " << error.what());
+  }
+  return 0;
+}
+} // namespace
+
 int vtkSilhouetteSmoothingFilter::BuildBaseMesh(vtkPolyData* input, vtkPolyData* base)
 {
   if (!input || !base)
@@ -463,6 +497,11 @@ int vtkSilhouetteSmoothingFilter::BuildBaseMesh(vtkPolyData* input, vtkPolyData*
     vtkErrorMacro("BuildBaseMesh needs an input and a mesh to fill.");
     return 0;
   }
+  return GuardedBuild(this, input, [&] { return this->BuildBaseMeshUnguarded(input, base); });
+}
+
+int vtkSilhouetteSmoothingFilter::BuildBaseMeshUnguarded(vtkPolyData* input, vtkPolyData* base)
+{
   bool rebuilt = false;
   if (!this->Internal->Prepare(this, input, rebuilt))
   {
@@ -517,6 +556,16 @@ int vtkSilhouetteSmoothingFilter::BuildChanges(vtkPolyData* input, vtkCamera* ca
     vtkErrorMacro("BuildChanges needs an input, a camera, a mesh and an array to fill.");
     return 0;
   }
+  return GuardedBuild(this, input, [&] {
+    return this->BuildChangesUnguarded(
+      input, camera, modelMatrix, width, height, changes, replacedTriangles);
+  });
+}
+
+int vtkSilhouetteSmoothingFilter::BuildChangesUnguarded(vtkPolyData* input, vtkCamera* camera,
+  const double modelMatrix[16], int width, int height, vtkPolyData* changes,
+  vtkIdTypeArray* replacedTriangles)
+{
   if (this->MinimumSamples > this->MaximumSamples)
   {
     vtkErrorMacro("MinimumSamples (" << this->MinimumSamples << ") is more than MaximumSamples ("

@@ -369,7 +369,9 @@ public:
    * into what changes with the input only and what changes with the view,
    * outside the pipeline, with this filter's settings. Both prepare `input`
    * as RequestData does (once per input or settings change) and return 0
-   * after reporting an error.
+   * after reporting an error: arrays of the wrong length are refused (as the
+   * pipeline refuses them before RequestData) and an exception inside
+   * becomes an error.
    *
    * BuildBaseMesh fills `base` with what RequestData outputs for a view that
    * re-meshes nothing: the input's vertices and lines, its points and the
@@ -395,6 +397,10 @@ public:
 protected:
   vtkSilhouetteSmoothingFilter();
   ~vtkSilhouetteSmoothingFilter() override;
+
+  int BuildBaseMeshUnguarded(vtkPolyData* input, vtkPolyData* base);
+  int BuildChangesUnguarded(vtkPolyData* input, vtkCamera* camera, const double modelMatrix[16],
+    int width, int height, vtkPolyData* changes, vtkIdTypeArray* replacedTriangles);
 
   int RequestViewData(vtkInformation*, vtkInformationVector**, vtkInformationVector*,
     const vtkSilhouetteFilterSupport::View& view) override;

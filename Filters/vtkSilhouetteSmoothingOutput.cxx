@@ -180,7 +180,11 @@ vtkSmartPointer<vtkPoints> BuildPoints(vtkPolyData* input, int pointType,
       }
       else if (o < base)
       {
-        points->GetData()->SetTuple(id, surface.outputSource(o), inPoints->GetData());
+        // By value: SetTuple from another array type (the output's
+        // precision need not be the input's) would fail.
+        double x[3];
+        inPoints->GetPoint(surface.outputSource(o), x);
+        points->SetPoint(id, x);
       }
       else
       {

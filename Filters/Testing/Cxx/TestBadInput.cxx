@@ -9,6 +9,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkMath.h"
 #include "vtkMatrix4x4.h"
 #include "vtkNew.h"
@@ -454,6 +455,22 @@ bool ArraysOfTheWrongLength()
     pn->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, pnErrors);
     pn->SetInputData(mesh);
     CHECK(pn->GetExecutive()->Update() == 0 && pnErrors->GetError(), "PN triangles refuse it too");
+    // So do the calls a render-time mapper makes outside the pipeline (they
+    // read every array's tuples: past the end of a short one).
+    vtkNew<vtkSilhouetteSmoothingFilter> direct;
+    vtkNew<vtkTest::ErrorObserver> directErrors;
+    direct->AddObserver(vtkCommand::ErrorEvent, directErrors);
+    vtkNew<vtkPolyData> base, changes;
+    vtkNew<vtkIdTypeArray> replaced;
+    const double identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
+    CHECK(direct->BuildBaseMesh(mesh, base) == 0, "BuildBaseMesh refuses it");
+    CHECK(directErrors->GetError() &&
+        std::string(directErrors->GetErrorMessage()).find("'Temperature' has") != std::string::npos,
+      "with the same error");
+    directErrors->Clear();
+    CHECK(direct->BuildChanges(mesh, Camera(0, 0, 5), identity, 300, 300, changes, replaced) == 0 &&
+        directErrors->GetError(),
+      "BuildChanges refuses it");
     std::printf(
       "%s array one tuple short: \"%s\"\n", pointData ? "point" : "cell", run.Error().c_str());
   }

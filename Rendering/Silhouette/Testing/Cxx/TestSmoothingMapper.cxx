@@ -280,6 +280,9 @@ struct MapperCase
   bool Clipped = false;
   /// The actors' opacity (below 1: the translucent pass).
   double Opacity = 1.0;
+  /// Both smoothings' OutputPointsPrecision (the bunny's points are float:
+  /// DOUBLE_PRECISION makes the output's another type than the input's).
+  int Precision = vtkAlgorithm::DEFAULT_PRECISION;
 };
 
 // One case: the mapper's image against filter + mapper's over the views,
@@ -335,6 +338,8 @@ bool CheckCase(const MapperCase& c, vtkTexture* filterTexture, vtkTexture* mappe
   viaFilter.Zoom = viaMapper.Zoom = c.Zoom;
   vtkNew<vtkSilhouetteSmoothingMapper> mapper;
   mapper->SetInputData(mesh);
+  filter->SetOutputPointsPrecision(c.Precision);
+  mapper->GetSmoothingFilter()->SetOutputPointsPrecision(c.Precision);
   Configure(mapper, viaMapper.Actor, c.How, mapperTexture);
   viaMapper.Actor->SetMapper(mapper);
   for (Scene* scene : { &viaFilter, &viaMapper })
@@ -740,7 +745,9 @@ int TestSmoothingMapper(int argc, char* argv[])
     { "bunny, clipped", bunny, Colouring::Plain, 1.3, true },
     { "torus, clipped", torus, Colouring::Plain, 1.3, true },
     { "bunny, translucent", bunny, Colouring::Plain, 1.3, false, 0.5 },
-    { "torus, translucent, point scalars", torus, Colouring::PointScalars, 1.3, false, 0.5 } };
+    { "torus, translucent, point scalars", torus, Colouring::PointScalars, 1.3, false, 0.5 },
+    { "bunny, double-precision output", bunny, Colouring::Plain, 1.3, false, 1.0,
+      vtkAlgorithm::DOUBLE_PRECISION } };
 
   bool ok = true;
   for (const MapperCase& c : cases)

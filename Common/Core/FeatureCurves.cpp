@@ -177,6 +177,33 @@ std::vector<FeatureEdge> flatSidedCreases(const std::vector<double>& cosines,
       }
     }
   });
+  // A face of one triangle (a wedge's end, a cube's cut-off corner): every
+  // edge sharper than the angle, and a flat triangle across each. It has no
+  // coplanar neighbour to be told by; its flat neighbours tell it from a
+  // spike of a coarse organic mesh, whose neighbours are curved (one flat
+  // neighbour was too few: a 100-triangle bunny had a crease by chance).
+  // Read from `flat` only, written to `lone`, so the order does not matter.
+  std::vector<unsigned char> lone(triangleCount, 0);
+  parallelFor(triangleCount, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t)
+    {
+      bool lonelyFace = !flat[t];
+      for (int k = 0; k < 3 && lonelyFace; ++k)
+      {
+        // False for NaN: a border or a fan; otherwise the edge has two sides.
+        const auto e = static_cast<std::size_t>(table.sideEdge(static_cast<Id>(t), k));
+        const Id first = sides.First[e][0] / 3;
+        lonelyFace = cosines[e] < cosLimit &&
+          flat[static_cast<std::size_t>(
+            first == static_cast<Id>(t) ? sides.First[e][1] / 3 : first)];
+      }
+      lone[t] = lonelyFace ? 1 : 0;
+    }
+  });
+  for (std::size_t t = 0; t < triangleCount; ++t)
+  {
+    flat[t] = flat[t] || lone[t];
+  }
   // Sharp edges between two flat triangles (a cosine is NaN unless the edge
   // has exactly two sides).
   std::vector<FeatureEdge> result;

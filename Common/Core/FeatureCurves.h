@@ -69,6 +69,9 @@ constexpr double FlatNeighbourDegrees = 0.5;
 /// A planar face split into triangles has such neighbours; a tessellated
 /// smooth surface almost never does, even where it is coarse enough to have
 /// edges sharper than any fixed angle (measured in docs/real-assets.md).
+/// A face of one triangle counts as flat when all three of its edges are
+/// sharper than the angle and border flat triangles (a wedge's end beside
+/// its rectangular sides).
 /// `table`, when given, is the edge table of `triangles`.
 std::vector<FeatureEdge> flatSidedCreases(const std::vector<glm::dvec3>& points,
   const std::vector<Triangle>& triangles, double angleDegrees, const EdgeTable* table = nullptr);

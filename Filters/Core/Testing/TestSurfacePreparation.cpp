@@ -517,3 +517,28 @@ TEST(FlatSidedCreases, BoxEdgesYesCoarseSphereNo)
   coretest::torus(8, 4, 0.4, points, triangles);
   EXPECT_FALSE(flatSidedCreases(points, triangles, 65.0).empty());
 }
+
+TEST(FlatSidedCreases, AFaceOfOneTriangleBesideFlatFacesIsFlat)
+{
+  // A wedge (OpenSCAD's linear_extrude of a right triangle): two rectangles
+  // of two triangles each and a slanted one, and two end caps of one
+  // triangle. All 9 edges of the solid are creases; the caps have no
+  // coplanar neighbour, so the rule of flat pairs alone finds only the 3
+  // long edges between the rectangles.
+  const std::vector<glm::dvec3> wedge{ { 0, 0, 0 }, { 30, 0, 0 }, { 0, 15, 0 }, { 0, 0, 10 },
+    { 30, 0, 10 }, { 0, 15, 10 } };
+  const std::vector<Triangle> faces{ { { 0, 2, 1 } }, { { 3, 4, 5 } }, // the caps
+    { { 0, 1, 4 } }, { { 0, 4, 3 } },                                  // the floor
+    { { 0, 3, 5 } }, { { 0, 5, 2 } },                                  // the back
+    { { 1, 2, 5 } }, { { 1, 5, 4 } } };                                // the slope
+  // (The flat-pair rule alone gave 3: the wedge was drawn as a loaf.)
+  EXPECT_EQ(flatSidedCreases(wedge, faces, 65.0).size(), 9u);
+  // A lone triangle needs a flat neighbour: the octahedron above has none,
+  // and neither has a tetrahedron (every edge sharp, every face one
+  // triangle), which stays a coarse smooth surface.
+  const std::vector<glm::dvec3> tetrahedron{ { 1, 1, 1 }, { 1, -1, -1 }, { -1, 1, -1 },
+    { -1, -1, 1 } };
+  const std::vector<Triangle> four{ { { 0, 1, 2 } }, { { 0, 3, 1 } }, { { 0, 2, 3 } },
+    { { 1, 3, 2 } } };
+  EXPECT_TRUE(flatSidedCreases(tetrahedron, four, 65.0).empty());
+}

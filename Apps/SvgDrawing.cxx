@@ -142,7 +142,14 @@ void AppendPoint(std::string& out, char command, const std::array<double, 2>& p)
   AppendNumber(out, p[1]);
 }
 
-// The points with consecutive repeats removed (they have no direction).
+// Points nearer than this (pixels) to the last one kept are left out: half
+// the resolution the paths are written in (AppendNumber's 0.01).
+constexpr double RepeatDistance = 0.005;
+
+// The points with consecutive repeats removed (they have no direction), as
+// written: a piece of a silhouette a hundredth of a pixel long, which the
+// visibility split leaves where a bore's rim hides its outline, would be a
+// path "M x yL x y", a dot with round caps.
 DrawnLine WithoutRepeats(const DrawnLine& line)
 {
   DrawnLine kept = line;
@@ -152,7 +159,7 @@ DrawnLine WithoutRepeats(const DrawnLine& line)
   {
     if (kept.Points.empty() ||
       std::hypot(line.Points[i][0] - kept.Points.back()[0],
-        line.Points[i][1] - kept.Points.back()[1]) > 1e-6)
+        line.Points[i][1] - kept.Points.back()[1]) >= RepeatDistance)
     {
       kept.Points.push_back(line.Points[i]);
       kept.Depths.push_back(line.Depths[i]);
@@ -303,6 +310,19 @@ std::string SvgDocument(const std::vector<DrawnLine>& lines, const SvgStyle& sty
   AppendNumber(hiddenWidth, 0.75 * style.LineWidth);
   std::string dash;
   AppendNumber(dash, 3.0 * style.LineWidth);
+  // The hidden lines first: the visible ones are drawn over them where
+  // they cross.
+  svg += "<g id=\"hidden\" fill=\"none\" stroke=\"#999999\" stroke-width=\"" + hiddenWidth +
+    "\" stroke-dasharray=\"" + dash + " " + width + "\" stroke-linecap=\"butt\">\n";
+  for (const DrawnLine& raw : lines)
+  {
+    const DrawnLine line = WithoutRepeats(raw);
+    if (line.Hidden && line.Points.size() >= 2)
+    {
+      svg += "<path class=\"hidden " + line.Kind + "\" d=\"" + PolylinePath(line) + "\"/>\n";
+    }
+  }
+  svg += "</g>\n";
   svg += style.WidthByDepth ? "<g id=\"visible\" fill=\"black\" stroke=\"none\">\n"
                             : "<g id=\"visible\" fill=\"none\" stroke=\"black\" stroke-width=\"" +
       width + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
@@ -329,17 +349,6 @@ std::string SvgDocument(const std::vector<DrawnLine>& lines, const SvgStyle& sty
       d = PolylinePath(line);
     }
     svg += "<path class=\"" + line.Kind + "\" d=\"" + d + "\"/>\n";
-  }
-  svg += "</g>\n";
-  svg += "<g id=\"hidden\" fill=\"none\" stroke=\"#999999\" stroke-width=\"" + hiddenWidth +
-    "\" stroke-dasharray=\"" + dash + " " + width + "\" stroke-linecap=\"butt\">\n";
-  for (const DrawnLine& raw : lines)
-  {
-    const DrawnLine line = WithoutRepeats(raw);
-    if (line.Hidden && line.Points.size() >= 2)
-    {
-      svg += "<path class=\"hidden " + line.Kind + "\" d=\"" + PolylinePath(line) + "\"/>\n";
-    }
   }
   svg += "</g>\n</svg>\n";
   return svg;

@@ -14,6 +14,8 @@ the tube partly hides) and on a cube:
   inner contour's short tails, and 10% on the cube);
 - a cube from a generic direction is exactly its 9 visible edges (creases),
   and with --hidden dashed its 3 hidden ones come out as hidden paths;
+- the hidden lines' group comes before the visible one (painted under it);
+- no path is a dot (a piece of line shorter than the paths' resolution);
 - --width-by-depth draws filled outlines, thicker near the eye;
 - --progressive 4 --svg writes 4 drawings at growing triangle counts, the
   last the drawing of the input itself, path for path;
@@ -172,11 +174,29 @@ for target in (cube_svg, cube_png):
 if rsvg and not failures:
     compare_raster("cube", cube_svg, cube_hidden, cube_png)
 if code == 0:
-    _, drawn = paths(cube_hidden)
+    root, drawn = paths(cube_hidden)
     classes = sorted(p.get("class") for p in drawn)
     print("cube paths:", classes)
+    # The hidden group comes first: visible lines are drawn over it.
+    groups = [g.get("id") for g in root.iter(SVG + "g")]
+    check(groups == ["hidden", "visible"], "the hidden lines are drawn first (%s)" % groups)
     check(classes == ["crease"] * 9 + ["hidden crease"] * 3,
           "a cube is its 9 visible edges, and its 3 hidden ones dashed")
+
+# --- No dots ---------------------------------------------------------------------
+# Pieces of silhouette a hundredth of a pixel long (where a bore's rim hides
+# the bore's outline) were written as paths "M x yL x y", dots with round
+# caps: 4 in this view of the bracket before 2026-12-04.
+bracket_svg = os.path.join(work, "bracket.svg")
+code, _, err = run("render", os.path.join(data, "bracket.stl"), "--style", "lines", "--azimuth",
+                   "30", "--elevation", "25", "--size", "800x600", "-o", bracket_svg)
+check(code == 0, "render the bracket (%s)" % err.strip())
+if code == 0:
+    _, drawn = paths(bracket_svg)
+    dots = [p.get("d") for p in drawn
+            if len(set(re.findall(r"[ML]([-0-9.]+ [-0-9.]+)", p.get("d")))) < 2]
+    print("bracket: %d paths, %d of them dots" % (len(drawn), len(dots)))
+    check(drawn and not dots, "no path is a dot: %s" % dots[:3])
 
 # --- Width by depth ------------------------------------------------------------
 depth_svg = os.path.join(work, "cube_depth.svg")
@@ -184,7 +204,7 @@ code, _, err = run("render", cube_file, *cube_view, "-o", depth_svg, "--width-by
 check(code == 0, "render --width-by-depth (%s)" % err.strip())
 if code == 0:
     root, drawn = paths(depth_svg)
-    group = root.find(SVG + "g")
+    group = root.find(SVG + "g[@id='visible']")
     check(group is not None and group.get("fill") == "black" and group.get("stroke") == "none",
           "--width-by-depth draws filled outlines")
     check(len(drawn) == 9 and all(p.get("d").endswith("Z") for p in drawn),

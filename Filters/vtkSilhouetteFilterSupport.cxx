@@ -19,6 +19,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkPolygon.h"
 #include "vtkProp3D.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
@@ -237,6 +238,100 @@ void ReadPoints(vtkPolyData* input, Triangles& out)
   }
 }
 
+namespace
+{
+
+// The polygon's normal by Newell's method (zero for a degenerate one); false
+// when a corner names no point or has no finite position.
+bool PolygonNormal(
+  const std::vector<glm::dvec3>& points, const vtkIdType* ids, vtkIdType n, glm::dvec3& normal)
+{
+  normal = glm::dvec3(0.0);
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    const vtkIdType a = ids[k];
+    const vtkIdType b = ids[(k + 1) % n];
+    if (a < 0 || b < 0 || a >= static_cast<vtkIdType>(points.size()) ||
+      b >= static_cast<vtkIdType>(points.size()))
+    {
+      return false;
+    }
+    const glm::dvec3& p = points[static_cast<std::size_t>(a)];
+    const glm::dvec3& q = points[static_cast<std::size_t>(b)];
+    normal +=
+      glm::dvec3((p.y - q.y) * (p.z + q.z), (p.z - q.z) * (p.x + q.x), (p.x - q.x) * (p.y + q.y));
+  }
+  return std::isfinite(normal.x) && std::isfinite(normal.y) && std::isfinite(normal.z);
+}
+
+glm::dvec3 TriangleNormal(
+  const std::vector<glm::dvec3>& points, vtkIdType a, vtkIdType b, vtkIdType c)
+{
+  const glm::dvec3& p = points[static_cast<std::size_t>(a)];
+  return glm::cross(
+    points[static_cast<std::size_t>(b)] - p, points[static_cast<std::size_t>(c)] - p);
+}
+
+// Whether the fan from the first corner is the polygon: true unless one of
+// its triangles faces against the polygon (a concave polygon, which the fan
+// would cover beyond its outline: assimp's concave_polygon.obj, a ring with
+// a slit, drew as a filled disc). True for what it cannot judge (missing or
+// non-finite points, which are reported later, or a polygon of no area).
+bool FanCovers(const std::vector<glm::dvec3>& points, const vtkIdType* ids, vtkIdType n)
+{
+  glm::dvec3 normal;
+  if (!PolygonNormal(points, ids, n, normal) || glm::dot(normal, normal) == 0.0)
+  {
+    return true;
+  }
+  for (vtkIdType k = 1; k + 1 < n; ++k)
+  {
+    if (glm::dot(TriangleNormal(points, ids[0], ids[k], ids[k + 1]), normal) < 0.0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// A concave polygon's triangles by VTK's ear cutting, wound as the polygon
+// is; false (nothing added) where it fails, as on a polygon that crosses
+// itself.
+bool EarCut(const std::vector<glm::dvec3>& points, const vtkIdType* ids, vtkIdType n,
+  std::vector<silsmooth::Triangle>& cells)
+{
+  glm::dvec3 normal;
+  PolygonNormal(points, ids, n, normal);
+  vtkNew<vtkPolygon> polygon;
+  polygon->GetPointIds()->SetNumberOfIds(n);
+  polygon->GetPoints()->SetNumberOfPoints(n);
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    const glm::dvec3& p = points[static_cast<std::size_t>(ids[k])];
+    polygon->GetPointIds()->SetId(k, ids[k]);
+    polygon->GetPoints()->SetPoint(k, p.x, p.y, p.z);
+  }
+  vtkNew<vtkIdList> corners;
+  if (!polygon->Triangulate(corners) || corners->GetNumberOfIds() != 3 * (n - 2))
+  {
+    return false;
+  }
+  for (vtkIdType t = 0; t + 2 < corners->GetNumberOfIds(); t += 3)
+  {
+    vtkIdType a = ids[corners->GetId(t)];
+    vtkIdType b = ids[corners->GetId(t + 1)];
+    const vtkIdType c = ids[corners->GetId(t + 2)];
+    if (glm::dot(TriangleNormal(points, a, b, c), normal) < 0.0)
+    {
+      std::swap(a, b);
+    }
+    cells.push_back({ a, b, c });
+  }
+  return true;
+}
+
+} // namespace
+
 std::string ReadTriangles(vtkPolyData* input, Triangles& out)
 {
   ReadPoints(input, out);
@@ -249,11 +344,19 @@ std::string ReadTriangles(vtkPolyData* input, Triangles& out)
   {
     polys->GetCurrentCell(npts, pts);
     out.TooSmallPolygons += npts < 3 ? 1 : 0;
-    for (vtkIdType k = 1; k + 1 < npts; ++k)
+    const std::size_t first = out.Cells.size();
+    if (npts > 3 && !FanCovers(out.Points, pts, npts) && EarCut(out.Points, pts, npts, out.Cells))
     {
-      out.Cells.push_back({ pts[0], pts[k], pts[k + 1] });
-      out.CellIds.push_back(cellId);
+      ++out.ConcavePolygons;
     }
+    else
+    {
+      for (vtkIdType k = 1; k + 1 < npts; ++k)
+      {
+        out.Cells.push_back({ pts[0], pts[k], pts[k + 1] });
+      }
+    }
+    out.CellIds.insert(out.CellIds.end(), out.Cells.size() - first, cellId);
   }
   auto strips = vtk::TakeSmartPointer(input->GetStrips()->NewIterator());
   for (strips->GoToFirstCell(); !strips->IsDoneWithTraversal(); strips->GoToNextCell(), ++cellId)

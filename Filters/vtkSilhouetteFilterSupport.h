@@ -67,8 +67,9 @@ struct View
   glm::dmat3 NormalToEye{ 1.0 };
 };
 
-/// The triangles of a vtkPolyData: polygons as fans, strips with alternating
-/// orientation, with the input cell id of each. Also the points and the
+/// The triangles of a vtkPolyData: polygons as fans from their first corner
+/// (a concave polygon, whose fan would cover more than it, by ear cutting),
+/// strips with alternating orientation, with the input cell id of each. Also the points and the
 /// active point normals (empty when there are none of the right shape).
 struct Triangles
 {
@@ -80,6 +81,8 @@ struct Triangles
   vtkIdType FirstNonFinitePoint = -1;
   /// Polygons of fewer than three points (they make no triangle).
   vtkIdType TooSmallPolygons = 0;
+  /// Polygons triangulated by ear cutting, not as fans.
+  vtkIdType ConcavePolygons = 0;
 };
 /// Returns an empty string, or the error to report (cells naming missing
 /// points).

@@ -611,10 +611,91 @@ bool NonOrientable()
 
 } // namespace
 
+// Twice the signed area (along +z) of each triangle of `mesh`.
+std::vector<double> DoubleAreasAlongZ(vtkPolyData* mesh)
+{
+  std::vector<double> areas;
+  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    double a[3], b[3], c[3];
+    mesh->GetPoint(ids[0], a);
+    mesh->GetPoint(ids[1], b);
+    mesh->GetPoint(ids[2], c);
+    areas.push_back((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+  }
+  return areas;
+}
+
+// A concave polygon (an L, written from a corner that does not see all the
+// others, as assimp's concave_polygon.obj is a ring with a slit): its
+// triangles must tile it, each facing the polygon's way. Its fan from the
+// first corner, which the filter made before, has a triangle turned over
+// and covers area 4 instead of 3 (checked here as the wrong variant).
+bool ConcavePolygon()
+{
+  const double corners[6][2] = { { 2, 0 }, { 2, 1 }, { 1, 1 }, { 1, 2 }, { 0, 2 }, { 0, 0 } };
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> polys;
+  polys->InsertNextCell(6);
+  for (vtkIdType k = 0; k < 6; ++k)
+  {
+    points->InsertNextPoint(corners[k][0], corners[k][1], 0.0);
+    polys->InsertCellPoint(k);
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(1, 1, 10);
+  camera->SetFocalPoint(1, 1, 0);
+  vtkNew<vtkSilhouetteSmoothingFilter> smoother;
+  smoother->SetInputData(mesh);
+  smoother->SetCamera(camera);
+  smoother->Update();
+  const auto tally = [](const std::vector<double>& areas, double& total, int& turned) {
+    total = 0.0;
+    turned = 0;
+    for (const double a : areas)
+    {
+      total += 0.5 * std::abs(a);
+      turned += a < 0.0 ? 1 : 0;
+    }
+  };
+  double total = 0.0;
+  int turned = 0;
+  tally(DoubleAreasAlongZ(smoother->GetOutput()), total, turned);
+  std::printf("concave polygon (an L of area 3): %lld triangles, area %.3f, %d turned over\n",
+    static_cast<long long>(smoother->GetOutput()->GetNumberOfPolys()), total, turned);
+  CHECK(smoother->GetOutput()->GetNumberOfPolys() == 4, "4 triangles");
+  CHECK(std::abs(total - 3.0) < 1e-9 && turned == 0, "they tile the L, all facing its way");
+  vtkIdTypeArray* original =
+    vtkIdTypeArray::SafeDownCast(smoother->GetOutput()->GetCellData()->GetArray("OriginalCellId"));
+  CHECK(original && original->GetValue(0) == 0 && original->GetValue(3) == 0,
+    "each says it comes from the polygon");
+  // The wrong variant: the fan from the first corner.
+  vtkNew<vtkCellArray> fan;
+  for (vtkIdType k = 1; k + 1 < 6; ++k)
+  {
+    const vtkIdType ids[3] = { 0, k, k + 1 };
+    fan->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkPolyData> fanned;
+  fanned->SetPoints(points);
+  fanned->SetPolys(fan);
+  tally(DoubleAreasAlongZ(fanned), total, turned);
+  std::printf("its fan: area %.3f, %d turned over\n", total, turned);
+  CHECK(std::abs(total - 3.0) > 0.5 && turned > 0, "the fan fails the check");
+  return true;
+}
+
 int TestAssetMeshes(int argc, char* argv[])
 {
   silhouette_eval::MaskRenderer masks(1024, 768);
-  const bool ok = NothingLost() && FarFromTheOrigin() && NonOrientable() &&
+  const bool ok = NothingLost() && FarFromTheOrigin() && NonOrientable() && ConcavePolygon() &&
     OtherFiltersOnSoups(argc, argv) && ClosedWithFeatures(argc, argv) &&
     Variants(argc, argv, masks);
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;

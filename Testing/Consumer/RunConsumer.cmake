@@ -29,6 +29,7 @@ file(RENAME "${WORK_DIR}/installed" "${prefix}") # the tree must not care where 
 foreach (installed
     "include/SilhouetteSmoothing/vtkSilhouetteSmoothingFilter.h"
     "bin/silhouette"
+    "libexec/silhouette-read" # the reading process; the runs below use it
     "share/SilhouetteSmoothing/Data/bunny_coarse.ply")
   if (NOT EXISTS "${prefix}/${installed}")
     message(FATAL_ERROR "FAILED: ${installed} is not installed")

@@ -23,11 +23,12 @@ bool ViewTracker::SameViewAngle(double now, double last)
       std::abs(now - last) <= Rounding * std::max(std::abs(now), std::abs(last)));
 }
 
-vtkMTimeType ViewTracker::Update(
+ViewTracker::Key ViewTracker::KeyOf(
   vtkCamera* camera, const double model[16], std::array<int, 2> viewport)
 {
-  std::array<double, 16 + 16 + 17 + 16> now{};
-  double* v = now.data();
+  Key key;
+  key.Viewport = viewport;
+  double* v = key.Values.data();
   std::copy(&camera->GetModelViewTransformMatrix()->Element[0][0],
     &camera->GetModelViewTransformMatrix()->Element[0][0] + 16, v);
   if (camera->GetUseExplicitProjectionTransformMatrix() &&
@@ -50,18 +51,27 @@ vtkMTimeType ViewTracker::Update(
   camera->GetScreenBottomLeft(p + 13);
   p[16] = camera->GetLeftEye();
   std::copy(model, model + 16, v + 49);
+  return key;
+}
+
+bool ViewTracker::SameView(const Key& a, const Key& b)
+{
   // Bitwise (a NaN in the view compares equal to itself) on both sides of
   // the view angle, which SameViewAngle compares.
   constexpr std::size_t angle = 32;
-  const bool same = this->Have && viewport == this->LastViewport &&
-    SameViewAngle(now[angle], this->Last[angle]) &&
-    std::memcmp(now.data(), this->Last.data(), angle * sizeof(double)) == 0 &&
-    std::memcmp(now.data() + angle + 1, this->Last.data() + angle + 1,
-      (now.size() - angle - 1) * sizeof(double)) == 0;
-  if (!same)
+  return a.Viewport == b.Viewport && SameViewAngle(a.Values[angle], b.Values[angle]) &&
+    std::memcmp(a.Values.data(), b.Values.data(), angle * sizeof(double)) == 0 &&
+    std::memcmp(a.Values.data() + angle + 1, b.Values.data() + angle + 1,
+      (a.Values.size() - angle - 1) * sizeof(double)) == 0;
+}
+
+vtkMTimeType ViewTracker::Update(
+  vtkCamera* camera, const double model[16], std::array<int, 2> viewport)
+{
+  const Key now = KeyOf(camera, model, viewport);
+  if (!this->Have || !SameView(now, this->Last))
   {
     this->Last = now;
-    this->LastViewport = viewport;
     this->Have = true;
     this->Time.Modified();
   }

@@ -28,6 +28,16 @@ namespace vtkSilhouetteFilterSupport
 class ViewTracker
 {
 public:
+  /// A view, by value: what Update compares.
+  struct Key
+  {
+    std::array<double, 16 + 16 + 17 + 16> Values{};
+    std::array<int, 2> Viewport{};
+  };
+  static Key KeyOf(vtkCamera* camera, const double model[16], std::array<int, 2> viewport);
+  /// Whether two keys are one view (bitwise, but for SameViewAngle).
+  static bool SameView(const Key& a, const Key& b);
+
   /// The time the view last changed (updated by this call).
   vtkMTimeType Update(vtkCamera* camera, const double model[16], std::array<int, 2> viewport);
 
@@ -37,8 +47,7 @@ public:
   static bool SameViewAngle(double now, double last);
 
 private:
-  std::array<double, 16 + 16 + 17 + 16> Last{};
-  std::array<int, 2> LastViewport{};
+  Key Last;
   bool Have = false;
   vtkTimeStamp Time;
 };

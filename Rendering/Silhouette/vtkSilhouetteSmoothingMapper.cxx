@@ -22,6 +22,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <iterator>
 #include <vector>
@@ -70,13 +71,32 @@ std::vector<vtkIdType> PointSources(vtkPolyData* patch)
 
 } // namespace
 
+// One view's patch: what was smoothed for it, ready to hand to the drawing
+// mapper again.
+struct ViewPatch
+{
+  vtkNew<vtkPolyData> Changes;
+  vtkNew<vtkIdTypeArray> Replaced;
+  vtkSilhouetteFilterSupport::ViewTracker::Key View;
+  bool Valid = false;
+  bool Smoothed = false;
+  // Whether the patch drawn is Changes (not the base mesh alone).
+  bool DrawsChanges = false;
+  std::vector<vtkIdType> Hidden;
+  std::vector<vtkIdType> PointSources;
+  // The figures the mapper reports for this view.
+  vtkIdType ReplacedTriangles = 0;
+  vtkIdType PatchTriangles = 0;
+  vtkIdType CulledTriangles = 0;
+  vtkIdType SilhouetteTriangles = 0;
+  vtkIdType NewTriangles = 0;
+};
+
 struct vtkSilhouetteSmoothingMapper::Internals
 {
   vtkNew<vtkSilhouetteSmoothingFilter> Smoother;
   vtkNew<vtkSilhouettePatchedMapper> Drawn;
   vtkNew<vtkPolyData> Base;
-  vtkNew<vtkPolyData> Changes;
-  vtkNew<vtkIdTypeArray> Replaced;
 
   // The base mesh is of this input, at this time, with these settings.
   vtkPolyData* BaseInput = nullptr;
@@ -86,15 +106,28 @@ struct vtkSilhouetteSmoothingMapper::Internals
   // The base mesh's ghost triangles (indices among its polygons): another
   // piece's to draw, so hidden in every frame.
   std::vector<vtkIdType> Ghosts;
-  // The patch is for the view of this time (and this base mesh, and
-  // Smoothing); the view is compared by value, as the filters compare it.
-  vtkSilhouetteFilterSupport::ViewTracker View;
-  vtkMTimeType PatchViewTime = 0;
-  bool HavePatch = false;
-  bool PatchSmoothed = false;
-  // Whether the patch drawn is Changes (not the base mesh alone).
-  bool PatchDrawsChanges = false;
+  // The patches of the last two views drawn (views compared by value, as
+  // the filters compare them): stereo's two eyes, a shadow map's light and
+  // the camera, two renderers showing one actor each render without
+  // smoothing again while their views stay. Patches[Current] is drawn.
+  std::array<ViewPatch, 2> Patches;
+  std::size_t Current = 0;
   vtkMTimeType CopiedSettingsTime = 0;
+
+  enum class PatchUpdate
+  {
+    Kept,     // the view drawn last
+    Switched, // the other cached view
+    Made      // smoothed anew
+  };
+
+  void Forget()
+  {
+    for (ViewPatch& patch : this->Patches)
+    {
+      patch.Valid = false;
+    }
+  }
 
   void UpdateBase(vtkSilhouetteSmoothingMapper* self, vtkPolyData* input)
   {
@@ -117,7 +150,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
     this->Base->Modified(); // refilled in place: the buffers are built again
     // Selection reports the input's cell ids for the base mesh's cells.
     this->Drawn->SetCellIdArrayName(this->BaseReady ? "OriginalCellId" : nullptr);
-    this->HavePatch = false;
+    this->Forget();
     this->Ghosts.clear();
     vtkPolyData* drawn = this->BaseReady ? this->Base.Get() : input;
     vtkUnsignedCharArray* ghosts = vtkArrayDownCast<vtkUnsignedCharArray>(
@@ -137,9 +170,69 @@ struct vtkSilhouetteSmoothingMapper::Internals
     }
   }
 
-  // False when the view (and the smoothing switch) are the last patch's:
-  // the patch is kept as it is.
-  bool UpdatePatch(
+  // Hands `patch` to the drawing mapper and its figures to `self`.
+  void Show(vtkSilhouetteSmoothingMapper* self, const ViewPatch& patch)
+  {
+    if (patch.DrawsChanges)
+    {
+      this->Drawn->SetPatch(patch.Hidden, patch.Changes,
+        vtkIdTypeArray::SafeDownCast(patch.Changes->GetCellData()->GetArray("OriginalCellId")),
+        patch.PointSources);
+    }
+    else
+    {
+      this->Drawn->SetPatch(this->Ghosts, nullptr, nullptr, {});
+    }
+    self->ReplacedTriangleCount = patch.ReplacedTriangles;
+    self->PatchTriangleCount = patch.PatchTriangles;
+    self->CulledTriangleCount = patch.CulledTriangles;
+    self->SilhouetteTriangleCount = patch.SilhouetteTriangles;
+    self->NewTriangleCount = patch.NewTriangles;
+  }
+
+  // Smooths `input` for the view into `patch`.
+  void Make(vtkSilhouetteSmoothingMapper* self, vtkPolyData* input, vtkCamera* camera,
+    const double model[16], int width, int height, bool smooth, ViewPatch& patch)
+  {
+    patch.Valid = true;
+    patch.Smoothed = smooth;
+    patch.DrawsChanges = false;
+    patch.ReplacedTriangles = patch.PatchTriangles = patch.CulledTriangles = 0;
+    patch.SilhouetteTriangles = patch.NewTriangles = 0;
+    ++self->SmoothingRunCount;
+    if (!smooth || width <= 0 || height <= 0 ||
+      !this->Smoother->BuildChanges(
+        input, camera, model, width, height, patch.Changes, patch.Replaced))
+    {
+      return;
+    }
+    const vtkIdType* replaced = patch.Replaced->GetPointer(0);
+    patch.Hidden.clear();
+    std::set_union(replaced, replaced + patch.Replaced->GetNumberOfValues(), this->Ghosts.begin(),
+      this->Ghosts.end(), std::back_inserter(patch.Hidden));
+    patch.PointSources = PointSources(patch.Changes);
+    patch.DrawsChanges = true;
+    patch.ReplacedTriangles = patch.Replaced->GetNumberOfValues();
+    patch.PatchTriangles = patch.Changes->GetNumberOfPolys();
+    vtkFieldData* figures = patch.Changes->GetFieldData();
+    if (vtkDataArray* culled = figures->GetArray("CulledTriangleCount"))
+    {
+      patch.CulledTriangles = static_cast<vtkIdType>(culled->GetTuple1(0));
+    }
+    if (vtkDataArray* silhouette = figures->GetArray("SilhouetteTriangleCount"))
+    {
+      patch.SilhouetteTriangles = static_cast<vtkIdType>(silhouette->GetTuple1(0));
+    }
+    if (vtkDataArray* made = patch.Changes->GetCellData()->GetArray("NewGeometry"))
+    {
+      for (vtkIdType c = 0; c < made->GetNumberOfTuples(); ++c)
+      {
+        patch.NewTriangles += made->GetTuple1(c) != 0.0 ? 1 : 0;
+      }
+    }
+  }
+
+  PatchUpdate UpdatePatch(
     vtkSilhouetteSmoothingMapper* self, vtkPolyData* input, vtkRenderer* ren, vtkActor* act)
   {
     const bool smooth = self->Smoothing && this->BaseReady;
@@ -148,54 +241,31 @@ struct vtkSilhouetteSmoothingMapper::Internals
     vtkMatrix4x4::DeepCopy(model, act->GetMatrix());
     int width = 0, height = 0, x = 0, y = 0;
     ren->GetTiledSizeAndOrigin(&width, &height, &x, &y);
-    const vtkMTimeType viewTime = this->View.Update(camera, model, { { width, height } });
-    if (this->HavePatch && this->PatchSmoothed == smooth && viewTime == this->PatchViewTime)
+    using Tracker = vtkSilhouetteFilterSupport::ViewTracker;
+    const Tracker::Key view = Tracker::KeyOf(camera, model, { { width, height } });
+    for (std::size_t k = 0; k < this->Patches.size(); ++k)
     {
-      return false;
-    }
-    this->PatchViewTime = viewTime;
-    this->HavePatch = true;
-    this->PatchSmoothed = smooth;
-    this->PatchDrawsChanges = false;
-    self->ReplacedTriangleCount = 0;
-    self->PatchTriangleCount = 0;
-    self->CulledTriangleCount = 0;
-    self->SilhouetteTriangleCount = 0;
-    self->NewTriangleCount = 0;
-    if (!smooth || width <= 0 || height <= 0 ||
-      !this->Smoother->BuildChanges(
-        input, camera, model, width, height, this->Changes, this->Replaced))
-    {
-      this->Drawn->SetPatch(this->Ghosts, nullptr, nullptr, {});
-      return true;
-    }
-    const vtkIdType* replaced = this->Replaced->GetPointer(0);
-    std::vector<vtkIdType> hidden;
-    std::set_union(replaced, replaced + this->Replaced->GetNumberOfValues(), this->Ghosts.begin(),
-      this->Ghosts.end(), std::back_inserter(hidden));
-    this->Drawn->SetPatch(hidden, this->Changes,
-      vtkIdTypeArray::SafeDownCast(this->Changes->GetCellData()->GetArray("OriginalCellId")),
-      PointSources(this->Changes));
-    this->PatchDrawsChanges = true;
-    self->ReplacedTriangleCount = this->Replaced->GetNumberOfValues();
-    self->PatchTriangleCount = this->Changes->GetNumberOfPolys();
-    vtkFieldData* figures = this->Changes->GetFieldData();
-    if (vtkDataArray* culled = figures->GetArray("CulledTriangleCount"))
-    {
-      self->CulledTriangleCount = static_cast<vtkIdType>(culled->GetTuple1(0));
-    }
-    if (vtkDataArray* silhouette = figures->GetArray("SilhouetteTriangleCount"))
-    {
-      self->SilhouetteTriangleCount = static_cast<vtkIdType>(silhouette->GetTuple1(0));
-    }
-    if (vtkDataArray* made = this->Changes->GetCellData()->GetArray("NewGeometry"))
-    {
-      for (vtkIdType c = 0; c < made->GetNumberOfTuples(); ++c)
+      // The drawn patch first: of two equal views, it is the one to keep.
+      const std::size_t i = (this->Current + k) % this->Patches.size();
+      const ViewPatch& patch = this->Patches[i];
+      if (patch.Valid && patch.Smoothed == smooth && Tracker::SameView(patch.View, view))
       {
-        self->NewTriangleCount += made->GetTuple1(c) != 0.0 ? 1 : 0;
+        if (i == this->Current)
+        {
+          return PatchUpdate::Kept;
+        }
+        this->Current = i;
+        this->Show(self, patch);
+        return PatchUpdate::Switched;
       }
     }
-    return true;
+    // A new view replaces the one not drawn last.
+    this->Current = (this->Current + 1) % this->Patches.size();
+    ViewPatch& patch = this->Patches[this->Current];
+    patch.View = view;
+    this->Make(self, input, camera, model, width, height, smooth, patch);
+    this->Show(self, patch);
+    return PatchUpdate::Made;
   }
 };
 
@@ -225,15 +295,16 @@ double* vtkSilhouetteSmoothingMapper::GetBounds()
   vtkPolyData* input = this->GetInput();
   // The patch counts while smoothing is on and it was made for this input as
   // it is now (UpdateBase keeps the base mesh's input and time).
-  const bool current = this->Smoothing && internal.HavePatch && internal.PatchDrawsChanges &&
-    input && input == internal.BaseInput && input->GetMTime() == internal.BaseInputTime;
-  if (!bounds || !current || internal.Changes->GetNumberOfPolys() == 0 ||
+  const ViewPatch& drawn = internal.Patches[internal.Current];
+  const bool current = this->Smoothing && drawn.Valid && drawn.DrawsChanges && input &&
+    input == internal.BaseInput && input->GetMTime() == internal.BaseInputTime;
+  if (!bounds || !current || drawn.Changes->GetNumberOfPolys() == 0 ||
     !vtkMath::AreBoundsInitialized(bounds))
   {
     return bounds;
   }
   double patch[6];
-  internal.Changes->GetBounds(patch);
+  drawn.Changes->GetBounds(patch);
   for (int axis = 0; axis < 3; ++axis)
   {
     bounds[2 * axis] = std::min(bounds[2 * axis], patch[2 * axis]);
@@ -261,7 +332,7 @@ void vtkSilhouetteSmoothingMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     internal.Drawn->SetStatic(1);
     internal.CopiedSettingsTime = settings;
   }
-  const bool smoothed = internal.UpdatePatch(this, input, ren, act);
+  const bool smoothed = internal.UpdatePatch(this, input, ren, act) == Internals::PatchUpdate::Made;
   this->LastPrepareSeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (smoothed)
@@ -274,7 +345,7 @@ void vtkSilhouetteSmoothingMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
 void vtkSilhouetteSmoothingMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->Internal->Drawn->ReleaseGraphicsResources(win);
-  this->Internal->HavePatch = false;
+  this->Internal->Forget();
   this->Superclass::ReleaseGraphicsResources(win);
 }
 
@@ -291,6 +362,7 @@ void vtkSilhouetteSmoothingMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ReplacedTriangleCount: " << this->ReplacedTriangleCount << "\n";
   os << indent << "PatchTriangleCount: " << this->PatchTriangleCount << "\n";
   os << indent << "CulledTriangleCount: " << this->CulledTriangleCount << "\n";
+  os << indent << "SmoothingRunCount: " << this->SmoothingRunCount << "\n";
   os << indent << "SmoothingFilter:\n";
   this->Internal->Smoother->PrintSelf(os, indent.GetNextIndent());
 }

@@ -111,6 +111,16 @@ public:
    */
   double GetLastSmoothingSeconds() const { return this->LastSmoothingSeconds; }
 
+  /**
+   * How many times the mapper has smoothed for a view since it was made.
+   * It keeps the patches of the last two views it drew, compared by value
+   * (stereo's two eyes, a shadow map's light and the camera, or two
+   * renderers showing one actor), so rendering either of them again adds
+   * nothing; a third view replaces the one not drawn last. A change of the
+   * input or of the filter's settings forgets both.
+   */
+  vtkIdType GetSmoothingRunCount() const { return this->SmoothingRunCount; }
+
   void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
   void ReleaseGraphicsResources(vtkWindow* win) override;
   bool GetSupportsSelection() override { return true; }
@@ -139,6 +149,7 @@ protected:
   vtkIdType NewTriangleCount = 0;
   double LastPrepareSeconds = 0.0;
   double LastSmoothingSeconds = 0.0;
+  vtkIdType SmoothingRunCount = 0;
 
 private:
   vtkSilhouetteSmoothingMapper(const vtkSilhouetteSmoothingMapper&) = delete;

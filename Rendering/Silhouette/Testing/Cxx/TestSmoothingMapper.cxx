@@ -38,6 +38,7 @@
 #include "vtkRenderer.h"
 #include "vtkSilhouetteSmoothingFilter.h"
 #include "vtkSilhouetteSmoothingMapper.h"
+#include "vtkSmartPointer.h"
 #include "vtkTexture.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkWindowToImageFilter.h"
@@ -713,6 +714,113 @@ bool CheckDeformingMesh(vtkPolyData* bunny, vtkTexture* filterTexture, vtkTextur
 
 } // namespace
 
+// A window of `views` renderers side by side, each looking at the bunny from
+// its own side; `shared` puts one actor (one mapper) in all of them, else
+// each renderer has an actor and a mapper of its own.
+struct SideBySide
+{
+  vtkNew<vtkRenderWindow> Window;
+  std::vector<vtkSmartPointer<vtkSilhouetteSmoothingMapper>> Mappers;
+
+  SideBySide(vtkPolyData* mesh, int views, bool shared)
+  {
+    this->Window->SetSize(Width / 2 * views, Height / 2);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetOffScreenRendering(1);
+    vtkNew<vtkActor> sharedActor;
+    for (int v = 0; v < views; ++v)
+    {
+      vtkNew<vtkRenderer> renderer;
+      renderer->SetViewport(double(v) / views, 0.0, double(v + 1) / views, 1.0);
+      this->Window->AddRenderer(renderer);
+      vtkSmartPointer<vtkActor> actor = sharedActor;
+      if (!shared || v == 0)
+      {
+        this->Mappers.push_back(vtkSmartPointer<vtkSilhouetteSmoothingMapper>::New());
+        this->Mappers.back()->SetInputData(mesh);
+        actor =
+          shared ? vtkSmartPointer<vtkActor>(sharedActor.Get()) : vtkSmartPointer<vtkActor>::New();
+        actor->SetMapper(this->Mappers.back());
+      }
+      renderer->AddActor(actor);
+      vtkCamera* camera = renderer->GetActiveCamera();
+      renderer->ResetCamera(mesh->GetBounds());
+      camera->Azimuth(30.0 + 70.0 * v);
+      camera->Elevation(10.0);
+      camera->OrthogonalizeViewUp();
+      renderer->ResetCameraClippingRange(mesh->GetBounds());
+    }
+  }
+
+  std::vector<unsigned char> Pixels()
+  {
+    this->Window->Render();
+    vtkNew<vtkWindowToImageFilter> grab;
+    grab->SetInput(this->Window);
+    grab->Update();
+    vtkDataArray* scalars = grab->GetOutput()->GetPointData()->GetScalars();
+    const auto* data = static_cast<unsigned char*>(scalars->GetVoidPointer(0));
+    return std::vector<unsigned char>(
+      data, data + scalars->GetNumberOfTuples() * scalars->GetNumberOfComponents());
+  }
+};
+
+// One mapper drawn in two views in turn (stereo's eyes, a shadow map's
+// light and the camera, one actor in two renderers) keeps both views'
+// patches: rendering them again smooths nothing, and each renderer draws
+// its own view's patch (the image equals one mapper per renderer's). A
+// third view exceeds the two kept: every render smooths all three again,
+// so the counter counts (the wrong variant: a cache of one view would give
+// two views the same count).
+bool CheckViewsInTurn(vtkPolyData* bunny)
+{
+  bool ok = true;
+  SideBySide shared(bunny, 2, true);
+  SideBySide separate(bunny, 2, false);
+  vtkSilhouetteSmoothingMapper* mapper = shared.Mappers[0];
+  const std::vector<unsigned char> expected = separate.Pixels();
+  const long first = Differing(shared.Pixels(), expected);
+  const vtkIdType afterFirst = mapper->GetSmoothingRunCount();
+  const long again = Differing(shared.Pixels(), expected);
+  const vtkIdType afterAgain = mapper->GetSmoothingRunCount();
+  mapper->SmoothingOff();
+  const long unsmoothed = Differing(shared.Pixels(), expected);
+  mapper->SmoothingOn();
+  SideBySide three(bunny, 3, true);
+  three.Pixels();
+  const vtkIdType threeFirst = three.Mappers[0]->GetSmoothingRunCount();
+  three.Pixels();
+  const vtkIdType threeAgain = three.Mappers[0]->GetSmoothingRunCount();
+  std::printf("one mapper in two views: %lld smoothings for the first render, %lld more for the "
+              "second; %ld and %ld pixels differ from a mapper per view (unsmoothed %ld); three "
+              "views: %lld, then %lld more\n",
+    static_cast<long long>(afterFirst), static_cast<long long>(afterAgain - afterFirst), first,
+    again, unsmoothed, static_cast<long long>(threeFirst),
+    static_cast<long long>(threeAgain - threeFirst));
+  if (afterFirst != 2 || afterAgain != afterFirst)
+  {
+    std::printf("FAIL: two views drawn again were smoothed again\n");
+    ok = false;
+  }
+  if (first > MaximumDifferingPixels || again > MaximumDifferingPixels)
+  {
+    std::printf("FAIL: a view drew another view's patch\n");
+    ok = false;
+  }
+  if (unsmoothed <= MaximumDifferingPixels)
+  {
+    std::printf("FAIL: the unsmoothed views pass the check, which cannot fail\n");
+    ok = false;
+  }
+  // Pixels() renders twice (Render, then the grab's own render).
+  if (threeFirst != 6 || threeAgain != 12)
+  {
+    std::printf("FAIL: three views in turn should each be smoothed every render\n");
+    ok = false;
+  }
+  return ok;
+}
+
 int TestSmoothingMapper(int argc, char* argv[])
 {
   // One window open for the whole test: each case closes its own, and an X
@@ -756,5 +864,6 @@ int TestSmoothingMapper(int argc, char* argv[])
   }
   ok = CheckGhostCells(sphere, filterTexture, mapperTexture) && ok;
   ok = CheckDeformingMesh(bunny, filterTexture, mapperTexture) && ok;
+  ok = CheckViewsInTurn(bunny) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -253,7 +253,8 @@ public:
    * computing normals and visibility: a closed component outward (positive
    * signed volume), an open one the way its given normals point, else the way
    * most of its area faces. Given normals pointing into the oriented surface
-   * are reversed. The output's triangles keep the input's own winding.
+   * are reversed. The output's triangles keep the input's own winding, and
+   * its normals follow that winding (an inside-out mesh is lit from outside).
    * Triangles that cannot be oriented consistently (a non-orientable
    * component) keep the orientation spread from the component's first
    * triangle, with a warning. Default on.

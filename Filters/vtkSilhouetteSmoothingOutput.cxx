@@ -316,9 +316,13 @@ void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
   for (vtkIdType i = 0; i < total; ++i)
   {
     const vtkIdType o = outputOf(i);
-    const glm::dvec3& normal = o < base
+    const glm::dvec3& oriented = o < base
       ? mesh.normals()[static_cast<std::size_t>(surface.outputPrepared(o))]
       : result.NewPoints[frame.Added[static_cast<std::size_t>(o - base)].NewPoint].Normal;
+    // As the input's own winding, which the output keeps, faces.
+    const bool reversed = surface.outputNormalReversed(
+      o < base ? o : frame.Added[static_cast<std::size_t>(o - base)].Sources[0]);
+    const glm::dvec3 normal = reversed ? -oriented : oriented;
     *n++ = static_cast<float>(normal.x);
     *n++ = static_cast<float>(normal.y);
     *n++ = static_cast<float>(normal.z);

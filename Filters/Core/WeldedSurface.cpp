@@ -182,6 +182,23 @@ void WeldedSurface::mapOutputPoints()
   {
     this->CornerOutput[corner.first] = copies.at(corner.second);
   }
+  // Each output point's normal agrees with the winding most of its
+  // triangles are written in.
+  this->OutputNormalReversed.clear();
+  if (std::find(this->Reversed.begin(), this->Reversed.end(), 1) != this->Reversed.end())
+  {
+    std::vector<long> votes(this->OutputPrepared.size(), 0);
+    for (std::size_t corner = 0; corner < this->CornerOutput.size(); ++corner)
+    {
+      votes[static_cast<std::size_t>(this->CornerOutput[corner])] +=
+        this->Reversed[corner / 3] ? 1 : -1;
+    }
+    this->OutputNormalReversed.resize(votes.size());
+    for (std::size_t o = 0; o < votes.size(); ++o)
+    {
+      this->OutputNormalReversed[o] = votes[o] > 0 ? 1 : 0;
+    }
+  }
 }
 
 void WeldedSurface::indexOutputsByPrepared()

@@ -154,6 +154,17 @@ public:
   }
   /// The prepared point whose shading normal output point o takes.
   Id outputPrepared(Id o) const { return this->OutputPrepared[static_cast<std::size_t>(o)]; }
+  /// Whether output point o's normal is the prepared surface's reversed:
+  /// most triangles using it were reversed by the orientation, and keep the
+  /// input's own winding in the output. Normals that agree with the written
+  /// winding are lit from either side (VTK flips a normal on a back face);
+  /// the oriented normals on an inside-out mesh's own winding rendered it
+  /// black. An added point follows its first source input point.
+  bool outputNormalReversed(Id o) const
+  {
+    return !this->OutputNormalReversed.empty() &&
+      this->OutputNormalReversed[static_cast<std::size_t>(o)] != 0;
+  }
   /// The input triangles as given (own ids, own winding).
   const std::vector<Triangle>& inputTriangles() const { return this->InputTriangles; }
 
@@ -252,6 +263,9 @@ private:
   std::vector<Id> OutputPrepared;
   /// Output id of input corner 3t + k.
   std::vector<Id> CornerOutput;
+  // Per output point (input points and copies): outputNormalReversed; empty
+  // when no triangle was reversed.
+  std::vector<unsigned char> OutputNormalReversed;
   /// One output id per prepared point (for polylines), and all of them (for
   /// the perturbation): OutputsOf[OutputsOffsets[p] .. OutputsOffsets[p + 1]).
   std::vector<Id> PreparedHome;

@@ -211,6 +211,10 @@ void RenderPlot(
   AddSeries(chart, "coarse", coarseX, coarseY, grey);
   AddSeries(chart, "coarse + smoothing", smoothX, smoothY, red);
   AddSeries(chart, "fine (Loop refinement)", fineX, fineY, blue);
+  // Twice: VTK 9.1's chart fits its axes to the data while it paints, after
+  // painting the series with the axes it had, which puts them out of sight;
+  // the image (read without rendering again) then had axes and no curves.
+  view->GetRenderWindow()->Render();
   view->GetRenderWindow()->Render();
   VtkErrorLog::Instance().ThrowIfErrors("drawing the plot failed");
   WriteWindowPng(view->GetRenderWindow(), options.Plot);

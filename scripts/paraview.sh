@@ -25,6 +25,17 @@
 # The mirror is the host's: read at run time from its apt configuration.
 # Needs root (or sudo) for debootstrap, mount and chroot.
 set -euo pipefail
+case "${1:-}" in
+  --help | -h)
+    sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'
+    exit 0
+    ;;
+  "" | --run | --remove-root) ;;
+  *)
+    echo "paraview.sh: unknown option '$1' (--run COMMAND..., --remove-root or --help)" >&2
+    exit 2
+    ;;
+esac
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 root="${SILHOUETTE_PARAVIEW_ROOT:-/var/cache/silhouette-paraview/root}"

@@ -10,6 +10,9 @@
 #include "VtkErrorLog.h"
 
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCleanPolyData.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkPointData.h>
@@ -22,7 +25,9 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <sstream>
+#include <utility>
 
 namespace cli
 {
@@ -31,7 +36,8 @@ std::string SimplifyHelp()
 {
   return R"(Usage: silhouette simplify INPUT -o OUTPUT --triangles N [--grid CELLS]
                           [--near-min D] [--near-max D] [--near-factor F]
-                          [--plain] [--measure] [--json] [camera options]
+                          [--plain] [--weld] [--measure] [--json]
+                          [camera options]
 
 Simplifies INPUT to at most N triangles by quadric edge collapse (Garland and
 Heckbert), allowing less error near the external contour for the view of the
@@ -65,6 +71,12 @@ Options:
                       contour, so N may not be reached: the figures say so)
   --plain             ignore the contour: plain quadric simplification, for
                       comparison (the camera options then play no part)
+  --weld              join points at equal coordinates first: points on
+                      borders stay, and a mesh whose triangles do not share
+                      points (as OBJ files split at texture seams write them)
+                      is borders everywhere; a joined point keeps the first
+                      copy's arrays (texture seams are lost). Without it, a
+                      target not reached on such a mesh draws a warning
   --measure           also render INPUT and the result as flat masks at
                       --size with the camera, and print the distance between
                       their outlines in pixels (every boundary pixel of each
@@ -157,12 +169,63 @@ bool ParseSimplifyOption(const Option& option, ArgumentList& arguments, Simplify
     RejectInlineValue(option);
     options.Measure = true;
   }
+  else if (option.Name == "--weld")
+  {
+    RejectInlineValue(option);
+    options.Weld = true;
+  }
   else
   {
     return false;
   }
   return true;
 }
+
+namespace
+{
+
+// The mesh with points at equal coordinates joined (vtkCleanPolyData,
+// tolerance 0; cells kept as they are, the degenerate ones dropped).
+vtkSmartPointer<vtkPolyData> Welded(vtkPolyData* mesh)
+{
+  vtkNew<vtkCleanPolyData> clean;
+  clean->SetInputData(mesh);
+  clean->PointMergingOn();
+  clean->SetTolerance(0.0);
+  clean->ConvertLinesToPointsOff();
+  clean->ConvertPolysToLinesOff();
+  clean->ConvertStripsToPolysOff();
+  clean->Update();
+  return clean->GetOutput();
+}
+
+// How many edges of the polygons are used by one polygon only (borders),
+// and how many edges there are.
+std::pair<long, long> BorderEdges(vtkPolyData* mesh)
+{
+  std::map<std::pair<vtkIdType, vtkIdType>, int> uses;
+  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const vtkIdType a = ids[k];
+      const vtkIdType b = ids[(k + 1) % n];
+      ++uses[{ std::min(a, b), std::max(a, b) }];
+    }
+  }
+  long borders = 0;
+  for (const auto& edge : uses)
+  {
+    borders += edge.second == 1 ? 1 : 0;
+  }
+  return { borders, static_cast<long>(uses.size()) };
+}
+
+} // namespace
 
 void CheckSimplifyOptions(const SimplifyOptions& options)
 {
@@ -190,6 +253,10 @@ void RunSimplify(const SimplifyOptions& options)
     RequireDisplay();
   }
   vtkSmartPointer<vtkPolyData> mesh = ReadModelOrMesh(options.Input);
+  if (options.Weld)
+  {
+    mesh = Welded(mesh);
+  }
   const vtkIdType inputTriangles = CountTriangles(mesh);
   if (inputTriangles == 0)
   {
@@ -244,6 +311,20 @@ void RunSimplify(const SimplifyOptions& options)
   vtkFieldData* fd = out->GetFieldData();
   const double threshold = fd->GetArray("ErrorThreshold")->GetTuple1(0);
   const bool reached = fd->GetArray("ReachedTarget")->GetTuple1(0) != 0.0;
+  if (!reached && !options.Weld)
+  {
+    // Say why, where it is the input's borders (the points on them stay).
+    const std::pair<long, long> borders = BorderEdges(mesh);
+    const vtkIdType joinable = mesh->GetNumberOfPoints() - Welded(mesh)->GetNumberOfPoints();
+    if (borders.first > 0 && joinable > 0)
+    {
+      std::cerr << "silhouette: warning: " << borders.first << " of " << borders.second
+                << " edges of " << options.Input << " are borders, whose points stay, and "
+                << joinable
+                << " of its points repeat another's coordinates (its triangles do not share "
+                   "them): --weld joins them first\n";
+    }
+  }
   vtkDataArray* gridSize = proximity->GetOutput()->GetFieldData()->GetArray("ProximityGridSize");
   const double cellPixels =
     proximity->GetOutput()->GetFieldData()->GetArray("ProximityCellSize")->GetTuple1(0);

@@ -24,6 +24,7 @@ struct SimplifyOptions
   double NearFactor = 0.1;
   bool Plain = false;   ///< no proximity: plain quadric simplification
   bool Measure = false; ///< render input and output masks, print the outline deviation
+  bool Weld = false;    ///< join points at equal coordinates first
 };
 
 /// The help text of `simplify`.

@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <iostream>
 #include <regex>
 
 namespace cli
@@ -387,6 +389,31 @@ double FittingAngle(vtkCamera* camera, double viewAngle, const double aspect[2])
   }
   return horizontal ? 2.0 * half : 2.0 * std::atan(std::tan(half) * aspect[0]);
 }
+}
+
+void WarnIfTooSmallOrLargeToDraw(const double bounds[6])
+{
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  if (!std::isfinite(diagonal) || diagonal == 0.0)
+  {
+    return; // nothing to frame: reported elsewhere
+  }
+  char size[32];
+  std::snprintf(size, sizeof size, "%.3g", diagonal);
+  if (diagonal < 1e-21)
+  {
+    std::cerr << "silhouette: warning: the mesh is " << size
+              << " across, too small for VTK to draw (its camera keeps the clipping planes at "
+                 "least 1e-20 apart): the image will be blank; scale the mesh up\n";
+  }
+  else if (diagonal > 1e37)
+  {
+    std::cerr << "silhouette: warning: the mesh is " << size
+              << " across, too large for OpenGL's single precision: the image will be blank or "
+                 "cut; scale the mesh down\n";
+  }
 }
 
 void SetUpCamera(vtkRenderer* renderer, const double bounds[6], const CameraOptions& options)

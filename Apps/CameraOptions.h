@@ -68,6 +68,15 @@ std::string CameraOptionsHelp();
  */
 void SetUpCamera(vtkRenderer* renderer, const double bounds[6], const CameraOptions& options);
 
+/**
+ * Prints a warning when a mesh of these bounds is too small or too large for
+ * VTK 9.1 to draw (an image of it comes out blank): below about 1e-21
+ * across, its camera keeps the clipping planes farther apart than the mesh
+ * is deep; above about 1e37, OpenGL's single precision overflows. Measured
+ * on spheres: radius 1e-21 and 1e36 draw, 1e-22 and 1e38 come out blank.
+ */
+void WarnIfTooSmallOrLargeToDraw(const double bounds[6]);
+
 } // namespace cli
 
 #endif

@@ -335,6 +335,10 @@ void RunRender(const RenderOptions& options)
     RequireDisplay(); // an SVG drawing is projected, not rendered
   }
   vtkSmartPointer<vtkPolyData> mesh = ReadMeshWithTriangles(options.Input);
+  if (!svg)
+  {
+    WarnIfTooSmallOrLargeToDraw(mesh->GetBounds());
+  }
   const OffscreenView view = MakeOffscreenView(options.Camera.ViewportSize);
   SetUpCamera(view.Renderer, mesh->GetBounds(), options.Camera);
   vtkCamera* camera = view.Renderer->GetActiveCamera();

@@ -333,6 +333,10 @@ void Viewer::SetUpTheCamera()
   {
     camera.Parallel = this->MainRenderer->GetActiveCamera()->GetParallelProjection() != 0;
   }
+  if (!this->CameraSetUp)
+  {
+    WarnIfTooSmallOrLargeToDraw(this->Loaded->GetBounds());
+  }
   SetUpCamera(this->MainRenderer, this->Loaded->GetBounds(), camera);
   this->CameraSetUp = true;
 }

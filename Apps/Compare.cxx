@@ -26,6 +26,13 @@ namespace cli
 namespace
 {
 
+// A ratio to the fine reference's figure, or `nothing` where that figure is
+// 0 (the fine outline did not move: the ratio is undefined, stored as -1).
+std::string RatioOrNothing(double ratio, int digits, const char* nothing)
+{
+  return ratio < 0.0 ? std::string(nothing) : Fixed(ratio, digits);
+}
+
 using silhouette_eval::ModelComparison;
 using silhouette_eval::VariantFigures;
 
@@ -62,7 +69,7 @@ std::string JsonVariant(const VariantFigures& v)
   {
     s << ", \"coherence_mean_px\": " << Fixed(v.CoherenceMean, 3)
       << ", \"coherence_max_px\": " << Fixed(v.CoherenceMax, 3)
-      << ", \"coherence_ratio_to_fine\": " << Fixed(v.CoherenceRatio, 3)
+      << ", \"coherence_ratio_to_fine\": " << RatioOrNothing(v.CoherenceRatio, 3, "null")
       << ", \"coherence_excess_px\": " << Fixed(v.CoherenceExcess, 3);
   }
   s << "}";
@@ -97,8 +104,8 @@ void PrintText(const ModelComparison& c, const CompareOptions& options)
               << " 1-degree steps, outline change per step (px): mean, largest, mean over fine's, "
                  "largest excess over fine's in the same step:\n";
     auto coherence = [](const char* name, const VariantFigures& v) {
-      std::printf("  %-18s %10.3f %10.3f %10.2f %10.3f\n", name, v.CoherenceMean, v.CoherenceMax,
-        v.CoherenceRatio, v.CoherenceExcess);
+      std::printf("  %-18s %10.3f %10.3f %10s %10.3f\n", name, v.CoherenceMean, v.CoherenceMax,
+        RatioOrNothing(v.CoherenceRatio, 2, "-").c_str(), v.CoherenceExcess);
     };
     coherence("coarse", c.Coarse);
     coherence("coarse+smoothing", c.Smoothed);
@@ -205,7 +212,7 @@ void PrintMarkdown(const std::vector<ModelComparison>& results, const CompareOpt
       }
       for (const VariantFigures* v : { &c.Smoothed, &c.Wang2003, &c.PN })
       {
-        std::cout << " | " << Fixed(v->CoherenceRatio, 2);
+        std::cout << " | " << RatioOrNothing(v->CoherenceRatio, 2, "-");
       }
       for (const VariantFigures* v : { &c.Smoothed, &c.Wang2003, &c.PN })
       {

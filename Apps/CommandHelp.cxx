@@ -327,7 +327,7 @@ Options:
   --orbit DEG            headless: turn the camera DEG degrees in all
                          about the view-up through the focal point
                          (vtkCamera::Azimuth), DEG / N per frame, rendering
-                         offscreen (default 360)
+                         offscreen; -36000 to 36000 (default 360)
   --frames N             headless: the number of frames, 1 to 100000;
                          frame i is at azimuth i * DEG / N (default 36)
   --record DIR           headless: write DIR/frame_0000.png, ...; DIR is

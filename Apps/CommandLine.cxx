@@ -14,6 +14,7 @@
 #include "Smoothing.h"
 #include "Viewer.h"
 
+#include <cmath>
 #include <vector>
 
 namespace cli
@@ -411,7 +412,15 @@ ViewOptions ParseView(ArgumentList& arguments, RenderBackend& backend)
     }
     else if (option.Name == "--orbit")
     {
-      options.OrbitDegrees = ParseNumber(option.Name, arguments.TakeValue(option));
+      const std::string degrees = arguments.TakeValue(option);
+      options.OrbitDegrees = ParseNumber(option.Name, degrees);
+      if (std::abs(options.OrbitDegrees) > 36000.0)
+      {
+        // A hundred turns is orbit enough; a 1e308-degree one printed its
+        // azimuths with 300 digits.
+        throw UsageError(
+          "option '--orbit' needs degrees from -36000 to 36000, got '" + degrees + "'");
+      }
       options.Orbit = true;
     }
     else if (option.Name == "--frames")

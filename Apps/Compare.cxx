@@ -232,6 +232,15 @@ void PrintMarkdown(const std::vector<ModelComparison>& results, const CompareOpt
 
 } // namespace
 
+std::string CoarseVersionText(vtkPolyData* original, int coarseTriangles)
+{
+  const vtkIdType have = CountTriangles(original);
+  return have <= coarseTriangles
+    ? "keeping its " + std::to_string(have) + " triangles (no more than " +
+      std::to_string(coarseTriangles) + ")"
+    : "decimating to " + std::to_string(coarseTriangles) + " triangles";
+}
+
 vtkSmartPointer<vtkPolyData> OriginalOf(const std::string& input, const std::string& dataDirectory,
   const std::string& command, int& coarseTriangles)
 {
@@ -310,8 +319,8 @@ void RunCompare(const CompareOptions& options)
     {
       const vtkSmartPointer<vtkPolyData> original =
         OriginalOf(input, dataDirectory, "compare", coarseTriangles);
-      std::cerr << "compare: " << input << ": decimating to " << coarseTriangles
-                << " triangles and refining to Loop level " << options.FineLevel << std::endl;
+      std::cerr << "compare: " << input << ": " << CoarseVersionText(original, coarseTriangles)
+                << " and refining to Loop level " << options.FineLevel << std::endl;
       const silhouette_eval::ModelVersions versions =
         silhouette_eval::MakeVersions(input, original, coarseTriangles, options.FineLevel);
       errors.ThrowIfErrors("preparing " + input + " failed");

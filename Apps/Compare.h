@@ -51,6 +51,11 @@ void RunCompare(const CompareOptions& options);
 vtkSmartPointer<vtkPolyData> OriginalOf(const std::string& input, const std::string& dataDirectory,
   const std::string& command, int& coarseTriangles);
 
+/// What the progress line says of the coarse version of `original` at
+/// `coarseTriangles`: "decimating to N triangles", or, where the original
+/// has no more than that, "keeping its N triangles" (Decimate keeps it).
+std::string CoarseVersionText(vtkPolyData* original, int coarseTriangles);
+
 /// `silhouette compare --truth`: each mesh file's coarse version, smoothed
 /// (own and carried normals) and by the peers, against the original refined
 /// by Butterfly subdivision and against the original (FidelityEvaluation.h).

@@ -178,9 +178,13 @@ void RunCompareTruth(const CompareOptions& options)
       results.push_back(silhouette_eval::EvaluateFidelity(input, original, fidelity));
       errors.ThrowIfErrors("evaluating " + input + " failed");
     }
+    catch (const RuntimeError&)
+    {
+      throw; // the reading's own message names the file
+    }
     catch (const std::runtime_error& error)
     {
-      throw RuntimeError(input + ": " + error.what());
+      throw RuntimeError(input + ": " + error.what()); // the evaluation's does not
     }
     if (options.Format == CompareFormat::Text)
     {

@@ -240,8 +240,8 @@ void RunFigure(const FigureOptions& options)
     int coarseTriangles = options.CoarseTriangles;
     vtkSmartPointer<vtkPolyData> original =
       OriginalOf(options.Input, dataDirectory, "figure", coarseTriangles);
-    std::cerr << "figure: decimating to " << coarseTriangles
-              << " triangles and refining to Loop level " << options.FineLevel << std::endl;
+    std::cerr << "figure: " << CoarseVersionText(original, coarseTriangles)
+              << " and refining to Loop level " << options.FineLevel << std::endl;
     const silhouette_eval::ModelVersions model =
       silhouette_eval::MakeVersions(options.Input, original, coarseTriangles, options.FineLevel);
     // The plot's timing windows come first: after a 4096-pixel-wide panel
@@ -277,7 +277,8 @@ reference (OpenSubdiv Loop refinement of the original) shaded. MODEL is one
 of bunny, sphere, torus, ellipsoid, supertoroid, knot; any other MESH is a
 file, decimated and refined like a model. With --plot it also times orbits
 (whole frames: camera move, filter, render) of the coarse mesh at 1/4, 1/2,
-1 and 2 times its triangles, with and without smoothing, and of the fine
+1 and 2 times its triangles (those of at least 40 and at most the
+original's), with and without smoothing, and of the fine
 reference at each Loop level, and plots milliseconds against triangles
 with VTK's charts. Where there is no X display it renders through OSMesa
 (--backend).

@@ -139,6 +139,8 @@ void Viewer::RecordOrbit()
     this->Window->Render();
     errors.ThrowIfErrors("rendering frame " + std::to_string(frame) + " failed");
     const ViewerFigures figures = this->CurrentFigures();
+    // + 0.0: frame 0 of a negative step is -0 ("-0.00" printed).
+    const double azimuth = frame * step + 0.0;
     std::string image;
     if (record)
     {
@@ -149,7 +151,7 @@ void Viewer::RecordOrbit()
     }
     if (this->Options.Json)
     {
-      std::cout << "{\"frame\": " << frame << ", \"azimuth\": " << JsonNumber(frame * step)
+      std::cout << "{\"frame\": " << frame << ", \"azimuth\": " << JsonNumber(azimuth)
                 << ", \"input_triangles\": " << figures.InputTriangles
                 << ", \"output_triangles\": " << figures.OutputTriangles
                 << ", \"silhouette_triangles\": " << figures.SilhouetteTriangles
@@ -160,7 +162,7 @@ void Viewer::RecordOrbit()
     }
     else
     {
-      std::printf("%5d %9.2f %8lld %8lld %10lld %8lld %10.3f %10.3f%s%s\n", frame, frame * step,
+      std::printf("%5d %9.2f %8lld %8lld %10lld %8lld %10.3f %10.3f%s%s\n", frame, azimuth,
         static_cast<long long>(figures.InputTriangles),
         static_cast<long long>(figures.OutputTriangles),
         static_cast<long long>(figures.SilhouetteTriangles),

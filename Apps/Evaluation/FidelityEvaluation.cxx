@@ -162,7 +162,7 @@ FidelityResult EvaluateFidelity(
   if (original->GetNumberOfPolys() == 0 || CountBoundaryOrNonManifoldEdges(original) != 0)
   {
     throw std::runtime_error(
-      name + " is not a closed manifold triangle mesh (the evaluation needs one)");
+      "it is not a closed manifold triangle mesh (the evaluation needs one)");
   }
   FidelityResult result;
   result.Name = name;

@@ -1,6 +1,7 @@
 #include "Simplify.h"
 
 #include "CliErrors.h"
+#include "EvaluationModels.h"
 #include "Figures.h"
 #include "MeshIO.h"
 #include "ModelInput.h"
@@ -10,8 +11,6 @@
 #include "VtkErrorLog.h"
 
 #include <vtkCamera.h>
-#include <vtkCellArray.h>
-#include <vtkCellArrayIterator.h>
 #include <vtkCleanPolyData.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -25,9 +24,7 @@
 #include <chrono>
 #include <cmath>
 #include <iostream>
-#include <map>
 #include <sstream>
-#include <utility>
 
 namespace cli
 {
@@ -199,32 +196,6 @@ vtkSmartPointer<vtkPolyData> Welded(vtkPolyData* mesh)
   return clean->GetOutput();
 }
 
-// How many edges of the polygons are used by one polygon only (borders),
-// and how many edges there are.
-std::pair<long, long> BorderEdges(vtkPolyData* mesh)
-{
-  std::map<std::pair<vtkIdType, vtkIdType>, int> uses;
-  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    it->GetCurrentCell(n, ids);
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      const vtkIdType a = ids[k];
-      const vtkIdType b = ids[(k + 1) % n];
-      ++uses[{ std::min(a, b), std::max(a, b) }];
-    }
-  }
-  long borders = 0;
-  for (const auto& edge : uses)
-  {
-    borders += edge.second == 1 ? 1 : 0;
-  }
-  return { borders, static_cast<long>(uses.size()) };
-}
-
 } // namespace
 
 void CheckSimplifyOptions(const SimplifyOptions& options)
@@ -314,13 +285,12 @@ void RunSimplify(const SimplifyOptions& options)
   if (!reached && !options.Weld)
   {
     // Say why, where it is the input's borders (the points on them stay).
-    const std::pair<long, long> borders = BorderEdges(mesh);
+    const silhouette_eval::EdgeUses edges = silhouette_eval::CountEdgeUses(mesh);
     const vtkIdType joinable = mesh->GetNumberOfPoints() - Welded(mesh)->GetNumberOfPoints();
-    if (borders.first > 0 && joinable > 0)
+    if (edges.Borders > 0 && joinable > 0)
     {
-      std::cerr << "silhouette: warning: " << borders.first << " of " << borders.second
-                << " edges of " << options.Input << " are borders, whose points stay, and "
-                << joinable
+      std::cerr << "silhouette: warning: " << edges.Borders << " of " << edges.Edges << " edges of "
+                << options.Input << " are borders, whose points stay, and " << joinable
                 << " of its points repeat another's coordinates (its triangles do not share "
                    "them): --weld joins them first\n";
     }

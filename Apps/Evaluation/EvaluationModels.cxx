@@ -352,7 +352,7 @@ vtkSmartPointer<vtkPolyData> ExactSurface(const std::string& name, int finer)
   return SampleAnalytic(name, sampling);
 }
 
-long CountBoundaryOrNonManifoldEdges(vtkPolyData* mesh)
+EdgeUses CountEdgeUses(vtkPolyData* mesh)
 {
   std::map<std::pair<vtkIdType, vtkIdType>, int> uses;
   auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
@@ -368,12 +368,19 @@ long CountBoundaryOrNonManifoldEdges(vtkPolyData* mesh)
       ++uses[{ std::min(a, b), std::max(a, b) }];
     }
   }
-  long bad = 0;
+  EdgeUses counts;
+  counts.Edges = static_cast<long>(uses.size());
   for (const auto& entry : uses)
   {
-    bad += entry.second != 2 ? 1 : 0;
+    counts.Borders += entry.second == 1 ? 1 : 0;
+    counts.NotTwo += entry.second != 2 ? 1 : 0;
   }
-  return bad;
+  return counts;
+}
+
+long CountBoundaryOrNonManifoldEdges(vtkPolyData* mesh)
+{
+  return CountEdgeUses(mesh).NotTwo;
 }
 
 double EnclosedVolume(vtkPolyData* mesh)

@@ -90,6 +90,17 @@ vtkSmartPointer<vtkPolyData> Decimate(vtkPolyData* original, int triangles);
 /// surface's own normals, or vtkPolyDataNormals' when it has none).
 void ProjectOntoSurface(vtkPolyData* coarse, vtkPolyData* surface);
 
+/// The edges of `mesh`'s polygons (by point ids): how many there are, how
+/// many one polygon uses (borders), and how many are not shared by exactly
+/// two (borders and non-manifold edges).
+struct EdgeUses
+{
+  long Edges = 0;
+  long Borders = 0;
+  long NotTwo = 0;
+};
+EdgeUses CountEdgeUses(vtkPolyData* mesh);
+
 /// The edges of `mesh`'s polygons not shared by exactly two of them (0: a
 /// closed manifold).
 long CountBoundaryOrNonManifoldEdges(vtkPolyData* mesh);

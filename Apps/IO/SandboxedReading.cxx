@@ -347,8 +347,9 @@ std::vector<std::string> ReadingProgramCandidates()
 vtkSmartPointer<vtkPolyData> ReadInSandbox(
   const std::string& quotedFile, const std::string& path, const ReadLimits& limits)
 {
+  const std::vector<std::string> places = ReadingProgramCandidates();
   std::string program;
-  for (const std::string& candidate : ReadingProgramCandidates())
+  for (const std::string& candidate : places)
   {
     if (::access(candidate.c_str(), X_OK) == 0)
     {
@@ -358,7 +359,6 @@ vtkSmartPointer<vtkPolyData> ReadInSandbox(
   }
   if (program.empty())
   {
-    const std::vector<std::string> places = ReadingProgramCandidates();
     throw RuntimeError("cannot read " + quotedFile +
       ": the reading program silhouette-read is not installed " +
       (places.empty() ? std::string("beside this program")

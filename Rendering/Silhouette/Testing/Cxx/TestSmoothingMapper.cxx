@@ -69,6 +69,19 @@ enum class Colouring
   Texture
 };
 
+// Renders `window` and returns its pixels.
+std::vector<unsigned char> RenderedPixels(vtkRenderWindow* window)
+{
+  window->Render();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->Update();
+  vtkDataArray* scalars = grab->GetOutput()->GetPointData()->GetScalars();
+  const auto* data = static_cast<unsigned char*>(scalars->GetVoidPointer(0));
+  return std::vector<unsigned char>(
+    data, data + scalars->GetNumberOfTuples() * scalars->GetNumberOfComponents());
+}
+
 struct Scene
 {
   vtkNew<vtkRenderWindow> Window;
@@ -100,17 +113,7 @@ struct Scene
     this->Renderer->ResetCameraClippingRange(mesh->GetBounds());
   }
 
-  std::vector<unsigned char> Pixels()
-  {
-    this->Window->Render();
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(this->Window);
-    grab->Update();
-    vtkDataArray* scalars = grab->GetOutput()->GetPointData()->GetScalars();
-    const auto* data = static_cast<unsigned char*>(scalars->GetVoidPointer(0));
-    return std::vector<unsigned char>(
-      data, data + scalars->GetNumberOfTuples() * scalars->GetNumberOfComponents());
-  }
+  std::vector<unsigned char> Pixels() { return RenderedPixels(this->Window); }
 
   // The input cell under every pixel (-1 for none): the selected cell id,
   // through `original` when given (the filter's OriginalCellId).
@@ -752,17 +755,7 @@ struct SideBySide
     }
   }
 
-  std::vector<unsigned char> Pixels()
-  {
-    this->Window->Render();
-    vtkNew<vtkWindowToImageFilter> grab;
-    grab->SetInput(this->Window);
-    grab->Update();
-    vtkDataArray* scalars = grab->GetOutput()->GetPointData()->GetScalars();
-    const auto* data = static_cast<unsigned char*>(scalars->GetVoidPointer(0));
-    return std::vector<unsigned char>(
-      data, data + scalars->GetNumberOfTuples() * scalars->GetNumberOfComponents());
-  }
+  std::vector<unsigned char> Pixels() { return RenderedPixels(this->Window); }
 };
 
 // One mapper drawn in two views in turn (stereo's eyes, a shadow map's

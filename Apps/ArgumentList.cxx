@@ -120,4 +120,15 @@ double ParseNumber(const std::string& option, const std::string& text)
   return value;
 }
 
+int ParseCount(const Option& option, const std::string& text, int low, int high)
+{
+  const double value = ParseNumber(option.Name, text);
+  if (value != static_cast<double>(static_cast<long long>(value)) || value < low || value > high)
+  {
+    throw UsageError("option '" + option.Name + "' needs a whole number from " +
+      std::to_string(low) + " to " + std::to_string(high) + ", got '" + text + "'");
+  }
+  return static_cast<int>(value);
+}
+
 } // namespace cli

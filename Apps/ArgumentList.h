@@ -44,6 +44,9 @@ void RejectInlineValue(const Option& option);
 
 /// The whole of `text` as a finite number, or UsageError naming `option`.
 double ParseNumber(const std::string& option, const std::string& text);
+/// The whole of `text` as a whole number from low to high, or UsageError
+/// naming `option`.
+int ParseCount(const Option& option, const std::string& text, int low, int high);
 
 } // namespace cli
 

@@ -1,5 +1,7 @@
 #include "Compare.h"
 
+#include "ArgumentList.h"
+#include "CameraOptions.h"
 #include "CliErrors.h"
 #include "DataFolder.h"
 #include "Figures.h"
@@ -448,6 +450,111 @@ Options:
 )" + RenderBackendHelp(24) +
     R"(  -h, --help            show this help and exit
 )";
+}
+
+CompareOptions ParseCompare(ArgumentList& arguments, RenderBackend& backend)
+{
+  CompareOptions options;
+  bool coarsePointsGiven = false;
+  while (!arguments.AtEnd())
+  {
+    const std::string word = arguments.Take();
+    if (!LooksLikeOption(word))
+    {
+      options.Inputs.push_back(word);
+      continue;
+    }
+    const Option option = SplitOption(word);
+    if (option.Name == "--coarse-triangles")
+    {
+      options.CoarseTriangles = ParseCount(option, arguments.TakeValue(option), 4, 10000000);
+    }
+    else if (option.Name == "--fine-level")
+    {
+      options.FineLevel = ParseCount(option, arguments.TakeValue(option), 1, 5);
+    }
+    else if (option.Name == "--views")
+    {
+      options.Views = ParseCount(option, arguments.TakeValue(option), 1, 1000);
+    }
+    else if (option.Name == "--frames")
+    {
+      options.Frames = ParseCount(option, arguments.TakeValue(option), 1, 100000);
+    }
+    else if (option.Name == "--size")
+    {
+      options.ViewportSize = ParseViewportSize(option.Name, arguments.TakeValue(option));
+    }
+    else if (option.Name == "--tolerance")
+    {
+      const std::string text = arguments.TakeValue(option);
+      options.Tolerance = ParseNumber(option.Name, text);
+      if (!(options.Tolerance >= 0.001))
+      {
+        throw UsageError(
+          "option '--tolerance' needs a number of at least 0.001, got '" + text + "'");
+      }
+    }
+    else if (option.Name == "--data")
+    {
+      options.DataDirectory = arguments.TakeValue(option);
+    }
+    else if (option.Name == "--json" || option.Name == "--markdown")
+    {
+      RejectInlineValue(option);
+      const CompareFormat format =
+        option.Name == "--json" ? CompareFormat::Json : CompareFormat::Markdown;
+      if (options.Format != CompareFormat::Text && options.Format != format)
+      {
+        throw UsageError("options '--json' and '--markdown' do not go together");
+      }
+      options.Format = format;
+    }
+    else if (option.Name == "--truth")
+    {
+      RejectInlineValue(option);
+      options.Truth = true;
+    }
+    else if (option.Name == "--coarse-points")
+    {
+      const std::string where = arguments.TakeValue(option);
+      if (where != "original" && where != "reference")
+      {
+        throw UsageError(
+          "option '--coarse-points' takes 'original' or 'reference', got '" + where + "'");
+      }
+      options.CoarsePointsOnReference = where == "reference";
+      coarsePointsGiven = true;
+    }
+    else if (option.Name == "--backend")
+    {
+      backend = ParseRenderBackend(option.Name, arguments.TakeValue(option));
+    }
+    else
+    {
+      throw UsageError(
+        "unknown option '" + option.Name + "' for 'compare'; run 'silhouette compare --help'");
+    }
+  }
+  if (options.Inputs.empty())
+  {
+    throw UsageError("'compare' needs a model name, 'all' or a mesh file");
+  }
+  if (coarsePointsGiven && !options.Truth)
+  {
+    throw UsageError("option '--coarse-points' needs '--truth'");
+  }
+  if (options.Truth)
+  {
+    for (const std::string& input : options.Inputs)
+    {
+      if (input == "all" || silhouette_eval::IsModelName(input))
+      {
+        throw UsageError("'compare --truth' takes mesh files, not the model '" + input + "'");
+      }
+    }
+  }
+  return options;
 }
 
 } // namespace cli

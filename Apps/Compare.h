@@ -1,6 +1,8 @@
 #ifndef Compare_h
 #define Compare_h
 
+#include "RenderingBackend.h"
+
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
@@ -62,6 +64,12 @@ std::string CoarseVersionText(vtkPolyData* original, int coarseTriangles);
 void RunCompareTruth(const CompareOptions& options);
 
 std::string CompareHelp();
+
+class ArgumentList;
+
+/// The options of `silhouette compare ...`, and its --backend into
+/// `backend`; throws UsageError.
+CompareOptions ParseCompare(ArgumentList& arguments, RenderBackend& backend);
 
 } // namespace cli
 

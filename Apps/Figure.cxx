@@ -1,5 +1,7 @@
 #include "Figure.h"
 
+#include "ArgumentList.h"
+#include "CameraOptions.h"
 #include "CliErrors.h"
 #include "Compare.h"
 #include "DataFolder.h"
@@ -299,6 +301,69 @@ Options:
 Camera options as for 'smooth' (--size is the size of ONE panel, default
 1024x768; the framing camera frames the original mesh).
 )";
+}
+
+FigureOptions ParseFigure(ArgumentList& arguments, RenderBackend& backend)
+{
+  FigureOptions options;
+  while (!arguments.AtEnd())
+  {
+    const std::string word = arguments.Take();
+    if (!LooksLikeOption(word))
+    {
+      if (!options.Input.empty())
+      {
+        throw UsageError(
+          "unexpected argument '" + word + "' (INPUT is already '" + options.Input + "')");
+      }
+      options.Input = word;
+      continue;
+    }
+    const Option option = SplitOption(word);
+    if (option.Name == "-o" || option.Name == "--output")
+    {
+      options.Output = arguments.TakeValue(option);
+    }
+    else if (option.Name == "--plot")
+    {
+      options.Plot = arguments.TakeValue(option);
+    }
+    else if (option.Name == "--coarse-triangles")
+    {
+      options.CoarseTriangles = ParseCount(option, arguments.TakeValue(option), 4, 10000000);
+    }
+    else if (option.Name == "--fine-level")
+    {
+      options.FineLevel = ParseCount(option, arguments.TakeValue(option), 1, 5);
+    }
+    else if (option.Name == "--frames")
+    {
+      options.Frames = ParseCount(option, arguments.TakeValue(option), 1, 100000);
+    }
+    else if (option.Name == "--data")
+    {
+      options.DataDirectory = arguments.TakeValue(option);
+    }
+    else if (option.Name == "--backend")
+    {
+      backend = ParseRenderBackend(option.Name, arguments.TakeValue(option));
+    }
+    else if (!ParseCameraOption(option, arguments, options.Camera))
+    {
+      throw UsageError(
+        "unknown option '" + option.Name + "' for 'figure'; run 'silhouette figure --help'");
+    }
+  }
+  if (options.Input.empty())
+  {
+    throw UsageError("'figure' needs a model name or a mesh file");
+  }
+  if (options.Output.empty())
+  {
+    throw UsageError("'figure' needs '-o FIGURE.png'");
+  }
+  CheckCameraOptions(options.Camera);
+  return options;
 }
 
 } // namespace cli

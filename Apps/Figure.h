@@ -2,6 +2,7 @@
 #define Figure_h
 
 #include "CameraOptions.h"
+#include "RenderingBackend.h"
 
 #include <string>
 
@@ -25,6 +26,12 @@ struct FigureOptions
 void RunFigure(const FigureOptions& options);
 
 std::string FigureHelp();
+
+class ArgumentList;
+
+/// The options of `silhouette figure ...`, and its --backend into
+/// `backend`; throws UsageError.
+FigureOptions ParseFigure(ArgumentList& arguments, RenderBackend& backend);
 
 } // namespace cli
 

@@ -1,5 +1,6 @@
 #include "Generate.h"
 
+#include "ArgumentList.h"
 #include "CliErrors.h"
 #include "MeshIO.h"
 #include "VtkErrorLog.h"
@@ -126,6 +127,116 @@ void RunGenerate(const GenerateOptions& options)
   WriteMesh(mesh, options.Output);
   std::cout << "wrote " << options.Output << ": " << mesh->GetNumberOfPoints() << " points, "
             << mesh->GetNumberOfPolys() << " triangles, exact point normals\n";
+}
+
+namespace
+{
+
+// The options of one shape only, and the shapes they apply to.
+struct ShapeOption
+{
+  const char* Name;
+  bool Sphere;
+  bool Torus;
+};
+const ShapeOption ShapeOptions[] = {
+  { "--level", true, false },
+  { "--radius", true, true },
+  { "--ring-resolution", false, true },
+  { "--tube-resolution", false, true },
+  { "--tube-radius", false, true },
+};
+
+// Refuses an option given for a shape it does not shape (it was ignored).
+void CheckShapeOptions(GeneratedShape shape, const std::vector<std::string>& given)
+{
+  for (const std::string& name : given)
+  {
+    for (const ShapeOption& option : ShapeOptions)
+    {
+      if (name != option.Name)
+      {
+        continue;
+      }
+      const bool applies = shape == GeneratedShape::Sphere ? option.Sphere : option.Torus;
+      if (!applies)
+      {
+        throw UsageError("option '" + name + "' applies to a " +
+          (option.Sphere ? "sphere" : "torus") + ", not a " +
+          (shape == GeneratedShape::Sphere ? "sphere" : "torus"));
+      }
+    }
+  }
+}
+
+} // namespace
+
+GenerateOptions ParseGenerate(ArgumentList& arguments)
+{
+  GenerateOptions options;
+  bool haveShape = false;
+  std::vector<std::string> given; // the options of one shape that were given
+  while (!arguments.AtEnd())
+  {
+    const std::string word = arguments.Take();
+    if (!LooksLikeOption(word))
+    {
+      if (haveShape)
+      {
+        throw UsageError("unexpected argument '" + word + "' (the shape is already given)");
+      }
+      if (word != "sphere" && word != "torus")
+      {
+        throw UsageError("'generate' makes a sphere or a torus, not '" + word + "'");
+      }
+      options.Shape = word == "sphere" ? GeneratedShape::Sphere : GeneratedShape::Torus;
+      haveShape = true;
+      continue;
+    }
+    const Option option = SplitOption(word);
+    given.push_back(option.Name);
+    if (option.Name == "-o" || option.Name == "--output")
+    {
+      options.Output = arguments.TakeValue(option);
+    }
+    else if (option.Name == "--level")
+    {
+      options.Level = ParseCount(option, arguments.TakeValue(option), 0, 8);
+    }
+    else if (option.Name == "--ring-resolution")
+    {
+      options.RingResolution = ParseCount(option, arguments.TakeValue(option), 3, 100000);
+    }
+    else if (option.Name == "--tube-resolution")
+    {
+      options.TubeResolution = ParseCount(option, arguments.TakeValue(option), 3, 100000);
+    }
+    else if (option.Name == "--radius" || option.Name == "--tube-radius")
+    {
+      const std::string text = arguments.TakeValue(option);
+      const double value = ParseNumber(option.Name, text);
+      if (!(value > 0.0))
+      {
+        throw UsageError("option '" + option.Name + "' needs a number above 0, got '" + text + "'");
+      }
+      (option.Name == "--radius" ? options.Radius : options.TubeRadius) = value;
+    }
+    else
+    {
+      throw UsageError(
+        "unknown option '" + option.Name + "' for 'generate'; run 'silhouette generate --help'");
+    }
+  }
+  if (!haveShape)
+  {
+    throw UsageError("'generate' needs a shape: sphere or torus");
+  }
+  CheckShapeOptions(options.Shape, given);
+  if (options.Output.empty())
+  {
+    throw UsageError("'generate' needs '-o OUTPUT'");
+  }
+  return options;
 }
 
 } // namespace cli

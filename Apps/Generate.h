@@ -27,6 +27,12 @@ struct GenerateOptions
 /// (vtkIcosphereSource or vtkTorusSurfaceSource) to a .vtp or .ply file.
 void RunGenerate(const GenerateOptions& options);
 
+class ArgumentList;
+
+/// The options of `silhouette generate ...` (the words after the command);
+/// throws UsageError.
+GenerateOptions ParseGenerate(ArgumentList& arguments);
+
 } // namespace cli
 
 #endif

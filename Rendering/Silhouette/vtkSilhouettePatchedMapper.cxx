@@ -24,6 +24,7 @@
 
 #include <algorithm>
 #include <iterator>
+#include <string>
 
 // The helper that draws the patch. It differs from its superclass in one
 // thing: in hardware-selection passes its cell ids start at CellIdOffset and
@@ -447,6 +448,27 @@ void vtkSilhouettePatchedMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* ac
   // selection's maximum ids (UpdateMaximumPointCellIds below).
   this->Superclass::RenderPieceStart(ren, act);
   this->ApplyHidden(ren, act);
+}
+
+void vtkSilhouettePatchedMapper::ReplaceShaderNormal(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::ReplaceShaderNormal(shaders, ren, act);
+  // The point normals' line of the fragment shader, as VTK 9.1 writes it;
+  // where it is not there (no point normals), nothing is replaced.
+  vtkShader* fragment = shaders[vtkShader::Fragment];
+  if (!fragment)
+  {
+    return;
+  }
+  std::string source = fragment->GetSource();
+  if (vtkShaderProgram::Substitute(source, "vec3 normalVCVSOutput = normalize(normalVCVSOutput);",
+        "vec3 normalVCVSOutput = dot(normalVCVSOutput, normalVCVSOutput) > 0.0 ?\n"
+        "    normalize(normalVCVSOutput) : vec3(0.0, 0.0, 1.0);",
+        false))
+  {
+    fragment->SetSource(source);
+  }
 }
 
 void vtkSilhouettePatchedMapper::UpdateMaximumPointCellIds(vtkRenderer* ren, vtkActor* act)

@@ -26,6 +26,11 @@
  * picks the input's points). Representations other than surface draw the
  * input whole, without the patch.
  *
+ * Points with a zero normal (those only the input's lines and vertices use:
+ * the smoothing, as vtkPolyDataNormals, gives them none) are lit as facing
+ * the viewer, as vtkOpenGLPolyDataMapper lights lines without normals; its
+ * own shader normalizes the zero vector and draws them black.
+ *
  * Invariant: after RenderPieceStart the triangles drawn degenerate are
  * exactly the patch's hidden ones (or none, where the patch is not drawn);
  * an index-buffer rebuild by the superclass restores every triangle, and
@@ -75,6 +80,8 @@ protected:
 
   void BuildIBO(vtkRenderer* ren, vtkActor* act, vtkPolyData* poly) override;
   void UpdateMaximumPointCellIds(vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderNormal(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
 
 private:
   vtkSilhouettePatchedMapper(const vtkSilhouettePatchedMapper&) = delete;

@@ -2,7 +2,8 @@
 // points, the same cells) keeps the base mesh's cells and draws what the
 // filter's output draws, frame after frame; and one mapper drawn in two
 // views in turn keeps both views' patches (TestSmoothingMapper has the
-// cases of one view).
+// cases of one view). Besides: the input's own lines, whose points get no
+// normal, are lit as facing the viewer, not drawn black.
 
 #include "MapperTestScene.h"
 #include "SilhouetteTestSupport.h"
@@ -284,6 +285,97 @@ bool CheckViewsInTurn(vtkPolyData* bunny)
   return ok;
 }
 
+// The bunny with a polyline of points of its own beside it (a marker line,
+// as a ParaView user's feature lines): the smoothing gives those points a
+// zero normal, as vtkPolyDataNormals does. Drawn by the mapper, the line's
+// pixels (those that differ from the bunny drawn without it) must be lit:
+// their mean grey at least MinimumLineGrey. The wrong variant, the filter's
+// output through vtkPolyDataMapper, draws them black.
+bool CheckLinesAreLit(vtkPolyData* bunny)
+{
+  // Measured: 253 (the mapper), 0 (filter + vtkPolyDataMapper).
+  constexpr double MinimumLineGrey = 60.0;
+  auto withLine = vtkSmartPointer<vtkPolyData>::New();
+  withLine->DeepCopy(bunny);
+  double bounds[6];
+  bunny->GetBounds(bounds);
+  vtkPoints* points = withLine->GetPoints();
+  const double x = bounds[1] + 0.1 * (bounds[1] - bounds[0]);
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell(4);
+  for (int k = 0; k < 4; ++k)
+  {
+    const double t = k / 3.0;
+    lines->InsertCellPoint(points->InsertNextPoint(
+      x, bounds[2] + t * (bounds[3] - bounds[2]), 0.5 * (bounds[4] + bounds[5])));
+  }
+  withLine->SetLines(lines);
+  if (withLine->GetPointData()->GetNormals())
+  {
+    withLine->GetPointData()->SetNormals(nullptr); // the bunny's are per its points only
+  }
+  // The mesh's cell data (if any) would be a value short: none is kept.
+  withLine->GetCellData()->Initialize();
+  vtkNew<vtkPolyData> frame; // frames both images alike: the mesh with the line
+  frame->ShallowCopy(withLine);
+
+  auto linePixelsGrey = [&](bool viaMapper, double& grey) {
+    std::vector<unsigned char> images[2];
+    for (int withTheLine = 0; withTheLine < 2; ++withTheLine)
+    {
+      Scene scene;
+      scene.Actor->GetProperty()->SetLineWidth(6);
+      scene.Renderer->SetBackground(0.3, 0.3, 0.3); // a black line shows
+      vtkNew<vtkSilhouetteSmoothingMapper> mapper;
+      vtkNew<vtkSilhouetteSmoothingFilter> filter;
+      vtkNew<vtkPolyDataMapper> plain;
+      vtkPolyData* input = withTheLine ? withLine.Get() : bunny;
+      if (viaMapper)
+      {
+        mapper->SetInputData(input);
+        scene.Actor->SetMapper(mapper);
+      }
+      else
+      {
+        filter->SetInputData(input);
+        filter->SetRenderer(scene.Renderer);
+        plain->SetInputConnection(filter->GetOutputPort());
+        scene.Actor->SetMapper(plain);
+      }
+      Configure(scene.Actor->GetMapper(), scene.Actor, Colouring::Plain, nullptr);
+      scene.Look(frame, 0);
+      images[withTheLine] = scene.Pixels();
+    }
+    double sum = 0.0;
+    long count = 0;
+    for (std::size_t p = 0; p + 2 < images[0].size(); p += 3)
+    {
+      const unsigned char* a = &images[0][p];
+      const unsigned char* b = &images[1][p];
+      if (a[0] != b[0] || a[1] != b[1] || a[2] != b[2])
+      {
+        sum += (b[0] + b[1] + b[2]) / 3.0;
+        ++count;
+      }
+    }
+    grey = count > 0 ? sum / count : 0.0;
+    return count;
+  };
+  double mapperGrey = 0.0;
+  double plainGrey = 0.0;
+  const long mapperPixels = linePixelsGrey(true, mapperGrey);
+  const long plainPixels = linePixelsGrey(false, plainGrey);
+  std::printf("the input's own line: %ld pixels of mean grey %.0f through the mapper (at least "
+              "%.0f), %ld of %.0f through filter + vtkPolyDataMapper (must be less)\n",
+    mapperPixels, mapperGrey, MinimumLineGrey, plainPixels, plainGrey);
+  if (mapperPixels < 100 || !(mapperGrey >= MinimumLineGrey) || !(plainGrey < MinimumLineGrey))
+  {
+    std::printf("FAIL: the input's lines should be lit through the mapper\n");
+    return false;
+  }
+  return true;
+}
+
 int TestSmoothingMapperUpdates(int argc, char* argv[])
 {
   // One window open for the whole test (see TestSmoothingMapper).
@@ -303,5 +395,6 @@ int TestSmoothingMapperUpdates(int argc, char* argv[])
   vtkSmartPointer<vtkTexture> mapperTexture = Checkers();
   bool ok = CheckDeformingMesh(meshes.Bunny, filterTexture, mapperTexture);
   ok = CheckViewsInTurn(meshes.Bunny) && ok;
+  ok = CheckLinesAreLit(meshes.Bunny) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

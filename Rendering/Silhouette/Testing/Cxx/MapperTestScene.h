@@ -212,6 +212,18 @@ inline void Configure(vtkMapper* mapper, vtkActor* actor, Colouring colouring, v
   }
 }
 
+// A window kept open for the whole test: each case closes its own, and an X
+// server whose last client leaves resets, refusing the next connection while
+// it does (xvfb-run starts Xvfb without -noreset).
+inline vtkSmartPointer<vtkRenderWindow> KeepTheDisplayOpen()
+{
+  auto keeper = vtkSmartPointer<vtkRenderWindow>::New();
+  keeper->SetOffScreenRendering(1);
+  keeper->SetSize(8, 8);
+  keeper->Render();
+  return keeper;
+}
+
 inline vtkSmartPointer<vtkTexture> Checkers()
 {
   vtkNew<vtkImageData> image;

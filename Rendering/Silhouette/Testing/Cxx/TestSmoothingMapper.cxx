@@ -331,13 +331,7 @@ bool CheckGhostCells(vtkPolyData* sphere, vtkTexture* filterTexture, vtkTexture*
 
 int TestSmoothingMapper(int argc, char* argv[])
 {
-  // One window open for the whole test: each case closes its own, and an X
-  // server whose last client leaves resets, refusing the next connection
-  // while it does (xvfb-run starts Xvfb without -noreset).
-  vtkNew<vtkRenderWindow> keeper;
-  keeper->SetOffScreenRendering(1);
-  keeper->SetSize(8, 8);
-  keeper->Render();
+  const vtkSmartPointer<vtkRenderWindow> keeper = KeepTheDisplayOpen();
   const silhouette_test::SphereTorusBunny meshes =
     silhouette_test::MakeSphereTorusBunny(argc, argv);
   if (!meshes.Bunny)

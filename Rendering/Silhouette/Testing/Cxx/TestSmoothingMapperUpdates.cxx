@@ -378,11 +378,7 @@ bool CheckLinesAreLit(vtkPolyData* bunny)
 
 int TestSmoothingMapperUpdates(int argc, char* argv[])
 {
-  // One window open for the whole test (see TestSmoothingMapper).
-  vtkNew<vtkRenderWindow> keeper;
-  keeper->SetOffScreenRendering(1);
-  keeper->SetSize(8, 8);
-  keeper->Render();
+  const vtkSmartPointer<vtkRenderWindow> keeper = KeepTheDisplayOpen();
   const silhouette_test::SphereTorusBunny meshes =
     silhouette_test::MakeSphereTorusBunny(argc, argv);
   if (!meshes.Bunny)

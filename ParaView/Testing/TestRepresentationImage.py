@@ -12,6 +12,8 @@ the LOD geometry smoothed, and a cell selection of the whole view (hardware
 selection) must pick the same cells as on Surface. Settings come from ctest
 through the environment."""
 import os
+import sys
+import tempfile
 
 from paraview import servermanager, simple
 from vtkmodules.vtkIOImage import vtkPNGWriter
@@ -118,6 +120,35 @@ display.SilhouetteTolerance = 0.5
 print("SilhouetteTolerance 0.1: %d triangles drawn in place of the replaced ones (0.5: %d)" % (fine_patch, patches[-1]))
 if fine_patch <= patches[-1]:
     failures.append("SilhouetteTolerance 0.1 drew %d triangles, 0.5 drew %d" % (fine_patch, patches[-1]))
+
+
+def standard_error_of(action):
+    """What `action` writes to the process's standard error (VTK's warnings)."""
+    sys.stderr.flush()
+    saved = os.dup(2)
+    with tempfile.TemporaryFile() as captured:
+        os.dup2(captured.fileno(), 2)
+        try:
+            action()
+        finally:
+            os.dup2(saved, 2)
+            os.close(saved)
+        captured.seek(0)
+        return captured.read().decode(errors="replace")
+
+
+# An out-of-range setting is clamped with one warning, not one from each of
+# the representation's four internal smoothings (4 before 2026-12-04).
+def set_negative_tolerance():
+    display.SilhouetteTolerance = -1.0
+    display.UpdateVTKObjects()
+
+
+warnings = standard_error_of(set_negative_tolerance).count("SetTolerance(-1)")
+display.SilhouetteTolerance = 0.5
+print("SilhouetteTolerance -1: %d warning(s) (1 expected)" % warnings)
+if warnings != 1:
+    failures.append("SilhouetteTolerance -1 gave %d warnings, not 1" % warnings)
 
 
 # LOD: interactive renders draw the decimated copy of the data (here always:

@@ -100,10 +100,23 @@ void vtkSilhouetteSmoothingRepresentation::SetSilhouetteSmoothLOD(bool smoothLOD
   this->UpdateSmoothingSwitches();
 }
 
+// The first mapper's filter takes the value (and warns, once, when it
+// clamps it); the others take what it kept.
 #define SILHOUETTE_FORWARD(name, type)                                                             \
   void vtkSilhouetteSmoothingRepresentation::SetSilhouette##name(type value)                       \
   {                                                                                                \
-    this->ForEachMapper([value](vtkSilhouetteSmoothingFilter* f) { f->Set##name(value); });        \
+    vtkSilhouetteSmoothingFilter* first = nullptr;                                                 \
+    this->ForEachMapper([value, &first](vtkSilhouetteSmoothingFilter* f) {                         \
+      if (!first)                                                                                  \
+      {                                                                                            \
+        first = f;                                                                                 \
+        f->Set##name(value);                                                                       \
+      }                                                                                            \
+      else                                                                                         \
+      {                                                                                            \
+        f->Set##name(first->Get##name());                                                          \
+      }                                                                                            \
+    });                                                                                            \
   }
 
 SILHOUETTE_FORWARD(Tolerance, double)

@@ -1,6 +1,7 @@
 #include "vtkSilhouetteViewTracker.h"
 
 #include "vtkCamera.h"
+#include "vtkHomogeneousTransform.h"
 #include "vtkMatrix4x4.h"
 
 #include <algorithm>
@@ -51,6 +52,12 @@ ViewTracker::Key ViewTracker::KeyOf(
   camera->GetScreenBottomLeft(p + 13);
   p[16] = camera->GetLeftEye();
   std::copy(model, model + 16, v + 49);
+  // The user transform's matrix, by value: it can change without the camera.
+  if (vtkHomogeneousTransform* user = camera->GetUserTransform())
+  {
+    const vtkMatrix4x4* matrix = user->GetMatrix();
+    std::copy(&matrix->Element[0][0], &matrix->Element[0][0] + 16, v + 65);
+  }
   return key;
 }
 

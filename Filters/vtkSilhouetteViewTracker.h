@@ -20,7 +20,8 @@ namespace vtkSilhouetteFilterSupport
 /// would re-run the filter for nothing, while a prop's matrix or a window's
 /// size can change without touching the camera at all. So the view is the
 /// camera's model-view matrix (position, orientation, model and user-view
-/// transforms) and its projection parameters (not the clipping range), the
+/// transforms), its projection parameters (not the clipping range) and user
+/// transform (applied after the projection), the
 /// model matrix and the viewport, compared bitwise (a NaN in the view compares
 /// equal to itself instead of re-running the filter on every update), except
 /// for the view angle, which may differ by a float's rounding
@@ -31,7 +32,7 @@ public:
   /// A view, by value: what Update compares.
   struct Key
   {
-    std::array<double, 16 + 16 + 17 + 16> Values{};
+    std::array<double, 16 + 16 + 17 + 16 + 16> Values{};
     std::array<int, 2> Viewport{};
   };
   static Key KeyOf(vtkCamera* camera, const double model[16], std::array<int, 2> viewport);

@@ -41,6 +41,7 @@
 #include <cmath>
 #include <cstdio>
 #include <set>
+#include <vector>
 
 namespace
 {
@@ -88,21 +89,30 @@ bool ReExecutesOnlyWhenTheViewChanges()
   smoother->SetViewportSize(800, 600);
   smoother->Update();
   CHECK(runs.Count == 3, "a new viewport size re-runs");
+  vtkNew<vtkTransform> userTransform; // applied after the projection
+  userTransform->Translate(0.2, 0.0, 0.0);
+  camera->SetUserTransform(userTransform);
+  smoother->Update();
+  CHECK(runs.Count == 4, "a camera user transform re-runs");
+  userTransform->Translate(0.1, 0.0, 0.0); // the camera's MTime stays
+  smoother->Update();
+  CHECK(runs.Count == 5, "a change to the camera's user transform re-runs");
+  camera->SetUserTransform(nullptr);
 
   vtkNew<vtkActor> actor;
   smoother->SetProp3D(actor);
   smoother->Update();
-  CHECK(runs.Count == 4, "setting a prop re-runs");
+  CHECK(runs.Count == 6, "setting a prop re-runs");
   actor->GetProperty()->SetColor(1, 0, 0);
   smoother->Update();
-  CHECK(runs.Count == 4, "a colour change does not re-run");
+  CHECK(runs.Count == 6, "a colour change does not re-run");
   actor->SetPosition(0.5, 0, 0);
   smoother->Update();
-  CHECK(runs.Count == 5, "moving the prop re-runs");
+  CHECK(runs.Count == 7, "moving the prop re-runs");
 
   sphere->SetRadius(2.0);
   smoother->Update();
-  CHECK(runs.Count == 6, "a new input re-runs");
+  CHECK(runs.Count == 8, "a new input re-runs");
   double bounds[6];
   smoother->GetOutput()->GetBounds(bounds);
   CHECK(bounds[1] > 1.9, "the cache follows the new input");
@@ -522,6 +532,131 @@ bool ParallelProjection()
 
 } // namespace
 
+// Whether two meshes have the same points (bit for bit) and polygons.
+bool SameMesh(vtkPolyData* a, vtkPolyData* b)
+{
+  if (a->GetNumberOfPoints() != b->GetNumberOfPoints() ||
+    a->GetNumberOfPolys() != b->GetNumberOfPolys())
+  {
+    return false;
+  }
+  for (vtkIdType p = 0; p < a->GetNumberOfPoints(); ++p)
+  {
+    double x[3];
+    double y[3];
+    a->GetPoint(p, x);
+    b->GetPoint(p, y);
+    if (x[0] != y[0] || x[1] != y[1] || x[2] != y[2])
+    {
+      return false;
+    }
+  }
+  vtkNew<vtkIdList> ca;
+  vtkNew<vtkIdList> cb;
+  vtkCellArray* pa = a->GetPolys();
+  vtkCellArray* pb = b->GetPolys();
+  for (vtkIdType c = 0; c < pa->GetNumberOfCells(); ++c)
+  {
+    pa->GetCellAtId(c, ca);
+    pb->GetCellAtId(c, cb);
+    if (ca->GetNumberOfIds() != cb->GetNumberOfIds())
+    {
+      return false;
+    }
+    for (vtkIdType k = 0; k < ca->GetNumberOfIds(); ++k)
+    {
+      if (ca->GetId(k) != cb->GetId(k))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// Cells edited in place: VTK 9.1's vtkCellArray::ReplaceCellAtId leaves the
+// cell array's MTime alone, and the user marks the mesh Modified(). The
+// filter must re-read the cells, not take the change for a move of the
+// points (a deforming mesh keeps its topology): its output equals a fresh
+// filter's on a copy of the edited mesh, and differs from the output before
+// the edit.
+bool CellsEditedInPlace()
+{
+  vtkNew<vtkIcosphereSource> sphere;
+  sphere->SetSubdivisionLevel(2);
+  sphere->Update();
+  vtkNew<vtkPolyData> mesh;
+  mesh->DeepCopy(sphere->GetOutput());
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(1.0, 2.0, 4.0);
+  vtkNew<vtkSilhouetteSmoothingFilter> smoother;
+  smoother->SetInputData(mesh);
+  smoother->SetCamera(camera);
+  smoother->Update();
+  vtkNew<vtkPolyData> before;
+  before->DeepCopy(smoother->GetOutput());
+
+  // Flip the shared edge of disjoint pairs of neighbouring triangles:
+  // (a, b, c) and (c, b, d) become (a, b, d) and (a, d, c).
+  mesh->BuildLinks();
+  vtkCellArray* polys = mesh->GetPolys();
+  const vtkMTimeType polysTime = polys->GetMTime();
+  std::vector<bool> used(static_cast<std::size_t>(mesh->GetNumberOfCells()), false);
+  vtkNew<vtkIdList> ids;
+  vtkNew<vtkIdList> edge;
+  vtkNew<vtkIdList> neighbours;
+  vtkNew<vtkIdList> other;
+  int flipped = 0;
+  for (vtkIdType t = 0; t < mesh->GetNumberOfCells(); ++t)
+  {
+    if (used[static_cast<std::size_t>(t)])
+    {
+      continue;
+    }
+    mesh->GetCellPoints(t, ids);
+    const vtkIdType a = ids->GetId(0);
+    const vtkIdType b = ids->GetId(1);
+    const vtkIdType c = ids->GetId(2);
+    edge->SetNumberOfIds(2);
+    edge->SetId(0, b);
+    edge->SetId(1, c);
+    mesh->GetCellNeighbors(t, edge, neighbours);
+    if (neighbours->GetNumberOfIds() != 1 || used[static_cast<std::size_t>(neighbours->GetId(0))])
+    {
+      continue;
+    }
+    const vtkIdType n = neighbours->GetId(0);
+    mesh->GetCellPoints(n, other);
+    vtkIdType d = -1;
+    for (vtkIdType k = 0; k < 3; ++k)
+    {
+      d = other->GetId(k) != b && other->GetId(k) != c ? other->GetId(k) : d;
+    }
+    const vtkIdType first[3] = { a, b, d };
+    const vtkIdType second[3] = { a, d, c };
+    polys->ReplaceCellAtId(t, 3, first);
+    polys->ReplaceCellAtId(n, 3, second);
+    used[static_cast<std::size_t>(t)] = used[static_cast<std::size_t>(n)] = true;
+    ++flipped;
+  }
+  mesh->Modified(); // as a user would; the cell array's time stays
+  smoother->Update();
+
+  vtkNew<vtkPolyData> copy;
+  copy->DeepCopy(mesh);
+  vtkNew<vtkSilhouetteSmoothingFilter> fresh;
+  fresh->SetInputData(copy);
+  fresh->SetCamera(camera);
+  fresh->Update();
+  std::printf("cells edited in place: %d edges flipped (the polygons' MTime %s)\n", flipped,
+    polys->GetMTime() == polysTime ? "unchanged" : "changed");
+  CHECK(flipped > 20, "the edit flips many edges");
+  CHECK(!SameMesh(before, fresh->GetOutput()), "the edit changes the output");
+  CHECK(SameMesh(smoother->GetOutput(), fresh->GetOutput()),
+    "cells edited in place give a fresh filter's output");
+  return true;
+}
+
 int TestFilterPipeline(int, char*[])
 {
   bool ok = ReExecutesOnlyWhenTheViewChanges();
@@ -532,5 +667,6 @@ int TestFilterPipeline(int, char*[])
   ok = CellTypes() && ok;
   ok = IndependentOfThreadCount() && ok;
   ok = ParallelProjection() && ok;
+  ok = CellsEditedInPlace() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

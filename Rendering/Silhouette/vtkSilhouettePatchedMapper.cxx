@@ -5,6 +5,7 @@
 #include "vtkCellArrayIterator.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
 #include "vtkIdTypeArray.h"
@@ -155,6 +156,7 @@ void vtkSilhouettePatchedMapper::SetPatch(const std::vector<vtkIdType>& hidden, 
   }
   this->PatchCellIds = patchCellIds;
   this->PatchPointSources = patchPointSources;
+  this->PatchFieldsCopied = false;
 }
 
 // Called when the superclass builds its buffers (an input or representation
@@ -450,6 +452,36 @@ void vtkSilhouettePatchedMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* ac
   this->ApplyHidden(ren, act);
 }
 
+void vtkSilhouettePatchedMapper::MapDataArrayToVertexAttribute(
+  const char* vertexAttributeName, const char* dataArrayName, int fieldAssociation, int componentno)
+{
+  this->Superclass::MapDataArrayToVertexAttribute(
+    vertexAttributeName, dataArrayName, fieldAssociation, componentno);
+  this->Patch->MapDataArrayToVertexAttribute(
+    vertexAttributeName, dataArrayName, fieldAssociation, componentno);
+}
+
+void vtkSilhouettePatchedMapper::MapDataArrayToMultiTextureAttribute(
+  const char* textureName, const char* dataArrayName, int fieldAssociation, int componentno)
+{
+  this->Superclass::MapDataArrayToMultiTextureAttribute(
+    textureName, dataArrayName, fieldAssociation, componentno);
+  this->Patch->MapDataArrayToMultiTextureAttribute(
+    textureName, dataArrayName, fieldAssociation, componentno);
+}
+
+void vtkSilhouettePatchedMapper::RemoveVertexAttributeMapping(const char* vertexAttributeName)
+{
+  this->Superclass::RemoveVertexAttributeMapping(vertexAttributeName);
+  this->Patch->RemoveVertexAttributeMapping(vertexAttributeName);
+}
+
+void vtkSilhouettePatchedMapper::RemoveAllVertexAttributeMappings()
+{
+  this->Superclass::RemoveAllVertexAttributeMappings();
+  this->Patch->RemoveAllVertexAttributeMappings();
+}
+
 void vtkSilhouettePatchedMapper::ReplaceShaderNormal(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
@@ -499,8 +531,22 @@ void vtkSilhouettePatchedMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act
   if (this->GetMTime() > this->PatchSettingsTime)
   {
     this->Patch->vtkMapper::ShallowCopy(this);
+    this->Patch->SetSeamlessU(this->GetSeamlessU());
+    this->Patch->SetSeamlessV(this->GetSeamlessV());
     this->Patch->SetVBOShiftScaleMethod(this->GetVBOShiftScaleMethod());
     this->PatchSettingsTime = this->GetMTime();
+  }
+  // The input's field data (a field-data tuple colours every cell alike),
+  // copied into an object of the patch's own: each new patch comes with its
+  // field data, and a shallow copy may write into the object it holds.
+  vtkFieldData* fields = this->CurrentInput ? this->CurrentInput->GetFieldData() : nullptr;
+  if (fields && (!this->PatchFieldsCopied || fields->GetMTime() > this->PatchFieldsTime))
+  {
+    vtkNew<vtkFieldData> copy;
+    copy->ShallowCopy(fields);
+    this->PatchData->SetFieldData(copy);
+    this->PatchFieldsCopied = true;
+    this->PatchFieldsTime = fields->GetMTime();
   }
   this->Patch->CellIdOffset = static_cast<int>(this->PatchCellOffset);
   this->Patch->PointIdOffset = static_cast<int>(this->PatchPointOffset);

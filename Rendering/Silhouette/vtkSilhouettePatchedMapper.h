@@ -16,8 +16,9 @@
  *   the superclass made them;
  * - the patch is drawn in the same RenderPieceDraw by a helper
  *   vtkOpenGLPolyDataMapper with the same actor and this mapper's colouring
- *   settings (vtkMapper::ShallowCopy), so property, lighting, textures and
- *   lookup tables are the same.
+ *   settings (vtkMapper::ShallowCopy, SeamlessU/V, the attribute mappings)
+ *   and the input's field data (colouring by a field-data tuple), so
+ *   property, lighting, textures and lookup tables are the same.
  *
  * Hardware selection: the helper's cell ids start past the input's, and
  * ProcessSelectorPixelBuffers reports for each of its pixels the cell id
@@ -68,6 +69,16 @@ public:
   vtkIdType GetLastPatchedTriangles() const { return this->LastPatchedTriangles; }
   vtkIdType GetLastPatchCalls() const { return this->LastPatchCalls; }
 
+  ///@{
+  /// Also the patch's (it draws the same attributes).
+  void MapDataArrayToVertexAttribute(const char* vertexAttributeName, const char* dataArrayName,
+    int fieldAssociation, int componentno = -1) override;
+  void MapDataArrayToMultiTextureAttribute(const char* textureName, const char* dataArrayName,
+    int fieldAssociation, int componentno = -1) override;
+  void RemoveVertexAttributeMapping(const char* vertexAttributeName) override;
+  void RemoveAllVertexAttributeMappings() override;
+  ///@}
+
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceDraw(vtkRenderer* ren, vtkActor* act) override;
   void ReleaseGraphicsResources(vtkWindow* win) override;
@@ -116,6 +127,9 @@ private:
   vtkIdType PatchPointOffset = 0;
   bool PatchDrawnThisPass = false;
   vtkMTimeType PatchSettingsTime = 0;
+  // Whether the patch holds a copy of the input's field data, of this time.
+  bool PatchFieldsCopied = false;
+  vtkMTimeType PatchFieldsTime = 0;
   vtkIdType LastPatchedTriangles = 0;
   vtkIdType LastPatchCalls = 0;
 };

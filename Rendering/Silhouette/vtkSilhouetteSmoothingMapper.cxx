@@ -329,6 +329,8 @@ void vtkSilhouetteSmoothingMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   if (settings != internal.CopiedSettingsTime)
   {
     internal.Drawn->vtkMapper::ShallowCopy(this);
+    internal.Drawn->SetSeamlessU(this->SeamlessU); // vtkPolyDataMapper's, not vtkMapper's
+    internal.Drawn->SetSeamlessV(this->SeamlessV);
     internal.Drawn->SetStatic(1);
     internal.CopiedSettingsTime = settings;
   }
@@ -340,6 +342,35 @@ void vtkSilhouetteSmoothingMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     this->LastSmoothingSeconds = this->LastPrepareSeconds;
   }
   internal.Drawn->RenderPiece(ren, act);
+  this->TimeToDraw = internal.Drawn->GetTimeToDraw(); // what vtkLODActor weighs
+}
+
+void vtkSilhouetteSmoothingMapper::MapDataArrayToVertexAttribute(
+  const char* vertexAttributeName, const char* dataArrayName, int fieldAssociation, int componentno)
+{
+  this->Internal->Drawn->MapDataArrayToVertexAttribute(
+    vertexAttributeName, dataArrayName, fieldAssociation, componentno);
+  this->Modified();
+}
+
+void vtkSilhouetteSmoothingMapper::MapDataArrayToMultiTextureAttribute(
+  const char* textureName, const char* dataArrayName, int fieldAssociation, int componentno)
+{
+  this->Internal->Drawn->MapDataArrayToMultiTextureAttribute(
+    textureName, dataArrayName, fieldAssociation, componentno);
+  this->Modified();
+}
+
+void vtkSilhouetteSmoothingMapper::RemoveVertexAttributeMapping(const char* vertexAttributeName)
+{
+  this->Internal->Drawn->RemoveVertexAttributeMapping(vertexAttributeName);
+  this->Modified();
+}
+
+void vtkSilhouetteSmoothingMapper::RemoveAllVertexAttributeMappings()
+{
+  this->Internal->Drawn->RemoveAllVertexAttributeMappings();
+  this->Modified();
 }
 
 void vtkSilhouetteSmoothingMapper::ReleaseGraphicsResources(vtkWindow* win)

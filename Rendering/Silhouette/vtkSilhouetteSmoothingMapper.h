@@ -121,6 +121,21 @@ public:
    */
   vtkIdType GetSmoothingRunCount() const { return this->SmoothingRunCount; }
 
+  ///@{
+  /**
+   * Generic vertex attributes and the texture coordinates of named textures
+   * (multi-texturing), as vtkOpenGLPolyDataMapper takes them: handed to the
+   * mapper that draws (vtkPolyDataMapper's own are stubs). Point data only,
+   * as there.
+   */
+  void MapDataArrayToVertexAttribute(const char* vertexAttributeName, const char* dataArrayName,
+    int fieldAssociation, int componentno = -1) override;
+  void MapDataArrayToMultiTextureAttribute(const char* textureName, const char* dataArrayName,
+    int fieldAssociation, int componentno = -1) override;
+  void RemoveVertexAttributeMapping(const char* vertexAttributeName) override;
+  void RemoveAllVertexAttributeMappings() override;
+  ///@}
+
   void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
   void ReleaseGraphicsResources(vtkWindow* win) override;
   bool GetSupportsSelection() override { return true; }

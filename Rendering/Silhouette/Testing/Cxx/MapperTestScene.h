@@ -7,12 +7,14 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkHardwareSelector.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkImageData.h"
 #include "vtkLookupTable.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPlane.h"
 #include "vtkPlaneCollection.h"
@@ -51,7 +53,15 @@ enum class Colouring
   Plain,
   PointScalars,
   CellScalars,
-  Texture
+  Texture,
+  /// One tuple of a field-data array colours every cell.
+  FieldData,
+  /// Two textures of the property, each on its own coordinates
+  /// (MapDataArrayToMultiTextureAttribute).
+  MultiTexture,
+  /// Coordinates around the vertical axis, with the seam they jump across
+  /// closed by SeamlessU.
+  SeamlessTexture
 };
 
 // Renders `window` and returns its pixels.
@@ -148,6 +158,37 @@ inline vtkSmartPointer<vtkPolyData> Coloured(vtkPolyData* mesh, Colouring colour
   out->ShallowCopy(mesh);
   double bounds[6];
   mesh->GetBounds(bounds);
+  if (colouring == Colouring::FieldData)
+  {
+    vtkNew<vtkFloatArray> tint;
+    tint->SetName("Tint");
+    for (const float value : { 0.0f, 5.0f, 2.0f })
+    {
+      tint->InsertNextValue(value);
+    }
+    out->GetFieldData()->AddArray(tint);
+  }
+  if (colouring == Colouring::MultiTexture || colouring == Colouring::SeamlessTexture)
+  {
+    vtkNew<vtkFloatArray> around; // the active coordinates
+    around->SetName("TextureCoordinates");
+    around->SetNumberOfComponents(2);
+    vtkNew<vtkFloatArray> plane;
+    plane->SetName("PlaneCoordinates");
+    plane->SetNumberOfComponents(2);
+    const double* centre = mesh->GetCenter();
+    for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+    {
+      double x[3];
+      mesh->GetPoint(p, x);
+      const double u = 0.5 + std::atan2(x[2] - centre[2], x[0] - centre[0]) / (2.0 * vtkMath::Pi());
+      const double v = (x[1] - bounds[2]) / (bounds[3] - bounds[2] + 1e-30);
+      around->InsertNextTuple2(u, v);
+      plane->InsertNextTuple2(2.0 * (x[0] - bounds[0]) / (bounds[1] - bounds[0] + 1e-30), 2.0 * v);
+    }
+    out->GetPointData()->SetTCoords(around);
+    out->GetPointData()->AddArray(plane);
+  }
   if (colouring == Colouring::PointScalars || colouring == Colouring::Texture)
   {
     vtkNew<vtkFloatArray> values;
@@ -192,12 +233,29 @@ inline vtkSmartPointer<vtkPolyData> Coloured(vtkPolyData* mesh, Colouring colour
   return out;
 }
 
-inline void Configure(vtkMapper* mapper, vtkActor* actor, Colouring colouring, vtkTexture* texture)
+// `second`: the other texture of Colouring::MultiTexture (one per window).
+inline void Configure(vtkMapper* mapper, vtkActor* actor, Colouring colouring, vtkTexture* texture,
+  vtkTexture* second = nullptr)
 {
   actor->GetProperty()->SetColor(0.75, 0.78, 0.85);
   actor->GetProperty()->SetSpecular(0.3);
   actor->GetProperty()->SetSpecularPower(30);
-  actor->SetTexture(colouring == Colouring::Texture ? texture : nullptr);
+  actor->SetTexture(
+    colouring == Colouring::Texture || colouring == Colouring::SeamlessTexture ? texture : nullptr);
+  auto* polyMapper = vtkPolyDataMapper::SafeDownCast(mapper);
+  if (colouring == Colouring::MultiTexture && polyMapper && second)
+  {
+    actor->GetProperty()->SetTexture("checkers", texture);
+    actor->GetProperty()->SetTexture("stripes", second);
+    polyMapper->MapDataArrayToMultiTextureAttribute(
+      "checkers", "TextureCoordinates", vtkDataObject::FIELD_ASSOCIATION_POINTS);
+    polyMapper->MapDataArrayToMultiTextureAttribute(
+      "stripes", "PlaneCoordinates", vtkDataObject::FIELD_ASSOCIATION_POINTS);
+  }
+  if (colouring == Colouring::SeamlessTexture && polyMapper)
+  {
+    polyMapper->SetSeamlessU(true);
+  }
   mapper->SetScalarVisibility(
     colouring == Colouring::PointScalars || colouring == Colouring::CellScalars);
   if (colouring == Colouring::PointScalars)
@@ -208,6 +266,14 @@ inline void Configure(vtkMapper* mapper, vtkActor* actor, Colouring colouring, v
   if (colouring == Colouring::CellScalars)
   {
     mapper->SetScalarModeToUseCellData();
+    mapper->SetScalarRange(0.0, 6.0);
+  }
+  if (colouring == Colouring::FieldData)
+  {
+    mapper->SetScalarVisibility(true);
+    mapper->SetScalarModeToUseFieldData();
+    mapper->SelectColorArray("Tint");
+    mapper->SetFieldDataTupleId(1);
     mapper->SetScalarRange(0.0, 6.0);
   }
 }
@@ -222,6 +288,31 @@ inline vtkSmartPointer<vtkRenderWindow> KeepTheDisplayOpen()
   keeper->SetSize(8, 8);
   keeper->Render();
   return keeper;
+}
+
+// Stripes added to the first texture (Colouring::MultiTexture's second).
+inline vtkSmartPointer<vtkTexture> Stripes()
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(32, 32, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* pixels = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int y = 0; y < 32; ++y)
+  {
+    for (int x = 0; x < 32; ++x)
+    {
+      unsigned char* p = pixels + 3 * (y * 32 + x);
+      p[0] = (x / 4) % 2 ? 90 : 0;
+      p[1] = 0;
+      p[2] = (x / 4) % 2 ? 0 : 60;
+    }
+  }
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(image);
+  texture->InterpolateOff();
+  texture->RepeatOn();
+  texture->SetBlendingMode(vtkTexture::VTK_TEXTURE_BLENDING_MODE_ADD);
+  return texture;
 }
 
 inline vtkSmartPointer<vtkTexture> Checkers()

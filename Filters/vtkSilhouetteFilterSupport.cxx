@@ -19,12 +19,12 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkPolygon.h"
 #include "vtkProp3D.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "PolygonTriangulation.h"
 #include "ShadingNormals.h"
 
 #include <glm/matrix.hpp>
@@ -294,42 +294,6 @@ bool FanCovers(const std::vector<glm::dvec3>& points, const vtkIdType* ids, vtkI
   return true;
 }
 
-// A concave polygon's triangles by VTK's ear cutting, wound as the polygon
-// is; false (nothing added) where it fails, as on a polygon that crosses
-// itself.
-bool EarCut(const std::vector<glm::dvec3>& points, const vtkIdType* ids, vtkIdType n,
-  std::vector<silsmooth::Triangle>& cells)
-{
-  glm::dvec3 normal;
-  PolygonNormal(points, ids, n, normal);
-  vtkNew<vtkPolygon> polygon;
-  polygon->GetPointIds()->SetNumberOfIds(n);
-  polygon->GetPoints()->SetNumberOfPoints(n);
-  for (vtkIdType k = 0; k < n; ++k)
-  {
-    const glm::dvec3& p = points[static_cast<std::size_t>(ids[k])];
-    polygon->GetPointIds()->SetId(k, ids[k]);
-    polygon->GetPoints()->SetPoint(k, p.x, p.y, p.z);
-  }
-  vtkNew<vtkIdList> corners;
-  if (!polygon->Triangulate(corners) || corners->GetNumberOfIds() != 3 * (n - 2))
-  {
-    return false;
-  }
-  for (vtkIdType t = 0; t + 2 < corners->GetNumberOfIds(); t += 3)
-  {
-    vtkIdType a = ids[corners->GetId(t)];
-    vtkIdType b = ids[corners->GetId(t + 1)];
-    const vtkIdType c = ids[corners->GetId(t + 2)];
-    if (glm::dot(TriangleNormal(points, a, b, c), normal) < 0.0)
-    {
-      std::swap(a, b);
-    }
-    cells.push_back({ a, b, c });
-  }
-  return true;
-}
-
 } // namespace
 
 std::string ReadTriangles(vtkPolyData* input, Triangles& out)
@@ -340,17 +304,26 @@ std::string ReadTriangles(vtkPolyData* input, Triangles& out)
   const vtkIdType* pts = nullptr;
   vtkIdType cellId = input->GetNumberOfVerts() + input->GetNumberOfLines();
   auto polys = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
+  std::vector<silsmooth::Id> corners; // a concave polygon's, for the ear clipping
   for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell(), ++cellId)
   {
     polys->GetCurrentCell(npts, pts);
     out.TooSmallPolygons += npts < 3 ? 1 : 0;
     const std::size_t first = out.Cells.size();
-    if (npts > 3 && !FanCovers(out.Points, pts, npts) && EarCut(out.Points, pts, npts, out.Cells))
+    const bool concave = npts > 3 && !FanCovers(out.Points, pts, npts);
+    if (concave)
+    {
+      corners.assign(pts, pts + npts);
+    }
+    if (concave &&
+      silsmooth::triangulatePolygon(
+        out.Points, corners.data(), static_cast<std::size_t>(npts), out.Cells))
     {
       ++out.ConcavePolygons;
     }
     else
     {
+      out.UntriangulatedPolygons += concave ? 1 : 0;
       for (vtkIdType k = 1; k + 1 < npts; ++k)
       {
         out.Cells.push_back({ pts[0], pts[k], pts[k + 1] });

@@ -81,8 +81,12 @@ struct Triangles
   vtkIdType FirstNonFinitePoint = -1;
   /// Polygons of fewer than three points (they make no triangle).
   vtkIdType TooSmallPolygons = 0;
-  /// Polygons triangulated by ear cutting, not as fans.
+  /// Polygons triangulated by ear clipping (PolygonTriangulation.h), not as
+  /// fans: those a fan would fold over.
   vtkIdType ConcavePolygons = 0;
+  /// Polygons a fan folds over that ear clipping refused too (they cross
+  /// themselves, or have no area): split as fans all the same.
+  vtkIdType UntriangulatedPolygons = 0;
 };
 /// Returns an empty string, or the error to report (cells naming missing
 /// points).

@@ -158,6 +158,7 @@ struct vtkSilhouetteSmoothingFilter::Internals
   vtkIdType NonFinitePoints = 0;
   vtkIdType FirstNonFinitePoint = -1;
   vtkIdType TooSmallPolygons = 0;
+  vtkIdType UntriangulatedPolygons = 0;
   std::size_t DistinctTriangles = 0; ///< triangles with three distinct point ids
   vtkPolyData* CachedInput = nullptr;
   vtkMTimeType CachedInputTime = 0;
@@ -208,6 +209,7 @@ std::string vtkSilhouetteSmoothingFilter::Internals::Rebuild(
   this->NonFinitePoints = mesh.NonFinitePoints;
   this->FirstNonFinitePoint = mesh.FirstNonFinitePoint;
   this->TooSmallPolygons = mesh.TooSmallPolygons;
+  this->UntriangulatedPolygons = mesh.UntriangulatedPolygons;
   this->DistinctTriangles =
     static_cast<std::size_t>(std::count_if(mesh.Cells.begin(), mesh.Cells.end(),
       [](const silsmooth::Triangle& t) { return !silsmooth::hasRepeatedCorner(t); }));
@@ -455,6 +457,13 @@ int vtkSilhouetteSmoothingFilter::RequestViewData(vtkInformation*,
   {
     vtkWarningMacro(<< internal.TooSmallPolygons
                     << " polygons with fewer than 3 points make no triangle and were dropped.");
+  }
+  if (rebuilt && internal.UntriangulatedPolygons > 0) // once per input
+  {
+    vtkWarningMacro(<< internal.UntriangulatedPolygons
+                    << " concave polygons could not be triangulated (they cross themselves) and "
+                       "were split as fans from their first corner, which cover more than the "
+                       "polygon.");
   }
   if (rebuilt && droppedCells > 0) // said once per input, not every frame
   {

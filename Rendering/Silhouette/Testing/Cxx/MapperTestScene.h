@@ -290,53 +290,49 @@ inline vtkSmartPointer<vtkRenderWindow> KeepTheDisplayOpen()
   return keeper;
 }
 
-// Stripes added to the first texture (Colouring::MultiTexture's second).
-inline vtkSmartPointer<vtkTexture> Stripes()
+// A texture of size x size RGB pixels, each painted by paint(x, y, rgb);
+// unfiltered and repeated.
+inline vtkSmartPointer<vtkTexture> PaintedTexture(
+  int size, const std::function<void(int, int, unsigned char*)>& paint)
 {
   vtkNew<vtkImageData> image;
-  image->SetDimensions(32, 32, 1);
+  image->SetDimensions(size, size, 1);
   image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
   auto* pixels = static_cast<unsigned char*>(image->GetScalarPointer());
-  for (int y = 0; y < 32; ++y)
+  for (int y = 0; y < size; ++y)
   {
-    for (int x = 0; x < 32; ++x)
+    for (int x = 0; x < size; ++x)
     {
-      unsigned char* p = pixels + 3 * (y * 32 + x);
-      p[0] = (x / 4) % 2 ? 90 : 0;
-      p[1] = 0;
-      p[2] = (x / 4) % 2 ? 0 : 60;
+      paint(x, y, pixels + 3 * (y * size + x));
     }
   }
   auto texture = vtkSmartPointer<vtkTexture>::New();
   texture->SetInputData(image);
   texture->InterpolateOff();
   texture->RepeatOn();
+  return texture;
+}
+
+// Stripes added to the first texture (Colouring::MultiTexture's second).
+inline vtkSmartPointer<vtkTexture> Stripes()
+{
+  auto texture = PaintedTexture(32, [](int x, int, unsigned char* p) {
+    p[0] = (x / 4) % 2 ? 90 : 0;
+    p[1] = 0;
+    p[2] = (x / 4) % 2 ? 0 : 60;
+  });
   texture->SetBlendingMode(vtkTexture::VTK_TEXTURE_BLENDING_MODE_ADD);
   return texture;
 }
 
 inline vtkSmartPointer<vtkTexture> Checkers()
 {
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(64, 64, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  auto* pixels = static_cast<unsigned char*>(image->GetScalarPointer());
-  for (int y = 0; y < 64; ++y)
-  {
-    for (int x = 0; x < 64; ++x)
-    {
-      const bool dark = ((x / 8) + (y / 8)) % 2 == 0;
-      unsigned char* p = pixels + 3 * (y * 64 + x);
-      p[0] = dark ? 40 : 230;
-      p[1] = dark ? 60 : 200;
-      p[2] = dark ? 160 : 90;
-    }
-  }
-  auto texture = vtkSmartPointer<vtkTexture>::New();
-  texture->SetInputData(image);
-  texture->InterpolateOff();
-  texture->RepeatOn();
-  return texture;
+  return PaintedTexture(64, [](int x, int y, unsigned char* p) {
+    const bool dark = ((x / 8) + (y / 8)) % 2 == 0;
+    p[0] = dark ? 40 : 230;
+    p[1] = dark ? 60 : 200;
+    p[2] = dark ? 160 : 90;
+  });
 }
 
 } // namespace mapper_test

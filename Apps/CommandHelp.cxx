@@ -36,7 +36,8 @@ Commands:
       coarse, coarse + smoothing and a fine OpenSubdiv reference, measured
       from the same cameras: outline deviations and whole-frame times
   figure MODEL|MESH -o FIGURE.png [--plot PLOT.png] [options]
-      the four labelled panels of R. Xing's Fig. 1, and a time plot
+      the four labelled panels of Fig. 1 of R. Xing's paper on smooth
+      silhouettes (named in 'help figure'), and a time plot
   view [MODEL|MESH] [options]
       the interactive viewer (keys, overlays, a tolerance slider), or a
       headless orbit to numbered PNGs with per-frame figures

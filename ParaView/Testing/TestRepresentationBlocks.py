@@ -10,8 +10,10 @@ fail for what the representation drew before it honoured the blocks: with the
 block colours and opacities cleared, neither centre passes. A second frame
 must find both blocks (the opaque one drawn in the opaque pass, the other in
 the translucent pass), and a block that loses its colour but keeps its
-opacity must go back to the actor's colour, as on Surface. Settings come from
-ctest through the environment."""
+opacity must go back to the actor's colour, as on Surface. A block colour
+wins over colouring by an array, and a colour map's opacity puts the leaves
+in the translucent pass, both as on Surface. Settings come from ctest through
+the environment."""
 import os
 
 from paraview import simple
@@ -147,5 +149,39 @@ plain_left, plain_right = pixel(plain, 100, 100), pixel(plain, 300, 100)
 print("without block looks: the centres %s and %s (must fail both checks)" % (plain_left, plain_right))
 if red(plain_left) or half_blue(plain_right):
     failures.append("the checks pass without block looks: they cannot tell")
+
+# A block colour wins over colouring by an array, as on Surface (until
+# 2026-12-04 the leaf drew the array's colours).
+looks(block_colours, [])
+simple.ColorBy(display, ("POINTS", "Normals", "Magnitude"))
+display.Representation = "Surface"
+surface_left = pixel(image(), 100, 100)
+display.Representation = "Smooth Silhouette Surface"
+coloured_left = pixel(image(), 100, 100)
+print("block colour over colouring by Normals: %s (Surface: %s)" % (coloured_left, surface_left))
+if not near(coloured_left, surface_left) or not red(coloured_left):
+    failures.append("colouring by an array overrode the block colour: %s, Surface %s"
+        % (coloured_left, surface_left))
+
+# Opacity from the colour map (EnableOpacityMapping), at 0.3 everywhere: the
+# leaves belong in the translucent pass, as on Surface (until 2026-12-04
+# they were drawn in the opaque one, washed out).
+looks([], [])
+simple.ColorBy(display, ("POINTS", "Normals", "X"))
+colours = simple.GetColorTransferFunction("Normals")
+colours.EnableOpacityMapping = 1
+opacities = simple.GetOpacityTransferFunction("Normals")
+opacities.Points = [-1.0, 0.3, 0.5, 0.0, 1.0, 0.3, 0.5, 0.0]
+display.Representation = "Surface"
+surface = image()
+display.Representation = "Smooth Silhouette Surface"
+mapped = image()
+for x in (100, 300):
+    print("opacity from the colour map, centre %d: %s (Surface: %s)"
+        % (x, pixel(mapped, x, 100), pixel(surface, x, 100)))
+    if not near(pixel(mapped, x, 100), pixel(surface, x, 100)):
+        failures.append("with opacity from the colour map the centre %d is %s, Surface %s"
+            % (x, pixel(mapped, x, 100), pixel(surface, x, 100)))
+colours.EnableOpacityMapping = 0
 
 finish(failures)

@@ -208,20 +208,6 @@ void vtkSilhouetteCompositeMapper::RenderLeaf(vtkRenderer* ren, vtkActor* act, v
   const double opacity = look.HasOpacity ? look.Opacity : act->GetProperty()->GetOpacity();
   std::unique_ptr<Leaf>& leaf = used[index];
   auto known = this->Leaves.find(index);
-  if ((opacity < 1.0) != this->TranslucentPass && this->OtherPassDrawn)
-  {
-    // The other pass's leaf: kept as it is (its buffers, its patch).
-    if (known != this->Leaves.end())
-    {
-      leaf = std::move(known->second);
-      this->Leaves.erase(known);
-    }
-    else
-    {
-      used.erase(index);
-    }
-    return;
-  }
   if (known != this->Leaves.end())
   {
     leaf = std::move(known->second);
@@ -241,6 +227,8 @@ void vtkSilhouetteCompositeMapper::RenderLeaf(vtkRenderer* ren, vtkActor* act, v
     mapper->SetStatic(1);
     leaf->CopiedMapperTime = mapperTime;
   }
+  // A block's own colour wins over scalar colouring, as on Surface.
+  mapper->SetScalarVisibility(this->GetScalarVisibility() && !look.HasColor);
   const vtkMTimeType settingsTime = this->Settings->GetMTime();
   if (settingsTime != leaf->CopiedSettingsTime)
   {
@@ -253,6 +241,14 @@ void vtkSilhouetteCompositeMapper::RenderLeaf(vtkRenderer* ren, vtkActor* act, v
   if (mapper->GetInput() != pd)
   {
     mapper->SetInputData(pd);
+  }
+  // Translucent: by the block's or the actor's opacity, or by its colours'
+  // (a colour map with opacity mapping).
+  const bool translucent =
+    opacity < 1.0 || (mapper->GetScalarVisibility() && mapper->HasTranslucentPolygonalGeometry());
+  if (translucent != this->TranslucentPass && this->OtherPassDrawn)
+  {
+    return; // the other pass's leaf: kept as it is (its buffers, its patch)
   }
   mapper->Render(ren, this->ActorForLeaf(act, *leaf, look)); // Static: straight to RenderPiece
   const vtkIdType ghosts = leaf->Ghosts(pd);

@@ -25,9 +25,10 @@
  * - block visibility, colour and opacity are honoured, inherited down the
  *   tree as the superclass does: a leaf with a block colour or opacity of
  *   its own is drawn with a copy of the actor's property that has them (the
- *   colour as the ambient and diffuse colour, which scalar colouring
- *   overrides), a leaf whose opacity is below 1 in the translucent pass and
- *   the others in the opaque pass;
+ *   colour as the ambient and diffuse colour, with scalar colouring off for
+ *   that leaf, as Surface draws it), a leaf whose opacity is below 1 or whose
+ *   colours are not opaque (a colour map with opacity mapping) in the
+ *   translucent pass and the others in the opaque pass;
  * - hardware selection passes are rendered by the superclass, that is with the
  *   leaves as they are (not smoothed): the ids ParaView needs
  *   (vtkOriginalCellIds/PointIds, vtkProcessId, vtkCompositeIndex, the block's

@@ -54,6 +54,16 @@ vtkSilhouetteCheckedSetterMacro(vtkSilhouetteSmoothingFilter, FeatureAngle, doub
 vtkSilhouetteCheckedSetterMacro(
   vtkSilhouetteSmoothingFilter, WeldTolerance, double, 0.0, VTK_DOUBLE_MAX);
 vtkSilhouetteCheckedSetterMacro(vtkSilhouetteSmoothingFilter, FlatCreaseAngle, double, 0.0, 180.0);
+// The choices, clamped with a warning too (vtkSetClampMacro's silence left
+// a ParaView user's NormalEstimation 9 unexplained).
+vtkSilhouetteCheckedSetterMacro(
+  vtkSilhouetteSmoothingFilter, SamplingRule, int, SECOND_DIFFERENCE, WANG_EQUATION_8);
+vtkSilhouetteCheckedSetterMacro(
+  vtkSilhouetteSmoothingFilter, OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
+vtkSilhouetteCheckedSetterMacro(
+  vtkSilhouetteSmoothingFilter, NormalEstimation, int, ANGLE_WEIGHTED, QUADRIC_FIT);
+vtkSilhouetteCheckedSetterMacro(
+  vtkSilhouetteSmoothingFilter, VisibilityMethod, int, PER_VERTEX, HIERARCHICAL);
 
 namespace
 {
@@ -342,6 +352,20 @@ bool vtkSilhouetteSmoothingFilter::Internals::Prepare(
                "write them): their ends stay apart, with the normals of one side each, which bends "
                "the silhouette near them; WeldTolerance "
             << 2.0 * statistics.LongestNearCopyEdge << " welds them.");
+  }
+  const double diagonal = input->GetLength();
+  if (rebuilt && options.Weld && options.WeldTolerance > 0.01 * diagonal &&
+    input->GetNumberOfPoints() > 0)
+  {
+    // A tolerance in the mesh's units that is a good part of its size joins
+    // points across its features: a ParaView user's WeldTolerance 100 drew
+    // the bunny as one flat shape, silently.
+    vtkWarningWithObjectMacro(self,
+      "WeldTolerance " << options.WeldTolerance << " is "
+                       << 100.0 * options.WeldTolerance / std::max(diagonal, 1e-300)
+                       << "% of the mesh's diagonal (" << diagonal << "; the tolerance is in the "
+                       << "mesh's units): it joined " << statistics.WeldedPointCount << " of "
+                       << input->GetNumberOfPoints() << " points.");
   }
   if (rebuilt && statistics.InconsistentEdgeCount > 0)
   {

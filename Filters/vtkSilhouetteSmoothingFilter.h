@@ -153,7 +153,8 @@ public:
    * How the number of samples per silhouette segment is chosen (see
    * Filters/Core/AdaptiveSampling.h for the bound and the measurements).
    */
-  vtkSetClampMacro(SamplingRule, int, SECOND_DIFFERENCE, WANG_EQUATION_8);
+  virtual void SetSamplingRule(
+    int); ///< clamped to [SECOND_DIFFERENCE, WANG_EQUATION_8] with a warning
   vtkGetMacro(SamplingRule, int);
   void SetSamplingRuleToSecondDifference() { this->SetSamplingRule(SECOND_DIFFERENCE); }
   void SetSamplingRuleToWangEquation8() { this->SetSamplingRule(WANG_EQUATION_8); }
@@ -288,7 +289,8 @@ public:
    * are computed in double; storing them in float far from the origin rounds
    * them visibly.
    */
-  vtkSetClampMacro(OutputPointsPrecision, int, SINGLE_PRECISION, DEFAULT_PRECISION);
+  virtual void SetOutputPointsPrecision(
+    int); ///< clamped to [SINGLE_PRECISION, DEFAULT_PRECISION] with a warning
   vtkGetMacro(OutputPointsPrecision, int);
   ///@}
 
@@ -335,7 +337,8 @@ public:
    * more flipped new triangles than angle weights on six of the seven, though
    * (docs/fidelity.md): choose ANGLE_WEIGHTED where folds matter more.
    */
-  vtkSetClampMacro(NormalEstimation, int, ANGLE_WEIGHTED, QUADRIC_FIT);
+  virtual void SetNormalEstimation(
+    int); ///< clamped to [ANGLE_WEIGHTED, QUADRIC_FIT] with a warning
   vtkGetMacro(NormalEstimation, int);
   ///@}
 
@@ -355,7 +358,7 @@ public:
    * meshes, and its one-off build is about 0.6x the input's preparation (see
    * Common/Core/VisibilityHierarchy.h, Testing/Benchmarks/VisibilityBenchmark.cpp).
    */
-  vtkSetClampMacro(VisibilityMethod, int, PER_VERTEX, HIERARCHICAL);
+  virtual void SetVisibilityMethod(int); ///< clamped to [PER_VERTEX, HIERARCHICAL] with a warning
   vtkGetMacro(VisibilityMethod, int);
   void SetVisibilityMethodToPerVertex() { this->SetVisibilityMethod(PER_VERTEX); }
   void SetVisibilityMethodToHierarchical() { this->SetVisibilityMethod(HIERARCHICAL); }

@@ -390,6 +390,31 @@ bool NaNAndOutOfRangeSettings()
   filter->SetFeatureAngle(400.0);
   CHECK(filter->GetFeatureAngle() == 180.0 && warnings->GetWarning(),
     "an angle past 180 degrees is clamped, with a warning");
+  // The choices too (they were clamped silently until 2026-12-04).
+  for (const auto& choose :
+    std::vector<std::function<int(int)>>{ [&](int v) {
+                                           filter->SetNormalEstimation(v);
+                                           return filter->GetNormalEstimation();
+                                         },
+      [&](int v) {
+        filter->SetSamplingRule(v);
+        return filter->GetSamplingRule();
+      },
+      [&](int v) {
+        filter->SetVisibilityMethod(v);
+        return filter->GetVisibilityMethod();
+      },
+      [&](int v) {
+        filter->SetOutputPointsPrecision(v);
+        return filter->GetOutputPointsPrecision();
+      } })
+  {
+    warnings->Clear();
+    const int high = choose(9);
+    CHECK(warnings->GetWarning() && high < 9, "a choice past the last is clamped, with a warning");
+    warnings->Clear();
+    CHECK(choose(-1) == 0 && warnings->GetWarning(), "and one below the first");
+  }
   // The module's other filters, through the same setters.
   vtkNew<vtkPhongTessellationFilter> phong;
   phong->SetShapeFactor(nan);
@@ -424,6 +449,25 @@ bool MinimumAboveMaximumSamples()
   });
   CHECK(!equal.Failed(), "equal ones are fine");
   std::printf("MinimumSamples > MaximumSamples: \"%s\"\n", run.Error().c_str());
+  return true;
+}
+
+// A weld tolerance that is a good part of the mesh joins points across it
+// (a ParaView user's 100 on the bunny drew one flat shape, silently): a
+// warning names the share and the points joined. A small one says nothing.
+bool LargeWeldTolerance()
+{
+  Run large(Sphere(2), Camera(0, 0, 5), [](vtkSilhouetteSmoothingFilter* f) {
+    f->SetWeldTolerance(0.5); // the sphere's diagonal is about 3.3
+  });
+  CHECK(!large.Failed() && large.Warning().find("WeldTolerance 0.5 is") != std::string::npos &&
+      large.Warning().find("points") != std::string::npos,
+    "a weld tolerance of 15% of the diagonal warns");
+  Run small(
+    Sphere(2), Camera(0, 0, 5), [](vtkSilhouetteSmoothingFilter* f) { f->SetWeldTolerance(1e-4); });
+  CHECK(!small.Failed() && small.Warning().find("WeldTolerance") == std::string::npos,
+    "a small one does not");
+  std::printf("large weld tolerance: \"%s\"\n", large.Warning().c_str());
   return true;
 }
 
@@ -550,6 +594,7 @@ int TestBadInput(int, char*[])
   ok = BadLineIds() && ok;
   ok = NaNAndOutOfRangeSettings() && ok;
   ok = MinimumAboveMaximumSamples() && ok;
+  ok = LargeWeldTolerance() && ok;
   ok = ArraysOfTheWrongLength() && ok;
   ok = CellsWithTooFewPoints() && ok;
   ok = NewPointBudget() && ok;

@@ -440,7 +440,8 @@ int vtkSilhouetteSmoothingFilter::RequestViewData(vtkInformation*,
   if (this->MinimumSamples > this->MaximumSamples)
   {
     vtkErrorMacro("MinimumSamples (" << this->MinimumSamples << ") is more than MaximumSamples ("
-                                     << this->MaximumSamples << ").");
+                                     << this->MaximumSamples
+                                     << "): nothing is smoothed until one of them changes.");
     return 0;
   }
   // (Arrays of the wrong length were refused before: vtkSilhouettePolyDataAlgorithm.)
@@ -643,8 +644,9 @@ int vtkSilhouetteSmoothingFilter::BuildChangesUnguarded(vtkPolyData* input, vtkC
 {
   if (this->MinimumSamples > this->MaximumSamples)
   {
-    vtkErrorMacro("MinimumSamples (" << this->MinimumSamples << ") is more than MaximumSamples ("
-                                     << this->MaximumSamples << ").");
+    vtkErrorMacro("MinimumSamples ("
+      << this->MinimumSamples << ") is more than MaximumSamples (" << this->MaximumSamples
+      << "): the mesh is drawn unsmoothed until one of them changes.");
     return 0;
   }
   silsmooth::ViewGeometry view;

@@ -254,8 +254,11 @@ public:
    * computing normals and visibility: a closed component outward (positive
    * signed volume), an open one the way its given normals point, else the way
    * most of its area faces. Given normals pointing into the oriented surface
-   * are reversed. The output's triangles keep the input's own winding, and
-   * its normals follow that winding (an inside-out mesh is lit from outside).
+   * are reversed. The output writes each component with the winding most of
+   * its triangles have in the input (a consistently wound input keeps its
+   * own; a triangle against its component's majority is turned over), and
+   * its normals follow that winding, so every triangle is lit from outside,
+   * an inside-out mesh's included.
    * Triangles that cannot be oriented consistently (a non-orientable
    * component) keep the orientation spread from the component's first
    * triangle, with a warning. Default on.

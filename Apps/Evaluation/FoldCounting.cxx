@@ -1,7 +1,9 @@
 #include "FoldCounting.h"
 
+#include "FiniteVector.h"
 #include "TriangleGrid.h"
 #include "TriangleIntersection.h"
+#include "WeldedSurface.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
@@ -72,6 +74,49 @@ glm::dvec3 NormalSum(vtkDataArray* normals, const std::array<vtkIdType, 3>& ids)
   return sum;
 }
 
+// Per input triangle, whether the filter's output writes it turned over
+// (its defaults weld and orient); empty when the input's points are not all
+// finite (the filter refuses such input).
+std::vector<unsigned char> WrittenTurnedOver(vtkPolyData* input, const Triangles& in)
+{
+  std::vector<glm::dvec3> points(static_cast<std::size_t>(input->GetNumberOfPoints()));
+  for (std::size_t p = 0; p < points.size(); ++p)
+  {
+    double x[3];
+    input->GetPoint(static_cast<vtkIdType>(p), x);
+    points[p] = glm::dvec3(x[0], x[1], x[2]);
+    if (!silsmooth::isFinite(points[p]))
+    {
+      return {};
+    }
+  }
+  std::vector<glm::dvec3> normals;
+  if (vtkDataArray* given = input->GetPointData()->GetNormals())
+  {
+    normals.resize(points.size());
+    for (std::size_t p = 0; p < points.size(); ++p)
+    {
+      double n[3];
+      given->GetTuple(static_cast<vtkIdType>(p), n);
+      normals[p] = glm::dvec3(n[0], n[1], n[2]);
+    }
+  }
+  std::vector<silsmooth::Triangle> triangles;
+  for (const auto& t : in.Corners)
+  {
+    triangles.push_back(
+      t[0] < 0 ? silsmooth::Triangle{ { 0, 0, 0 } } : silsmooth::Triangle{ { t[0], t[1], t[2] } });
+  }
+  const silsmooth::WeldedSurface surface(
+    std::move(points), triangles, normals, {}, silsmooth::SurfaceOptions{});
+  std::vector<unsigned char> turned(triangles.size(), 0);
+  for (std::size_t t = 0; t < turned.size(); ++t)
+  {
+    turned[t] = surface.writtenTurnedOver(static_cast<silsmooth::Id>(t)) ? 1 : 0;
+  }
+  return turned;
+}
+
 } // namespace
 
 FoldCount CountFolds(vtkPolyData* input, vtkPolyData* output)
@@ -128,6 +173,10 @@ FoldCount CountFolds(vtkPolyData* input, vtkPolyData* output)
     changed[t] = isChanged ? 1 : 0;
   }
 
+  // The output writes each connected part with one winding, its majority's
+  // (WeldedSurface.h): an input triangle against it is written turned over,
+  // and is compared as written.
+  const std::vector<unsigned char> turnedOver = WrittenTurnedOver(input, in);
   auto inputTriangle = [&](vtkIdType s, TriangleCorners& t) {
     if (s < 0 || static_cast<std::size_t>(s) >= in.Corners.size() ||
       in.Corners[static_cast<std::size_t>(s)][0] < 0)
@@ -135,6 +184,10 @@ FoldCount CountFolds(vtkPolyData* input, vtkPolyData* output)
       return false;
     }
     t = CornersOf(input, in.Corners[static_cast<std::size_t>(s)]);
+    if (!turnedOver.empty() && turnedOver[static_cast<std::size_t>(s)])
+    {
+      std::swap(t.P[1], t.P[2]);
+    }
     return true;
   };
 

@@ -182,21 +182,54 @@ void WeldedSurface::mapOutputPoints()
   {
     this->CornerOutput[corner.first] = copies.at(corner.second);
   }
-  // Each output point's normal agrees with the winding most of its
-  // triangles are written in.
+  this->chooseWrittenWinding();
+  // Each output point's normal agrees with the winding its triangles are
+  // written in (one winding per connected part: chooseWrittenWinding).
   this->OutputNormalReversed.clear();
-  if (std::find(this->Reversed.begin(), this->Reversed.end(), 1) != this->Reversed.end())
+  if (std::find(this->Written.begin(), this->Written.end(), 1) != this->Written.end())
   {
     std::vector<long> votes(this->OutputPrepared.size(), 0);
     for (std::size_t corner = 0; corner < this->CornerOutput.size(); ++corner)
     {
       votes[static_cast<std::size_t>(this->CornerOutput[corner])] +=
-        this->Reversed[corner / 3] ? 1 : -1;
+        this->Written[corner / 3] ? 1 : -1;
     }
     this->OutputNormalReversed.resize(votes.size());
     for (std::size_t o = 0; o < votes.size(); ++o)
     {
       this->OutputNormalReversed[o] = votes[o] > 0 ? 1 : 0;
+    }
+  }
+}
+
+void WeldedSurface::chooseWrittenWinding()
+{
+  // Per connected part, the winding most of its triangles are written in
+  // (relative to the oriented surface); a triangle in no part keeps its own.
+  this->Written = this->Reversed;
+  if (this->Components.empty())
+  {
+    return;
+  }
+  std::vector<long> votes;
+  for (std::size_t t = 0; t < this->Reversed.size(); ++t)
+  {
+    const Id c = this->Components[t];
+    if (c >= 0)
+    {
+      if (static_cast<std::size_t>(c) >= votes.size())
+      {
+        votes.resize(static_cast<std::size_t>(c) + 1, 0);
+      }
+      votes[static_cast<std::size_t>(c)] += this->Reversed[t] ? 1 : -1;
+    }
+  }
+  for (std::size_t t = 0; t < this->Reversed.size(); ++t)
+  {
+    const Id c = this->Components[t];
+    if (c >= 0)
+    {
+      this->Written[t] = votes[static_cast<std::size_t>(c)] > 0 ? 1 : 0;
     }
   }
 }
@@ -618,7 +651,7 @@ SurfaceFrame WeldedSurface::assembleSome(const SmoothingResult& result, const st
   }
 
   // Pass 2: every output triangle, in input order, re-meshed ones replaced in
-  // place and wound as their input triangle.
+  // place, wound as their part is written (chooseWrittenWinding).
   std::size_t next = 0;
   std::size_t written = 0;
   auto emit = [&](const Triangle& tri, std::size_t t, unsigned char k) {
@@ -652,14 +685,16 @@ SurfaceFrame WeldedSurface::assembleSome(const SmoothingResult& result, const st
           const Id v = result.Replacements[r][k];
           out[k] = v < preparedCount ? this->outputOfPreparedCorner(t, v) : added.at(keyOf(t, v));
         }
-        emit(oriented(out, this->Reversed[t] != 0), t, remeshKind);
+        emit(oriented(out, this->Written[t] != 0), t, remeshKind);
       }
       ++next;
       continue;
     }
-    emit({ { this->CornerOutput[t * 3], this->CornerOutput[t * 3 + 1],
-           this->CornerOutput[t * 3 + 2] } },
-      t, 0);
+    // The input triangle's points, turned over when its part is written
+    // the other way round.
+    const Triangle kept{ { this->CornerOutput[t * 3], this->CornerOutput[t * 3 + 1],
+      this->CornerOutput[t * 3 + 2] } };
+    emit(oriented(kept, this->Written[t] != this->Reversed[t]), t, 0);
   }
 
   this->addPolylinesAndMoves(result, firstCopy, frame);

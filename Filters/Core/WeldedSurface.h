@@ -16,9 +16,13 @@
 //   - output points are the input's points with their ids, then copies of
 //     input points (a point whose corners fall in more than one smooth group
 //     of the prepared mesh: one copy per extra group), then the added points;
-//   - every kept triangle is the input triangle as it was (its own point
-//     ids, its own winding); a re-meshed triangle's replacements use its own
-//     points at its corners and wind as the input triangle did;
+//   - every kept triangle has the input triangle's own point ids, wound as
+//     most triangles of its connected part are written (a triangle written
+//     against its part's winding is turned over: with one winding per part,
+//     every triangle faces the side its points' normals face, which VTK's
+//     lighting needs; an input wound consistently keeps its winding, an
+//     inside-out part included); a re-meshed triangle's replacements use its
+//     own points at its corners and wind as its part;
 //   - an added point is made once per distinct set of input points it is
 //     interpolated from in the triangles that use it: across an edge whose
 //     two triangles share point ids it is one point (no crack), across a
@@ -160,6 +164,14 @@ public:
   /// winding are lit from either side (VTK flips a normal on a back face);
   /// the oriented normals on an inside-out mesh's own winding rendered it
   /// black. An added point follows its first source input point.
+  /// Whether the output writes input triangle t turned over from its input
+  /// winding (its part is written the other way round: see the header).
+  bool writtenTurnedOver(Id t) const
+  {
+    const std::size_t i = static_cast<std::size_t>(t);
+    return i < this->Written.size() && this->Written[i] != this->Reversed[i];
+  }
+
   bool outputNormalReversed(Id o) const
   {
     return !this->OutputNormalReversed.empty() &&
@@ -213,6 +225,7 @@ private:
   void mapOutputPoints();
   // The output points of each prepared point, and the one that stands for
   // it (OutputsOffsets, OutputsOf, PreparedHome).
+  void chooseWrittenWinding();
   void indexOutputsByPrepared();
   // Everything that depends on the points' positions and the normals, on
   // the kept welding, orientation and edge table. With `reusable` (the
@@ -257,6 +270,9 @@ private:
   std::vector<glm::dvec3> MovedFaceNormals;
   std::vector<double> MovedCosines;
   std::vector<Id> Components;
+  /// Per triangle: whether the output writes it reversed from the oriented
+  /// surface (its part's majority winding; chooseWrittenWinding).
+  std::vector<unsigned char> Written;
   std::unique_ptr<PreparedMesh> Prepared;
   SurfaceStatistics Statistics;
   std::vector<Id> CopySources;

@@ -327,49 +327,67 @@ TEST(WeldedSurface, TextureSeamKeepsOnePointPerSide)
   EXPECT_EQ(frame.Added.size(), result.NewPoints.size() + onSeam);
 }
 
-TEST(WeldedSurface, ReversedInputKeepsItsWindingAndSmoothsAsTheOrientedMesh)
+// A mesh with some of its triangles turned over smooths as the oriented
+// one, and is written with one winding per connected part, its majority's:
+// a sphere with 30% of its triangles turned over is written as the sphere
+// (before 2026-12-04 each triangle kept its own winding, and VTK lit the
+// turned ones from behind, black), one with 70% turned over as the
+// inside-out sphere.
+TEST(WeldedSurface, MixedWindingIsWrittenAsItsPartsMajorityAndSmoothsAsTheOrientedMesh)
 {
   std::vector<glm::dvec3> points;
   std::vector<Triangle> triangles;
   coretest::unitSphere(6, 10, points, triangles);
+  const WeldedSurface clean(points, triangles, {}, {}, coretest::plainOptions());
+  const ViewGeometry view = coretest::perspectiveFrom({ 3, -2, 1 });
+  const SmoothingResult a = smoothSilhouettes(clean.prepared(), view, SmoothingParameters());
+  const SurfaceFrame fa = clean.assemble(a);
+  for (const int percent : { 30, 70 })
+  {
+    std::vector<Triangle> mixed = triangles;
+    std::mt19937 random(3);
+    std::size_t inputTurned = 0;
+    for (Triangle& t : mixed)
+    {
+      if (static_cast<int>(random() % 100) < percent)
+      {
+        t = oriented(t, true);
+        ++inputTurned;
+      }
+    }
+    const WeldedSurface reversed(points, mixed, {}, {}, coretest::plainOptions());
+    EXPECT_GT(reversed.statistics().ReversedTriangleCount, 0u);
+    const SmoothingResult b = smoothSilhouettes(reversed.prepared(), view, SmoothingParameters());
+    EXPECT_EQ(a.SilhouetteTriangleCount, b.SilhouetteTriangleCount);
+    const SurfaceFrame fb = reversed.assemble(b);
+    ASSERT_EQ(fa.Triangles.size(), fb.Triangles.size());
+    // Same triangles, all wound the majority's way.
+    const bool majorityTurned = 2 * inputTurned > mixed.size();
+    std::size_t turned = 0;
+    for (std::size_t t = 0; t < fb.Triangles.size(); ++t)
+    {
+      const Triangle& x = fa.Triangles[t];
+      const Triangle& y = fb.Triangles[t];
+      EXPECT_TRUE(std::is_permutation(x.begin(), x.end(), y.begin()));
+      const bool reversedWinding = y == oriented(x, true) ||
+        y == Triangle{ { x[1], x[0], x[2] } } || y == Triangle{ { x[2], x[1], x[0] } };
+      turned += reversedWinding ? 1 : 0;
+    }
+    EXPECT_EQ(turned, majorityTurned ? fb.Triangles.size() : 0u) << percent << "% turned over";
+    // Every output point's normal is reversed exactly when its part is.
+    for (std::size_t o = 0; o < reversed.outputPointCount(); ++o)
+    {
+      EXPECT_EQ(reversed.outputNormalReversed(static_cast<Id>(o)), majorityTurned) << o;
+    }
+  }
+  // The deliberately wrong variant: without orientation the silhouette
+  // triangles are not those of the sphere.
   std::vector<Triangle> mixed = triangles;
   std::mt19937 random(3);
   for (Triangle& t : mixed)
   {
-    if (random() % 10 < 3)
-    {
-      t = oriented(t, true);
-    }
+    t = random() % 10 < 3 ? oriented(t, true) : t;
   }
-  const WeldedSurface clean(points, triangles, {}, {}, coretest::plainOptions());
-  const WeldedSurface reversed(points, mixed, {}, {}, coretest::plainOptions());
-  EXPECT_GT(reversed.statistics().ReversedTriangleCount, 0u);
-  const ViewGeometry view = coretest::perspectiveFrom({ 3, -2, 1 });
-  const SmoothingResult a = smoothSilhouettes(clean.prepared(), view, SmoothingParameters());
-  const SmoothingResult b = smoothSilhouettes(reversed.prepared(), view, SmoothingParameters());
-  EXPECT_EQ(a.SilhouetteTriangleCount, b.SilhouetteTriangleCount);
-  const SurfaceFrame fa = clean.assemble(a);
-  const SurfaceFrame fb = reversed.assemble(b);
-  ASSERT_EQ(fa.Triangles.size(), fb.Triangles.size());
-  // Same triangles; each wound as its own input triangle was.
-  std::size_t turned = 0;
-  for (std::size_t t = 0; t < fb.Triangles.size(); ++t)
-  {
-    const Id source = fb.SourceTriangle[t];
-    const bool inputTurned =
-      mixed[static_cast<std::size_t>(source)] != triangles[static_cast<std::size_t>(source)];
-    const Triangle& x = fa.Triangles[t];
-    const Triangle& y = fb.Triangles[t];
-    const bool same = std::is_permutation(x.begin(), x.end(), y.begin());
-    EXPECT_TRUE(same);
-    const bool reversedWinding = y == oriented(x, true) || y == Triangle{ { x[1], x[0], x[2] } } ||
-      y == Triangle{ { x[2], x[1], x[0] } };
-    EXPECT_EQ(reversedWinding, inputTurned);
-    turned += reversedWinding ? 1 : 0;
-  }
-  EXPECT_GT(turned, 0u);
-  // The deliberately wrong variant: without orientation the silhouette
-  // triangles are not those of the sphere.
   SurfaceOptions noOrient = coretest::plainOptions();
   noOrient.Orient = false;
   const WeldedSurface raw(points, mixed, {}, {}, noOrient);

@@ -120,7 +120,7 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(
 {
   if (extension == ".ply")
   {
-    // vtkPLYReader crashes on some malformed files.
+    // Refuses what is not PLY, and reads the geometry to hold the reader to.
     facts.Ply = CheckPlyFile(path);
   }
   else if (extension == ".obj")
@@ -188,6 +188,11 @@ vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::str
   if (!read)
   {
     throw RuntimeError("cannot read " + Quoted(path) + ": the reader gave no polygonal mesh");
+  }
+  if (extension == ".ply")
+  {
+    // Whatever the reader got wrong, it is not the file's mesh.
+    RequireReadAsWritten(facts.Ply.Geometry, read, path, "vtkPLYReader");
   }
   // vtkSTLReader merges equal points and drops a facet left with two corners
   // at one point, without a word.

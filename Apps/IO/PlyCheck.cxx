@@ -19,10 +19,10 @@ namespace cli
 namespace
 {
 
-// The largest face vtkPLYReader 9.1 reads correctly.
-constexpr long long MaximumFaceVertices = 255;
-// The longest line it reads whole (its buffer holds 4096 bytes).
-constexpr std::size_t MaximumLineLength = 4000;
+// The PLY format separates the words of a line by spaces (tabs are common
+// too): any other byte, a control character or a NUL among them, is part of
+// a word, so a number or a name holding one is not what it seems.
+constexpr const char* WordSeparators = " \t";
 
 enum class ScalarType
 {
@@ -192,12 +192,12 @@ public:
     };
     const bool vertexTextures = (has("vertex", "u") && has("vertex", "v")) ||
       (has("vertex", "texture_u") && has("vertex", "texture_v"));
-    PlyFacts facts;
+    PlyFacts& facts = this->Facts;
     facts.FaceTextureCoordinates = has("face", "texcoord") && !vertexTextures;
     facts.UnreadVertexTextureCoordinates = !vertexTextures &&
       ((has("vertex", "s") && has("vertex", "t")) ||
         (has("vertex", "texture_s") && has("vertex", "texture_t")));
-    return facts;
+    return std::move(facts);
   }
 
 private:
@@ -210,32 +210,6 @@ private:
   [[noreturn]] void Unsupported(const std::string& problem) const
   {
     throw RuntimeError("cannot read '" + this->Path + "': " + problem);
-  }
-
-  // vtkPLYReader reads a line into a C string of 4096 bytes and splits it at
-  // spaces and tabs only, where we split at any white space: a NUL byte, a
-  // control character (a vertical tab, say) or a longer line would give the
-  // two of us different words, and it crashes reading the ones it lacks.
-  void CheckLineText(
-    const std::string& line, const std::string& where, bool controlsAllowed = false) const
-  {
-    if (line.size() > MaximumLineLength)
-    {
-      this->Fail(where + " is longer than " + std::to_string(MaximumLineLength) + " characters");
-    }
-    const std::size_t end = !line.empty() && line.back() == '\r' ? line.size() - 1 : line.size();
-    for (std::size_t i = 0; i < end; ++i)
-    {
-      const auto c = static_cast<unsigned char>(line[i]);
-      if (c == 0)
-      {
-        this->Fail(where + " holds a NUL byte");
-      }
-      if (!controlsAllowed && ((c < 0x20 && c != '\t') || c == 0x7f))
-      {
-        this->Fail(where + " holds a control character (byte " + std::to_string(c) + ")");
-      }
-    }
   }
 
   Header ReadHeader()
@@ -252,15 +226,12 @@ private:
       {
         this->Fail(lineNumber == 0 ? "empty file" : "the header has no end_header line");
       }
-      // A comment's words are not read: control characters there are text.
-      const bool comment = line.rfind("comment", 0) == 0 || line.rfind("obj_info", 0) == 0;
-      this->CheckLineText(line, "header line " + std::to_string(lineNumber + 1), comment);
       ++lineNumber;
       if (!line.empty() && line.back() == '\r')
       {
         line.pop_back();
       }
-      const std::vector<std::string> words = WordsOf(line);
+      const std::vector<std::string> words = WordsOf(line, WordSeparators);
       const auto word = [&words](std::size_t k) {
         return k < words.size() ? words[k] : std::string();
       };
@@ -357,10 +328,9 @@ private:
     return header;
   }
 
-  // vtkPLYReader 9.1 goes on after its "Cannot read geometry" error with the
-  // file closed, and crashes: it needs a vertex element with scalar x, y and
-  // z. Elements are looked up by name, so a repeated one is ambiguous. Faces
-  // need their vertex indices as a list (vertex_indices or vertex_index).
+  // A mesh needs a vertex element with scalar x, y and z. Elements are
+  // looked up by name, so a repeated one is ambiguous. Faces need their
+  // vertex indices as a list (vertex_indices or vertex_index).
   void CheckElements(const Header& header)
   {
     const Element* vertices = nullptr;
@@ -402,14 +372,6 @@ private:
       {
         this->Fail("the face element has no 'vertex_indices' list");
       }
-      // vtkPLYReader 9.1 leaves an element's property list unset until its
-      // first property and frees it closing the file: an element without
-      // properties crashes it, whatever its name or count (found by
-      // fuzz_mesh_io).
-      if (element.Properties.empty())
-      {
-        this->Fail("element '" + element.Name + "' has no properties");
-      }
     }
     if (!vertices)
     {
@@ -429,25 +391,6 @@ private:
                           "vtkPLYReader 9.1 cannot read (write the vertex element first)");
       }
     }
-    // The reader reads the vertex and face elements and does not skip the
-    // others, so one before them shifts everything after it.
-    std::size_t last = 0;
-    for (std::size_t e = 0; e < header.Elements.size(); ++e)
-    {
-      if (header.Elements[e].Name == "vertex" || header.Elements[e].Name == "face")
-      {
-        last = e;
-      }
-    }
-    for (std::size_t e = 0; e < last; ++e)
-    {
-      const Element& element = header.Elements[e];
-      if (element.Name != "vertex" && element.Name != "face" && element.Count > 0)
-      {
-        this->Fail("element '" + element.Name +
-          "' comes before the vertices or faces, and vtkPLYReader cannot skip it");
-      }
-    }
     for (const char* axis : { "x", "y", "z" })
     {
       const auto found = std::find_if(vertices->Properties.begin(), vertices->Properties.end(),
@@ -458,6 +401,30 @@ private:
       }
     }
     this->VertexCount = vertices->Count;
+    this->FindGeometrySlots(*vertices);
+  }
+
+  // Which of the vertex element's properties are the position (slots 0 to
+  // 2) and the normal (3 to 5, all three or none), as the reader maps them.
+  void FindGeometrySlots(const Element& vertices)
+  {
+    static const char* const names[6] = { "x", "y", "z", "nx", "ny", "nz" };
+    const std::vector<Property>& properties = vertices.Properties;
+    this->VertexSlot.assign(properties.size(), -1);
+    int normals = 0;
+    for (int slot = 0; slot < 6; ++slot)
+    {
+      // The first of a repeated name, as the reader looks it up.
+      const auto found = std::find_if(properties.begin(), properties.end(),
+        [&](const Property& property) { return !property.IsList && property.Name == names[slot]; });
+      if (found != properties.end())
+      {
+        this->VertexSlot[static_cast<std::size_t>(found - properties.begin())] = slot;
+        normals += slot >= 3 ? 1 : 0;
+      }
+    }
+    this->Facts.Geometry.VertexOrderKept = true;
+    this->HasNormals = normals == 3;
   }
 
   static bool IsVertexIndexList(const Element& element, const Property& property)
@@ -486,34 +453,90 @@ private:
     }
   }
 
-  void CheckFaceSize(long long count, long long face) const
+  // The values of one element, as they are read: a vertex's position and
+  // normal, a face's vertex indices, go to the file's geometry.
+  class InstanceRecorder
   {
-    if (count > MaximumFaceVertices)
+  public:
+    InstanceRecorder(PlyChecker& checker, const Element& element)
+      : Checker(checker)
+      , IsVertex(element.Name == "vertex")
+      , IsFace(element.Name == "face")
     {
-      this->Fail("face " + std::to_string(face) + " has " + std::to_string(count) +
-        " vertices; vtkPLYReader reads at most " + std::to_string(MaximumFaceVertices));
     }
+    void Scalar(std::size_t property, double value)
+    {
+      if (this->IsVertex && this->Checker.VertexSlot[property] >= 0)
+      {
+        this->Vertex[this->Checker.VertexSlot[property]] = value;
+      }
+    }
+    // The face's first index list is its corners (the reader reads one).
+    bool TakesCorners(const Element& element, const Property& property)
+    {
+      const bool takes =
+        this->IsFace && !this->CornersTaken && IsVertexIndexList(element, property);
+      this->CornersTaken = this->CornersTaken || takes;
+      return takes;
+    }
+    void Corner(double index)
+    {
+      this->Checker.Facts.Geometry.FaceCorners.push_back(static_cast<std::int64_t>(index));
+    }
+    void End()
+    {
+      FileGeometry& geometry = this->Checker.Facts.Geometry;
+      if (this->IsVertex)
+      {
+        geometry.Positions.insert(geometry.Positions.end(), this->Vertex, this->Vertex + 3);
+        if (this->Checker.HasNormals)
+        {
+          geometry.Normals.insert(geometry.Normals.end(), this->Vertex + 3, this->Vertex + 6);
+        }
+      }
+      else if (this->IsFace)
+      {
+        geometry.EndFace();
+      }
+    }
+
+  private:
+    PlyChecker& Checker;
+    bool IsVertex;
+    bool IsFace;
+    bool CornersTaken = false;
+    double Vertex[6] = { 0.0, 0.0, 0.0, 0.0, 0.0, 0.0 };
+  };
+
+  // The next line of the ASCII body that holds anything, without its '\r'.
+  bool NextAsciiLine(std::string& text)
+  {
+    while (this->Body.NextLine(text))
+    {
+      if (!text.empty() && text.back() == '\r')
+      {
+        text.pop_back();
+      }
+      if (text.find_first_not_of(WordSeparators) != std::string::npos)
+      {
+        return true;
+      }
+    }
+    return false;
   }
 
-  // ASCII: vtkPLYReader reads one element per line, so each line must hold
-  // exactly the element's values.
+  // ASCII: one element a line, each line exactly the element's values. A
+  // line of white space holds no element (vtkPLYReader 9.1 stops there: the
+  // comparison with the file's geometry refuses what it then reads).
   void CheckAsciiInstance(const Element& element, long long instance)
   {
     const std::string where = element.Name + " " + std::to_string(instance);
     std::string text;
-    if (!this->Body.NextLine(text))
+    if (!this->NextAsciiLine(text))
     {
       this->Fail("the file ends before " + where);
     }
-    this->CheckLineText(text, where);
-    const std::vector<std::string> words = WordsOf(text);
-    // vtkPLYReader 9.1 takes a line of white space for the end of the file,
-    // reads on with values it does not have and crashes or drops what
-    // follows.
-    if (words.empty())
-    {
-      this->Fail(where + " is a blank line, which vtkPLYReader takes for the end of the file");
-    }
+    const std::vector<std::string> words = WordsOf(text, WordSeparators);
     std::size_t next = 0;
     const auto number = [&](ScalarType type) {
       if (next >= words.size())
@@ -522,30 +545,33 @@ private:
       }
       const std::string& word = words[next++];
       double value = 0.0;
-      // The whole word: a NUL byte inside it ends the reader's line early.
       if (!ParseWholeNumber(word, value) || (IsInteger(type) && std::trunc(value) != value))
       {
-        this->Fail(where + " has a bad value '" + word + "'");
+        this->Fail(where + " has a bad value '" + Excerpt(word) + "'");
       }
       if (value < RangeOf(type).first || value > RangeOf(type).second)
       {
-        this->Fail(where + " has a value out of range for its type: '" + word.substr(0, 40) + "'");
+        this->Fail(where + " has a value out of range for its type: '" + Excerpt(word) + "'");
       }
-      // The reader reads an integer's leading decimal digits (atoi).
+      // An integer in decimal digits: vtkPLYReader reads an integer's leading
+      // decimal digits (atoi), so "1e2" or "0x10" in a colour would be read
+      // as another value, which no comparison of the geometry would see.
       const long long leading = std::strtoll(word.c_str(), nullptr, 10);
       if (IsInteger(type) && static_cast<double>(leading) != value)
       {
-        this->Fail(where + " has the integer '" + word.substr(0, 40) +
+        this->Fail(where + " has the integer '" + Excerpt(word) +
           "', which vtkPLYReader reads as " + std::to_string(leading) +
           "; write it in decimal digits");
       }
       return value;
     };
-    for (const Property& property : element.Properties)
+    InstanceRecorder record(*this, element);
+    for (std::size_t p = 0; p < element.Properties.size(); ++p)
     {
+      const Property& property = element.Properties[p];
       if (!property.IsList)
       {
-        number(property.Type);
+        record.Scalar(p, number(property.Type));
         continue;
       }
       const double count = number(property.CountType);
@@ -553,17 +579,17 @@ private:
       {
         this->Fail(where + " has a negative list length");
       }
-      const bool indices = IsVertexIndexList(element, property);
-      if (indices)
-      {
-        this->CheckFaceSize(static_cast<long long>(count), instance);
-      }
+      const bool corners = record.TakesCorners(element, property);
       for (long long k = 0; k < static_cast<long long>(count); ++k)
       {
         const double value = number(property.Type);
-        if (indices)
+        if (IsVertexIndexList(element, property))
         {
           this->CheckVertexIndex(value, instance);
+        }
+        if (corners)
+        {
+          record.Corner(value);
         }
       }
     }
@@ -571,6 +597,7 @@ private:
     {
       this->Fail(where + " has too many values");
     }
+    record.End();
   }
 
   double ReadBinary(ScalarType type, bool bigEndian, const std::string& where)
@@ -619,11 +646,13 @@ private:
   void CheckBinaryInstance(const Element& element, long long instance, bool bigEndian)
   {
     const std::string where = element.Name + " " + std::to_string(instance);
-    for (const Property& property : element.Properties)
+    InstanceRecorder record(*this, element);
+    for (std::size_t p = 0; p < element.Properties.size(); ++p)
     {
+      const Property& property = element.Properties[p];
       if (!property.IsList)
       {
-        this->ReadBinary(property.Type, bigEndian, where);
+        record.Scalar(p, this->ReadBinary(property.Type, bigEndian, where));
         continue;
       }
       const double count = this->ReadBinary(property.CountType, bigEndian, where);
@@ -631,25 +660,26 @@ private:
       {
         this->Fail(where + " has a negative list length");
       }
-      const bool indices = IsVertexIndexList(element, property);
-      if (indices)
-      {
-        this->CheckFaceSize(static_cast<long long>(count), instance);
-      }
-      else if (static_cast<double>(this->Bytes.size() - this->Body.Position()) <
+      if (static_cast<double>(this->Bytes.size() - this->Body.Position()) <
         count * static_cast<double>(SizeOf(property.Type)))
       {
         this->Fail("the file ends inside " + where + " (truncated binary body)");
       }
+      const bool corners = record.TakesCorners(element, property);
       for (long long k = 0; k < static_cast<long long>(count); ++k)
       {
         const double value = this->ReadBinary(property.Type, bigEndian, where);
-        if (indices)
+        if (IsVertexIndexList(element, property))
         {
           this->CheckVertexIndex(value, instance);
         }
+        if (corners)
+        {
+          record.Corner(value);
+        }
       }
     }
+    record.End();
   }
 
   // vtkPLYReader stops after the elements the header declares and ignores the
@@ -683,6 +713,9 @@ private:
   std::string Bytes;
   TextCursor Body{ this->Bytes }; // where the body is read
   long long VertexCount = 0;
+  std::vector<int> VertexSlot; // per vertex property: FindGeometrySlots
+  bool HasNormals = false;
+  PlyFacts Facts;
 };
 
 } // namespace

@@ -1,20 +1,29 @@
 #ifndef PlyCheck_h
 #define PlyCheck_h
 
+#include "FileGeometry.h"
+
 #include <string>
 
 namespace cli
 {
 
 /**
- * Checks a PLY file before vtkPLYReader sees it. VTK 9.1's reader crashes on
- * a truncated body or a face index out of range, reads misspelt property
- * types as zeros, wraps faces of more than 255 vertices around, takes a blank
- * body line for the end of the file and ignores what follows the elements
- * the header declares; this walks the header and the whole body (ASCII or
- * binary, either byte order) and throws RuntimeError with one line naming the
- * first problem. An integer is read as the reader reads it (its leading
- * decimal digits), so one written otherwise ("0x1", "1e1") is refused.
+ * Checks a PLY file before vtkPLYReader sees it, by the format's own rules:
+ * its header, and its whole body (ASCII, one element a line, words split at
+ * spaces and tabs; or binary, either byte order). Throws RuntimeError with
+ * one line naming the first problem: a value that is no number of its type
+ * (an integer in anything but decimal digits among them), an index of no
+ * vertex, a body shorter or longer than the header declares, an element the
+ * reader would leave out. Three crashes of VTK 9.1's reader on files it
+ * could otherwise read are named too (faces before vertices, a face element
+ * without indices, no final line end), where the reading process would only
+ * report the signal.
+ *
+ * What the reader then gives is held to the file's geometry
+ * (PlyFacts::Geometry, FileGeometry.h), so a misread that leaves the reader
+ * with another mesh is refused without this check knowing the reader's
+ * limits (its face size, its line buffer, how it splits a line).
  *
  * Returns what the caller must know of the file to read it right (PlyFacts).
  */
@@ -28,6 +37,8 @@ struct PlyFacts
   /// The vertices carry texture coordinates the reader does not read (`s`
   /// and `t`, as assimp writes; it reads `u`/`v` and `texture_u`/`texture_v`).
   bool UnreadVertexTextureCoordinates = false;
+  /// The vertices' positions and normals and the faces, as the file gives them.
+  FileGeometry Geometry;
 };
 PlyFacts CheckPlyFile(const std::string& path);
 

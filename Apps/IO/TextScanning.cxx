@@ -93,6 +93,19 @@ std::vector<std::string> WordsOf(const std::string& line)
   return words;
 }
 
+std::vector<std::string> WordsOf(const std::string& line, const char* separators)
+{
+  std::vector<std::string> words;
+  std::size_t start = line.find_first_not_of(separators);
+  while (start != std::string::npos)
+  {
+    const std::size_t end = line.find_first_of(separators, start);
+    words.push_back(line.substr(start, end == std::string::npos ? std::string::npos : end - start));
+    start = end == std::string::npos ? end : line.find_first_not_of(separators, end);
+  }
+  return words;
+}
+
 bool ParseWholeInteger(const std::string& word, long long& value)
 {
   const std::size_t start = !word.empty() && (word[0] == '-' || word[0] == '+') ? 1 : 0;

@@ -17,7 +17,8 @@ namespace cli
  * only gives them one way to do each split.
  *
  * Rules: a line ends at '\n' and keeps a '\r' before it; words are split at
- * the bytes std::isspace calls white space; a number is the whole word or
+ * the bytes std::isspace calls white space, or at the separators a format
+ * names; a number is the whole word or
  * nothing (std::strtoll or std::strtod would stop early at a letter, a NUL
  * byte or a second sign, where the readers disagree with each other).
  */
@@ -69,6 +70,10 @@ private:
 
 /// The words of `line`, split at white space.
 std::vector<std::string> WordsOf(const std::string& line);
+
+/// The words of `line`, split at the bytes of `separators` only (PLY's
+/// spaces and tabs): any other byte belongs to a word.
+std::vector<std::string> WordsOf(const std::string& line, const char* separators);
 
 /// The whole word as a base-10 integer (an optional sign, then digits only):
 /// false for anything else and for a value out of range.

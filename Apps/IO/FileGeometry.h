@@ -1,0 +1,53 @@
+#ifndef FileGeometry_h
+#define FileGeometry_h
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+class vtkPolyData;
+
+namespace cli
+{
+
+/**
+ * A mesh file's geometry as a format's pre-check reads it, by the format's
+ * own rules, to hold VTK's reader to: a reader that succeeds with another
+ * mesh (a face cut short, a line split where the file has none, the rest of
+ * a body dropped) is refused, whatever made it do so. The pre-check then
+ * needs no copy of the reader's limits.
+ *
+ * Rules of the comparison (RequireReadAsWritten):
+ * - the reader's faces (its polygons) are the file's, in the file's order,
+ *   with as many corners, each at the file's position for it: by position,
+ *   not by index, since a reader may add copies of points (vtkPLYReader's
+ *   texture seams);
+ * - when VertexOrderKept, the reader's first points are the file's vertices
+ *   in order, and so are its point normals when the file gives normals;
+ * - values are compared as the floats the readers store; a NaN equals a NaN
+ *   (validation refuses it later, with its own message).
+ */
+struct FileGeometry
+{
+  bool VertexOrderKept = false;
+  std::vector<double> Positions;             ///< three per vertex
+  std::vector<double> Normals;               ///< three per vertex, or none
+  std::vector<std::int64_t> FaceStarts{ 0 }; ///< one per face, and the end
+  std::vector<std::int64_t> FaceCorners;     ///< the faces' vertex indices
+
+  std::int64_t VertexCount() const { return static_cast<std::int64_t>(this->Positions.size() / 3); }
+  std::int64_t FaceCount() const { return static_cast<std::int64_t>(this->FaceStarts.size()) - 1; }
+  void EndFace()
+  {
+    this->FaceStarts.push_back(static_cast<std::int64_t>(this->FaceCorners.size()));
+  }
+};
+
+/// Throws RuntimeError, one line naming `path`, `readerName` and the first
+/// difference, when `read` is not the mesh `file` describes (rules above).
+void RequireReadAsWritten(const FileGeometry& file, vtkPolyData* read, const std::string& path,
+  const std::string& readerName);
+
+} // namespace cli
+
+#endif

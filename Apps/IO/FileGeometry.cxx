@@ -10,6 +10,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -29,6 +30,19 @@ bool SameTriple(const double* inFile, const double* asRead)
 {
   return SameAsStored(inFile[0], asRead[0]) && SameAsStored(inFile[1], asRead[1]) &&
     SameAsStored(inFile[2], asRead[2]);
+}
+
+std::string Values(const double* v, int count)
+{
+  std::ostringstream text;
+  text.precision(9);
+  text << "(";
+  for (int c = 0; c < count; ++c)
+  {
+    text << (c ? ", " : "") << static_cast<float>(v[c]);
+  }
+  text << ")";
+  return text.str();
 }
 
 std::string Triple(const double* v)
@@ -85,19 +99,119 @@ private:
       const double* inFile = &this->File.Positions[3 * i];
       if (!SameTriple(inFile, asRead))
       {
-        this->Differ("vertex " + std::to_string(i) + " at " + Triple(asRead) +
-          " where the file puts it at " + Triple(inFile));
+        this->Differ("vertex " + std::to_string(i + this->File.FirstIndex) + " at " +
+          Triple(asRead) + " where the file puts it at " + Triple(inFile));
       }
       if (compareNormals)
       {
         normals->GetTuple(i, asRead);
         if (!SameTriple(&this->File.Normals[3 * i], asRead))
         {
-          this->Differ("vertex " + std::to_string(i) + "'s normal as " + Triple(asRead) +
-            " where the file gives " + Triple(&this->File.Normals[3 * i]));
+          this->Differ("vertex " + std::to_string(i + this->File.FirstIndex) + "'s normal as " +
+            Triple(asRead) + " where the file gives " + Triple(&this->File.Normals[3 * i]));
         }
       }
     }
+  }
+
+  // The point data a corner of the file is compared against: the reader's
+  // normals; for texture coordinates every two-component point array, since
+  // a reader may keep one array per texture map (vtkOBJReader does, per
+  // material), each holding only its faces' coordinates.
+  struct CornerAttribute
+  {
+    const char* Name;
+    const std::vector<std::int64_t>& Corners;
+    const std::vector<double>& Table;
+    int Width;
+    std::vector<vtkDataArray*> Read;
+  };
+
+  std::vector<CornerAttribute> CornerAttributes() const
+  {
+    std::vector<CornerAttribute> attributes;
+    vtkPointData* data = this->Read->GetPointData();
+    vtkDataArray* normals = data->GetNormals();
+    if (!this->File.CornerNormals.empty() && normals && normals->GetNumberOfComponents() == 3)
+    {
+      attributes.push_back(
+        { "normal", this->File.CornerNormals, this->File.NormalTable, 3, { normals } });
+    }
+    std::vector<vtkDataArray*> textures;
+    for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+    {
+      vtkDataArray* array = data->GetArray(a);
+      if (array && array->GetNumberOfComponents() == 2)
+      {
+        textures.push_back(array);
+      }
+    }
+    if (!this->File.CornerTextures.empty() && !textures.empty())
+    {
+      attributes.push_back(
+        { "texture coordinate", this->File.CornerTextures, this->File.TextureTable, 2, textures });
+    }
+    return attributes;
+  }
+
+  static bool SameTuple(
+    vtkDataArray* array, vtkIdType id, const double* inFile, int width, double* asRead)
+  {
+    if (id >= array->GetNumberOfTuples())
+    {
+      return false;
+    }
+    array->GetTuple(id, asRead);
+    bool same = true;
+    for (int c = 0; c < width; ++c)
+    {
+      same = same && SameAsStored(inFile[c], asRead[c]);
+    }
+    return same;
+  }
+
+  void CompareCornerAttributes(const std::vector<CornerAttribute>& attributes, std::int64_t face,
+    std::int64_t corner, vtkIdType readId, std::int64_t fileCorner) const
+  {
+    for (const CornerAttribute& attribute : attributes)
+    {
+      const std::int64_t entry = attribute.Corners[fileCorner];
+      if (entry < 0)
+      {
+        continue;
+      }
+      const double* inFile = &attribute.Table[attribute.Width * entry];
+      double asRead[3] = { 0.0, 0.0, 0.0 };
+      const bool same =
+        std::any_of(attribute.Read.begin(), attribute.Read.end(), [&](vtkDataArray* array) {
+          return SameTuple(array, readId, inFile, attribute.Width, asRead);
+        });
+      if (!same)
+      {
+        // The first array's value, to show.
+        attribute.Read[0]->GetTuple(
+          std::min<vtkIdType>(readId, attribute.Read[0]->GetNumberOfTuples() - 1), asRead);
+        this->Differ(this->CornerName(face, corner) + " with the " + attribute.Name + " " +
+          Values(asRead, attribute.Width) + " where the file gives it " + attribute.Name + " " +
+          std::to_string(entry + this->File.FirstIndex) + " " + Values(inFile, attribute.Width));
+      }
+    }
+  }
+
+  std::string FaceName(std::int64_t face) const
+  {
+    std::string name = "face " + std::to_string(face + this->File.FirstIndex);
+    if (!this->File.FaceLines.empty())
+    {
+      name += " (line " + std::to_string(this->File.FaceLines[face]) + ")";
+    }
+    return name;
+  }
+
+  std::string CornerName(std::int64_t face, std::int64_t corner) const
+  {
+    return "corner " + std::to_string(corner + this->File.FirstIndex) + " of " +
+      this->FaceName(face);
   }
 
   void CompareFaces() const
@@ -114,6 +228,7 @@ private:
     {
       return;
     }
+    const std::vector<CornerAttribute> attributes = this->CornerAttributes();
     auto cells = vtk::TakeSmartPointer(polys->NewIterator());
     std::int64_t face = 0;
     for (cells->GoToFirstCell(); !cells->IsDoneWithTraversal(); cells->GoToNextCell(), ++face)
@@ -125,12 +240,13 @@ private:
       const std::int64_t corners = this->File.FaceStarts[face + 1] - start;
       if (size != corners)
       {
-        this->Differ("face " + std::to_string(face) + " with " + std::to_string(size) +
+        this->Differ(this->FaceName(face) + " with " + std::to_string(size) +
           " corners where the file gives it " + std::to_string(corners));
       }
       for (std::int64_t k = 0; k < corners; ++k)
       {
         this->CompareCorner(face, k, ids[k], this->File.FaceCorners[start + k]);
+        this->CompareCornerAttributes(attributes, face, k, ids[k], start + k);
       }
     }
   }
@@ -147,10 +263,11 @@ private:
     }
     if (!exists || !SameTriple(inFile, asRead))
     {
-      this->Differ("corner " + std::to_string(corner) + " of face " + std::to_string(face) +
+      this->Differ(this->CornerName(face, corner) +
         (exists ? " at " + Triple(asRead)
                 : " as point " + std::to_string(readId) + ", which it does not have,") +
-        " where the file puts it at vertex " + std::to_string(fileVertex) + " " + Triple(inFile));
+        " where the file puts it at vertex " + std::to_string(fileVertex + this->File.FirstIndex) +
+        " " + Triple(inFile));
     }
   }
 
@@ -160,6 +277,27 @@ private:
 };
 
 } // namespace
+
+std::string CellsLeftOut(const FileGeometry& file, vtkPolyData* read)
+{
+  std::string lost;
+  const auto count = [&lost](std::int64_t inFile, std::int64_t asRead, const char* kind) {
+    if (inFile > asRead)
+    {
+      lost += (lost.empty() ? "" : " and ") + std::to_string(inFile - asRead) + " of its " +
+        std::to_string(inFile) + " " + kind;
+    }
+  };
+  if (file.LineCells >= 0)
+  {
+    count(file.LineCells, read->GetNumberOfLines(), "lines ('l')");
+  }
+  if (file.VertexCells >= 0)
+  {
+    count(file.VertexCells, read->GetNumberOfVerts(), "point cells ('p')");
+  }
+  return lost;
+}
 
 void RequireReadAsWritten(const FileGeometry& file, vtkPolyData* read, const std::string& path,
   const std::string& readerName)

@@ -24,6 +24,9 @@ namespace cli
  *   texture seams);
  * - when VertexOrderKept, the reader's first points are the file's vertices
  *   in order, and so are its point normals when the file gives normals;
+ * - where the file gives a corner its own normal or texture coordinate (OBJ),
+ *   the reader's point normal (texture coordinate) at that corner is it,
+ *   when the reader gives normals (texture coordinates) at all;
  * - values are compared as the floats the readers store; a NaN equals a NaN
  *   (validation refuses it later, with its own message).
  */
@@ -34,6 +37,17 @@ struct FileGeometry
   std::vector<double> Normals;               ///< three per vertex, or none
   std::vector<std::int64_t> FaceStarts{ 0 }; ///< one per face, and the end
   std::vector<std::int64_t> FaceCorners;     ///< the faces' vertex indices
+  /// Per corner, an index into NormalTable or TextureTable, -1 for none;
+  /// empty when the format gives no such thing per corner.
+  std::vector<std::int64_t> CornerNormals, CornerTextures;
+  std::vector<double> NormalTable;  ///< three per normal
+  std::vector<double> TextureTable; ///< two per texture coordinate
+  /// For messages: the number the format gives its first vertex, face and
+  /// corner (PLY 0, OBJ 1), and each face's line in the file, if known.
+  int FirstIndex = 0;
+  std::vector<std::size_t> FaceLines;
+  /// Line and vertex cells the file holds; -1 when not counted.
+  std::int64_t LineCells = -1, VertexCells = -1;
 
   std::int64_t VertexCount() const { return static_cast<std::int64_t>(this->Positions.size() / 3); }
   std::int64_t FaceCount() const { return static_cast<std::int64_t>(this->FaceStarts.size()) - 1; }
@@ -47,6 +61,10 @@ struct FileGeometry
 /// difference, when `read` is not the mesh `file` describes (rules above).
 void RequireReadAsWritten(const FileGeometry& file, vtkPolyData* read, const std::string& path,
   const std::string& readerName);
+
+/// The line and vertex cells the file holds and `read` lacks, for a
+/// warning ("3 of its 5 lines"), or "" when none is lacking or uncounted.
+std::string CellsLeftOut(const FileGeometry& file, vtkPolyData* read);
 
 } // namespace cli
 

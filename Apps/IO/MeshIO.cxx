@@ -112,6 +112,7 @@ struct FileFacts
 {
   std::uint64_t StlFacets = 0; ///< the facets an STL file holds
   PlyFacts Ply;
+  FileGeometry Obj;
 };
 
 // The pre-check for the format, then VTK's reader.
@@ -125,7 +126,8 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(
   }
   else if (extension == ".obj")
   {
-    CheckObjFile(path); // vtkOBJReader silently misreads "nan"
+    // Refuses what is not OBJ, and reads the geometry to hold the reader to.
+    facts.Obj = CheckObjFile(path);
   }
   else if (extension == ".stl")
   {
@@ -189,10 +191,20 @@ vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::str
   {
     throw RuntimeError("cannot read " + Quoted(path) + ": the reader gave no polygonal mesh");
   }
+  // Whatever the reader got wrong, it is not the file's mesh.
   if (extension == ".ply")
   {
-    // Whatever the reader got wrong, it is not the file's mesh.
     RequireReadAsWritten(facts.Ply.Geometry, read, path, "vtkPLYReader");
+  }
+  if (extension == ".obj")
+  {
+    RequireReadAsWritten(facts.Obj, read, path, "vtkOBJReader");
+    const std::string lost = CellsLeftOut(facts.Obj, read);
+    if (!lost.empty())
+    {
+      errors.Record(VtkErrorLog::Kind::Warning, true,
+        (Quoted(path) + ": vtkOBJReader left out " + lost).c_str());
+    }
   }
   // vtkSTLReader merges equal points and drops a facet left with two corners
   // at one point, without a word.

@@ -212,6 +212,86 @@ TEST(FileGeometry, ValuesAreComparedAsTheFloatsReadersStore)
   EXPECT_EQ(Refusal(file, read), "");
 }
 
+// The square as OBJ gives it: numbered from 1, faces on lines 5 and 6, a
+// normal and a texture coordinate named by each corner.
+cli::FileGeometry SquareInObjFile()
+{
+  cli::FileGeometry file = SquareInFile();
+  file.VertexOrderKept = false;
+  file.Normals.clear();
+  file.FirstIndex = 1;
+  file.FaceLines = { 5, 6 };
+  file.NormalTable = { 0, 0, 1, 1, 0, 0 };
+  file.CornerNormals = { 0, 0, 0, 0, 0, -1 };
+  file.TextureTable = { 0.25, 0.5 };
+  file.CornerTextures = { 0, 0, 0, 0, 0, 0 };
+  return file;
+}
+
+vtkSmartPointer<vtkFloatArray> TextureArray(const char* name, float u, float v)
+{
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(2);
+  for (int p = 0; p < 4; ++p)
+  {
+    array->InsertNextTuple2(u, v);
+  }
+  return array;
+}
+
+TEST(FileGeometry, EachCornersNormalAndTextureCoordinateAreCompared)
+{
+  const cli::FileGeometry file = SquareInObjFile();
+  vtkSmartPointer<vtkPolyData> read = SquareAsRead();
+  read->GetPointData()->SetTCoords(TextureArray("TCoords", 0.25f, 0.5f));
+  EXPECT_EQ(Refusal(file, read), "");
+
+  // A normal on the wrong corner, numbered as OBJ numbers, with its line.
+  read->GetPointData()->GetNormals()->SetTuple3(2, 1, 0, 0);
+  EXPECT_EQ(Refusal(file, read),
+    "cannot read 'square.ply': vtkPLYReader read corner 3 of face 1 (line 5) with the normal "
+    "(1, 0, 0) where the file gives it normal 1 (0, 0, 1); the file is not read as written");
+  // A corner that names no normal in the file is not compared.
+  read = SquareAsRead();
+  read->GetPointData()->GetNormals()->SetTuple3(3, 1, 0, 0);
+  read->GetPointData()->SetTCoords(TextureArray("TCoords", 0.25f, 0.5f));
+  EXPECT_EQ(Refusal(file, read), "");
+
+  // Texture coordinates may be in any two-component array (a reader may
+  // keep one a texture map), but in one of them.
+  read = SquareAsRead();
+  read->GetPointData()->AddArray(TextureArray("first_map", -1.0f, -1.0f));
+  read->GetPointData()->AddArray(TextureArray("second_map", 0.25f, 0.5f));
+  EXPECT_EQ(Refusal(file, read), "");
+  read->GetPointData()->RemoveArray("second_map");
+  EXPECT_EQ(Refusal(file, read),
+    "cannot read 'square.ply': vtkPLYReader read corner 1 of face 1 (line 5) with the texture "
+    "coordinate (-1, -1) where the file gives it texture coordinate 1 (0.25, 0.5); the file is "
+    "not read as written");
+}
+
+TEST(FileGeometry, LinesAndPointCellsLeftOutAreCounted)
+{
+  cli::FileGeometry file = SquareInObjFile();
+  vtkSmartPointer<vtkPolyData> read = SquareAsRead();
+  EXPECT_EQ(cli::CellsLeftOut(file, read), ""); // not counted
+  file.LineCells = 2;
+  file.VertexCells = 1;
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType line[2] = { 0, 1 };
+  lines->InsertNextCell(2, line);
+  read->SetLines(lines);
+  EXPECT_EQ(
+    cli::CellsLeftOut(file, read), "1 of its 2 lines ('l') and 1 of its 1 point cells ('p')");
+  lines->InsertNextCell(2, line);
+  vtkNew<vtkCellArray> verts;
+  const vtkIdType vertex[1] = { 3 };
+  verts->InsertNextCell(1, vertex);
+  read->SetVerts(verts);
+  EXPECT_EQ(cli::CellsLeftOut(file, read), "");
+}
+
 TEST(FileGeometry, APolygonOfMoreCornersThanTheReaderHoldsIsRefused)
 {
   // 255 corners read as written; 300 wrap around in vtkPLYReader 9.1's

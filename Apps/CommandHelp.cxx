@@ -141,12 +141,14 @@ Options:
                                         on white, without the mesh: the
                                         smoothed silhouette polylines (the
                                         filter's second output) and the
-                                        smoothed surface's creases and open
-                                        borders (vtkCreaseAndBorderLines:
-                                        creases are where its normals jump,
-                                        at the feature edges the filter
-                                        found), with the parts that surface
-                                        hides left out
+                                        smoothed surface's creases, open
+                                        borders and the curves where its
+                                        parts pass through each other
+                                        (vtkCreaseAndBorderLines: creases
+                                        are where its normals jump, at the
+                                        feature edges the filter found),
+                                        with the parts that surface hides
+                                        left out
                                         (vtkSilhouetteLineVisibility)
                           charcoal, lazy, hand, rough
                                         the same visible lines drawn as

@@ -30,6 +30,10 @@ const char* KindName(double kind)
   {
     return "border";
   }
+  if (kind == 3.0)
+  {
+    return "intersection";
+  }
   return "silhouette";
 }
 

@@ -1,6 +1,7 @@
 /**
  * @class   vtkCreaseAndBorderLines
- * @brief   the creases and open borders of a surface as polylines, for a line drawing
+ * @brief   the creases, open borders and self-intersections of a surface as polylines, for a line
+ * drawing
  *
  * Input: a surface (polygons and strips are read as triangles; vertex and
  * line cells are ignored). Points at equal coordinates (or within
@@ -20,14 +21,22 @@
  * Polylines stop where other than two lines of a kind meet (a box's
  * corners); closed loops repeat their first point at the end.
  *
- * Output: polylines whose every segment is an edge of the surface (so
- * vtkSilhouetteLineVisibility tests them against that surface without a
- * tolerance: see its EdgeTolerance); the points they use, with the
- * surface's point data; cell `LineKind` (unsigned char: 1 crease, 2 border;
- * 0 is the silhouette, as in the smoothing filters' line outputs, so the
- * three append into one drawing); field data `CreaseLineCount` and
- * `BorderLineCount`. Points with NaN or infinite coordinates make the
- * request fail with an error.
+ * Where parts of the surface pass through each other (two spheres joined
+ * without a union, a figure's head sunk into its body, as asset files often
+ * overlap their parts), the curve where they meet is an edge of the image
+ * too: drawn as an intersection line (LineKind 3) when Intersections is on,
+ * its points new, on both triangles, with point data interpolated on one of
+ * them. Triangles sharing a vertex are not tested, and a curve that runs
+ * through a vertex of both parts may lose the short pieces beside it.
+ *
+ * Output: polylines that lie on the surface (crease and border lines are
+ * its edges), so vtkSilhouetteLineVisibility tests them against that
+ * surface without a tolerance (see its EdgeTolerance); the points they use,
+ * with the surface's point data; cell `LineKind` (unsigned char: 1 crease,
+ * 2 border, 3 intersection; 0 is the silhouette, as in the smoothing
+ * filters' line outputs, so they append into one drawing); field data
+ * `CreaseLineCount`, `BorderLineCount` and `IntersectionLineCount`. Points with NaN or infinite
+ * coordinates make the request fail with an error.
  * @sa vtkSilhouetteLineVisibility vtkSilhouetteSmoothingFilter vtkFeatureEdges
  */
 #ifndef vtkCreaseAndBorderLines_h
@@ -54,6 +63,17 @@ public:
   vtkSetMacro(Borders, vtkTypeBool);
   vtkGetMacro(Borders, vtkTypeBool);
   vtkBooleanMacro(Borders, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /**
+   * Draw where the surface passes through itself (default on). It costs a
+   * search of the whole surface for triangles that cut each other, about as
+   * much as the creases and borders.
+   */
+  vtkSetMacro(Intersections, vtkTypeBool);
+  vtkGetMacro(Intersections, vtkTypeBool);
+  vtkBooleanMacro(Intersections, vtkTypeBool);
   ///@}
 
   ///@{
@@ -99,6 +119,7 @@ protected:
 
   vtkTypeBool Creases = 1;
   vtkTypeBool Borders = 1;
+  vtkTypeBool Intersections = 1;
   double NormalJumpAngle = 1.0;
   double FeatureAngle = 30.0;
   double WeldTolerance = 0.0;

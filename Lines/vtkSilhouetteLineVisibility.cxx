@@ -172,8 +172,8 @@ private:
   vtkIdType HiddenPieces = 0;
 };
 
-// Whether input cell `cell` is an edge of the surface (LineKind crease or
-// border, as vtkCreaseAndBorderLines marks them).
+// Whether input cell `cell` lies on the surface itself (LineKind crease,
+// border or intersection, as vtkCreaseAndBorderLines marks them).
 class SurfaceEdgeCells
 {
 public:
@@ -193,7 +193,8 @@ public:
     }
     const double kind = this->Kinds->GetComponent(cell, 0);
     return kind == vtkSilhouetteFilterSupport::CreaseLine ||
-      kind == vtkSilhouetteFilterSupport::BorderLine;
+      kind == vtkSilhouetteFilterSupport::BorderLine ||
+      kind == vtkSilhouetteFilterSupport::IntersectionLine;
   }
 
 private:

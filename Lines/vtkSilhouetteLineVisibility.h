@@ -72,11 +72,11 @@ public:
 
   ///@{
   /**
-   * The tolerance, in the data's units, for the lines that are edges of the
-   * surface itself: cells whose `LineKind` is 1 (crease) or 2 (border), as
-   * vtkCreaseAndBorderLines makes them from the same surface. They lie on it
-   * exactly, so only the triangles they lie on must not hide them, and those
-   * meet the ray at the line's own point. 0 (the default): 1e-5 of the
+   * The tolerance, in the data's units, for the lines that lie on the
+   * surface itself: cells whose `LineKind` is 1 (crease), 2 (border) or 3
+   * (intersection), as vtkCreaseAndBorderLines makes them from the same
+   * surface. They lie on it exactly, so only the triangles they lie on must
+   * not hide them, and those meet the ray at the line's own point. 0 (the default): 1e-5 of the
    * surface's bounding-box diagonal. (With the silhouette's Tolerance, a mean
    * edge long, a box's hidden edges would show near the visible corners.)
    * Pieces of these lines shorter than ten times this tolerance join their

@@ -38,7 +38,8 @@ enum class LineKind : unsigned char
 {
   Silhouette = 0,
   Crease = 1,
-  Border = 2
+  Border = 2,
+  Intersection = 3 ///< where the surface passes through itself (IntersectionLines.h)
 };
 
 struct SurfaceEdgeLineParameters

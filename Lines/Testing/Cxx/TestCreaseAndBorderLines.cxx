@@ -13,6 +13,10 @@
 //   sphere's shadow on the border line.
 // - The same box smooth-shaded (one normal per corner): no crease.
 // - A capped cylinder's silhouette lines end on its rims' crease points.
+// - Two unit spheres overlapping (centres 1 apart, not joined), seen from
+//   above: they meet along one intersection loop near the circle x = 0,
+//   radius sqrt(0.75); its upper half is visible, its lower half hidden.
+//   With Intersections off the drawing has no line there.
 #include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
@@ -330,6 +334,77 @@ bool CheckSilhouettesEndOnCreases()
   return farthest == 0.0 || Fail("the silhouettes end on the creases' points");
 }
 
+bool CheckOverlappingSpheresMeetAlongAVisibleArc()
+{
+  // Different resolutions, so that no vertex of one lies on the other.
+  vtkNew<vtkSphereSource> left;
+  left->SetCenter(-0.5, 0.0, 0.0);
+  left->SetThetaResolution(96);
+  left->SetPhiResolution(48);
+  left->SetRadius(1.0);
+  vtkNew<vtkSphereSource> right;
+  right->SetCenter(0.5, 0.0, 0.0);
+  right->SetThetaResolution(90);
+  right->SetPhiResolution(45);
+  right->SetRadius(1.0);
+  vtkNew<vtkAppendPolyData> scene;
+  scene->AddInputConnection(left->GetOutputPort());
+  scene->AddInputConnection(right->GetOutputPort());
+  vtkNew<vtkCreaseAndBorderLines> edges;
+  edges->SetInputConnection(scene->GetOutputPort());
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(0.0, 0.0, 20.0);
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  vtkNew<vtkSilhouetteLineVisibility> visibility;
+  visibility->SetInputConnection(edges->GetOutputPort());
+  visibility->SetSurfaceConnection(scene->GetOutputPort());
+  visibility->SetCamera(camera);
+  visibility->Update();
+  std::printf("spheres: %lld intersection, %lld crease, %lld border lines\n",
+    static_cast<long long>(FieldValue(edges->GetOutput(), "IntersectionLineCount")),
+    static_cast<long long>(FieldValue(edges->GetOutput(), "CreaseLineCount")),
+    static_cast<long long>(FieldValue(edges->GetOutput(), "BorderLineCount")));
+  if (FieldValue(edges->GetOutput(), "IntersectionLineCount") != 1 ||
+    FieldValue(edges->GetOutput(), "CreaseLineCount") != 0 ||
+    FieldValue(edges->GetOutput(), "BorderLineCount") != 0)
+  {
+    return Fail("two overlapping spheres meet along one loop, with no crease or border");
+  }
+  double visibleLength = 0.0;
+  double hiddenLength = 0.0;
+  double lowestVisible = VTK_DOUBLE_MAX;
+  for (const Piece& piece : Pieces(visibility->GetOutput()))
+  {
+    if (piece.Kind != 3)
+    {
+      return Fail("the spheres' meeting curve is LineKind 3");
+    }
+    (piece.Visible ? visibleLength : hiddenLength) += piece.Length;
+    if (piece.Visible)
+    {
+      lowestVisible = std::min({ lowestVisible, piece.Start[2], piece.End[2] });
+    }
+  }
+  // The circle's halves are pi sqrt(0.75) = 2.7207 long. Where the curve
+  // meets the outline (z = 0), the rays from it graze the facets beside it,
+  // which hide it within about a facet (0.07 of arc) of the outline.
+  const double half = vtkMath::Pi() * std::sqrt(0.75);
+  std::printf("spheres: intersection %.4f visible, %.4f hidden (half the circle %.4f); lowest "
+              "visible end z = %.4f\n",
+    visibleLength, hiddenLength, half, lowestVisible);
+  if (std::abs(visibleLength - half) > 0.2 || std::abs(hiddenLength - half) > 0.2 ||
+    lowestVisible < -0.05)
+  {
+    return Fail("the upper half of the spheres' meeting curve is visible, the lower half hidden");
+  }
+  // The wrong variant: without the intersection curves nothing is drawn
+  // where the spheres meet.
+  edges->IntersectionsOff();
+  edges->Update();
+  return edges->GetOutput()->GetNumberOfLines() == 0 ||
+    Fail("with Intersections off, two overlapping spheres draw no line");
+}
+
 } // namespace
 
 int TestCreaseAndBorderLines(int, char*[])
@@ -356,5 +431,6 @@ int TestCreaseAndBorderLines(int, char*[])
   ok = CheckSphereHidesBorder() && ok;
   ok = CheckSmoothShadedBoxHasNoCrease() && ok;
   ok = CheckSilhouettesEndOnCreases() && ok;
+  ok = CheckOverlappingSpheresMeetAlongAVisibleArc() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1,0 +1,401 @@
+#include "IntersectionLines.h"
+
+#include "SurfaceWelding.h"
+#include "TriangleGrid.h"
+#include "TriangleIntersection.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <utility>
+
+namespace silsmooth
+{
+namespace
+{
+
+/// A segment's end: side (Low, High) of one triangle (welded ids, Low <
+/// High) crossing the interior of triangle Crossed.
+struct CrossingName
+{
+  Id Low = 0;
+  Id High = 0;
+  Id Crossed = 0;
+  bool operator<(const CrossingName& o) const
+  {
+    return std::tie(this->Low, this->High, this->Crossed) < std::tie(o.Low, o.High, o.Crossed);
+  }
+  bool operator==(const CrossingName& o) const
+  {
+    return this->Low == o.Low && this->High == o.High && this->Crossed == o.Crossed;
+  }
+};
+
+struct Crossing
+{
+  CrossingName Name;
+  glm::dvec3 Point{ 0.0 };
+  Id OnTriangle = 0; // the triangle whose side it is
+};
+
+struct Segment
+{
+  Crossing End[2];
+};
+
+/// Whether `at`, on t's plane, lies in t, its sides included.
+bool inTriangle(const glm::dvec3& at, const TriangleShape& t)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    const glm::dvec3& from = t.Corners.P[k];
+    const glm::dvec3& to = t.Corners.P[(k + 1) % 3];
+    if (glm::dot(glm::cross(to - from, at - from), t.UnitNormal) < 0.0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Where side (p, q) crosses triangle `t`: its ends on opposite sides of
+/// t's plane and the crossing in t, its sides included (where a side of one
+/// part crosses a side of the other, as on the plane of symmetry of two
+/// parts, the pairs around the point find it). The same side and triangle
+/// always give the same answer and point.
+bool sideCrossing(const glm::dvec3& p, const glm::dvec3& q, const TriangleShape& t, glm::dvec3& at)
+{
+  const glm::dvec3& n = t.UnitNormal;
+  const glm::dvec3& a = t.Corners.P[0];
+  const double dp = glm::dot(n, p - a);
+  const double dq = glm::dot(n, q - a);
+  if (!((dp > 0.0 && dq < 0.0) || (dp < 0.0 && dq > 0.0)))
+  {
+    return false;
+  }
+  at = p + (dp / (dp - dq)) * (q - p);
+  return inTriangle(at, t);
+}
+
+class IntersectionFinder
+{
+public:
+  IntersectionFinder(const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles,
+    double weldTolerance)
+    : Points(points)
+    , Welded(weldCoincidentPoints(points, weldTolerance))
+  {
+    this->Corners.reserve(triangles.size());
+    this->Shapes.reserve(triangles.size());
+    for (const Triangle& raw : triangles)
+    {
+      Triangle corner;
+      TriangleCorners at;
+      for (int k = 0; k < 3; ++k)
+      {
+        corner[k] = this->Welded[static_cast<std::size_t>(raw[k])];
+        at.P[k] = points[static_cast<std::size_t>(corner[k])];
+      }
+      this->Corners.push_back(corner);
+      this->Shapes.push_back(shapeOf(at));
+    }
+  }
+
+  std::vector<Segment> segments() const
+  {
+    std::vector<Segment> found;
+    const TriangleGrid grid(this->Points, this->Corners);
+    std::vector<Id> candidates;
+    for (std::size_t t = 0; t < this->Corners.size(); ++t)
+    {
+      glm::dvec3 low, high;
+      if (this->Shapes[t].NoInterior ||
+        !TriangleGrid::boxOf(this->Points, this->Corners[t], low, high))
+      {
+        continue;
+      }
+      grid.query(low, high, candidates);
+      for (const Id u : candidates)
+      {
+        Segment segment;
+        if (static_cast<std::size_t>(u) > t && this->segmentOf(static_cast<Id>(t), u, segment))
+        {
+          found.push_back(segment);
+        }
+      }
+    }
+    return found;
+  }
+
+private:
+  bool shareAVertex(const Triangle& a, const Triangle& b) const
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      for (int j = 0; j < 3; ++j)
+      {
+        if (a[i] == b[j])
+        {
+          return true;
+        }
+      }
+    }
+    return false;
+  }
+
+  // The crossings of the sides of triangle `from` through triangle `into`.
+  void crossingsOf(Id from, Id into, std::vector<Crossing>& out) const
+  {
+    const Triangle& corner = this->Corners[static_cast<std::size_t>(from)];
+    for (int k = 0; k < 3; ++k)
+    {
+      Crossing crossing;
+      crossing.Name.Low = std::min(corner[k], corner[(k + 1) % 3]);
+      crossing.Name.High = std::max(corner[k], corner[(k + 1) % 3]);
+      crossing.Name.Crossed = into;
+      crossing.OnTriangle = from;
+      if (sideCrossing(this->Points[static_cast<std::size_t>(crossing.Name.Low)],
+            this->Points[static_cast<std::size_t>(crossing.Name.High)],
+            this->Shapes[static_cast<std::size_t>(into)], crossing.Point))
+      {
+        out.push_back(crossing);
+      }
+    }
+  }
+
+  bool segmentOf(Id a, Id b, Segment& segment) const
+  {
+    const TriangleShape& sa = this->Shapes[static_cast<std::size_t>(a)];
+    const TriangleShape& sb = this->Shapes[static_cast<std::size_t>(b)];
+    if (sb.NoInterior ||
+      this->shareAVertex(
+        this->Corners[static_cast<std::size_t>(a)], this->Corners[static_cast<std::size_t>(b)]) ||
+      !trianglesIntersect(sa, sb))
+    {
+      return false;
+    }
+    std::vector<Crossing> crossings;
+    this->crossingsOf(a, b, crossings);
+    this->crossingsOf(b, a, crossings);
+    // A crossing on a side of the other triangle is found from both: one
+    // point, up to rounding.
+    const double close = 1e-9 * std::max(sa.LongestSide, sb.LongestSide);
+    for (std::size_t i = 0; i < crossings.size(); ++i)
+    {
+      for (std::size_t j = crossings.size(); j-- > i + 1;)
+      {
+        if (glm::length(crossings[j].Point - crossings[i].Point) <= close)
+        {
+          crossings.erase(crossings.begin() + static_cast<std::ptrdiff_t>(j));
+        }
+      }
+    }
+    if (crossings.size() != 2)
+    {
+      return false;
+    }
+    segment.End[0] = crossings[0];
+    segment.End[1] = crossings[1];
+    return true;
+  }
+
+  const std::vector<glm::dvec3>& Points;
+  std::vector<Id> Welded;
+  std::vector<Triangle> Corners;
+  std::vector<TriangleShape> Shapes;
+};
+
+/// Chains segments whose ends share a name: through names that two ends
+/// have; polylines stop at the others.
+class SegmentChainer
+{
+public:
+  explicit SegmentChainer(const std::vector<Segment>& segments)
+    : Segments(segments)
+    , Used(segments.size(), false)
+  {
+    for (std::size_t s = 0; s < segments.size(); ++s)
+    {
+      for (int e = 0; e < 2; ++e)
+      {
+        this->Ends.push_back({ segments[s].End[e].Name, s, e });
+      }
+    }
+    std::sort(this->Ends.begin(), this->Ends.end(),
+      [](const EndRef& x, const EndRef& y) { return x.Name < y.Name; });
+    this->Partner.assign(2 * segments.size(), NoPartner);
+    for (std::size_t i = 0; i < this->Ends.size();)
+    {
+      std::size_t j = i;
+      while (j < this->Ends.size() && this->Ends[j].Name == this->Ends[i].Name)
+      {
+        ++j;
+      }
+      if (j - i == 2)
+      {
+        const std::size_t x = 2 * this->Ends[i].Segment + this->Ends[i].End;
+        const std::size_t y = 2 * this->Ends[i + 1].Segment + this->Ends[i + 1].End;
+        this->Partner[x] = y;
+        this->Partner[y] = x;
+      }
+      i = j;
+    }
+  }
+
+  std::vector<IntersectionLine> polylines()
+  {
+    std::vector<IntersectionLine> lines;
+    // Open polylines from their free ends, then the loops.
+    for (std::size_t s = 0; s < this->Segments.size(); ++s)
+    {
+      for (int e = 0; e < 2 && !this->Used[s]; ++e)
+      {
+        if (this->Partner[2 * s + e] == NoPartner)
+        {
+          lines.push_back(this->walk(s, e));
+        }
+      }
+    }
+    for (std::size_t s = 0; s < this->Segments.size(); ++s)
+    {
+      if (!this->Used[s])
+      {
+        lines.push_back(this->walk(s, 0));
+      }
+    }
+    return lines;
+  }
+
+private:
+  static constexpr std::size_t NoPartner = static_cast<std::size_t>(-1);
+
+  struct EndRef
+  {
+    CrossingName Name;
+    std::size_t Segment;
+    int End;
+  };
+
+  // From end `e` of segment `s` through the segments chained to it.
+  IntersectionLine walk(std::size_t s, int e)
+  {
+    IntersectionLine line;
+    const auto add = [&line](const Crossing& c) {
+      line.Points.push_back(c.Point);
+      line.Triangles.push_back(c.OnTriangle);
+    };
+    add(this->Segments[s].End[e]);
+    while (true)
+    {
+      // A loop ends where it began: its last point is its first, to the bit.
+      this->Used[s] = true;
+      const int other = 1 - e;
+      add(this->Segments[s].End[other]);
+      const std::size_t next = this->Partner[2 * s + static_cast<std::size_t>(other)];
+      if (next == NoPartner || this->Used[next / 2])
+      {
+        return line;
+      }
+      s = next / 2;
+      e = static_cast<int>(next % 2);
+    }
+  }
+
+  const std::vector<Segment>& Segments;
+  std::vector<bool> Used;
+  std::vector<EndRef> Ends;
+  std::vector<std::size_t> Partner;
+};
+
+/// Joins open polylines whose ends meet within `close` where exactly two
+/// ends meet (a curve through a side of each part is found from both sides,
+/// under two names), and closes one whose own ends meet.
+void joinTouchingEnds(std::vector<IntersectionLine>& lines, double close)
+{
+  const auto isOpen = [](const IntersectionLine& l) {
+    return l.Points.size() > 1 && !(l.Points.front() == l.Points.back());
+  };
+  const auto near = [close](const glm::dvec3& a, const glm::dvec3& b) {
+    return glm::length(a - b) <= close;
+  };
+  bool joined = true;
+  while (joined)
+  {
+    joined = false;
+    for (std::size_t i = 0; i < lines.size() && !joined; ++i)
+    {
+      if (!isOpen(lines[i]))
+      {
+        continue;
+      }
+      // Ends meeting the end of line i, other than line i's own.
+      std::vector<std::pair<std::size_t, bool>> met; // line, at its front
+      for (std::size_t j = 0; j < lines.size(); ++j)
+      {
+        if (j != i && isOpen(lines[j]))
+        {
+          if (near(lines[j].Points.front(), lines[i].Points.back()))
+          {
+            met.emplace_back(j, true);
+          }
+          if (near(lines[j].Points.back(), lines[i].Points.back()))
+          {
+            met.emplace_back(j, false);
+          }
+        }
+      }
+      if (met.size() != 1)
+      {
+        continue;
+      }
+      IntersectionLine next = std::move(lines[met[0].first]);
+      if (!met[0].second)
+      {
+        std::reverse(next.Points.begin(), next.Points.end());
+        std::reverse(next.Triangles.begin(), next.Triangles.end());
+      }
+      lines[i].Points.insert(lines[i].Points.end(), next.Points.begin() + 1, next.Points.end());
+      lines[i].Triangles.insert(
+        lines[i].Triangles.end(), next.Triangles.begin() + 1, next.Triangles.end());
+      lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(met[0].first));
+      joined = true;
+    }
+  }
+  for (IntersectionLine& line : lines)
+  {
+    if (isOpen(line) && line.Points.size() > 2 && near(line.Points.front(), line.Points.back()))
+    {
+      line.Points.back() = line.Points.front();
+      line.Triangles.back() = line.Triangles.front();
+    }
+  }
+}
+
+} // namespace
+
+std::vector<IntersectionLine> intersectionLines(const std::vector<glm::dvec3>& points,
+  const std::vector<Triangle>& triangles, double weldTolerance)
+{
+  const std::vector<Segment> segments =
+    IntersectionFinder(points, triangles, weldTolerance).segments();
+  std::vector<IntersectionLine> lines = SegmentChainer(segments).polylines();
+  glm::dvec3 low(HUGE_VAL), high(-HUGE_VAL);
+  for (const IntersectionLine& line : lines)
+  {
+    for (const glm::dvec3& p : line.Points)
+    {
+      low = glm::min(low, p);
+      high = glm::max(high, p);
+    }
+  }
+  if (!lines.empty())
+  {
+    joinTouchingEnds(lines, 1e-9 * glm::length(high - low));
+  }
+  return lines;
+}
+
+} // namespace silsmooth

@@ -1,0 +1,201 @@
+#include "IntersectionLines.h"
+
+#include "CoreTestMeshes.h"
+
+#include <glm/geometric.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace silsmooth;
+using coretest::makeSoup;
+using coretest::unitSphere;
+
+namespace
+{
+
+/// An axis-aligned box [low, high], outward, 8 points and 12 triangles,
+/// appended to `points` and `triangles`.
+void addBox(const glm::dvec3& low, const glm::dvec3& high, std::vector<glm::dvec3>& points,
+  std::vector<Triangle>& triangles)
+{
+  const Id base = static_cast<Id>(points.size());
+  for (int k = 0; k < 8; ++k)
+  {
+    points.emplace_back(k & 1 ? high.x : low.x, k & 2 ? high.y : low.y, k & 4 ? high.z : low.z);
+  }
+  // Outward quads over the corner bits (x 1, y 2, z 4).
+  const int quads[6][4] = { { 0, 2, 3, 1 }, { 4, 5, 7, 6 }, { 0, 1, 5, 4 }, { 2, 6, 7, 3 },
+    { 0, 4, 6, 2 }, { 1, 3, 7, 5 } };
+  for (const auto& q : quads)
+  {
+    triangles.push_back({ base + q[0], base + q[1], base + q[2] });
+    triangles.push_back({ base + q[0], base + q[2], base + q[3] });
+  }
+}
+
+/// A box poking through the face x = 2 of the box [0, 2]^3: they meet along
+/// the rectangle x = 2, y in [0.4, 1.3], z in [0.6, 1.7] (perimeter 4),
+/// whose corners lie on no diagonal of the big box's faces.
+void pokingBoxes(std::vector<glm::dvec3>& points, std::vector<Triangle>& triangles)
+{
+  addBox({ 0, 0, 0 }, { 2, 2, 2 }, points, triangles);
+  addBox({ 1, 0.4, 0.6 }, { 3, 1.3, 1.7 }, points, triangles);
+}
+
+double lengthOf(const IntersectionLine& line)
+{
+  double length = 0.0;
+  for (std::size_t i = 1; i < line.Points.size(); ++i)
+  {
+    length += glm::length(line.Points[i] - line.Points[i - 1]);
+  }
+  return length;
+}
+
+} // namespace
+
+TEST(IntersectionLines, BoxesPokingThroughMeetAlongOneClosedRectangle)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  pokingBoxes(points, triangles);
+  const std::vector<IntersectionLine> lines = intersectionLines(points, triangles);
+  ASSERT_EQ(lines.size(), 1u);
+  const IntersectionLine& loop = lines[0];
+  ASSERT_GE(loop.Points.size(), 5u);
+  EXPECT_EQ(loop.Points.front(), loop.Points.back()); // closed, to the bit
+  EXPECT_EQ(loop.Triangles.size(), loop.Points.size());
+  EXPECT_NEAR(lengthOf(loop), 4.0, 1e-12);
+  for (const glm::dvec3& p : loop.Points)
+  {
+    EXPECT_EQ(p.x, 2.0);
+    // On the rectangle's boundary.
+    const double off = std::min(
+      { std::abs(p.y - 0.4), std::abs(p.y - 1.3), std::abs(p.z - 0.6), std::abs(p.z - 1.7) });
+    EXPECT_LT(off, 1e-12) << p.y << " " << p.z;
+    EXPECT_GE(p.y, 0.4 - 1e-12);
+    EXPECT_LE(p.y, 1.3 + 1e-12);
+    EXPECT_GE(p.z, 0.6 - 1e-12);
+    EXPECT_LE(p.z, 1.7 + 1e-12);
+  }
+}
+
+TEST(IntersectionLines, ASurfaceThatDoesNotPassThroughItselfHasNone)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  addBox({ 0, 0, 0 }, { 2, 2, 2 }, points, triangles);
+  EXPECT_TRUE(intersectionLines(points, triangles).empty());
+  // Apart, and face to face (coplanar contact has nothing to draw).
+  addBox({ 3, 0, 0 }, { 4, 1, 1 }, points, triangles);
+  addBox({ 2, 0.5, 0.5 }, { 2.5, 1, 1 }, points, triangles);
+  EXPECT_TRUE(intersectionLines(points, triangles).empty());
+  // A closed sphere, whose neighbours share corners.
+  unitSphere(24, 48, points, triangles);
+  EXPECT_TRUE(intersectionLines(points, triangles).empty());
+}
+
+TEST(IntersectionLines, ATriangleSoupChainsAsTheWeldedSurface)
+{
+  std::vector<glm::dvec3> points, soupPoints;
+  std::vector<Triangle> triangles, soupTriangles;
+  pokingBoxes(points, triangles);
+  makeSoup(points, triangles, soupPoints, soupTriangles);
+  const std::vector<IntersectionLine> lines = intersectionLines(soupPoints, soupTriangles);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(lines[0].Points.front(), lines[0].Points.back());
+  EXPECT_NEAR(lengthOf(lines[0]), 4.0, 1e-12);
+}
+
+namespace
+{
+
+/// Two unit UV spheres (24 rings, 48 sectors) centred at x = -0.5 and
+/// 0.5, the second turned about x by `turn` radians: they meet along a curve
+/// near the circle x = 0, radius sqrt(0.75). Their polyhedra stand at most
+/// 1 - cos(pi / 24) = 0.0086 inside the spheres.
+void overlappingSpheres(
+  double turn, std::vector<glm::dvec3>& points, std::vector<Triangle>& triangles)
+{
+  std::vector<glm::dvec3> right;
+  std::vector<Triangle> rightTriangles;
+  unitSphere(24, 48, points, triangles);
+  unitSphere(24, 48, right, rightTriangles);
+  for (glm::dvec3& p : points)
+  {
+    p = glm::dvec3(p.z - 0.5, p.x, p.y); // poles on x, so the curve crosses many rings
+  }
+  const Id base = static_cast<Id>(points.size());
+  for (const glm::dvec3& p : right)
+  {
+    const double c = std::cos(turn), s = std::sin(turn);
+    points.emplace_back(p.y + 0.5, c * p.z - s * p.x, s * p.z + c * p.x);
+  }
+  for (const Triangle& t : rightTriangles)
+  {
+    triangles.push_back({ t[0] + base, t[1] + base, t[2] + base });
+  }
+}
+
+void expectNearTheCircle(const std::vector<IntersectionLine>& lines)
+{
+  double length = 0.0;
+  for (const IntersectionLine& line : lines)
+  {
+    for (const glm::dvec3& p : line.Points)
+    {
+      EXPECT_LT(std::abs(p.x), 0.01);
+      EXPECT_LT(std::abs(std::hypot(p.y, p.z) - std::sqrt(0.75)), 0.01);
+    }
+    length += lengthOf(line);
+  }
+  // About the circle's length, 2 pi sqrt(0.75) = 5.441.
+  EXPECT_NEAR(length, 2.0 * M_PI * std::sqrt(0.75), 0.05);
+}
+
+} // namespace
+
+TEST(IntersectionLines, OverlappingSpheresMeetAlongOneLoop)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  overlappingSpheres(0.3, points, triangles);
+  const std::vector<IntersectionLine> lines = intersectionLines(points, triangles);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(lines[0].Points.front(), lines[0].Points.back());
+  expectNearTheCircle(lines);
+}
+
+TEST(IntersectionLines, ACurveThroughCoincidentVerticesLosesOnlyShortPieces)
+{
+  // Unturned, the spheres are symmetric: the curve passes through places
+  // where both have a vertex, up to rounding. Triangles with a corner on the
+  // other's plane have one crossing, not two, and add no segment: the curve
+  // has gaps there, each shorter than a triangle's side (0.13).
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  overlappingSpheres(0.0, points, triangles);
+  const std::vector<IntersectionLine> lines = intersectionLines(points, triangles);
+  ASSERT_GT(lines.size(), 1u);
+  double length = 0.0;
+  for (const IntersectionLine& line : lines)
+  {
+    length += lengthOf(line);
+    for (const glm::dvec3& end : { line.Points.front(), line.Points.back() })
+    {
+      double nearest = HUGE_VAL;
+      for (const IntersectionLine& other : lines)
+      {
+        if (&other != &line)
+        {
+          nearest = std::min({ nearest, glm::length(other.Points.front() - end),
+            glm::length(other.Points.back() - end) });
+        }
+      }
+      EXPECT_LT(nearest, 0.05);
+    }
+  }
+  EXPECT_GT(length, 0.97 * 2.0 * M_PI * std::sqrt(0.75));
+}

@@ -1,6 +1,7 @@
 #include "PlyCheck.h"
 
 #include "CliErrors.h"
+#include "PlyHeader.h"
 #include "TextScanning.h"
 
 #include <algorithm>
@@ -19,46 +20,10 @@ namespace cli
 namespace
 {
 
-// The PLY format separates the words of a line by spaces (tabs are common
-// too): any other byte, a control character or a NUL among them, is part of
-// a word, so a number or a name holding one is not what it seems.
+// Words of an ASCII body line: PLY separates them by spaces (and tabs).
 constexpr const char* WordSeparators = " \t";
 
-enum class ScalarType
-{
-  Int8,
-  UInt8,
-  Int16,
-  UInt16,
-  Int32,
-  UInt32,
-  Float32,
-  Float64
-};
-
-std::optional<ScalarType> ScalarTypeNamed(const std::string& name)
-{
-  struct Named
-  {
-    const char* Name;
-    ScalarType Type;
-  };
-  static const Named types[] = { { "char", ScalarType::Int8 }, { "int8", ScalarType::Int8 },
-    { "uchar", ScalarType::UInt8 }, { "uint8", ScalarType::UInt8 }, { "short", ScalarType::Int16 },
-    { "int16", ScalarType::Int16 }, { "ushort", ScalarType::UInt16 },
-    { "uint16", ScalarType::UInt16 }, { "int", ScalarType::Int32 }, { "int32", ScalarType::Int32 },
-    { "uint", ScalarType::UInt32 }, { "uint32", ScalarType::UInt32 },
-    { "float", ScalarType::Float32 }, { "float32", ScalarType::Float32 },
-    { "double", ScalarType::Float64 }, { "float64", ScalarType::Float64 } };
-  for (const Named& type : types)
-  {
-    if (name == type.Name)
-    {
-      return type.Type;
-    }
-  }
-  return std::nullopt;
-}
+using namespace ply;
 
 // A value of type T from its bytes, already in host order.
 template<typename T>
@@ -68,79 +33,6 @@ double FromBytes(const unsigned char* raw)
   std::memcpy(&value, raw, sizeof(T));
   return static_cast<double>(value);
 }
-
-std::size_t SizeOf(ScalarType type)
-{
-  switch (type)
-  {
-    case ScalarType::Int8:
-    case ScalarType::UInt8:
-      return 1;
-    case ScalarType::Int16:
-    case ScalarType::UInt16:
-      return 2;
-    case ScalarType::Float64:
-      return 8;
-    default:
-      return 4;
-  }
-}
-
-// The values an integer type holds (vtkPLYReader would wrap the others around).
-std::pair<double, double> RangeOf(ScalarType type)
-{
-  switch (type)
-  {
-    case ScalarType::Int8:
-      return { -128.0, 127.0 };
-    case ScalarType::UInt8:
-      return { 0.0, 255.0 };
-    case ScalarType::Int16:
-      return { -32768.0, 32767.0 };
-    case ScalarType::UInt16:
-      return { 0.0, 65535.0 };
-    case ScalarType::Int32:
-      return { -2147483648.0, 2147483647.0 };
-    case ScalarType::UInt32:
-      return { 0.0, 4294967295.0 };
-    default:
-      return { -HUGE_VAL, HUGE_VAL };
-  }
-}
-
-bool IsInteger(ScalarType type)
-{
-  return type != ScalarType::Float32 && type != ScalarType::Float64;
-}
-
-struct Property
-{
-  std::string Name;
-  ScalarType Type = ScalarType::Float32;
-  bool IsList = false;
-  ScalarType CountType = ScalarType::UInt8;
-};
-
-struct Element
-{
-  std::string Name;
-  long long Count = 0;
-  std::vector<Property> Properties;
-};
-
-enum class Format
-{
-  Ascii,
-  BinaryLittleEndian,
-  BinaryBigEndian
-};
-
-struct Header
-{
-  Format BodyFormat = Format::Ascii;
-  std::vector<Element> Elements;
-  std::size_t BodyOffset = 0;
-};
 
 class PlyChecker
 {
@@ -156,8 +48,10 @@ public:
 
   PlyFacts Check()
   {
-    const Header header = this->ReadHeader();
-    this->CheckElements(header);
+    const Header header = ReadHeader(this->Path, this->Bytes);
+    const Element& vertices = CheckElements(this->Path, header);
+    this->VertexCount = vertices.Count;
+    this->FindGeometrySlots(vertices);
     this->Body = TextCursor(this->Bytes, header.BodyOffset);
     for (const Element& element : header.Elements)
     {
@@ -212,198 +106,6 @@ private:
     throw RuntimeError("cannot read '" + this->Path + "': " + problem);
   }
 
-  Header ReadHeader()
-  {
-    Header header;
-    std::size_t lineNumber = 0;
-    bool sawFormat = false;
-    TextCursor lines(this->Bytes);
-    while (true)
-    {
-      std::string line;
-      bool ended = false;
-      if (!lines.NextLine(line, &ended) || !ended)
-      {
-        this->Fail(lineNumber == 0 ? "empty file" : "the header has no end_header line");
-      }
-      ++lineNumber;
-      if (!line.empty() && line.back() == '\r')
-      {
-        line.pop_back();
-      }
-      const std::vector<std::string> words = WordsOf(line, WordSeparators);
-      const auto word = [&words](std::size_t k) {
-        return k < words.size() ? words[k] : std::string();
-      };
-      const std::string keyword = word(0);
-      const std::string where = "header line " + std::to_string(lineNumber);
-      if (lineNumber == 1)
-      {
-        if (keyword != "ply")
-        {
-          this->Fail("the file does not start with 'ply'");
-        }
-        continue;
-      }
-      if (keyword == "format")
-      {
-        const std::string format = word(1);
-        if (format == "ascii")
-        {
-          header.BodyFormat = Format::Ascii;
-        }
-        else if (format == "binary_little_endian")
-        {
-          header.BodyFormat = Format::BinaryLittleEndian;
-        }
-        else if (format == "binary_big_endian")
-        {
-          header.BodyFormat = Format::BinaryBigEndian;
-        }
-        else
-        {
-          this->Fail(where + ": unknown format '" + format + "'");
-        }
-        sawFormat = true;
-      }
-      else if (keyword == "element")
-      {
-        Element element;
-        element.Name = word(1);
-        if (element.Name.empty() || !ParseWholeInteger(word(2), element.Count) || element.Count < 0)
-        {
-          this->Fail(where + ": bad element line '" + line + "'");
-        }
-        header.Elements.push_back(element);
-      }
-      else if (keyword == "property")
-      {
-        if (header.Elements.empty())
-        {
-          this->Fail(where + ": property before any element");
-        }
-        Property property;
-        const std::string type = word(1);
-        if (type == "list")
-        {
-          property.Name = word(4);
-          const auto count = ScalarTypeNamed(word(2));
-          const auto item = ScalarTypeNamed(word(3));
-          if (!count || !IsInteger(*count) || !item)
-          {
-            this->Fail(where + ": bad list property '" + line + "'");
-          }
-          property.IsList = true;
-          property.CountType = *count;
-          property.Type = *item;
-        }
-        else
-        {
-          property.Name = word(2);
-          const auto scalar = ScalarTypeNamed(type);
-          if (!scalar)
-          {
-            this->Fail(where + ": unknown property type '" + type + "'");
-          }
-          property.Type = *scalar;
-        }
-        if (property.Name.empty())
-        {
-          this->Fail(where + ": property without a name");
-        }
-        header.Elements.back().Properties.push_back(property);
-      }
-      else if (keyword == "end_header")
-      {
-        break;
-      }
-      // Any other line is ignored, as vtkPLYReader ignores it: exporters
-      // write such lines (Blender 2.4's "Created by ..." without "comment").
-    }
-    if (!sawFormat)
-    {
-      this->Fail("the header has no format line");
-    }
-    header.BodyOffset = lines.Position();
-    return header;
-  }
-
-  // A mesh needs a vertex element with scalar x, y and z. Elements are
-  // looked up by name, so a repeated one is ambiguous. Faces need their
-  // vertex indices as a list (vertex_indices or vertex_index).
-  void CheckElements(const Header& header)
-  {
-    const Element* vertices = nullptr;
-    for (std::size_t e = 0; e < header.Elements.size(); ++e)
-    {
-      const Element& element = header.Elements[e];
-      for (std::size_t other = 0; other < e; ++other)
-      {
-        // The reader looks the vertices and faces up by name; it skips other
-        // elements whatever their names.
-        if (header.Elements[other].Name == element.Name &&
-          (element.Name == "vertex" || element.Name == "face"))
-        {
-          this->Fail("element '" + element.Name + "' appears twice");
-        }
-      }
-      if (element.Name == "vertex")
-      {
-        vertices = &element;
-      }
-      // The reader reads faces from the face element only: strips (a
-      // 'tristrips' element) or faces under another name would be lost.
-      const bool indexed =
-        std::any_of(element.Properties.begin(), element.Properties.end(), [](const Property& p) {
-          return p.IsList && (p.Name == "vertex_indices" || p.Name == "vertex_index");
-        });
-      if (element.Name != "face" && indexed && element.Count > 0)
-      {
-        this->Unsupported("its element '" + element.Name +
-          "' holds vertex indices, which vtkPLYReader 9.1 does not read (it reads the 'face' "
-          "element only); write them as faces");
-      }
-      // The reader frees an uninitialised pointer for each face without
-      // indices, and crashes closing the file when the face element has none
-      // even with no faces (found by fuzz_mesh_io).
-      if (element.Name == "face" &&
-        std::none_of(element.Properties.begin(), element.Properties.end(),
-          [&element](const Property& property) { return IsVertexIndexList(element, property); }))
-      {
-        this->Fail("the face element has no 'vertex_indices' list");
-      }
-    }
-    if (!vertices)
-    {
-      this->Fail("there is no vertex element");
-    }
-    // The reader reads the vertices first wherever they are, and crashes
-    // when the faces come before them.
-    for (const Element& element : header.Elements)
-    {
-      if (&element == vertices)
-      {
-        break;
-      }
-      if (element.Name == "face" && element.Count > 0)
-      {
-        this->Unsupported("its faces come before its vertices, which is valid PLY but "
-                          "vtkPLYReader 9.1 cannot read (write the vertex element first)");
-      }
-    }
-    for (const char* axis : { "x", "y", "z" })
-    {
-      const auto found = std::find_if(vertices->Properties.begin(), vertices->Properties.end(),
-        [axis](const Property& property) { return property.Name == axis; });
-      if (found == vertices->Properties.end() || found->IsList)
-      {
-        this->Fail(std::string("the vertex element has no scalar '") + axis + "' property");
-      }
-    }
-    this->VertexCount = vertices->Count;
-    this->FindGeometrySlots(*vertices);
-  }
-
   // Which of the vertex element's properties are the position (slots 0 to
   // 2) and the normal (3 to 5, all three or none), as the reader maps them.
   void FindGeometrySlots(const Element& vertices)
@@ -425,12 +127,6 @@ private:
     }
     this->Facts.Geometry.VertexOrderKept = true;
     this->HasNormals = normals == 3;
-  }
-
-  static bool IsVertexIndexList(const Element& element, const Property& property)
-  {
-    return element.Name == "face" && property.IsList &&
-      (property.Name == "vertex_indices" || property.Name == "vertex_index");
   }
 
   void CheckVertexIndex(double index, long long face) const

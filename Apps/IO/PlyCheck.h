@@ -10,7 +10,7 @@ namespace cli
 
 /**
  * Checks a PLY file before vtkPLYReader sees it, by the format's own rules:
- * its header, and its whole body (ASCII, one element a line, words split at
+ * its header (PlyHeader.h), and its whole body (ASCII, one element a line, words split at
  * spaces and tabs; or binary, either byte order). Throws RuntimeError with
  * one line naming the first problem: a value that is no number of its type
  * (an integer in anything but decimal digits among them), an index of no

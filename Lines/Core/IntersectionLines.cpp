@@ -46,19 +46,43 @@ struct Segment
   Crossing End[2];
 };
 
-/// Whether `at`, on t's plane, lies in t, its sides included.
+/// How far outside a triangle's sides (relative to its longest side) a
+/// crossing still counts as in it: a point on a side, computed from another
+/// triangle, lands on either side of it by a rounding error.
+constexpr double SideTolerance = 1e-9;
+
+/// Whether `at`, on t's plane, lies in t, its sides included (within
+/// SideTolerance).
 bool inTriangle(const glm::dvec3& at, const TriangleShape& t)
 {
   for (int k = 0; k < 3; ++k)
   {
     const glm::dvec3& from = t.Corners.P[k];
     const glm::dvec3& to = t.Corners.P[(k + 1) % 3];
-    if (glm::dot(glm::cross(to - from, at - from), t.UnitNormal) < 0.0)
+    // The distance from the side's line, times the side's length.
+    const double inside = glm::dot(glm::cross(to - from, at - from), t.UnitNormal);
+    if (inside < -SideTolerance * t.LongestSide * glm::length(to - from))
     {
       return false;
     }
   }
   return true;
+}
+
+/// Whether `t` has corners on both sides of the plane of `other`, each
+/// farther from it than a rounding error.
+bool straddles(const TriangleShape& t, const TriangleShape& other)
+{
+  const double near = 1e-12 * std::max(t.LongestSide, other.LongestSide);
+  bool above = false;
+  bool below = false;
+  for (const glm::dvec3& p : t.Corners.P)
+  {
+    const double d = glm::dot(other.UnitNormal, p - other.Corners.P[0]);
+    above = above || d > near;
+    below = below || d < -near;
+  }
+  return above && below;
 }
 
 /// Where side (p, q) crosses triangle `t`: its ends on opposite sides of
@@ -170,10 +194,16 @@ private:
   {
     const TriangleShape& sa = this->Shapes[static_cast<std::size_t>(a)];
     const TriangleShape& sb = this->Shapes[static_cast<std::size_t>(b)];
+    // Not trianglesIntersect's test, which wants a side through the other's
+    // interior: where parts are laid out alike (two copies of a UV sphere
+    // side by side, boxes whose faces line up) the curve runs from side to
+    // side, crossing sides only. The surfaces cross where each triangle has
+    // corners on both sides of the other's plane; a triangle that touches the
+    // other along its side, or lies in its plane, does not cross it.
     if (sb.NoInterior ||
       this->shareAVertex(
         this->Corners[static_cast<std::size_t>(a)], this->Corners[static_cast<std::size_t>(b)]) ||
-      !trianglesIntersect(sa, sb))
+      !straddles(sa, sb) || !straddles(sb, sa))
     {
       return false;
     }
@@ -310,70 +340,114 @@ private:
   std::vector<std::size_t> Partner;
 };
 
+/// An end of an open polyline.
+struct LineEnd
+{
+  std::size_t Line;
+  bool Front;
+  glm::dvec3 Point;
+};
+
 /// Joins open polylines whose ends meet within `close` where exactly two
-/// ends meet (a curve through a side of each part is found from both sides,
-/// under two names), and closes one whose own ends meet.
+/// ends meet (where a side of one part crosses a side of the other the point
+/// is found under two names), then closes those whose own ends meet. Ends
+/// are matched after sorting them along x.
 void joinTouchingEnds(std::vector<IntersectionLine>& lines, double close)
 {
-  const auto isOpen = [](const IntersectionLine& l) {
-    return l.Points.size() > 1 && !(l.Points.front() == l.Points.back());
-  };
-  const auto near = [close](const glm::dvec3& a, const glm::dvec3& b) {
-    return glm::length(a - b) <= close;
-  };
-  bool joined = true;
-  while (joined)
+  constexpr std::size_t None = static_cast<std::size_t>(-1);
+  std::vector<LineEnd> ends;
+  std::vector<std::size_t> frontEnd(lines.size(), None);
+  std::vector<std::size_t> backEnd(lines.size(), None);
+  for (std::size_t i = 0; i < lines.size(); ++i)
   {
-    joined = false;
-    for (std::size_t i = 0; i < lines.size() && !joined; ++i)
+    const IntersectionLine& l = lines[i];
+    if (l.Points.size() > 1 && !(l.Points.front() == l.Points.back()))
     {
-      if (!isOpen(lines[i]))
-      {
-        continue;
-      }
-      // Ends meeting the end of line i, other than line i's own.
-      std::vector<std::pair<std::size_t, bool>> met; // line, at its front
-      for (std::size_t j = 0; j < lines.size(); ++j)
-      {
-        if (j != i && isOpen(lines[j]))
-        {
-          if (near(lines[j].Points.front(), lines[i].Points.back()))
-          {
-            met.emplace_back(j, true);
-          }
-          if (near(lines[j].Points.back(), lines[i].Points.back()))
-          {
-            met.emplace_back(j, false);
-          }
-        }
-      }
-      if (met.size() != 1)
-      {
-        continue;
-      }
-      IntersectionLine next = std::move(lines[met[0].first]);
-      if (!met[0].second)
-      {
-        std::reverse(next.Points.begin(), next.Points.end());
-        std::reverse(next.Triangles.begin(), next.Triangles.end());
-      }
-      lines[i].Points.insert(lines[i].Points.end(), next.Points.begin() + 1, next.Points.end());
-      lines[i].Triangles.insert(
-        lines[i].Triangles.end(), next.Triangles.begin() + 1, next.Triangles.end());
-      lines.erase(lines.begin() + static_cast<std::ptrdiff_t>(met[0].first));
-      joined = true;
+      ends.push_back({ i, true, l.Points.front() });
+      ends.push_back({ i, false, l.Points.back() });
     }
   }
-  for (IntersectionLine& line : lines)
+  std::sort(ends.begin(), ends.end(),
+    [](const LineEnd& x, const LineEnd& y) { return x.Point.x < y.Point.x; });
+  // Each end's partner: the other end within `close`, when it is the only one
+  // either way.
+  std::vector<std::size_t> partner(ends.size(), None);
+  std::vector<int> meeting(ends.size(), 0);
+  for (std::size_t i = 0; i < ends.size(); ++i)
   {
-    if (isOpen(line) && line.Points.size() > 2 && near(line.Points.front(), line.Points.back()))
+    (ends[i].Front ? frontEnd : backEnd)[ends[i].Line] = i;
+    for (std::size_t j = i + 1; j < ends.size() && ends[j].Point.x - ends[i].Point.x <= close; ++j)
+    {
+      if (glm::length(ends[j].Point - ends[i].Point) <= close)
+      {
+        ++meeting[i];
+        ++meeting[j];
+        partner[i] = j;
+        partner[j] = i;
+      }
+    }
+  }
+  const auto linked = [&](std::size_t e) {
+    return e != None && meeting[e] == 1 && meeting[partner[e]] == 1 ? partner[e] : None;
+  };
+  std::vector<bool> used(lines.size(), false);
+  // From one end of `line` through the linked ends, each line once.
+  const auto follow = [&](std::size_t line, bool forward) {
+    IntersectionLine out;
+    std::size_t at = line;
+    while (true)
+    {
+      used[at] = true;
+      IntersectionLine& l = lines[at];
+      if (!forward)
+      {
+        std::reverse(l.Points.begin(), l.Points.end());
+        std::reverse(l.Triangles.begin(), l.Triangles.end());
+      }
+      const std::ptrdiff_t skip = out.Points.empty() ? 0 : 1;
+      out.Points.insert(out.Points.end(), l.Points.begin() + skip, l.Points.end());
+      out.Triangles.insert(out.Triangles.end(), l.Triangles.begin() + skip, l.Triangles.end());
+      const std::size_t next = linked(forward ? backEnd[at] : frontEnd[at]);
+      if (next == None || used[ends[next].Line])
+      {
+        return out;
+      }
+      at = ends[next].Line;
+      forward = ends[next].Front;
+    }
+  };
+  std::vector<IntersectionLine> joined;
+  // Chains from an end linked to nothing first, then the rings left.
+  for (std::size_t i = 0; i < lines.size(); ++i)
+  {
+    if (!used[i] && frontEnd[i] != None && linked(frontEnd[i]) == None)
+    {
+      joined.push_back(follow(i, true));
+    }
+    else if (!used[i] && frontEnd[i] != None && linked(backEnd[i]) == None)
+    {
+      joined.push_back(follow(i, false));
+    }
+  }
+  for (std::size_t i = 0; i < lines.size(); ++i)
+  {
+    if (!used[i])
+    {
+      used[i] = true;
+      joined.push_back(frontEnd[i] == None ? std::move(lines[i]) : follow(i, true));
+    }
+  }
+  for (IntersectionLine& line : joined)
+  {
+    if (line.Points.size() > 2 && !(line.Points.front() == line.Points.back()) &&
+      glm::length(line.Points.front() - line.Points.back()) <= close)
     {
       line.Points.back() = line.Points.front();
       line.Triangles.back() = line.Triangles.front();
     }
   }
+  lines = std::move(joined);
 }
-
 } // namespace
 
 std::vector<IntersectionLine> intersectionLines(const std::vector<glm::dvec3>& points,

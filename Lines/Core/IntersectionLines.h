@@ -4,22 +4,25 @@
 // image, but neither a silhouette, a crease nor a border.
 //
 // Rule: points are welded first, as surfaceEdgeLines welds them. Two
-// triangles that share no welded vertex and cut through each other
-// (trianglesIntersect's rule) meet along a segment, whose ends are where a
-// side of one crosses the interior of the other. Each end is named by that
-// side (its welded ends) and the triangle it crosses; the next pair along the
-// curve crosses the same side through the same triangle, so segments chain
-// by name, without a tolerance, and the two compute the point alike (the
-// side is always taken from its lower welded end), so the chained points are
-// equal to the bit. A pair whose crossings are not exactly two (a curve
-// through a corner, up to rounding) adds no segment, and the curve stops
-// there.
+// triangles that share no welded vertex cross when each has corners on both
+// sides of the other's plane (a touch along a side, or a shared plane, is no
+// crossing); they then meet along a segment whose ends are where a side of
+// one crosses the other, its sides included within 1e-9 of its size (where
+// parts are laid out alike, the curve crosses sides of both). Each end is
+// named by that side (its welded ends) and the triangle it crosses; the next
+// pair along the curve crosses the same side through the same triangle, so
+// segments chain by name, without a tolerance, into points equal to the bit
+// (the side is always taken from its lower welded end). An end found from
+// both triangles (a side of each, crossing) is one point; the pieces that
+// meet there under two names are joined afterwards, where exactly two ends
+// lie within 1e-9 of the curves' size. A pair whose crossings are not two (a
+// curve through a corner) adds no segment: a gap shorter than a triangle.
 //
 // Invariants: every point lies on both triangles of its segment (up to
-// rounding: it is on a side of one and found inside the other); polylines
-// stop where other than two segments meet, and a closed loop repeats its
-// first point at the end. Triangles sharing a vertex are not tested: a
-// surface that folds onto its neighbour has no curve to draw there.
+// rounding); polylines stop where other than two pieces meet (curves that
+// cross), and a closed loop repeats its first point at the end, to the bit.
+// Triangles sharing a vertex are not tested: a surface that folds onto its
+// neighbour has no curve to draw there.
 #pragma once
 
 #include "MeshTopology.h"

@@ -5,6 +5,8 @@
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkDataArray.h>
+#include <vtkFloatArray.h>
+#include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
@@ -67,8 +69,16 @@ public:
 
   void Run() const
   {
-    this->CompareVertices();
-    this->CompareFaces();
+    this->CompareVertices(this->File.VertexOrderKept);
+    const bool fileNumbering = this->CompareFaces();
+    // A reader whose faces use the file's vertex numbers kept the file's
+    // vertices as its points: the ones no face uses are compared too (they
+    // frame the view).
+    if (!this->File.VertexOrderKept && fileNumbering &&
+      this->Read->GetNumberOfPoints() == this->File.VertexCount())
+    {
+      this->CompareVertices(true);
+    }
   }
 
 private:
@@ -77,9 +87,9 @@ private:
     throw RuntimeError(this->Prefix + what + "; the file is not read as written");
   }
 
-  void CompareVertices() const
+  void CompareVertices(bool inOrder) const
   {
-    if (!this->File.VertexOrderKept)
+    if (!inOrder)
     {
       return;
     }
@@ -115,9 +125,7 @@ private:
   }
 
   // The point data a corner of the file is compared against: the reader's
-  // normals; for texture coordinates every two-component point array, since
-  // a reader may keep one array per texture map (vtkOBJReader does, per
-  // material), each holding only its faces' coordinates.
+  // normals and texture coordinates.
   struct CornerAttribute
   {
     const char* Name;
@@ -137,19 +145,11 @@ private:
       attributes.push_back(
         { "normal", this->File.CornerNormals, this->File.NormalTable, 3, { normals } });
     }
-    std::vector<vtkDataArray*> textures;
-    for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+    vtkDataArray* textures = data->GetTCoords();
+    if (!this->File.CornerTextures.empty() && textures && textures->GetNumberOfComponents() == 2)
     {
-      vtkDataArray* array = data->GetArray(a);
-      if (array && array->GetNumberOfComponents() == 2)
-      {
-        textures.push_back(array);
-      }
-    }
-    if (!this->File.CornerTextures.empty() && !textures.empty())
-    {
-      attributes.push_back(
-        { "texture coordinate", this->File.CornerTextures, this->File.TextureTable, 2, textures });
+      attributes.push_back({ "texture coordinate", this->File.CornerTextures,
+        this->File.TextureTable, 2, { textures } });
     }
     return attributes;
   }
@@ -214,7 +214,9 @@ private:
       this->FaceName(face);
   }
 
-  void CompareFaces() const
+  // Returns whether every corner the reader gave uses the file's number for
+  // its vertex.
+  bool CompareFaces() const
   {
     vtkCellArray* polys = this->Read->GetPolys();
     const std::int64_t count = this->File.FaceCount();
@@ -226,8 +228,9 @@ private:
     }
     if (count == 0)
     {
-      return;
+      return true;
     }
+    bool fileNumbering = true;
     const std::vector<CornerAttribute> attributes = this->CornerAttributes();
     auto cells = vtk::TakeSmartPointer(polys->NewIterator());
     std::int64_t face = 0;
@@ -247,8 +250,10 @@ private:
       {
         this->CompareCorner(face, k, ids[k], this->File.FaceCorners[start + k]);
         this->CompareCornerAttributes(attributes, face, k, ids[k], start + k);
+        fileNumbering = fileNumbering && ids[k] == this->File.FaceCorners[start + k];
       }
     }
+    return fileNumbering;
   }
 
   void CompareCorner(
@@ -277,6 +282,78 @@ private:
 };
 
 } // namespace
+
+std::string JoinTextureCoordinateArrays(vtkPolyData* read)
+{
+  vtkPointData* data = read->GetPointData();
+  std::vector<vtkDataArray*> arrays;
+  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = data->GetArray(a);
+    if (array && array->GetNumberOfComponents() == 2 && array != data->GetNormals())
+    {
+      arrays.push_back(array);
+    }
+  }
+  if (arrays.size() < 2)
+  {
+    return "";
+  }
+  vtkNew<vtkFloatArray> joined;
+  joined->SetName("TCoords");
+  joined->SetNumberOfComponents(2);
+  joined->SetNumberOfTuples(read->GetNumberOfPoints());
+  std::string names;
+  for (vtkIdType p = 0; p < read->GetNumberOfPoints(); ++p)
+  {
+    double uv[2] = { -1.0, -1.0 };
+    for (vtkDataArray* array : arrays)
+    {
+      double value[2];
+      array->GetTuple(p, value);
+      if (value[0] != -1.0 || value[1] != -1.0)
+      {
+        uv[0] = value[0];
+        uv[1] = value[1];
+        break;
+      }
+    }
+    joined->SetTuple(p, uv);
+  }
+  for (vtkDataArray* array : arrays)
+  {
+    names +=
+      (names.empty() ? "'" : ", '") + std::string(array->GetName() ? array->GetName() : "") + "'";
+  }
+  for (vtkDataArray* array : arrays)
+  {
+    data->RemoveArray(array->GetName());
+  }
+  data->SetTCoords(joined);
+  return names;
+}
+
+std::string DropUnnamedCornerData(const FileGeometry& file, vtkPolyData* read)
+{
+  const auto unnamed = [](const std::vector<double>& table,
+                         const std::vector<std::int64_t>& corners) {
+    return !table.empty() &&
+      std::all_of(corners.begin(), corners.end(), [](std::int64_t e) { return e < 0; });
+  };
+  std::string dropped;
+  vtkPointData* data = read->GetPointData();
+  if (unnamed(file.NormalTable, file.CornerNormals) && data->GetNormals())
+  {
+    data->SetNormals(nullptr);
+    dropped = "normals ('vn')";
+  }
+  if (unnamed(file.TextureTable, file.CornerTextures) && data->GetTCoords())
+  {
+    data->SetTCoords(nullptr);
+    dropped += (dropped.empty() ? "" : " and ") + std::string("texture coordinates ('vt')");
+  }
+  return dropped;
+}
 
 std::string CellsLeftOut(const FileGeometry& file, vtkPolyData* read)
 {

@@ -62,6 +62,19 @@ struct FileGeometry
 void RequireReadAsWritten(const FileGeometry& file, vtkPolyData* read, const std::string& path,
   const std::string& readerName);
 
+/// One texture-coordinate array (`TCoords`, active) for a reader that keeps
+/// one per texture map, each holding only its faces' corners and (-1, -1)
+/// elsewhere (vtkOBJReader does, per material): a point takes the first
+/// array's value that is not (-1, -1). Returns the joined arrays' names, or
+/// "" when there were fewer than two.
+std::string JoinTextureCoordinateArrays(vtkPolyData* read);
+
+/// Removes the reader's point normals (texture coordinates) when the file
+/// has some but names them for no corner: a reader that gives vertex i the
+/// i-th one (vtkOBJReader does) invents what the file never said. Returns
+/// what was removed, for a warning, or "".
+std::string DropUnnamedCornerData(const FileGeometry& file, vtkPolyData* read);
+
 /// The line and vertex cells the file holds and `read` lacks, for a
 /// warning ("3 of its 5 lines"), or "" when none is lacking or uncounted.
 std::string CellsLeftOut(const FileGeometry& file, vtkPolyData* read);

@@ -198,6 +198,16 @@ vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::str
   }
   if (extension == ".obj")
   {
+    JoinTextureCoordinateArrays(read);
+    const std::string invented = DropUnnamedCornerData(facts.Obj, read);
+    if (!invented.empty())
+    {
+      errors.Record(VtkErrorLog::Kind::Warning, true,
+        (Quoted(path) + ": its " + invented +
+          " are named by no face, so they are left out (vtkOBJReader would give vertex i the "
+          "i-th)")
+          .c_str());
+    }
     RequireReadAsWritten(facts.Obj, read, path, "vtkOBJReader");
     const std::string lost = CellsLeftOut(facts.Obj, read);
     if (!lost.empty())

@@ -73,11 +73,19 @@ private:
     }
   }
 
-  // The statements: a line that ends in a backslash goes on on the next one
-  // (OBJ's continuation, for every statement). On a vertex or a normal, a
-  // '#' starts a comment.
+  // The statements: a vertex, texture coordinate, normal, face, line or
+  // point statement that ends in a backslash goes on on the next line (OBJ's
+  // continuation); a comment or a name (mtllib, usemtl, o, g: Windows paths
+  // end in backslashes) ends at its line. On a vertex, texture coordinate or
+  // normal, a '#' starts a comment.
   void SplitStatements(const std::string& bytes)
   {
+    if (bytes.find('\n') == std::string::npos && bytes.find('\r') != std::string::npos)
+    {
+      throw RuntimeError("cannot read '" + this->Path +
+        "': its lines end in a carriage return alone (classic Mac OS); convert them to line "
+        "feeds (e.g. with tr '\\r' '\\n')");
+    }
     // A UTF-8 byte-order mark says how the text is encoded; it is no part of
     // the first statement.
     TextCursor cursor(bytes, bytes.rfind("\xEF\xBB\xBF", 0) == 0 ? 3 : 0);
@@ -93,7 +101,7 @@ private:
       }
       first = text.empty() ? number : first;
       text += line;
-      if (!text.empty() && text.back() == '\\')
+      if (!text.empty() && text.back() == '\\' && Continues(text))
       {
         text.back() = ' ';
         continue;
@@ -107,16 +115,23 @@ private:
     }
   }
 
-  void AddStatement(const std::string& text, std::size_t line)
+  static bool Continues(const std::string& text)
   {
-    Statement statement{ WordsOf(text), line };
-    if (statement.Keyword() == "v" || statement.Keyword() == "vn")
+    const std::vector<std::string> words = WordsOf(text);
+    const std::string keyword = words.empty() ? std::string() : words[0];
+    return keyword == "v" || keyword == "vt" || keyword == "vn" || keyword == "f" ||
+      keyword == "l" || keyword == "p";
+  }
+
+  void AddStatement(std::string text, std::size_t line)
+  {
+    const std::vector<std::string> first = WordsOf(text);
+    const std::string keyword = first.empty() ? std::string() : first[0];
+    if (keyword == "v" || keyword == "vt" || keyword == "vn")
     {
-      const auto comment = std::find_if(statement.Words.begin(), statement.Words.end(),
-        [](const std::string& word) { return word[0] == '#'; });
-      statement.Words.erase(comment, statement.Words.end());
+      text = text.substr(0, text.find('#'));
     }
-    this->Statements.push_back(std::move(statement));
+    this->Statements.push_back(Statement{ WordsOf(text), line });
   }
 
   // The first `count` numbers of a statement (missing ones 0, when fewer

@@ -146,6 +146,13 @@ Header ReadHeader(const std::string& path, const std::string& bytes)
     if (keyword == "format")
     {
       const std::string format = word(1);
+      // The format's version is part of the line ("format ascii 1.0").
+      double version = 0.0;
+      if (!ParseWholeNumber(word(2), version))
+      {
+        fail(
+          where + ": the format line has no version (write 'format " + Excerpt(format) + " 1.0')");
+      }
       if (format == "ascii")
       {
         header.BodyFormat = Format::Ascii;

@@ -173,6 +173,7 @@ void VtkErrorLog::ThrowIfErrors(const std::string& what) const
 
 std::string EssenceOfVtkMessage(const std::string& text)
 {
+  constexpr std::size_t MessageLength = 300;
   std::istringstream lines(text);
   std::string line;
   std::string essence;
@@ -185,7 +186,9 @@ std::string EssenceOfVtkMessage(const std::string& text)
     {
       continue;
     }
-    essence = line;
+    // A reader may quote a whole line of the file (vtkOBJReader quotes
+    // one of 256 KiB): a message is one line of a terminal.
+    essence = line.substr(0, 2 * MessageLength);
     break;
   }
   // "vtkPLYReader (0x55d0c0): message" -> "message"; the class name and the
@@ -200,7 +203,12 @@ std::string EssenceOfVtkMessage(const std::string& text)
   {
     essence.pop_back();
   }
-  return Trim(essence);
+  essence = Trim(essence);
+  if (essence.size() > MessageLength)
+  {
+    essence = essence.substr(0, MessageLength) + " [...]";
+  }
+  return essence;
 }
 
 } // namespace cli

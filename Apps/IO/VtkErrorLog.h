@@ -63,7 +63,8 @@ private:
 };
 
 /// Reduces one of VTK's messages ("ERROR: In file, line N\nvtkClass (0x..): text")
-/// to its first line of text, without the source location and object address.
+/// to its first line of text, without the source location and object address,
+/// cut after 300 characters (with " [...]").
 std::string EssenceOfVtkMessage(const std::string& text);
 
 } // namespace cli

@@ -28,13 +28,19 @@ bool SameAsStored(double inFile, double asRead)
   return file == read || (std::isnan(file) && std::isnan(read));
 }
 
-bool SameTriple(const double* inFile, const double* asRead)
+bool SameValues(const double* inFile, const double* asRead, int count = 3)
 {
-  return SameAsStored(inFile[0], asRead[0]) && SameAsStored(inFile[1], asRead[1]) &&
-    SameAsStored(inFile[2], asRead[2]);
+  for (int c = 0; c < count; ++c)
+  {
+    if (!SameAsStored(inFile[c], asRead[c]))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
-std::string Values(const double* v, int count)
+std::string Values(const double* v, int count = 3)
 {
   std::ostringstream text;
   text.precision(9);
@@ -44,15 +50,6 @@ std::string Values(const double* v, int count)
     text << (c ? ", " : "") << static_cast<float>(v[c]);
   }
   text << ")";
-  return text.str();
-}
-
-std::string Triple(const double* v)
-{
-  std::ostringstream text;
-  text.precision(9);
-  text << "(" << static_cast<float>(v[0]) << ", " << static_cast<float>(v[1]) << ", "
-       << static_cast<float>(v[2]) << ")";
   return text.str();
 }
 
@@ -107,18 +104,18 @@ private:
       double asRead[3];
       this->Read->GetPoint(i, asRead);
       const double* inFile = &this->File.Positions[3 * i];
-      if (!SameTriple(inFile, asRead))
+      if (!SameValues(inFile, asRead))
       {
         this->Differ("vertex " + std::to_string(i + this->File.FirstIndex) + " at " +
-          Triple(asRead) + " where the file puts it at " + Triple(inFile));
+          Values(asRead) + " where the file puts it at " + Values(inFile));
       }
       if (compareNormals)
       {
         normals->GetTuple(i, asRead);
-        if (!SameTriple(&this->File.Normals[3 * i], asRead))
+        if (!SameValues(&this->File.Normals[3 * i], asRead))
         {
           this->Differ("vertex " + std::to_string(i + this->File.FirstIndex) + "'s normal as " +
-            Triple(asRead) + " where the file gives " + Triple(&this->File.Normals[3 * i]));
+            Values(asRead) + " where the file gives " + Values(&this->File.Normals[3 * i]));
         }
       }
     }
@@ -132,7 +129,7 @@ private:
     const std::vector<std::int64_t>& Corners;
     const std::vector<double>& Table;
     int Width;
-    std::vector<vtkDataArray*> Read;
+    vtkDataArray* Read;
   };
 
   std::vector<CornerAttribute> CornerAttributes() const
@@ -140,34 +137,20 @@ private:
     std::vector<CornerAttribute> attributes;
     vtkPointData* data = this->Read->GetPointData();
     vtkDataArray* normals = data->GetNormals();
-    if (!this->File.CornerNormals.empty() && normals && normals->GetNumberOfComponents() == 3)
+    if (!this->File.CornerNormals.empty() && normals && normals->GetNumberOfComponents() == 3 &&
+      normals->GetNumberOfTuples() > 0)
     {
       attributes.push_back(
-        { "normal", this->File.CornerNormals, this->File.NormalTable, 3, { normals } });
+        { "normal", this->File.CornerNormals, this->File.NormalTable, 3, normals });
     }
     vtkDataArray* textures = data->GetTCoords();
-    if (!this->File.CornerTextures.empty() && textures && textures->GetNumberOfComponents() == 2)
+    if (!this->File.CornerTextures.empty() && textures && textures->GetNumberOfComponents() == 2 &&
+      textures->GetNumberOfTuples() > 0)
     {
-      attributes.push_back({ "texture coordinate", this->File.CornerTextures,
-        this->File.TextureTable, 2, { textures } });
+      attributes.push_back(
+        { "texture coordinate", this->File.CornerTextures, this->File.TextureTable, 2, textures });
     }
     return attributes;
-  }
-
-  static bool SameTuple(
-    vtkDataArray* array, vtkIdType id, const double* inFile, int width, double* asRead)
-  {
-    if (id >= array->GetNumberOfTuples())
-    {
-      return false;
-    }
-    array->GetTuple(id, asRead);
-    bool same = true;
-    for (int c = 0; c < width; ++c)
-    {
-      same = same && SameAsStored(inFile[c], asRead[c]);
-    }
-    return same;
   }
 
   void CompareCornerAttributes(const std::vector<CornerAttribute>& attributes, std::int64_t face,
@@ -182,15 +165,11 @@ private:
       }
       const double* inFile = &attribute.Table[attribute.Width * entry];
       double asRead[3] = { 0.0, 0.0, 0.0 };
-      const bool same =
-        std::any_of(attribute.Read.begin(), attribute.Read.end(), [&](vtkDataArray* array) {
-          return SameTuple(array, readId, inFile, attribute.Width, asRead);
-        });
-      if (!same)
+      // An array shorter than the points shows its last value.
+      const vtkIdType tuples = attribute.Read->GetNumberOfTuples();
+      attribute.Read->GetTuple(std::min<vtkIdType>(readId, tuples - 1), asRead);
+      if (readId >= tuples || !SameValues(inFile, asRead, attribute.Width))
       {
-        // The first array's value, to show.
-        attribute.Read[0]->GetTuple(
-          std::min<vtkIdType>(readId, attribute.Read[0]->GetNumberOfTuples() - 1), asRead);
         this->Differ(this->CornerName(face, corner) + " with the " + attribute.Name + " " +
           Values(asRead, attribute.Width) + " where the file gives it " + attribute.Name + " " +
           std::to_string(entry + this->File.FirstIndex) + " " + Values(inFile, attribute.Width));
@@ -266,13 +245,13 @@ private:
     {
       this->Read->GetPoint(readId, asRead);
     }
-    if (!exists || !SameTriple(inFile, asRead))
+    if (!exists || !SameValues(inFile, asRead))
     {
       this->Differ(this->CornerName(face, corner) +
-        (exists ? " at " + Triple(asRead)
+        (exists ? " at " + Values(asRead)
                 : " as point " + std::to_string(readId) + ", which it does not have,") +
         " where the file puts it at vertex " + std::to_string(fileVertex + this->File.FirstIndex) +
-        " " + Triple(inFile));
+        " " + Values(inFile));
     }
   }
 
@@ -324,9 +303,6 @@ std::string JoinTextureCoordinateArrays(vtkPolyData* read)
   {
     names +=
       (names.empty() ? "'" : ", '") + std::string(array->GetName() ? array->GetName() : "") + "'";
-  }
-  for (vtkDataArray* array : arrays)
-  {
     data->RemoveArray(array->GetName());
   }
   data->SetTCoords(joined);

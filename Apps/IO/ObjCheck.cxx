@@ -115,18 +115,18 @@ private:
     }
   }
 
+  static std::string Keyword(const std::string& text) { return TextCursor(text).Word(); }
+
   static bool Continues(const std::string& text)
   {
-    const std::vector<std::string> words = WordsOf(text);
-    const std::string keyword = words.empty() ? std::string() : words[0];
+    const std::string keyword = Keyword(text);
     return keyword == "v" || keyword == "vt" || keyword == "vn" || keyword == "f" ||
       keyword == "l" || keyword == "p";
   }
 
   void AddStatement(std::string text, std::size_t line)
   {
-    const std::vector<std::string> first = WordsOf(text);
-    const std::string keyword = first.empty() ? std::string() : first[0];
+    const std::string keyword = Keyword(text);
     if (keyword == "v" || keyword == "vt" || keyword == "vn")
     {
       text = text.substr(0, text.find('#'));

@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
@@ -35,6 +36,17 @@ cli::FileGeometry SquareInFile()
   file.FaceCorners = { 0, 1, 2, 0, 2, 3 };
   file.FaceStarts = { 0, 3, 6 };
   return file;
+}
+
+// A cell array of the given cells.
+vtkSmartPointer<vtkCellArray> CellsOf(std::initializer_list<std::vector<vtkIdType>> cells)
+{
+  auto array = vtkSmartPointer<vtkCellArray>::New();
+  for (const std::vector<vtkIdType>& cell : cells)
+  {
+    array->InsertNextCell(static_cast<vtkIdType>(cell.size()), cell.data());
+  }
+  return array;
 }
 
 // What a reader that reads it right gives.
@@ -54,12 +66,7 @@ vtkSmartPointer<vtkPolyData> SquareAsRead()
   }
   mesh->SetPoints(points);
   mesh->GetPointData()->SetNormals(normals);
-  vtkNew<vtkCellArray> polys;
-  const vtkIdType first[3] = { 0, 1, 2 };
-  const vtkIdType second[3] = { 0, 2, 3 };
-  polys->InsertNextCell(3, first);
-  polys->InsertNextCell(3, second);
-  mesh->SetPolys(polys);
+  mesh->SetPolys(CellsOf({ { 0, 1, 2 }, { 0, 2, 3 } }));
   return mesh;
 }
 
@@ -135,12 +142,7 @@ TEST(FileGeometry, CopiesOfPointsAtTheSamePlaceAreAccepted)
   vtkSmartPointer<vtkPolyData> read = SquareAsRead();
   const vtkIdType copy = read->GetPoints()->InsertNextPoint(1, 1, 0);
   read->GetPointData()->GetNormals()->InsertNextTuple3(0, 0, 1);
-  vtkNew<vtkCellArray> polys;
-  const vtkIdType first[3] = { 0, 1, copy };
-  const vtkIdType second[3] = { 0, 2, 3 };
-  polys->InsertNextCell(3, first);
-  polys->InsertNextCell(3, second);
-  read->SetPolys(polys);
+  read->SetPolys(CellsOf({ { 0, 1, copy }, { 0, 2, 3 } }));
   EXPECT_EQ(Refusal(SquareInFile(), read), "");
 }
 
@@ -149,22 +151,14 @@ TEST(FileGeometry, EachKindOfDifferenceIsNamed)
   const cli::FileGeometry file = SquareInFile();
   {
     vtkSmartPointer<vtkPolyData> read = SquareAsRead();
-    vtkNew<vtkCellArray> polys;
-    const vtkIdType first[3] = { 0, 1, 2 };
-    polys->InsertNextCell(3, first);
-    read->SetPolys(polys);
+    read->SetPolys(CellsOf({ { 0, 1, 2 } }));
     EXPECT_EQ(Refusal(file, read),
       "cannot read 'square.ply': vtkPLYReader read 1 face where the file holds 2; the file is "
       "not read as written");
   }
   {
     vtkSmartPointer<vtkPolyData> read = SquareAsRead();
-    vtkNew<vtkCellArray> polys;
-    const vtkIdType first[3] = { 0, 1, 2 };
-    const vtkIdType second[2] = { 0, 2 };
-    polys->InsertNextCell(3, first);
-    polys->InsertNextCell(2, second);
-    read->SetPolys(polys);
+    read->SetPolys(CellsOf({ { 0, 1, 2 }, { 0, 2 } }));
     EXPECT_EQ(Refusal(file, read),
       "cannot read 'square.ply': vtkPLYReader read face 1 with 2 corners where the file gives it "
       "3; the file is not read as written");
@@ -179,12 +173,7 @@ TEST(FileGeometry, EachKindOfDifferenceIsNamed)
   {
     // The vertices in order, but a face on the wrong one.
     vtkSmartPointer<vtkPolyData> read = SquareAsRead();
-    vtkNew<vtkCellArray> polys;
-    const vtkIdType first[3] = { 0, 1, 2 };
-    const vtkIdType second[3] = { 0, 2, 1 };
-    polys->InsertNextCell(3, first);
-    polys->InsertNextCell(3, second);
-    read->SetPolys(polys);
+    read->SetPolys(CellsOf({ { 0, 1, 2 }, { 0, 2, 1 } }));
     EXPECT_EQ(Refusal(file, read),
       "cannot read 'square.ply': vtkPLYReader read corner 2 of face 1 at (1, 0, 0) where the file "
       "puts it at vertex 3 (0, 1, 0); the file is not read as written");
@@ -276,17 +265,11 @@ TEST(FileGeometry, LinesAndPointCellsLeftOutAreCounted)
   EXPECT_EQ(cli::CellsLeftOut(file, read), ""); // not counted
   file.LineCells = 2;
   file.VertexCells = 1;
-  vtkNew<vtkCellArray> lines;
-  const vtkIdType line[2] = { 0, 1 };
-  lines->InsertNextCell(2, line);
-  read->SetLines(lines);
+  read->SetLines(CellsOf({ { 0, 1 } }));
   EXPECT_EQ(
     cli::CellsLeftOut(file, read), "1 of its 2 lines ('l') and 1 of its 1 point cells ('p')");
-  lines->InsertNextCell(2, line);
-  vtkNew<vtkCellArray> verts;
-  const vtkIdType vertex[1] = { 3 };
-  verts->InsertNextCell(1, vertex);
-  read->SetVerts(verts);
+  read->SetLines(CellsOf({ { 0, 1 }, { 0, 1 } }));
+  read->SetVerts(CellsOf({ { 3 } }));
   EXPECT_EQ(cli::CellsLeftOut(file, read), "");
 }
 
@@ -343,20 +326,10 @@ TEST(FileGeometry, UnusedVerticesAreComparedWhenTheReaderKeepsTheFilesNumbering)
   read->GetPoints()->SetPoint(4, 16, 0, 0);
   EXPECT_EQ(Refusal(file, read), "");
   // Faces on copies of the points: the reader's points are not the file's
-  // vertices, and are not compared as such.
-  vtkNew<vtkCellArray> polys;
-  const vtkIdType first[3] = { 0, 1, 2 };
-  polys->InsertNextCell(3, first);
-  const vtkIdType second[3] = { 0, 2, 3 };
-  polys->InsertNextCell(3, second);
-  read->GetPoints()->SetPoint(4, 1, 1, 0); // a copy of point 2, in place of the unused one
-  vtkNew<vtkCellArray> copies;
-  const vtkIdType onCopy[3] = { 0, 4, 3 };
-  copies->InsertNextCell(3, first);
-  copies->InsertNextCell(3, onCopy);
-  read->SetPolys(copies);
-  file.Positions.resize(12); // no unused vertex
-  file.FaceCorners = { 0, 1, 2, 0, 2, 3 };
+  // vertices, and are not compared as such (as many points as the file has
+  // vertices, the fifth a copy of the third, not the unused (16, 0, 0)).
+  read->GetPoints()->SetPoint(4, 1, 1, 0);
+  read->SetPolys(CellsOf({ { 0, 1, 2 }, { 0, 4, 3 } }));
   EXPECT_EQ(Refusal(file, read), "");
 }
 

@@ -54,6 +54,16 @@ double lengthOf(const IntersectionLine& line)
   return length;
 }
 
+double totalLength(const std::vector<IntersectionLine>& lines)
+{
+  double length = 0.0;
+  for (const IntersectionLine& line : lines)
+  {
+    length += lengthOf(line);
+  }
+  return length;
+}
+
 } // namespace
 
 TEST(IntersectionLines, BoxesPokingThroughMeetAlongOneClosedRectangle)
@@ -141,7 +151,6 @@ void overlappingSpheres(
 
 void expectNearTheCircle(const std::vector<IntersectionLine>& lines)
 {
-  double length = 0.0;
   for (const IntersectionLine& line : lines)
   {
     for (const glm::dvec3& p : line.Points)
@@ -149,10 +158,9 @@ void expectNearTheCircle(const std::vector<IntersectionLine>& lines)
       EXPECT_LT(std::abs(p.x), 0.01);
       EXPECT_LT(std::abs(std::hypot(p.y, p.z) - std::sqrt(0.75)), 0.01);
     }
-    length += lengthOf(line);
   }
   // About the circle's length, 2 pi sqrt(0.75) = 5.441.
-  EXPECT_NEAR(length, 2.0 * M_PI * std::sqrt(0.75), 0.05);
+  EXPECT_NEAR(totalLength(lines), 2.0 * M_PI * std::sqrt(0.75), 0.05);
 }
 
 } // namespace
@@ -183,21 +191,6 @@ TEST(IntersectionLines, PartsLaidOutAlikeMeetAlongOneLoop)
   EXPECT_EQ(lines[0].Points.front(), lines[0].Points.back());
   expectNearTheCircle(lines);
 }
-
-namespace
-{
-
-double totalLength(const std::vector<IntersectionLine>& lines)
-{
-  double length = 0.0;
-  for (const IntersectionLine& line : lines)
-  {
-    length += lengthOf(line);
-  }
-  return length;
-}
-
-} // namespace
 
 TEST(IntersectionLines, BoxesWhoseFacesLineUpMeetWhereTheyCross)
 {

@@ -164,12 +164,13 @@ void TriangleGrid::build(std::size_t cellBudget)
   }
 }
 
-void TriangleGrid::query(const glm::dvec3& low, const glm::dvec3& high, std::vector<Id>& out) const
+bool TriangleGrid::query(
+  const glm::dvec3& low, const glm::dvec3& high, std::vector<Id>& out, std::size_t maxCount) const
 {
   out.clear();
   if (this->Offsets.empty() || !isFinite(low) || !isFinite(high))
   {
-    return;
+    return true;
   }
   const int i0 = this->cellIndex(low.x, 0);
   const int i1 = this->cellIndex(high.x, 0);
@@ -196,11 +197,146 @@ void TriangleGrid::query(const glm::dvec3& low, const glm::dvec3& high, std::vec
           if (((entry & FirstAlongX) != 0 || i == i0) && ((entry & FirstAlongY) != 0 || j == j0) &&
             ((entry & FirstAlongZ) != 0 || k == k0) && this->meets(t, low, high))
           {
+            if (out.size() == maxCount)
+            {
+              return false;
+            }
             out.push_back(t);
           }
         }
       }
     }
+  }
+  return true;
+}
+
+namespace
+{
+// A convex polygon of at most 7 corners: a triangle clipped by four planes.
+struct ClippedPolygon
+{
+  glm::dvec3 P[8];
+  int Count = 0;
+};
+
+// Keeps the part of `polygon` where coordinate `axis` is at least `bound`
+// (keepAbove) or at most it (Sutherland and Hodgman's step).
+void clipPolygon(ClippedPolygon& polygon, int axis, double bound, bool keepAbove)
+{
+  ClippedPolygon kept;
+  auto inside = [&](const glm::dvec3& p) {
+    return keepAbove ? p[axis] >= bound : p[axis] <= bound;
+  };
+  for (int i = 0; i < polygon.Count; ++i)
+  {
+    const glm::dvec3& from = polygon.P[i];
+    const glm::dvec3& to = polygon.P[(i + 1) % polygon.Count];
+    if (inside(from))
+    {
+      kept.P[kept.Count++] = from;
+    }
+    if (inside(from) != inside(to))
+    {
+      const double along = (bound - from[axis]) / (to[axis] - from[axis]);
+      glm::dvec3 crossing = from + along * (to - from);
+      crossing[axis] = bound;
+      kept.P[kept.Count++] = crossing;
+    }
+  }
+  polygon = kept;
+}
+} // namespace
+
+void TriangleGrid::queryTriangle(
+  const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, std::vector<Id>& out) const
+{
+  out.clear();
+  if (this->Offsets.empty() || !isFinite(a) || !isFinite(b) || !isFinite(c))
+  {
+    return;
+  }
+  const glm::dvec3 low = glm::min(a, glm::min(b, c));
+  const glm::dvec3 high = glm::max(a, glm::max(b, c));
+  // Rows of cells along x: the triangle's part within a row's slab of y
+  // and z gives the cells of the row it passes through. Slabs are widened
+  // a little (rounding may not lose a cell); the grid's outer cells hold
+  // everything beyond it, so their slabs are open on that side.
+  const double margin = 1e-6 * this->CellSize;
+  auto slab = [this, margin](int cell, int axis, double& from, double& to) {
+    from = cell == 0 ? -HUGE_VAL : this->Origin[axis] + cell * this->CellSize - margin;
+    to = cell == this->Cells[axis] - 1 ? HUGE_VAL
+                                       : this->Origin[axis] + (cell + 1) * this->CellSize + margin;
+  };
+  const int j0 = this->cellIndex(low.y, 1);
+  const int j1 = this->cellIndex(high.y, 1);
+  const int k0 = this->cellIndex(low.z, 2);
+  const int k1 = this->cellIndex(high.z, 2);
+  const int boxI0 = this->cellIndex(low.x, 0);
+  const int boxI1 = this->cellIndex(high.x, 0);
+  std::size_t cellsRead = 0;
+  for (int k = k0; k <= k1; ++k)
+  {
+    double zFrom = 0.0;
+    double zTo = 0.0;
+    slab(k, 2, zFrom, zTo);
+    for (int j = j0; j <= j1; ++j)
+    {
+      const std::size_t row =
+        (static_cast<std::size_t>(k) * this->Cells[1] + static_cast<std::size_t>(j)) *
+        this->Cells[0];
+      if (this->Offsets[row + static_cast<std::size_t>(boxI0)] ==
+        this->Offsets[row + static_cast<std::size_t>(boxI1) + 1])
+      {
+        continue; // nothing in the row under the triangle's box: no clipping
+      }
+      double yFrom = 0.0;
+      double yTo = 0.0;
+      slab(j, 1, yFrom, yTo);
+      ClippedPolygon part;
+      part.P[0] = a;
+      part.P[1] = b;
+      part.P[2] = c;
+      part.Count = 3;
+      const double bounds[4] = { yFrom, yTo, zFrom, zTo };
+      for (int side = 0; side < 4 && part.Count > 0; ++side)
+      {
+        if (std::isfinite(bounds[side]))
+        {
+          clipPolygon(part, side < 2 ? 1 : 2, bounds[side], side % 2 == 0);
+        }
+      }
+      if (part.Count == 0)
+      {
+        continue;
+      }
+      double xLow = part.P[0].x;
+      double xHigh = part.P[0].x;
+      for (int p = 1; p < part.Count; ++p)
+      {
+        xLow = std::min(xLow, part.P[p].x);
+        xHigh = std::max(xHigh, part.P[p].x);
+      }
+      const int i0 = std::max(boxI0, this->cellIndex(xLow - margin, 0));
+      const int i1 = std::min(boxI1, this->cellIndex(xHigh + margin, 0));
+      cellsRead += static_cast<std::size_t>(std::max(0, i1 - i0 + 1));
+      for (std::size_t cell = row + static_cast<std::size_t>(i0);
+           cell <= row + static_cast<std::size_t>(i1); ++cell)
+      {
+        for (std::size_t e = this->Offsets[cell]; e < this->Offsets[cell + 1]; ++e)
+        {
+          const Id box = this->Entries[e] >> 3;
+          if (this->meets(box, low, high))
+          {
+            out.push_back(box);
+          }
+        }
+      }
+    }
+  }
+  if (cellsRead > 1) // a cell's entries are ascending and distinct already
+  {
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
   }
 }
 

@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace silsmooth
@@ -50,8 +51,18 @@ public:
     const std::vector<glm::dvec3>& points, const Triangle& t, glm::dvec3& low, glm::dvec3& high);
 
   /// Appends to `out` (cleared first) every triangle (or box) whose box meets the box
-  /// [low, high], each once, in no particular order.
-  void query(const glm::dvec3& low, const glm::dvec3& high, std::vector<Id>& out) const;
+  /// [low, high], each once, in no particular order; stops and returns false
+  /// (`out` then holds maxCount of them) when there are more than maxCount.
+  bool query(const glm::dvec3& low, const glm::dvec3& high, std::vector<Id>& out,
+    std::size_t maxCount = SIZE_MAX) const;
+
+  /// Appends to `out` (cleared first), ascending and each once, every box
+  /// that meets the box of the triangle (a, b, c) and shares a cell with
+  /// the triangle itself: all the boxes the triangle meets
+  /// (triangleMeetsBox), and for a long thin triangle across the grid far
+  /// fewer than query() with its box gives (its box may cover every cell).
+  void queryTriangle(
+    const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, std::vector<Id>& out) const;
 
   /// Whether entry t's box meets the box [low, high]: the test query()
   /// applies, for narrowing a query's result to a smaller box.

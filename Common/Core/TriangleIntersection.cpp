@@ -205,6 +205,58 @@ bool meet(const TriangleShape& shapeA, const TriangleShape& shapeB, const Tolera
 
 } // namespace
 
+bool triangleMeetsBox(const TriangleCorners& t, const glm::dvec3& low, const glm::dvec3& high)
+{
+  // Most candidates have a corner in the box (a neighbour shares one).
+  for (const glm::dvec3& p : t.P)
+  {
+    if (p.x >= low.x && p.x <= high.x && p.y >= low.y && p.y <= high.y && p.z >= low.z &&
+      p.z <= high.z)
+    {
+      return true;
+    }
+  }
+  const glm::dvec3 centre = 0.5 * (low + high);
+  const glm::dvec3 half = 0.5 * (high - low);
+  const glm::dvec3 p[3] = { t.P[0] - centre, t.P[1] - centre, t.P[2] - centre };
+  const glm::dvec3 extent = glm::max(glm::abs(p[0]), glm::max(glm::abs(p[1]), glm::abs(p[2])));
+  const double slack = 1e-9 * std::max({ half.x, half.y, half.z, extent.x, extent.y, extent.z });
+  // Separated along `axis` when the corners' projections all lie beyond the
+  // box's projected half-width (a zero axis separates nothing).
+  auto separates = [&](const glm::dvec3& axis) {
+    const double a = glm::dot(p[0], axis);
+    const double b = glm::dot(p[1], axis);
+    const double c = glm::dot(p[2], axis);
+    const double radius = glm::dot(half, glm::abs(axis));
+    const double reach = radius + slack * (std::abs(axis.x) + std::abs(axis.y) + std::abs(axis.z));
+    return std::min({ a, b, c }) > reach || std::max({ a, b, c }) < -reach;
+  };
+  const glm::dvec3 sides[3] = { p[1] - p[0], p[2] - p[1], p[0] - p[2] };
+  const glm::dvec3 axes[3] = { { 1.0, 0.0, 0.0 }, { 0.0, 1.0, 0.0 }, { 0.0, 0.0, 1.0 } };
+  for (const glm::dvec3& axis : axes)
+  {
+    if (separates(axis))
+    {
+      return false;
+    }
+  }
+  if (separates(glm::cross(sides[0], sides[1])))
+  {
+    return false;
+  }
+  for (const glm::dvec3& side : sides)
+  {
+    for (const glm::dvec3& axis : axes)
+    {
+      if (separates(glm::cross(side, axis)))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 bool segmentCrossesTriangle(const glm::dvec3& u, const glm::dvec3& v, const TriangleCorners& t)
 {
   return crosses(u, v, t, std::max(longestSide(t), glm::length(v - u)));

@@ -83,6 +83,15 @@ constexpr double FacingTolerance = 1e-9;
 bool turnedOverAgainst(
   const TriangleCorners& piece, const TriangleCorners& input, const glm::dvec3& normalSum);
 
+/// Whether triangle t and the closed box [low, high] share a point (the
+/// separating-axis test: the box's axes, the triangle's normal and the
+/// crosses of its sides with the box's axes), counting a gap of up to 1e-9
+/// of their joint size as shared: it may report a rounding-level miss as a
+/// meeting, never a meeting as a miss. Triangles that cut through each other
+/// share a point, so a triangle that does not meet another's box cannot cut
+/// it: the fold guard's narrowing of candidates (FoldGuard.h).
+bool triangleMeetsBox(const TriangleCorners& t, const glm::dvec3& low, const glm::dvec3& high);
+
 /// Whether the open segment (u, v) crosses the interior of triangle t
 /// strictly (the rule's building block).
 bool segmentCrossesTriangle(const glm::dvec3& u, const glm::dvec3& v, const TriangleCorners& t);

@@ -7,7 +7,10 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <memory>
 
 namespace silsmooth
 {
@@ -101,48 +104,93 @@ struct Item
   long Index = -1;
 };
 
-// The triangles of the mesh whose boxes meet each of the boxes [lows[b],
-// highs[b]] (ascending ids per box; a box with a corner that is not finite
-// meets none): from the mesh's grid (each box widened by its slack), or by
-// one pass over the triangles against a grid of the boxes. Triangles with a
+// The triangles of the mesh that meet each of the boxes [lows[b], highs[b]]
+// (triangleMeetsBox, where the triangles are now; ascending ids per box; a
+// box with a corner that is not finite meets none): from the mesh's grid
+// (each box widened by its slack), or by one pass over the triangles
+// against a grid of the boxes. A box met by more than `cap` triangles is
+// crowded: its list is left empty, and no more than `cap` are ever held for
+// it (a fan's triangles all meet a box at its centre). Triangles with a
 // repeated or non-finite corner are left out either way
 // (TriangleGrid::boxOf).
-std::vector<std::vector<Id>> trianglesMeeting(const FoldGuardMesh& mesh,
-  const std::vector<glm::dvec3>& lows, const std::vector<glm::dvec3>& highs,
-  const FoldGuardParallelFor& parallelFor)
+struct MeetingTriangles
+{
+  std::vector<std::vector<Id>> Lists;
+  std::vector<unsigned char> Crowded;
+};
+
+MeetingTriangles trianglesMeeting(const FoldGuardMesh& mesh, const std::vector<glm::dvec3>& lows,
+  const std::vector<glm::dvec3>& highs, std::size_t cap, const FoldGuardParallelFor& parallelFor)
 {
   const std::size_t count = lows.size();
-  std::vector<std::vector<Id>> found(count);
+  MeetingTriangles meeting;
+  meeting.Lists.resize(count);
+  meeting.Crowded.assign(count, 0);
+  auto cornersOf = [&mesh](Id t) {
+    const Triangle& tri = mesh.Triangles[static_cast<std::size_t>(t)];
+    return TriangleCorners{ { mesh.Points[static_cast<std::size_t>(tri[0])],
+      mesh.Points[static_cast<std::size_t>(tri[1])],
+      mesh.Points[static_cast<std::size_t>(tri[2])] } };
+  };
   if (mesh.Grid)
   {
     const glm::dvec3 slack(mesh.GridSlack);
     parallelFor(count, [&](std::size_t begin, std::size_t end) {
+      std::vector<Id> near;
       for (std::size_t b = begin; b < end; ++b)
       {
-        if (isFinite(lows[b]) && isFinite(highs[b]))
+        if (!isFinite(lows[b]) || !isFinite(highs[b]))
         {
-          mesh.Grid->query(lows[b] - slack, highs[b] + slack, found[b]);
-          std::sort(found[b].begin(), found[b].end());
+          continue;
         }
+        mesh.Grid->query(lows[b] - slack, highs[b] + slack, near);
+        std::vector<Id>& list = meeting.Lists[b];
+        for (const Id t : near)
+        {
+          // The grid's boxes may be of earlier positions: tested where the
+          // triangle is now, as the pass over the triangles tests it.
+          const TriangleCorners corners = cornersOf(t);
+          const glm::dvec3 low = glm::min(corners.P[0], glm::min(corners.P[1], corners.P[2]));
+          const glm::dvec3 high = glm::max(corners.P[0], glm::max(corners.P[1], corners.P[2]));
+          if (list.size() <= cap && boxesMeet(low, high, lows[b], highs[b]) &&
+            triangleMeetsBox(corners, lows[b], highs[b]))
+          {
+            list.push_back(t);
+          }
+        }
+        if (list.size() > cap)
+        {
+          meeting.Crowded[b] = 1;
+          list = std::vector<Id>();
+        }
+        std::sort(list.begin(), list.end());
       }
     });
-    return found;
+    return meeting;
   }
   if (count == 0)
   {
-    return found;
+    return meeting;
   }
   // Leaves out boxes that are not finite. Cells up to one per 8 triangles:
   // few boxes are asked about by every triangle, and smaller cells than 4
   // per box hold fewer boxes that a triangle's query must test.
   const TriangleGrid boxes(lows, highs, mesh.Triangles.size() / 8);
+  // How many triangles met each box so far; a box is not tested once past
+  // its cap, so the count ends above the cap exactly when the box is
+  // crowded, however the work is split.
+  std::unique_ptr<std::atomic<std::size_t>[]> met(new std::atomic<std::size_t>[count]);
+  for (std::size_t b = 0; b < count; ++b)
+  {
+    met[b].store(0, std::memory_order_relaxed);
+  }
   // Fixed blocks, joined in order: the lists do not depend on the split.
   constexpr std::size_t Block = 1 << 14;
   const std::size_t triangleCount = mesh.Triangles.size();
   const std::size_t blocks = (triangleCount + Block - 1) / Block;
   std::vector<std::vector<std::pair<Id, Id>>> pairs(blocks); // (box, triangle)
   parallelFor(blocks, [&](std::size_t begin, std::size_t end) {
-    std::vector<Id> meeting;
+    std::vector<Id> near;
     for (std::size_t k = begin; k < end; ++k)
     {
       for (std::size_t t = k * Block; t < std::min(triangleCount, (k + 1) * Block); ++t)
@@ -153,28 +201,81 @@ std::vector<std::vector<Id>> trianglesMeeting(const FoldGuardMesh& mesh,
         {
           continue;
         }
-        boxes.query(low, high, meeting);
-        for (const Id box : meeting)
+        const TriangleCorners corners = cornersOf(static_cast<Id>(t));
+        boxes.queryTriangle(corners.P[0], corners.P[1], corners.P[2], near);
+        for (const Id box : near)
         {
-          pairs[k].emplace_back(box, static_cast<Id>(t));
+          const std::size_t b = static_cast<std::size_t>(box);
+          if (met[b].load(std::memory_order_relaxed) <= cap &&
+            triangleMeetsBox(corners, lows[b], highs[b]) &&
+            met[b].fetch_add(1, std::memory_order_relaxed) < cap)
+          {
+            pairs[k].emplace_back(box, static_cast<Id>(t));
+          }
         }
       }
     }
   });
+  for (std::size_t b = 0; b < count; ++b)
+  {
+    meeting.Crowded[b] = met[b].load(std::memory_order_relaxed) > cap ? 1 : 0;
+  }
   for (const auto& block : pairs)
   {
     for (const auto& [box, triangle] : block)
     {
-      found[static_cast<std::size_t>(box)].push_back(triangle);
+      if (!meeting.Crowded[static_cast<std::size_t>(box)])
+      {
+        meeting.Lists[static_cast<std::size_t>(box)].push_back(triangle);
+      }
     }
   }
-  return found;
+  return meeting;
 }
 
 } // namespace
 
 namespace
 {
+
+// More candidates than this for one input triangle's new triangles (of
+// kept triangles, or of changed ones) make them crowded: they are taken as
+// folding without a test. Ordinary meshes give a few dozen; a fan of
+// thousands of triangles around one point gives every one of them to each
+// new triangle at its centre, and testing them all would be quadratic.
+constexpr std::size_t CandidateCap = 2048;
+
+// Whether triangle c lies in triangle `input`: its corners within 1e-9 of
+// the input's longest side from its plane, and inside its sides by the same
+// measure (barycentric coordinates of at least -1e-9), as the new triangles
+// of a straight re-meshing do up to rounding.
+bool liesIn(const TriangleCorners& c, const TriangleCorners& input)
+{
+  const glm::dvec3 normal = glm::cross(input.P[1] - input.P[0], input.P[2] - input.P[0]);
+  const double area2 = glm::length(normal);
+  const double side = std::max({ glm::length(input.P[1] - input.P[0]),
+    glm::length(input.P[2] - input.P[1]), glm::length(input.P[0] - input.P[2]) });
+  if (!(area2 > 1e-12 * side * side))
+  {
+    return false; // no interior to lie in
+  }
+  const glm::dvec3 unit = normal / area2;
+  constexpr double tolerance = 1e-9;
+  for (const glm::dvec3& x : c.P)
+  {
+    if (!(std::abs(glm::dot(unit, x - input.P[0])) <= tolerance * side))
+    {
+      return false;
+    }
+    const double b0 = glm::dot(unit, glm::cross(input.P[1] - x, input.P[2] - x)) / area2;
+    const double b1 = glm::dot(unit, glm::cross(input.P[2] - x, input.P[0] - x)) / area2;
+    if (!(b0 >= -tolerance && b1 >= -tolerance && 1.0 - b0 - b1 >= -tolerance))
+    {
+      return false;
+    }
+  }
+  return true;
+}
 
 // One check of a frame, in steps: the changed triangles (items), which of
 // them to check, their boxes, the verdict of each, and the findings.
@@ -241,9 +342,10 @@ private:
     {
       at.push_back(this->Mesh.Points[static_cast<std::size_t>(p)]);
     }
+    // Not capped: every triangle with a corner at the point is needed.
     const std::vector<std::vector<Id>> candidates = aroundPoints.empty()
       ? std::vector<std::vector<Id>>{}
-      : trianglesMeeting(this->Mesh, at, at, parallelFor);
+      : trianglesMeeting(this->Mesh, at, at, SIZE_MAX, parallelFor).Lists;
     for (std::size_t i = 0; i < aroundPoints.size(); ++i)
     {
       const Id p = aroundPoints[i];
@@ -269,6 +371,7 @@ private:
   {
     const std::size_t n = this->Items.size();
     this->Shapes.resize(n);
+    this->Flat.resize(n);
     this->Lows.resize(n);
     this->Highs.resize(n);
     for (std::size_t k = 0; k < n; ++k)
@@ -277,6 +380,7 @@ private:
       const TriangleCorners& c = this->Shapes[k].Corners;
       this->Lows[k] = glm::min(c.P[0], glm::min(c.P[1], c.P[2]));
       this->Highs[k] = glm::max(c.P[0], glm::max(c.P[1], c.P[2]));
+      this->Flat[k] = liesIn(c, this->Geometry.prepared(this->Items[k].Source)) ? 1 : 0;
     }
   }
 
@@ -310,25 +414,46 @@ private:
     if (!this->Scan)
     {
       this->Changed = TriangleGrid(this->Lows, this->Highs);
+      this->AnyFlat = std::find(this->Flat.begin(), this->Flat.end(), 1) != this->Flat.end();
+      if (this->AnyFlat)
+      {
+        std::vector<glm::dvec3> curvedLows = this->Lows;
+        for (std::size_t k = 0; k < this->Items.size(); ++k)
+        {
+          if (this->Flat[k])
+          {
+            curvedLows[k] = glm::dvec3(HUGE_VAL); // left out of the grid
+          }
+        }
+        this->CurvedChanged = TriangleGrid(std::move(curvedLows), this->Highs);
+      }
     }
   }
 
-  // The changed triangles whose boxes meet the box [low, high].
-  void changedCandidates(const glm::dvec3& low, const glm::dvec3& high, std::vector<Id>& out) const
+  // The changed triangles whose boxes meet the box [low, high] (only the
+  // ones that do not lie in their input triangles when `curvedOnly`); false,
+  // with `out` incomplete, when they are more than CandidateCap.
+  bool changedCandidates(
+    const glm::dvec3& low, const glm::dvec3& high, bool curvedOnly, std::vector<Id>& out) const
   {
     if (!this->Scan)
     {
-      this->Changed.query(low, high, out);
-      return;
+      return (curvedOnly && this->AnyFlat ? this->CurvedChanged : this->Changed)
+        .query(low, high, out, CandidateCap);
     }
     out.clear();
     for (std::size_t j = 0; j < this->Items.size(); ++j)
     {
-      if (boxesMeet(low, high, this->Lows[j], this->Highs[j]))
+      if ((!curvedOnly || !this->Flat[j]) && boxesMeet(low, high, this->Lows[j], this->Highs[j]))
       {
+        if (out.size() == CandidateCap)
+        {
+          return false;
+        }
         out.push_back(static_cast<Id>(j));
       }
     }
+    return true;
   }
 
   // Items in runs that share one query of the prepared grid: the new
@@ -350,7 +475,8 @@ private:
     this->GroupStarts.push_back(this->Items.size());
   }
 
-  // 0: fine, 1: turned over, 2: cuts through another; and per item, the
+  // 0: fine, 1: turned over, 2: cuts through another, 3: not tested
+  // (crowded); and per item, the
   // changed triangles it cuts, which fold too.
   void judgeItems(const FoldGuardParallelFor& parallelFor)
   {
@@ -387,13 +513,17 @@ private:
   }
 
   // Each group's joint box (of its items to check, with finite boxes; empty,
-  // its low above its high, when there are none), and the kept triangles
-  // whose boxes meet it, all groups at once (trianglesMeeting).
+  // its low above its high, when there are none), whether all those items
+  // lie in their input triangles, and, for the groups with an item that
+  // does not, the kept triangles that meet the box, all groups at once
+  // (trianglesMeeting).
   void findKeptCandidates(const FoldGuardParallelFor& parallelFor)
   {
     const std::size_t groups = this->GroupStarts.size() - 1;
     this->GroupLows.assign(groups, glm::dvec3(HUGE_VAL));
     this->GroupHighs.assign(groups, glm::dvec3(-HUGE_VAL));
+    this->GroupFlat.assign(groups, 1);
+    this->GroupCrowded.assign(groups, 0);
     std::vector<glm::dvec3> lows;
     std::vector<glm::dvec3> highs;
     std::vector<std::size_t> asked; // the groups with a box
@@ -405,20 +535,22 @@ private:
         {
           this->GroupLows[g] = glm::min(this->GroupLows[g], this->Lows[k]);
           this->GroupHighs[g] = glm::max(this->GroupHighs[g], this->Highs[k]);
+          this->GroupFlat[g] &= this->Flat[k];
         }
       }
-      if (this->GroupLows[g].x <= this->GroupHighs[g].x)
+      if (this->GroupLows[g].x <= this->GroupHighs[g].x && !this->GroupFlat[g])
       {
         asked.push_back(g);
         lows.push_back(this->GroupLows[g]);
         highs.push_back(this->GroupHighs[g]);
       }
     }
-    std::vector<std::vector<Id>> found = trianglesMeeting(this->Mesh, lows, highs, parallelFor);
+    MeetingTriangles found = trianglesMeeting(this->Mesh, lows, highs, CandidateCap, parallelFor);
     this->GroupNear.assign(groups, {});
     for (std::size_t i = 0; i < asked.size(); ++i)
     {
-      this->GroupNear[asked[i]] = std::move(found[i]);
+      this->GroupNear[asked[i]] = std::move(found.Lists[i]);
+      this->GroupCrowded[asked[i]] = found.Crowded[i];
     }
   }
 
@@ -429,20 +561,33 @@ private:
     const glm::dvec3& low = this->GroupLows[g];
     const glm::dvec3& high = this->GroupHighs[g];
     scratch.Near.clear();
+    scratch.NearShapes.clear();
+    scratch.NearLows.clear();
+    scratch.NearHighs.clear();
     scratch.NearChanged.clear();
-    if (low.x <= high.x)
+    bool crowded = this->GroupCrowded[g] != 0;
+    if (low.x <= high.x && !crowded)
     {
       scratch.Near = std::move(this->GroupNear[g]); // each group is judged once
       this->keptCandidates(scratch.Near, scratch.NearShapes);
-      scratch.NearLows.clear();
-      scratch.NearHighs.clear();
       for (const TriangleShape& y : scratch.NearShapes)
       {
         const glm::dvec3* p = y.Corners.P;
         scratch.NearLows.push_back(glm::min(p[0], glm::min(p[1], p[2])));
         scratch.NearHighs.push_back(glm::max(p[0], glm::max(p[1], p[2])));
       }
-      this->changedCandidates(low, high, scratch.NearChanged);
+      crowded = !this->changedCandidates(low, high, this->GroupFlat[g] != 0, scratch.NearChanged);
+    }
+    if (crowded)
+    {
+      // Too many candidates to test (a fan's centre): folding, so that the
+      // pass re-meshes it by the chord, which needs no test.
+      for (std::size_t k = begin; k < end; ++k)
+      {
+        this->Verdict[k] =
+          this->ToCheck[k] && !hasRepeatedCorner(this->idsOf(this->Items[k])) ? 3 : 0;
+      }
+      return;
     }
     for (std::size_t k = begin; k < end; ++k)
     {
@@ -450,7 +595,9 @@ private:
       scratch.Changed.clear();
       if (this->ToCheck[k] && this->finiteBox(k))
       {
-        for (std::size_t c = 0; c < scratch.Near.size(); ++c)
+        // A triangle that lies in its input triangle cuts a kept one only
+        // where its input triangle touches that one, which is no fold.
+        for (std::size_t c = 0; c < (this->Flat[k] ? 0 : scratch.Near.size()); ++c)
         {
           if (boxesMeet(scratch.NearLows[c], scratch.NearHighs[c], this->Lows[k], this->Highs[k]))
           {
@@ -459,8 +606,11 @@ private:
         }
         for (const Id j : scratch.NearChanged)
         {
+          // Two that lie in their input triangles cut each other only where
+          // those touch, or not at all (in one plane).
           const std::size_t i = static_cast<std::size_t>(j);
-          if (boxesMeet(this->Lows[k], this->Highs[k], this->Lows[i], this->Highs[i]))
+          if (!(this->Flat[k] && this->Flat[i]) &&
+            boxesMeet(this->Lows[k], this->Highs[k], this->Lows[i], this->Highs[i]))
           {
             scratch.Changed.push_back(j);
           }
@@ -544,10 +694,12 @@ private:
   {
     FoldFindings findings;
     findings.FoldingRemeshed.assign(this->Frame.Remeshed.size(), 0);
-    auto mark = [&](std::size_t k) {
+    auto mark = [&](std::size_t k, bool untested) {
       if (this->Items[k].Remeshed >= 0)
       {
-        findings.FoldingRemeshed[static_cast<std::size_t>(this->Items[k].Remeshed)] = 1;
+        unsigned char& folding =
+          findings.FoldingRemeshed[static_cast<std::size_t>(this->Items[k].Remeshed)];
+        folding = untested && folding != 1 ? 2 : 1;
       }
       for (const Id p : this->idsOf(this->Items[k]))
       {
@@ -563,11 +715,12 @@ private:
       {
         continue;
       }
-      ++(this->Verdict[k] == 1 ? findings.Turned : findings.Cutting);
-      mark(k);
+      ++(this->Verdict[k] == 1 ? findings.Turned
+                               : (this->Verdict[k] == 2 ? findings.Cutting : findings.Crowded));
+      mark(k, this->Verdict[k] == 3);
       for (const std::size_t j : this->CutItems[k])
       {
-        mark(j);
+        mark(j, false);
       }
     }
     std::vector<Id>& moved = findings.FoldingMovedPoints;
@@ -581,11 +734,16 @@ private:
   const FrameGeometry Geometry;
   std::vector<Item> Items;
   std::vector<TriangleShape> Shapes; // of the items where they are now
+  /// Per item: 1 when it lies in its input triangle (liesIn), as every
+  /// new triangle of a straight re-meshing does.
+  std::vector<unsigned char> Flat;
   std::vector<glm::dvec3> Lows;
   std::vector<glm::dvec3> Highs;
   std::vector<unsigned char> ToCheck;
   bool Scan = true;
   TriangleGrid Changed;
+  TriangleGrid CurvedChanged; // of the items that are not Flat, when some are
+  bool AnyFlat = false;
   std::vector<unsigned char> Verdict;
   std::vector<std::vector<std::size_t>> CutItems;
   /// Items [GroupStarts[g], GroupStarts[g + 1]) share one search for kept
@@ -594,6 +752,8 @@ private:
   std::vector<glm::dvec3> GroupLows;
   std::vector<glm::dvec3> GroupHighs;
   std::vector<std::vector<Id>> GroupNear;
+  std::vector<unsigned char> GroupFlat;    // every item to check is Flat
+  std::vector<unsigned char> GroupCrowded; // more candidates than CandidateCap
 };
 
 } // namespace

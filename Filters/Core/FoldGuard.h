@@ -22,18 +22,33 @@
 // partial check, so are the kept triangles around points whose move
 // changed, moved back ones included.)
 //
-// Candidates for a cut are the kept, unmoved triangles whose boxes meet the
-// triangle's box, and the changed triangles whose boxes, where they are now,
-// meet it (a grid of the frame's changed triangles, built per check: a
-// lifted new triangle or a moved one can leave its input triangle's box by
-// any amount). The kept ones come from the prepared mesh's TriangleGrid
-// when it has one; without it, from one pass over the triangles against a
-// grid of the boxes the check asks about, which costs less than building
-// the mesh's grid and so serves a mesh smoothed once (a filter's run, a
-// deforming mesh's frame). Each item's candidates are then narrowed to the
-// triangles whose boxes, where they are now, meet its own (a grid of
-// earlier positions answers with a slack), so both ways give every item the
-// same candidates, in ascending order, and the same findings.
+// Candidates for a cut are the kept, unmoved triangles that meet the box of
+// the new triangles of one input triangle (triangleMeetsBox: the triangle,
+// not its box, so that a long sliver is a candidate only where it passes),
+// and the changed triangles whose boxes, where they are now, meet it (a
+// grid of the frame's changed triangles, built per check: a lifted new
+// triangle or a moved one can leave its input triangle's box by any
+// amount). The kept ones come from the prepared mesh's TriangleGrid when it
+// has one; without it, from one pass over the triangles, each looking in
+// the cells it passes through of a grid of the boxes the check asks about,
+// which costs less than building the mesh's grid and so serves a mesh
+// smoothed once (a filter's run, a deforming mesh's frame). Each item's
+// candidates are then narrowed to the triangles whose boxes, where they
+// are now, meet its own (a grid of earlier positions answers with a
+// slack), so both ways give every item the same candidates, in ascending
+// order, and the same findings.
+//
+// A new triangle that lies in its input triangle (liesIn; every new
+// triangle of a straight re-meshing does) is not tested against kept
+// triangles, nor against changed ones that lie in theirs: it could cut
+// them only where the input triangles touch, which is no fold.
+//
+// More than CandidateCap (2,048) candidates of either kind for one input
+// triangle's new triangles (at the centre of a fan of thousands, every one
+// meets them) make them crowded: they are not tested, and are reported as
+// folding untested (FoldingRemeshed 2), for the pass to re-mesh them
+// straight. That bounds a check's work and memory by the number of new
+// triangles times the cap.
 //
 // Invariant the pass builds on: an output in which every re-meshed triangle
 // is cut along the chord between silhouette points on its straight edges,
@@ -96,15 +111,20 @@ struct FoldGuardFrame
 
 struct FoldFindings
 {
-  /// Per entry of Remeshed: 1 when one of its new triangles folds.
+  /// Per entry of Remeshed: 1 when one of its new triangles folds, 2 when
+  /// none was found to but some were not tested (crowded, below): the
+  /// pass then re-meshes it straight at once, which needs no test.
   std::vector<unsigned char> FoldingRemeshed;
   /// Moved points that are corners of a folding triangle, ascending.
   std::vector<Id> FoldingMovedPoints;
   /// Folding triangles found: turned over, and cutting through another.
   std::size_t Turned = 0;
   std::size_t Cutting = 0;
+  /// Triangles not tested, taken as folding: too many candidates near
+  /// them (FoldGuard.cpp's CandidateCap; a fan of thousands around a point).
+  std::size_t Crowded = 0;
 
-  bool any() const { return this->Turned + this->Cutting > 0; }
+  bool any() const { return this->Turned + this->Cutting + this->Crowded > 0; }
 };
 
 /// Same signature as silsmooth::ParallelFor (ParallelFor.h).

@@ -77,7 +77,7 @@ SmoothingResult SilhouettePass::run()
     changedTriangles.clear();
     if (!findings.any() || !this->takeFallbacks(findings, changedTriangles))
     {
-      this->Result.UnresolvedFolds = findings.Turned + findings.Cutting;
+      this->Result.UnresolvedFolds = findings.Turned + findings.Cutting + findings.Crowded;
       this->Result.FoldGuardRounds = round;
       break;
     }
@@ -232,7 +232,8 @@ bool SilhouettePass::takeFallbacks(const FoldFindings& findings, std::vector<Id>
       continue;
     }
     unsigned char& level = this->Levels[t];
-    ++level;
+    // Untested (crowded) ones go straight at once: only that needs no test.
+    level = findings.FoldingRemeshed[i] == 2 ? StraightLevel : level + 1;
     taken = true;
     if (level == StraightLevel)
     {

@@ -4,6 +4,7 @@
 #include "CoreTestMeshes.h"
 #include "PlainSurfaceOptions.h"
 #include "TriangleGrid.h"
+#include "TriangleIntersection.h"
 #include "WeldedSurface.h"
 
 #include <glm/geometric.hpp>
@@ -316,6 +317,55 @@ TEST(TriangleGrid, AGridOfEarlierBoxesNeedsItsSlack)
   const glm::dvec3 slack(move);
   grid.query(farCorner - slack, farCorner + slack, found);
   EXPECT_EQ(found, std::vector<Id>{ 0 });
+}
+
+TEST(TriangleGrid, AThinTriangleFindsTheBoxesAlongItNotAcrossItsBox)
+{
+  // A disc cut into a fan of 2,000 slivers from one point on its rim, and a
+  // small box at every rim point (as the fold guard asks about the new
+  // triangles along an outline): each sliver's box covers a good part of
+  // the disc, but the sliver itself passes only the boxes at its ends.
+  const int n = 2000;
+  const double pi = 3.14159265358979323846;
+  std::vector<glm::dvec3> rim;
+  for (int i = 0; i < n; ++i)
+  {
+    rim.emplace_back(std::cos(2 * pi * i / n), std::sin(2 * pi * i / n), 0.0);
+  }
+  const double half = 0.3 * 2 * pi / n;
+  std::vector<glm::dvec3> lows;
+  std::vector<glm::dvec3> highs;
+  for (const glm::dvec3& p : rim)
+  {
+    lows.push_back(p - half);
+    highs.push_back(p + half);
+  }
+  const TriangleGrid boxes(lows, highs);
+  std::size_t byTriangle = 0;
+  std::size_t byBox = 0;
+  std::vector<Id> found;
+  for (int i = 1; i + 1 < n; ++i)
+  {
+    const TriangleCorners sliver{ { rim[0], rim[i], rim[i + 1] } };
+    boxes.queryTriangle(sliver.P[0], sliver.P[1], sliver.P[2], found);
+    EXPECT_TRUE(std::is_sorted(found.begin(), found.end()));
+    EXPECT_EQ(std::adjacent_find(found.begin(), found.end()), found.end()) << "each once";
+    for (int b = 0; b < n; ++b)
+    {
+      if (triangleMeetsBox(sliver, lows[b], highs[b]))
+      {
+        EXPECT_TRUE(std::binary_search(found.begin(), found.end(), Id{ b }))
+          << "sliver " << i << " meets box " << b;
+      }
+    }
+    byTriangle += found.size();
+    boxes.query(glm::min(rim[0], glm::min(rim[i], rim[i + 1])),
+      glm::max(rim[0], glm::max(rim[i], rim[i + 1])), found);
+    byBox += found.size();
+  }
+  // The slivers' own boxes give about an eighth of all boxes each.
+  EXPECT_GT(byBox, std::size_t(n) * n / 10);
+  EXPECT_LT(byTriangle, std::size_t(n) * 40) << "by box: " << byBox;
 }
 
 TEST(PreparedMesh, AGridIsNotAdoptedAcrossAPointThatWasNotFinite)

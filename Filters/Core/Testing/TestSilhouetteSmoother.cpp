@@ -502,6 +502,7 @@ TEST(SilhouetteSmoother, FoldGuardLeavesNoFoldAndIncrementalChecksChangeNothing)
     const FoldFindings byScan = findFolds(scanned, frame, threadedFor(3));
     EXPECT_EQ(byScan.Turned, found.Turned) << "view " << v;
     EXPECT_EQ(byScan.Cutting, found.Cutting) << "view " << v;
+    EXPECT_EQ(byScan.Crowded, found.Crowded) << "view " << v;
     EXPECT_EQ(byScan.FoldingRemeshed, found.FoldingRemeshed) << "view " << v;
     EXPECT_EQ(byScan.FoldingMovedPoints, found.FoldingMovedPoints) << "view " << v;
     const bool fellBack =
@@ -513,6 +514,68 @@ TEST(SilhouetteSmoother, FoldGuardLeavesNoFoldAndIncrementalChecksChangeNothing)
   EXPECT_GT(unguardedFolds, 0u);
   EXPECT_GT(fallbacks, 0u);
   EXPECT_GT(extraRounds, 40u) << "fallbacks " << fallbacks << ", folds " << unguardedFolds;
+}
+
+namespace
+{
+
+// The fold guard's findings on a frame, from the mesh's grid or by a scan.
+FoldFindings foldsOf(const PreparedMesh& mesh, const SmoothingResult& r, bool grid)
+{
+  std::vector<glm::dvec3> positions;
+  std::vector<glm::dvec3> normals;
+  for (const NewPoint& p : r.NewPoints)
+  {
+    positions.push_back(p.Position);
+    normals.push_back(p.Normal);
+  }
+  const FoldGuardMesh guardMesh{ mesh.points(), mesh.normals(), mesh.triangles(),
+    grid ? &mesh.triangleGrid() : nullptr };
+  const FoldGuardFrame frame{ r.RemeshedTriangles, r.ReplacementOffsets, r.Replacements, positions,
+    normals, r.MovedPoints };
+  return findFolds(guardMesh, frame, grid ? serialFor : threadedFor(2));
+}
+
+} // namespace
+
+// A cone of 5,000 sides whose apex normal points along its axis: seen from
+// the side, the silhouette crosses the far sides near the apex, where all
+// 5,000 slivers meet, so every one of them meets the box of every new
+// triangle there. Testing them all is quadratic (a 40,000-sided fan ran out
+// of 24 GB); the guard takes such crowded triangles as folding untested,
+// and the pass re-meshes them straight at once, which needs no test.
+TEST(SilhouetteSmoother, AFanTooCrowdedToTestIsReMeshedStraight)
+{
+  const int n = 5000;
+  const double pi = 3.14159265358979323846;
+  std::vector<glm::dvec3> points{ { 0, 0, 1 } };
+  std::vector<glm::dvec3> normals{ { 0, 0, 1 } };
+  std::vector<Triangle> triangles;
+  for (int i = 0; i < n; ++i)
+  {
+    const double a = 2 * pi * i / n;
+    points.emplace_back(std::cos(a), std::sin(a), 0.0);
+    normals.push_back(glm::normalize(glm::dvec3(std::cos(a), std::sin(a), 1.0)));
+    triangles.push_back({ 0, 1 + i, 1 + (i + 1) % n });
+  }
+  const PreparedMesh mesh(points, triangles, normals);
+  const ViewGeometry view = coretest::perspectiveFrom(glm::dvec3(4.0, 0.3, 1.5));
+  SmoothingParameters unguarded;
+  unguarded.PreventFolds = false;
+  const SmoothingResult first = smoothSilhouettes(mesh, view, unguarded);
+  ASSERT_GT(first.SilhouetteTriangleCount, 1000u);
+  const FoldFindings found = foldsOf(mesh, first, true);
+  const FoldFindings byScan = foldsOf(mesh, first, false);
+  EXPECT_GT(found.Crowded, 0u);
+  EXPECT_EQ(byScan.Crowded, found.Crowded);
+  EXPECT_EQ(byScan.FoldingRemeshed, found.FoldingRemeshed);
+  // Untested, not found folding: marked to go straight at once.
+  EXPECT_GT(std::count(found.FoldingRemeshed.begin(), found.FoldingRemeshed.end(), 2), 0);
+  const SmoothingResult guarded = smoothSilhouettes(mesh, view, SmoothingParameters());
+  EXPECT_EQ(guarded.UnresolvedFolds, 0u);
+  EXPECT_GT(guarded.StraightSilhouettePoints, 0u);
+  EXPECT_LE(guarded.FoldGuardRounds, 3u) << "crowded ones go straight in one round";
+  EXPECT_FALSE(foldsOf(mesh, guarded, false).any());
 }
 
 // The fold guard's grid built on a thread of its own (the default,

@@ -4,6 +4,7 @@
 #include "TextScanning.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -49,6 +50,7 @@ public:
   FileGeometry Check()
   {
     this->Geometry.FirstIndex = 1;
+    this->RefuseLongMaterialNames();
     this->ReadTables();
     this->ReadCells();
     return std::move(this->Geometry);
@@ -70,6 +72,34 @@ private:
     {
       throw RuntimeError("cannot read '" + this->Path +
         "': it is UTF-16 text; OBJ files are read as ASCII or UTF-8 (convert it, e.g. with iconv)");
+    }
+  }
+
+  // vtkOBJReader 9.1 copies a material's name (the first word after
+  // usemtl, up to white space) into a 100-byte buffer without a bound: a
+  // name of 100 characters or more writes past it (a crash from 112 on in a
+  // file with texture coordinates; shorter overruns corrupt it silently).
+  void RefuseLongMaterialNames() const
+  {
+    constexpr std::size_t buffer = 100;
+    for (const Statement& statement : this->Statements)
+    {
+      if (statement.Keyword() != "usemtl" || statement.Words.size() < 2)
+      {
+        continue;
+      }
+      const std::string& name = statement.Words[1];
+      const std::size_t length = static_cast<std::size_t>(
+        std::find_if(name.begin(), name.end(),
+          [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }) -
+        name.begin());
+      if (length >= buffer)
+      {
+        this->Fail(statement,
+          ": the material name has " + std::to_string(length) +
+            " characters; vtkOBJReader overruns its buffer on names of " + std::to_string(buffer) +
+            " or more (shorten it)");
+      }
     }
   }
 

@@ -247,13 +247,18 @@ void clipPolygon(ClippedPolygon& polygon, int axis, double bound, bool keepAbove
 }
 } // namespace
 
-void TriangleGrid::queryTriangle(
-  const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, std::vector<Id>& out) const
+void TriangleGrid::queryTriangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
+  std::vector<Id>& out, TriangleQueryMarks& marks) const
 {
   out.clear();
   if (this->Offsets.empty() || !isFinite(a) || !isFinite(b) || !isFinite(c))
   {
     return;
+  }
+  if (marks.Query.size() != this->Low.size() || ++marks.Current == 0)
+  {
+    marks.Query.assign(this->Low.size(), 0); // new, or the counter wrapped
+    marks.Current = 1;
   }
   const glm::dvec3 low = glm::min(a, glm::min(b, c));
   const glm::dvec3 high = glm::max(a, glm::max(b, c));
@@ -273,7 +278,6 @@ void TriangleGrid::queryTriangle(
   const int k1 = this->cellIndex(high.z, 2);
   const int boxI0 = this->cellIndex(low.x, 0);
   const int boxI1 = this->cellIndex(high.x, 0);
-  std::size_t cellsRead = 0;
   for (int k = k0; k <= k1; ++k)
   {
     double zFrom = 0.0;
@@ -318,25 +322,21 @@ void TriangleGrid::queryTriangle(
       }
       const int i0 = std::max(boxI0, this->cellIndex(xLow - margin, 0));
       const int i1 = std::min(boxI1, this->cellIndex(xHigh + margin, 0));
-      cellsRead += static_cast<std::size_t>(std::max(0, i1 - i0 + 1));
       for (std::size_t cell = row + static_cast<std::size_t>(i0);
            cell <= row + static_cast<std::size_t>(i1); ++cell)
       {
         for (std::size_t e = this->Offsets[cell]; e < this->Offsets[cell + 1]; ++e)
         {
           const Id box = this->Entries[e] >> 3;
-          if (this->meets(box, low, high))
+          std::uint32_t& found = marks.Query[static_cast<std::size_t>(box)];
+          if (found != marks.Current && this->meets(box, low, high))
           {
+            found = marks.Current;
             out.push_back(box);
           }
         }
       }
     }
-  }
-  if (cellsRead > 1) // a cell's entries are ascending and distinct already
-  {
-    std::sort(out.begin(), out.end());
-    out.erase(std::unique(out.begin(), out.end()), out.end());
   }
 }
 

@@ -56,13 +56,22 @@ public:
   bool query(const glm::dvec3& low, const glm::dvec3& high, std::vector<Id>& out,
     std::size_t maxCount = SIZE_MAX) const;
 
-  /// Appends to `out` (cleared first), ascending and each once, every box
-  /// that meets the box of the triangle (a, b, c) and shares a cell with
-  /// the triangle itself: all the boxes the triangle meets
-  /// (triangleMeetsBox), and for a long thin triangle across the grid far
-  /// fewer than query() with its box gives (its box may cover every cell).
-  void queryTriangle(
-    const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, std::vector<Id>& out) const;
+  /// What queryTriangle remembers between calls on one thread: which boxes
+  /// the current query has found (a box is found in several cells).
+  struct TriangleQueryMarks
+  {
+    std::vector<std::uint32_t> Query; // per box: the query that found it last
+    std::uint32_t Current = 0;
+  };
+
+  /// Appends to `out` (cleared first), each once and in no particular
+  /// order, every box that meets the box of the triangle (a, b, c) and
+  /// shares a cell with the triangle itself: all the boxes the triangle
+  /// meets (triangleMeetsBox), and for a long thin triangle across the grid
+  /// far fewer than query() with its box gives (its box may cover every
+  /// cell).
+  void queryTriangle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c,
+    std::vector<Id>& out, TriangleQueryMarks& marks) const;
 
   /// Whether entry t's box meets the box [low, high]: the test query()
   /// applies, for narrowing a query's result to a smaller box.

@@ -191,6 +191,7 @@ MeetingTriangles trianglesMeeting(const FoldGuardMesh& mesh, const std::vector<g
   std::vector<std::vector<std::pair<Id, Id>>> pairs(blocks); // (box, triangle)
   parallelFor(blocks, [&](std::size_t begin, std::size_t end) {
     std::vector<Id> near;
+    TriangleGrid::TriangleQueryMarks marks;
     for (std::size_t k = begin; k < end; ++k)
     {
       for (std::size_t t = k * Block; t < std::min(triangleCount, (k + 1) * Block); ++t)
@@ -202,7 +203,7 @@ MeetingTriangles trianglesMeeting(const FoldGuardMesh& mesh, const std::vector<g
           continue;
         }
         const TriangleCorners corners = cornersOf(static_cast<Id>(t));
-        boxes.queryTriangle(corners.P[0], corners.P[1], corners.P[2], near);
+        boxes.queryTriangle(corners.P[0], corners.P[1], corners.P[2], near, marks);
         for (const Id box : near)
         {
           const std::size_t b = static_cast<std::size_t>(box);

@@ -128,9 +128,7 @@ void TriangleGrid::build(std::size_t cellBudget)
     {
       for (int j = j0; j <= j1; ++j)
       {
-        const std::size_t row =
-          (static_cast<std::size_t>(k) * this->Cells[1] + static_cast<std::size_t>(j)) *
-          this->Cells[0];
+        const std::size_t row = this->rowStart(j, k);
         for (int i = i0; i <= i1; ++i)
         {
           visit(row + static_cast<std::size_t>(i),
@@ -184,8 +182,7 @@ bool TriangleGrid::query(
     {
       for (int i = i0; i <= i1; ++i)
       {
-        const std::size_t c =
-          (static_cast<std::size_t>(k) * this->Cells[1] + j) * this->Cells[0] + i;
+        const std::size_t c = this->rowStart(j, k) + static_cast<std::size_t>(i);
         for (std::size_t e = this->Offsets[c]; e < this->Offsets[c + 1]; ++e)
         {
           // Each triangle once: from the first cell that both it and the
@@ -285,9 +282,7 @@ void TriangleGrid::queryTriangle(const glm::dvec3& a, const glm::dvec3& b, const
     slab(k, 2, zFrom, zTo);
     for (int j = j0; j <= j1; ++j)
     {
-      const std::size_t row =
-        (static_cast<std::size_t>(k) * this->Cells[1] + static_cast<std::size_t>(j)) *
-        this->Cells[0];
+      const std::size_t row = this->rowStart(j, k);
       if (this->Offsets[row + static_cast<std::size_t>(boxI0)] ==
         this->Offsets[row + static_cast<std::size_t>(boxI1) + 1])
       {

@@ -93,6 +93,14 @@ private:
   /// a value that is not negative), which
   /// is all that queries need: a box that meets another has a cell range
   /// that meets the other's.
+  /// The first cell of the row of cells along x at (j, k).
+  std::size_t rowStart(int j, int k) const
+  {
+    return (static_cast<std::size_t>(k) * static_cast<std::size_t>(this->Cells[1]) +
+             static_cast<std::size_t>(j)) *
+      static_cast<std::size_t>(this->Cells[0]);
+  }
+
   int cellIndex(double x, int axis) const
   {
     const double c = (x - this->Origin[axis]) * this->InverseCellSize;

@@ -17,6 +17,15 @@ namespace silsmooth
 namespace
 {
 
+// Input triangle t's corners where the mesh has them.
+TriangleCorners inputCorners(const FoldGuardMesh& mesh, Id t)
+{
+  const Triangle& tri = mesh.Triangles[static_cast<std::size_t>(t)];
+  return TriangleCorners{ { mesh.Points[static_cast<std::size_t>(tri[0])],
+    mesh.Points[static_cast<std::size_t>(tri[1])],
+    mesh.Points[static_cast<std::size_t>(tri[2])] } };
+}
+
 class FrameGeometry
 {
 public:
@@ -68,13 +77,7 @@ public:
     return TriangleCorners{ { this->position(t[0]), this->position(t[1]), this->position(t[2]) } };
   }
 
-  TriangleCorners prepared(Id t) const
-  {
-    const Triangle& tri = this->Mesh.Triangles[static_cast<std::size_t>(t)];
-    return TriangleCorners{ { this->Mesh.Points[static_cast<std::size_t>(tri[0])],
-      this->Mesh.Points[static_cast<std::size_t>(tri[1])],
-      this->Mesh.Points[static_cast<std::size_t>(tri[2])] } };
-  }
+  TriangleCorners prepared(Id t) const { return inputCorners(this->Mesh, t); }
 
   // Turned over against its input triangle: on the other side of the sum of
   // its corners' shading normals.
@@ -126,12 +129,6 @@ MeetingTriangles trianglesMeeting(const FoldGuardMesh& mesh, const std::vector<g
   MeetingTriangles meeting;
   meeting.Lists.resize(count);
   meeting.Crowded.assign(count, 0);
-  auto cornersOf = [&mesh](Id t) {
-    const Triangle& tri = mesh.Triangles[static_cast<std::size_t>(t)];
-    return TriangleCorners{ { mesh.Points[static_cast<std::size_t>(tri[0])],
-      mesh.Points[static_cast<std::size_t>(tri[1])],
-      mesh.Points[static_cast<std::size_t>(tri[2])] } };
-  };
   if (mesh.Grid)
   {
     const glm::dvec3 slack(mesh.GridSlack);
@@ -149,7 +146,7 @@ MeetingTriangles trianglesMeeting(const FoldGuardMesh& mesh, const std::vector<g
         {
           // The grid's boxes may be of earlier positions: tested where the
           // triangle is now, as the pass over the triangles tests it.
-          const TriangleCorners corners = cornersOf(t);
+          const TriangleCorners corners = inputCorners(mesh, t);
           const glm::dvec3 low = glm::min(corners.P[0], glm::min(corners.P[1], corners.P[2]));
           const glm::dvec3 high = glm::max(corners.P[0], glm::max(corners.P[1], corners.P[2]));
           if (list.size() <= cap && boxesMeet(low, high, lows[b], highs[b]) &&
@@ -202,7 +199,7 @@ MeetingTriangles trianglesMeeting(const FoldGuardMesh& mesh, const std::vector<g
         {
           continue;
         }
-        const TriangleCorners corners = cornersOf(static_cast<Id>(t));
+        const TriangleCorners corners = inputCorners(mesh, static_cast<Id>(t));
         boxes.queryTriangle(corners.P[0], corners.P[1], corners.P[2], near, marks);
         for (const Id box : near)
         {

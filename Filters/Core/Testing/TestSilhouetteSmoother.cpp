@@ -457,6 +457,23 @@ ParallelFor threadedFor(unsigned threads)
   };
 }
 
+// The fold guard's findings on a frame, from the mesh's grid or by a scan.
+FoldFindings foldsOf(const PreparedMesh& mesh, const SmoothingResult& r, bool grid)
+{
+  std::vector<glm::dvec3> positions;
+  std::vector<glm::dvec3> normals;
+  for (const NewPoint& p : r.NewPoints)
+  {
+    positions.push_back(p.Position);
+    normals.push_back(p.Normal);
+  }
+  const FoldGuardMesh guardMesh{ mesh.points(), mesh.normals(), mesh.triangles(),
+    grid ? &mesh.triangleGrid() : nullptr };
+  const FoldGuardFrame frame{ r.RemeshedTriangles, r.ReplacementOffsets, r.Replacements, positions,
+    normals, r.MovedPoints };
+  return findFolds(guardMesh, frame, grid ? serialFor : threadedFor(3));
+}
+
 } // namespace
 
 TEST(SilhouetteSmoother, FoldGuardLeavesNoFoldAndIncrementalChecksChangeNothing)
@@ -484,22 +501,10 @@ TEST(SilhouetteSmoother, FoldGuardLeavesNoFoldAndIncrementalChecksChangeNothing)
     extraRounds += r.FoldGuardRounds;
     // The same frame without the guard folds wherever the guard fell back.
     const SmoothingResult u = smoothSilhouettes(mesh, view, unguarded);
-    std::vector<glm::dvec3> positions;
-    std::vector<glm::dvec3> normals;
-    for (const NewPoint& p : u.NewPoints)
-    {
-      positions.push_back(p.Position);
-      normals.push_back(p.Normal);
-    }
-    const FoldGuardMesh guardMesh{ mesh.points(), mesh.normals(), mesh.triangles(),
-      &mesh.triangleGrid() };
-    const FoldGuardFrame frame{ u.RemeshedTriangles, u.ReplacementOffsets, u.Replacements,
-      positions, normals, u.MovedPoints };
-    const FoldFindings found = findFolds(guardMesh, frame, serialFor);
+    const FoldFindings found = foldsOf(mesh, u, true);
     // Without the grid, the check scans the triangles once: the same
     // findings, item for item.
-    const FoldGuardMesh scanned{ mesh.points(), mesh.normals(), mesh.triangles(), nullptr };
-    const FoldFindings byScan = findFolds(scanned, frame, threadedFor(3));
+    const FoldFindings byScan = foldsOf(mesh, u, false);
     EXPECT_EQ(byScan.Turned, found.Turned) << "view " << v;
     EXPECT_EQ(byScan.Cutting, found.Cutting) << "view " << v;
     EXPECT_EQ(byScan.Crowded, found.Crowded) << "view " << v;
@@ -515,28 +520,6 @@ TEST(SilhouetteSmoother, FoldGuardLeavesNoFoldAndIncrementalChecksChangeNothing)
   EXPECT_GT(fallbacks, 0u);
   EXPECT_GT(extraRounds, 40u) << "fallbacks " << fallbacks << ", folds " << unguardedFolds;
 }
-
-namespace
-{
-
-// The fold guard's findings on a frame, from the mesh's grid or by a scan.
-FoldFindings foldsOf(const PreparedMesh& mesh, const SmoothingResult& r, bool grid)
-{
-  std::vector<glm::dvec3> positions;
-  std::vector<glm::dvec3> normals;
-  for (const NewPoint& p : r.NewPoints)
-  {
-    positions.push_back(p.Position);
-    normals.push_back(p.Normal);
-  }
-  const FoldGuardMesh guardMesh{ mesh.points(), mesh.normals(), mesh.triangles(),
-    grid ? &mesh.triangleGrid() : nullptr };
-  const FoldGuardFrame frame{ r.RemeshedTriangles, r.ReplacementOffsets, r.Replacements, positions,
-    normals, r.MovedPoints };
-  return findFolds(guardMesh, frame, grid ? serialFor : threadedFor(2));
-}
-
-} // namespace
 
 // A cone of 5,000 sides whose apex normal points along its axis: seen from
 // the side, the silhouette crosses the far sides near the apex, where all

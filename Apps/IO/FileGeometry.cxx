@@ -68,6 +68,9 @@ public:
   {
     this->CompareVertices(this->File.VertexOrderKept);
     const bool fileNumbering = this->CompareFaces();
+    this->CompareCells(this->File.Strips, this->Read->GetStrips(), "triangle strip");
+    this->CompareCells(this->File.Lines, this->Read->GetLines(), "line");
+    this->CompareCells(this->File.Vertices, this->Read->GetVerts(), "vertex cell");
     // A reader whose faces use the file's vertex numbers kept the file's
     // vertices as its points: the ones no face uses are compared too (they
     // frame the view).
@@ -235,9 +238,69 @@ private:
     return fileNumbering;
   }
 
+  // Cells of another kind than faces, by position only.
+  void CompareCells(const FileCells& file, vtkCellArray* cells, const std::string& kind) const
+  {
+    if (!file.Given)
+    {
+      return;
+    }
+    const std::int64_t count = file.Count();
+    const std::int64_t read = cells ? cells->GetNumberOfCells() : 0;
+    if (read != count)
+    {
+      this->Differ(std::to_string(read) + " " + kind + (read == 1 ? "" : "s") +
+        " where the file holds " + std::to_string(count));
+    }
+    if (count == 0)
+    {
+      return;
+    }
+    auto iterator = vtk::TakeSmartPointer(cells->NewIterator());
+    std::int64_t cell = 0;
+    for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal();
+         iterator->GoToNextCell(), ++cell)
+    {
+      vtkIdType size = 0;
+      const vtkIdType* ids = nullptr;
+      iterator->GetCurrentCell(size, ids);
+      const std::int64_t start = file.Starts[cell];
+      const std::int64_t corners = file.Starts[cell + 1] - start;
+      const std::string name = kind + " " + std::to_string(cell + this->File.FirstIndex);
+      if (size != corners)
+      {
+        this->Differ(name + " with " + std::to_string(size) + " points where the file gives it " +
+          std::to_string(corners));
+      }
+      for (std::int64_t k = 0; k < corners; ++k)
+      {
+        const std::int64_t fileVertex = file.Corners[start + k];
+        const bool inFile = fileVertex >= 0 && fileVertex < this->File.VertexCount();
+        double asRead[3] = { 0.0, 0.0, 0.0 };
+        const bool exists = ids[k] >= 0 && ids[k] < this->Read->GetNumberOfPoints();
+        if (exists)
+        {
+          this->Read->GetPoint(ids[k], asRead);
+        }
+        if (inFile && (!exists || !SameValues(&this->File.Positions[3 * fileVertex], asRead)))
+        {
+          this->Differ("point " + std::to_string(k + this->File.FirstIndex) + " of " + name +
+            (exists ? " at " + Values(asRead) : " as a point it does not have") +
+            " where the file puts it at vertex " +
+            std::to_string(fileVertex + this->File.FirstIndex) + " " +
+            Values(&this->File.Positions[3 * fileVertex]));
+        }
+      }
+    }
+  }
+
   void CompareCorner(
     std::int64_t face, std::int64_t corner, vtkIdType readId, std::int64_t fileVertex) const
   {
+    if (fileVertex < 0 || fileVertex >= this->File.VertexCount())
+    {
+      return; // no vertex of the file: validation refuses the id, with its own message
+    }
     const double* inFile = &this->File.Positions[3 * fileVertex];
     double asRead[3] = { 0.0, 0.0, 0.0 };
     const bool exists = readId >= 0 && readId < this->Read->GetNumberOfPoints();

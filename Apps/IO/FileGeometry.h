@@ -21,15 +21,29 @@ namespace cli
  * - the reader's faces (its polygons) are the file's, in the file's order,
  *   with as many corners, each at the file's position for it: by position,
  *   not by index, since a reader may add copies of points (vtkPLYReader's
- *   texture seams);
+ *   texture seams); a corner that names no vertex of the file is left to
+ *   validation, which refuses it;
  * - when VertexOrderKept, the reader's first points are the file's vertices
  *   in order, and so are its point normals when the file gives normals;
  * - where the file gives a corner its own normal or texture coordinate (OBJ),
  *   the reader's point normal (texture coordinate) at that corner is it,
  *   when the reader gives normals (texture coordinates) at all;
+ * - the other kinds of cell the file gives in full (Strips, Lines, Vertices
+ *   when Given) are the reader's of that kind, in order, each corner at the
+ *   file's position for it;
  * - values are compared as the floats the readers store; a NaN equals a NaN
  *   (validation refuses it later, with its own message).
  */
+struct FileCells
+{
+  bool Given = false;
+  std::vector<std::int64_t> Starts{ 0 }; ///< one per cell, and the end
+  std::vector<std::int64_t> Corners;     ///< the cells' vertex indices
+
+  std::int64_t Count() const { return static_cast<std::int64_t>(this->Starts.size()) - 1; }
+  void EndCell() { this->Starts.push_back(static_cast<std::int64_t>(this->Corners.size())); }
+};
+
 struct FileGeometry
 {
   bool VertexOrderKept = false;
@@ -48,6 +62,8 @@ struct FileGeometry
   std::vector<std::size_t> FaceLines;
   /// Line and vertex cells the file holds; -1 when not counted.
   std::int64_t LineCells = -1, VertexCells = -1;
+  /// Cells other than faces, when the format gives them in full.
+  FileCells Strips, Lines, Vertices;
 
   std::int64_t VertexCount() const { return static_cast<std::int64_t>(this->Positions.size() / 3); }
   std::int64_t FaceCount() const { return static_cast<std::int64_t>(this->FaceStarts.size()) - 1; }

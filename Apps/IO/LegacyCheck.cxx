@@ -1,6 +1,7 @@
 #include "LegacyCheck.h"
 
 #include "CliErrors.h"
+#include "FileGeometry.h"
 #include "TextScanning.h"
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -17,10 +19,6 @@ namespace cli
 {
 namespace
 {
-
-// vtkDataReader reads words (vtkDataReader::ReadString) into 256-character
-// buffers: a longer word is read as two.
-constexpr std::size_t MaximumWord = 255;
 
 // Bytes per value of a legacy data type in a BINARY file; 0 if unknown.
 std::size_t BinarySize(const std::string& type)
@@ -64,6 +62,37 @@ std::string Uppercase(std::string text)
   return text;
 }
 
+// A value of a BINARY file: big-endian, integers signed unless their type
+// says otherwise.
+double BigEndianValue(const char* at, std::size_t size, const std::string& type, bool integer)
+{
+  const auto* raw = reinterpret_cast<const unsigned char*>(at);
+  std::uint64_t bits = 0;
+  for (std::size_t b = 0; b < size; ++b)
+  {
+    bits = (bits << 8) | raw[b];
+  }
+  if (!integer)
+  {
+    if (size == 4)
+    {
+      float value = 0.0F;
+      const auto word = static_cast<std::uint32_t>(bits);
+      std::memcpy(&value, &word, sizeof value);
+      return value;
+    }
+    double value = 0.0;
+    std::memcpy(&value, &bits, sizeof value);
+    return value;
+  }
+  if (IntegerRange(type).first == 0)
+  {
+    return static_cast<double>(bits);
+  }
+  const int shift = 64 - 8 * static_cast<int>(size); // sign-extend
+  return static_cast<double>(static_cast<std::int64_t>(bits << shift) >> shift);
+}
+
 class LegacyChecker
 {
 public:
@@ -79,24 +108,13 @@ public:
 
   void Check()
   {
-    const std::string version = this->Line();
-    if (version.rfind("# vtk DataFile Version", 0) != 0)
-    {
-      this->Fail("the first line is not '# vtk DataFile Version ...'");
-    }
-    // As vtkDataReader parses it: a version it cannot read as "%d.%d" counts
-    // as 0, and cells then have the legacy layout, however 5-like the line.
-    int major = 0, minor = 0;
-    // It reads the line's first 255 characters (a 256-byte buffer).
-    const std::string read = version.substr(0, 255);
-    this->MajorVersion =
-      std::sscanf(read.c_str(), "# vtk DataFile Version %d.%d", &major, &minor) == 2 ? major : 0;
+    this->MajorVersion = this->Version(this->Line());
     this->Line(); // the title
     // The format is a word, not a line: what follows it on its line is read
     // as the next word (the DATASET keyword).
     const std::string format = Lowercase(this->Word());
-    this->Binary = format.rfind("binary", 0) == 0;
-    if (!this->Binary && format.rfind("ascii", 0) != 0)
+    this->Binary = format == "binary";
+    if (!this->Binary && format != "ascii")
     {
       this->Fail("the third line is neither ASCII nor BINARY");
     }
@@ -104,27 +122,21 @@ public:
     {
       this->Fail("no 'DATASET POLYDATA' line");
     }
-    std::vector<std::string> sections; // the geometry's, each at most once
+    // The geometry's sections, each at most once.
+    bool points = false;
     while (true)
     {
       const std::string keyword = Lowercase(this->Word());
-      const bool geometry = keyword == "points" || keyword == "vertices" || keyword == "lines" ||
-        keyword == "polygons" || keyword == "triangle_strips";
-      if (geometry && std::find(sections.begin(), sections.end(), keyword) != sections.end())
-      {
-        this->Fail("a second " + Uppercase(keyword) +
-          " section, which vtkPolyDataReader reads "
-          "in place of the first");
-      }
-      if (geometry)
-      {
-        sections.push_back(keyword);
-      }
       if (keyword == "points")
       {
+        if (points)
+        {
+          this->Fail("a second POINTS section");
+        }
+        points = true;
         const long long count = this->Count("POINTS");
         const std::string type = Lowercase(this->Word());
-        this->Values(3 * count, type, "POINTS");
+        this->Values(3 * count, type, "POINTS", &this->Geometry.Positions);
       }
       else if (keyword == "vertices" || keyword == "lines" || keyword == "polygons" ||
         keyword == "triangle_strips")
@@ -137,7 +149,7 @@ public:
       }
       else if (keyword == "point_data" || keyword == "cell_data")
       {
-        this->Attributes(this->Count(keyword));
+        this->Attributes(keyword, this->Count(keyword));
         return;
       }
       else if (keyword == "metadata")
@@ -146,27 +158,71 @@ public:
       }
       else
       {
-        this->RequireNotAPrefix(keyword);
-        return; // the end of the file, or a keyword the reader reports itself
+        this->RequireEnd(keyword, "the geometry");
+        return;
       }
     }
   }
 
-private:
-  // vtkPolyDataReader compares keywords by prefix ("POINTS\x02..." is POINTS
-  // to it): such a word is an error here, not a section left unchecked.
-  void RequireNotAPrefix(const std::string& keyword)
+  // The geometry read, once Check() has returned.
+  FileGeometry Result()
   {
-    for (const char* known :
-      { "field", "points", "vertices", "lines", "polygons", "triangle_strips", "cell_data",
-        "point_data", "scalars", "color_scalars", "lookup_table", "vectors", "normals",
-        "texture_coordinates", "tensors", "global_ids", "pedigree_ids", "edge_flags", "metadata" })
+    FileGeometry geometry = std::move(this->Geometry);
+    geometry.VertexOrderKept = true;
+    geometry.FaceStarts = std::move(this->Faces.Starts);
+    geometry.FaceCorners = std::move(this->Faces.Corners);
+    if (geometry.Normals.size() != geometry.Positions.size())
     {
-      if (keyword.rfind(known, 0) == 0)
+      geometry.Normals.clear(); // not one per point: the reader's to refuse
+    }
+    return geometry;
+  }
+
+private:
+  FileGeometry Geometry;
+  // "# vtk DataFile Version MAJOR.MINOR ...", and the major version.
+  int Version(const std::string& line)
+  {
+    const std::string start = "# vtk DataFile Version";
+    if (line.rfind(start, 0) != 0)
+    {
+      this->Fail("the first line is not '# vtk DataFile Version ...'");
+    }
+    const std::vector<std::string> words = WordsOf(line.substr(start.size()));
+    const std::size_t dot = words.empty() ? std::string::npos : words[0].find('.');
+    long long major = -1;
+    long long minor = -1;
+    // What follows the version on its line is free text, as in the title.
+    if (words.empty() || dot == std::string::npos ||
+      !ParseWholeInteger(words[0].substr(0, dot), major) ||
+      !ParseWholeInteger(words[0].substr(dot + 1), minor) || major < 0 || minor < 0 || major > 99 ||
+      !std::isdigit(static_cast<unsigned char>(words[0][0])) ||
+      !std::isdigit(static_cast<unsigned char>(words[0][dot + 1])))
+    {
+      this->Fail("the first line's version is not MAJOR.MINOR, as '5.1'");
+    }
+    return static_cast<int>(major);
+  }
+
+  // What may end a part of the file: its end, or a keyword the part does
+  // not have. Keywords are whole words, in any case.
+  void RequireEnd(const std::string& keyword, const std::string& part)
+  {
+    if (keyword.empty())
+    {
+      return;
+    }
+    for (const char* known : { "field", "points", "vertices", "lines", "polygons",
+           "triangle_strips", "cell_data", "point_data", "scalars", "color_scalars", "lookup_table",
+           "vectors", "normals", "texture_coordinates", "tensors", "tensors6", "global_ids",
+           "pedigree_ids", "edge_flags", "metadata" })
+    {
+      if (keyword == known)
       {
-        this->Fail("unknown keyword '" + Excerpt(keyword) + "'");
+        this->Fail("'" + Uppercase(keyword) + "' in " + part + ", where it has no place");
       }
     }
+    this->Fail("unknown keyword '" + Excerpt(keyword) + "'");
   }
 
   // An array's METADATA block (component names, information keys), which
@@ -207,7 +263,7 @@ private:
   }
 
   // POINT_DATA / CELL_DATA sections, to the end of the file.
-  void Attributes(long long count)
+  void Attributes(std::string section, long long count)
   {
     while (true)
     {
@@ -253,7 +309,12 @@ private:
           : keyword == "tensors"                                                ? 9
           : keyword == "tensors6"                                               ? 6
                                                                                 : 1;
-        values(perTuple, Lowercase(this->Word()));
+        // The points' first NORMALS are their normals.
+        const bool pointNormals =
+          keyword == "normals" && section == "point_data" && !this->PointNormalsSeen;
+        this->PointNormalsSeen = this->PointNormalsSeen || pointNormals;
+        this->Values(perTuple * count, Lowercase(this->Word()), keyword,
+          pointNormals ? &this->Geometry.Normals : nullptr);
       }
       else if (keyword == "texture_coordinates")
       {
@@ -271,6 +332,7 @@ private:
       }
       else if (keyword == "point_data" || keyword == "cell_data")
       {
+        section = keyword;
         count = this->Count(keyword);
       }
       else if (keyword == "metadata")
@@ -279,8 +341,8 @@ private:
       }
       else
       {
-        this->RequireNotAPrefix(keyword);
-        return; // the end of the file, or a keyword the reader reports itself
+        this->RequireEnd(keyword, Uppercase(section));
+        return;
       }
     }
   }
@@ -305,15 +367,12 @@ private:
   }
 
   // The next whitespace-separated word, "" at the end of the file.
-  // Words are read as vtkDataReader::ReadString reads them, into 256-byte
-  // buffers: a longer word is two (its name, then its type, for a SCALARS
-  // line). Numbers are read whole, as iostream reads them.
-  std::string Word(std::size_t limit = MaximumWord) { return this->Text.Word(limit); }
+  std::string Word() { return this->Text.Word(); }
 
   // An ASCII integer as iostream reads it: digits only, in range.
   long long Integer(const std::string& what)
   {
-    const std::string word = this->Word(std::string::npos);
+    const std::string word = this->Word();
     if (word.empty())
     {
       this->Fail(what + ": the file ends inside the data");
@@ -339,11 +398,10 @@ private:
     return count;
   }
 
-  // `count` values of `type`; returned (as integers) only when `keep`.
-  std::vector<long long> Values(
-    long long count, const std::string& type, const std::string& what, bool keep = false)
+  // `count` values of `type`, appended to `kept` when it is given.
+  void Values(long long count, const std::string& type, const std::string& what,
+    std::vector<double>* kept = nullptr)
   {
-    std::vector<long long> kept;
     if (count < 0 || count > static_cast<long long>(this->Bytes.size()))
     {
       this->Fail(what + ": " + std::to_string(count) + " values cannot fit in the file");
@@ -351,7 +409,7 @@ private:
     if (type == "string" || type == "utf8_string")
     {
       this->Strings(count, what);
-      return kept;
+      return;
     }
     if (type == "bit" && this->Binary)
     {
@@ -362,8 +420,13 @@ private:
       {
         this->Fail(what + ": the file ends inside the data (truncated binary data)");
       }
+      for (long long i = 0; kept && i < count; ++i)
+      {
+        const auto byte = static_cast<unsigned char>(this->Bytes[this->Text.Position() + i / 8]);
+        kept->push_back((byte >> (7 - i % 8)) & 1u);
+      }
       this->Text.Skip(static_cast<std::size_t>(count + 7) / 8);
-      return kept;
+      return;
     }
     // ASCII bits are integers.
     const std::size_t size = type == "bit" ? 1 : BinarySize(type);
@@ -380,40 +443,33 @@ private:
       {
         this->Fail(what + ": the file ends inside the data (truncated binary data)");
       }
-      for (long long i = 0; keep && i < count; ++i)
+      for (long long i = 0; kept && i < count; ++i)
       {
-        long long value = 0; // big-endian, signed
-        const auto* raw = reinterpret_cast<const unsigned char*>(
-          this->Bytes.data() + this->Text.Position() + i * size);
-        value = (raw[0] & 0x80) ? -1 : 0;
-        for (std::size_t b = 0; b < size; ++b)
-        {
-          value = static_cast<long long>((static_cast<unsigned long long>(value) << 8) | raw[b]);
-        }
-        kept.push_back(value);
+        kept->push_back(BigEndianValue(
+          this->Bytes.data() + this->Text.Position() + i * size, size, type, integer));
       }
       this->Text.Skip(static_cast<std::size_t>(count) * size);
-      return kept;
+      return;
     }
     for (long long i = 0; i < count; ++i)
     {
       if (integer)
       {
         const long long value = this->Integer(what);
-        // The reader reads an integer and casts it to the array's type: a
-        // value beyond the type's range would wrap without a word.
+        // Each value must fit in its type (a reader reads an integer and
+        // casts it to the array's type).
         const std::pair<long double, long double> range = IntegerRange(type);
         if (value < range.first || value > range.second)
         {
           this->Fail(what + ": " + std::to_string(value) + " does not fit in its type, " + type);
         }
-        if (keep)
+        if (kept)
         {
-          kept.push_back(value);
+          kept->push_back(static_cast<double>(value));
         }
         continue;
       }
-      const std::string word = this->Word(std::string::npos);
+      const std::string word = this->Word();
       if (word.empty())
       {
         this->Fail(what + ": the file ends inside the data");
@@ -427,14 +483,16 @@ private:
       {
         this->Fail(what + ": '" + Excerpt(word) + "' is not a number");
       }
-      // iostream fails on a value its type cannot hold, and the reader with it.
       if (!std::isfinite(value) ||
         (type == "float" && std::abs(value) > std::numeric_limits<float>::max()))
       {
         this->Fail(what + ": '" + Excerpt(word) + "' does not fit in a " + type);
       }
+      if (kept)
+      {
+        kept->push_back(value);
+      }
     }
-    return kept;
   }
 
   // `count` strings: in ASCII a line each (percent-encoded) after the line
@@ -476,20 +534,24 @@ private:
     }
   }
 
+  // A cell section, kept in the geometry: "POLYGONS offsets connectivity"
+  // and the two arrays (5.x), or "POLYGONS cells size" and per cell its
+  // size and point ids (earlier versions).
   void Cells(const std::string& keyword)
   {
     const std::string what = Uppercase(keyword);
+    FileCells& cells = this->CellsOf(keyword);
+    cells.Given = true;
     const long long first = this->Count(what);
     const long long second = this->Count(what);
     if (this->MajorVersion >= 5)
     {
-      // "POLYGONS offsets connectivity", then OFFSETS and CONNECTIVITY arrays.
       if (Lowercase(this->Word()) != "offsets")
       {
         this->Fail(what + ": no OFFSETS array");
       }
-      const std::vector<long long> offsets =
-        this->Values(first, Lowercase(this->Word()), what + " OFFSETS", true);
+      std::vector<double> offsets;
+      this->Values(first, this->IndexType(what + " OFFSETS"), what + " OFFSETS", &offsets);
       for (std::size_t i = 0; i < offsets.size(); ++i)
       {
         if ((i == 0 && offsets[i] != 0) || (i > 0 && offsets[i] < offsets[i - 1]) ||
@@ -506,20 +568,35 @@ private:
       {
         this->Fail(what + ": no CONNECTIVITY array");
       }
-      this->Values(second, Lowercase(this->Word()), what + " CONNECTIVITY");
+      std::vector<double> ids;
+      this->Values(second, this->IndexType(what + " CONNECTIVITY"), what + " CONNECTIVITY", &ids);
+      for (std::size_t i = 0; i + 1 < offsets.size(); ++i)
+      {
+        for (auto k = static_cast<std::size_t>(offsets[i]);
+             k < static_cast<std::size_t>(offsets[i + 1]); ++k)
+        {
+          cells.Corners.push_back(static_cast<std::int64_t>(ids[k]));
+        }
+        cells.EndCell();
+      }
       return;
     }
-    // Legacy layout: "POLYGONS cells size", then size ints: n id id ... per cell.
-    const std::vector<long long> data = this->Values(second, "int", what, true);
+    std::vector<double> data;
+    this->Values(second, "int", what, &data);
     std::size_t at = 0;
     for (long long cell = 0; cell < first; ++cell)
     {
-      if (at >= data.size() || data[at] < 0 ||
-        static_cast<unsigned long long>(data[at]) >= data.size() - at)
+      if (at >= data.size() || data[at] < 0 || data[at] >= static_cast<double>(data.size() - at))
       {
         this->Fail(what + ": cell " + std::to_string(cell) + " does not fit in the declared size");
       }
-      at += static_cast<std::size_t>(data[at]) + 1;
+      const auto size = static_cast<std::size_t>(data[at]);
+      for (std::size_t k = 1; k <= size; ++k)
+      {
+        cells.Corners.push_back(static_cast<std::int64_t>(data[at + k]));
+      }
+      cells.EndCell();
+      at += size + 1;
     }
     if (at != data.size())
     {
@@ -527,18 +604,47 @@ private:
     }
   }
 
+  // The type of an array of offsets or point ids: an integer type.
+  std::string IndexType(const std::string& what)
+  {
+    const std::string type = Lowercase(this->Word());
+    if (type == "float" || type == "double" || type == "string" || type == "utf8_string" ||
+      type == "bit")
+    {
+      this->Fail(what + ": '" + Excerpt(type) + "' is not an integer type");
+    }
+    return type;
+  }
+
+  FileCells& CellsOf(const std::string& keyword)
+  {
+    FileCells& cells = keyword == "vertices" ? this->Geometry.Vertices
+      : keyword == "lines"                   ? this->Geometry.Lines
+      : keyword == "triangle_strips"         ? this->Geometry.Strips
+                                             : this->Faces;
+    if (cells.Given)
+    {
+      this->Fail("a second " + Uppercase(keyword) + " section");
+    }
+    return cells;
+  }
+
   std::string Path;
   std::string Bytes;
   TextCursor Text;
   int MajorVersion = 0;
   bool Binary = false;
+  bool PointNormalsSeen = false;
+  FileCells Faces;
 };
 
 } // namespace
 
-void CheckLegacyVtkFile(const std::string& path)
+FileGeometry CheckLegacyVtkFile(const std::string& path)
 {
-  LegacyChecker(path, ReadFileBytes(path)).Check();
+  LegacyChecker checker(path, ReadFileBytes(path));
+  checker.Check();
+  return checker.Result();
 }
 
 } // namespace cli

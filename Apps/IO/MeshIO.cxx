@@ -113,6 +113,7 @@ struct FileFacts
   std::uint64_t StlFacets = 0; ///< the facets an STL file holds
   PlyFacts Ply;
   FileGeometry Obj;
+  FileGeometry Legacy;
 };
 
 // The pre-check for the format, then VTK's reader.
@@ -152,7 +153,8 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(
   if (extension == ".vtk")
   {
     RequireLegacyPolyData(vtkPolyDataReader::SafeDownCast(reader), path);
-    CheckLegacyVtkFile(path); // vtkPolyDataReader crashes on short or unparsable cell sections
+    // Refuses what is not legacy VTK, and reads the geometry to hold the reader to.
+    facts.Legacy = CheckLegacyVtkFile(path);
   }
   return reader;
 }
@@ -195,6 +197,10 @@ vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::str
   if (extension == ".ply")
   {
     RequireReadAsWritten(facts.Ply.Geometry, read, path, "vtkPLYReader");
+  }
+  if (extension == ".vtk")
+  {
+    RequireReadAsWritten(facts.Legacy, read, path, "vtkPolyDataReader");
   }
   if (extension == ".obj")
   {

@@ -1,8 +1,10 @@
 // Holding VTK's reader to the file's geometry (Apps/IO/FileGeometry.h): the
-// comparison's rules on meshes built here, and PLY files VTK 9.1's reader
-// misreads without a word, which ReadMesh refuses without knowing why.
+// comparison's rules on meshes built here, PLY files VTK 9.1's reader
+// misreads without a word, which ReadMesh refuses without knowing why, and
+// legacy VTK files, whose every kind of cell is compared.
 #include "CliErrors.h"
 #include "FileGeometry.h"
+#include "LegacyCheck.h"
 #include "MeshIO.h"
 #include "VtkErrorLog.h"
 
@@ -13,6 +15,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataReader.h>
 
 #include <gtest/gtest.h>
 
@@ -402,4 +405,62 @@ TEST(FileGeometry, AReadersMessageIsOneShortLine)
   EXPECT_EQ(message.substr(0, 15), "Error reading '");
   EXPECT_EQ(
     cli::EssenceOfVtkMessage("vtkPLYReader (0x1): Cannot read geometry."), "Cannot read geometry");
+}
+
+TEST(FileGeometry, OtherCellsAreComparedByPosition)
+{
+  cli::FileGeometry file = SquareInFile();
+  file.Lines.Given = true;
+  file.Lines.Corners = { 0, 1, 2 };
+  file.Lines.EndCell();
+  vtkSmartPointer<vtkPolyData> read = SquareAsRead();
+  read->SetLines(CellsOf({ { 0, 1, 2 } }));
+  EXPECT_EQ(Refusal(file, read), "");
+  read->SetLines(CellsOf({ { 0, 1, 3 } }));
+  EXPECT_EQ(Refusal(file, read),
+    "cannot read 'square.ply': vtkPLYReader read point 2 of line 0 at (0, 1, 0) where the file "
+    "puts it at vertex 2 (1, 1, 0); the file is not read as written");
+  read->SetLines(CellsOf({ { 0, 1 } }));
+  EXPECT_EQ(Refusal(file, read),
+    "cannot read 'square.ply': vtkPLYReader read line 0 with 2 points where the file gives it 3; "
+    "the file is not read as written");
+  read->SetLines(CellsOf({ { 0, 1, 2 }, { 2, 3 } }));
+  EXPECT_EQ(Refusal(file, read),
+    "cannot read 'square.ply': vtkPLYReader read 2 lines where the file holds 1; the file is not "
+    "read as written");
+  // A kind the file does not give in full is not compared.
+  file.Lines.Given = false;
+  EXPECT_EQ(Refusal(file, read), "");
+}
+
+TEST(FileGeometry, ALegacyFileIsHeldToEveryCellItHolds)
+{
+  const std::string path = TempPath("square_cells.vtk");
+  {
+    std::ofstream out(path);
+    out << "# vtk DataFile Version 3.0 and free text\nsquare\nASCII\nDATASET POLYDATA\n"
+           "POINTS 4 float\n0 0 0 1 0 0 1 1 0 0 1 0\n"
+           "VERTICES 1 2\n1 3\nLINES 1 3\n2 0 1\nPOLYGONS 1 4\n3 0 1 2\n"
+           "TRIANGLE_STRIPS 1 5\n4 0 1 3 2\n"
+           "POINT_DATA 4\nNORMALS n float\n0 0 1 0 0 1 0 0 1 0 0 1\n"
+           "NORMALS m float\n1 0 0 1 0 0 1 0 0 1 0 0\n";
+  }
+  const cli::FileGeometry file = cli::CheckLegacyVtkFile(path);
+  EXPECT_TRUE(file.VertexOrderKept);
+  EXPECT_EQ(file.Positions, std::vector<double>({ 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0 }));
+  EXPECT_EQ(file.FaceCorners, std::vector<std::int64_t>({ 0, 1, 2 }));
+  EXPECT_EQ(file.Strips.Corners, std::vector<std::int64_t>({ 0, 1, 3, 2 }));
+  EXPECT_EQ(file.Lines.Corners, std::vector<std::int64_t>({ 0, 1 }));
+  EXPECT_EQ(file.Vertices.Corners, std::vector<std::int64_t>({ 3 }));
+  // The points' first normals are theirs, as the reader takes them.
+  EXPECT_EQ(file.Normals, std::vector<double>({ 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1 }));
+  vtkNew<vtkPolyDataReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* read = reader->GetOutput();
+  EXPECT_NO_THROW(cli::RequireReadAsWritten(file, read, path, "vtkPolyDataReader"));
+  // A reader that gave the strip another point would be refused.
+  read->SetStrips(CellsOf({ { 0, 1, 2, 3 } }));
+  EXPECT_THROW(cli::RequireReadAsWritten(file, read, path, "vtkPolyDataReader"), cli::RuntimeError);
+  std::remove(path.c_str());
 }

@@ -114,6 +114,7 @@ bool ParseSwitch(const Option& option, CameraOptions& camera)
     { "--no-feature-lines", &CameraOptions::FeatureLines, false },
     { "--no-perturbation", &CameraOptions::PerturbVertices, false },
     { "--no-fold-guard", &CameraOptions::FoldPrevention, false },
+    { "--round-apexes", &CameraOptions::KeepApexesPointed, false },
     { "--no-weld", &CameraOptions::Weld, false },
     { "--no-orientation", &CameraOptions::Orient, false },
     { "--no-normal-seams", &CameraOptions::NormalSeams, false },
@@ -337,6 +338,9 @@ Smoothing options (with the camera options wherever those are taken):
                            through others (default: such triangles are
                            re-meshed along the chord, then on their straight
                            edges, and their lowered vertices left in place)
+  --round-apexes           smooth the silhouette at cone apexes too (default:
+                           kept on the mesh's edges there, so cones stay
+                           pointed)
   --flat-crease-angle DEG  creases between flat faces (boxes, CAD parts) are
                            edges sharper than DEG (0 to 180) whose two
                            triangles each lie flat against another neighbour

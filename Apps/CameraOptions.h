@@ -32,6 +32,7 @@ struct CameraOptions
   bool FeatureLines = true;           ///< line cells mark feature edges
   bool PerturbVertices = true;
   bool FoldPrevention = true;
+  bool KeepApexesPointed = true;
   bool Weld = true;                      ///< points at one position are one vertex
   double WeldTolerance = 0.0;            ///< 0: equal coordinates only
   bool Orient = true;                    ///< consistent orientation per component

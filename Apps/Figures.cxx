@@ -106,6 +106,7 @@ Figures CollectFigures(const std::string& input, const std::optional<std::string
   figures.SilhouetteTriangles = CountFromFieldData(smoothed, "SilhouetteTriangleCount");
   figures.NewTriangles = CountFromFieldData(smoothed, "NewTriangleCount");
   figures.NewPoints = CountFromFieldData(smoothed, "NewPointCount");
+  figures.ApexTriangles = CountFromFieldData(smoothed, "ApexTriangleCount");
   figures.ChordFallbacks = CountFromFieldData(smoothed, "ChordFallbackCount");
   figures.StraightSilhouettePoints = CountFromFieldData(smoothed, "StraightSilhouettePointCount");
   figures.StraightFeatureSegments = CountFromFieldData(smoothed, "StraightFeatureSegmentCount");
@@ -132,6 +133,7 @@ void PrintFiguresAsText(std::ostream& out, const Figures& figures)
       << "silhouette triangles: " << figures.SilhouetteTriangles << "\n"
       << "new triangles:        " << figures.NewTriangles << "\n"
       << "new points:           " << figures.NewPoints << "\n"
+      << "apex triangles:       " << figures.ApexTriangles << "\n"
       << "fold fallbacks:       " << figures.ChordFallbacks << " chord, "
       << figures.StraightSilhouettePoints << " straight points, " << figures.StraightFeatureSegments
       << " straight feature segments, " << figures.PinnedPoints << " pinned points, "
@@ -159,6 +161,7 @@ void PrintFiguresAsJson(std::ostream& out, const Figures& figures)
       << ", \"silhouette_triangles\": " << figures.SilhouetteTriangles
       << ", \"new_triangles\": " << figures.NewTriangles
       << ", \"new_points\": " << figures.NewPoints
+      << ", \"apex_triangles\": " << figures.ApexTriangles
       << ", \"fold_fallbacks\": {\"chord_triangles\": " << figures.ChordFallbacks
       << ", \"straight_points\": " << figures.StraightSilhouettePoints
       << ", \"straight_feature_segments\": " << figures.StraightFeatureSegments

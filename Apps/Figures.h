@@ -26,6 +26,8 @@ struct Figures
   vtkIdType SilhouetteTriangles = 0;
   vtkIdType NewTriangles = 0;
   vtkIdType NewPoints = 0;
+  /// Silhouette triangles at cone apexes, kept on the mesh's edges.
+  vtkIdType ApexTriangles = 0;
   /// The fold guard's fallbacks (vtkSilhouetteSmoothingFilter::FoldPrevention).
   vtkIdType ChordFallbacks = 0;
   vtkIdType StraightSilhouettePoints = 0;

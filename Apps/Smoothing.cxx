@@ -65,6 +65,7 @@ void ApplySmoothingOptions(vtkSilhouetteSmoothingFilter* filter, const CameraOpt
   filter->SetFeatureLines(options.FeatureLines);
   filter->SetPerturbVertices(options.PerturbVertices);
   filter->SetFoldPrevention(options.FoldPrevention);
+  filter->SetKeepApexesPointed(options.KeepApexesPointed);
   filter->SetWeldCoincidentPoints(options.Weld);
   filter->SetWeldTolerance(options.WeldTolerance);
   filter->SetConsistentOrientation(options.Orient);

@@ -385,6 +385,7 @@ silsmooth::SmoothingResult vtkSilhouetteSmoothingFilter::Internals::Smooth(
   silsmooth::SmoothingParameters parameters;
   parameters.PerturbConcaveSilhouettes = self->PerturbVertices;
   parameters.PreventFolds = self->FoldPrevention;
+  parameters.KeepApexesPointed = self->KeepApexesPointed;
   parameters.CullOutsideFrustum = self->FrustumCulling;
   parameters.FrozenTriangles = this->Frozen.empty() ? nullptr : &this->Frozen;
   parameters.BoundaryMayBeSeam = boundaryMayBeSeam;
@@ -516,6 +517,7 @@ int vtkSilhouetteSmoothingFilter::RequestViewData(vtkInformation*,
   AddCount(fd, "NewPointCount", static_cast<vtkIdType>(frame.Added.size()));
   AddCount(fd, "ConcaveSegmentCount", static_cast<vtkIdType>(result.ConcaveSegmentCount));
   AddCount(fd, "PerturbedPointCount", static_cast<vtkIdType>(result.MovedPoints.size()));
+  AddCount(fd, "ApexTriangleCount", static_cast<vtkIdType>(result.ApexTriangles));
   AddCount(fd, "ChordFallbackCount", static_cast<vtkIdType>(result.ChordFallbackTriangles));
   AddCount(
     fd, "StraightSilhouettePointCount", static_cast<vtkIdType>(result.StraightSilhouettePoints));
@@ -693,6 +695,7 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NewPointBudget: " << this->NewPointBudget << "\n";
   os << indent << "PerturbVertices: " << (this->PerturbVertices ? "On" : "Off") << "\n";
   os << indent << "FoldPrevention: " << (this->FoldPrevention ? "On" : "Off") << "\n";
+  os << indent << "KeepApexesPointed: " << (this->KeepApexesPointed ? "On" : "Off") << "\n";
   os << indent << "FrustumCulling: " << (this->FrustumCulling ? "On" : "Off") << "\n";
   os << indent << "FeatureLines: " << (this->FeatureLines ? "On" : "Off") << "\n";
   os << indent << "FeatureEdgeDetection: " << (this->FeatureEdgeDetection ? "On" : "Off") << "\n";

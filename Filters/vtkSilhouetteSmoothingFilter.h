@@ -190,6 +190,21 @@ public:
 
   ///@{
   /**
+   * Keep cones pointed (default on): at a vertex where the surface comes to
+   * a point (a cone's apex: its triangles' normals spread more than 30
+   * degrees from their mean while neighbouring ones turn little), no one
+   * normal serves, and the curves through the apex's mean normal round the
+   * cone into a dome. Silhouette triangles there keep the silhouette on
+   * their straight edges and chords instead; the field data counts them
+   * (ApexTriangleCount). Off: smoothed like any other triangle.
+   */
+  vtkSetMacro(KeepApexesPointed, bool);
+  vtkGetMacro(KeepApexesPointed, bool);
+  vtkBooleanMacro(KeepApexesPointed, bool);
+  ///@}
+
+  ///@{
+  /**
    * Leave the silhouette triangles the camera cannot show as they are:
    * those beyond a plane of the view frustum by more than their longest
    * side, so that no smoothed curve of theirs could reach into the view
@@ -421,6 +436,7 @@ protected:
   int SamplingRule = SECOND_DIFFERENCE;
   bool PerturbVertices = true;
   bool FoldPrevention = true;
+  bool KeepApexesPointed = true;
   bool FrustumCulling = false;
   bool FeatureLines = true;
   bool FeatureEdgeDetection = false;

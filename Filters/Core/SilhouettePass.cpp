@@ -26,6 +26,7 @@ namespace detail
 SmoothingResult SilhouettePass::run()
 {
   this->findSilhouetteTriangles();
+  this->straightenAtApexes();
   // Each round re-meshes the whole frame with the fallbacks decided so far;
   // a round that finds no fold, or no fallback left to take, is the last.
   // Rounds are bounded: every round but the last takes a fallback, and
@@ -84,13 +85,51 @@ SmoothingResult SilhouettePass::run()
   }
   this->Result.PinnedPoints = this->Pinned.size();
   this->Result.CulledTriangles = this->Culled;
-  this->Result.StraightSilhouettePoints = this->StraightEdges.size();
+  this->Result.StraightSilhouettePoints = this->StraightEdges.size() - this->ApexStraightEdges;
   this->Result.StraightFeatureSegments = this->StraightFeatures.size();
   for (const auto& level : this->Levels)
   {
     this->Result.ChordFallbackTriangles += level.second >= ChordLevel ? 1 : 0;
   }
+  this->Result.ApexTriangles = this->ApexTriangles;
+  this->Result.ChordFallbackTriangles -= this->ApexTriangles;
   return std::move(this->Result);
+}
+
+// A silhouette triangle with an apex corner (PreparedMesh::apexes) keeps
+// the silhouette on its own edges and chords from the start: the curves
+// through the apex's one normal would round the cone into a dome. Points on
+// feature curves and seams stay where the other sides put them, as for the
+// fold guard's fallback.
+void SilhouettePass::straightenAtApexes()
+{
+  if (!this->Parameters.KeepApexesPointed || this->Mesh.apexes().empty())
+  {
+    return;
+  }
+  const EdgeTable& edges = this->Mesh.edges();
+  for (const Id t : this->Silhouette)
+  {
+    const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
+    if (!this->Mesh.isApex(tri[0]) && !this->Mesh.isApex(tri[1]) && !this->Mesh.isApex(tri[2]))
+    {
+      continue;
+    }
+    this->Levels[t] = StraightLevel;
+    ++this->ApexTriangles;
+    for (int k = 0; k < 3; ++k)
+    {
+      const Id e = edges.sideEdge(t, k);
+      if (this->isMixed(edges.edge(e)) && this->Mesh.edgeFeature(e) < 0 && !this->mayBeSeam(e))
+      {
+        this->StraightEdges.push_back(e);
+      }
+    }
+  }
+  std::sort(this->StraightEdges.begin(), this->StraightEdges.end());
+  this->StraightEdges.erase(
+    std::unique(this->StraightEdges.begin(), this->StraightEdges.end()), this->StraightEdges.end());
+  this->ApexStraightEdges = this->StraightEdges.size();
 }
 
 void SilhouettePass::remeshFrame()

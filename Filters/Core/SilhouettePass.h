@@ -72,6 +72,7 @@ private:
   static constexpr unsigned char ChordLevel = 1;    // no interior samples
   static constexpr unsigned char StraightLevel = 2; // and points on its edges
 
+  void straightenAtApexes();
   void remeshFrame();
 
   FoldFindings findFrameFolds(
@@ -302,6 +303,8 @@ private:
   // points the perturbation leaves in place (both ascending).
   std::unordered_map<Id, unsigned char> Levels;
   std::vector<Id> StraightEdges;
+  std::size_t ApexStraightEdges = 0; // the first of them, straight at apexes
+  std::size_t ApexTriangles = 0;
   std::vector<Id> StraightFeatures;
   std::vector<Id> Pinned;
 };

@@ -68,6 +68,10 @@ struct SmoothingParameters
   /// feature segments straight; a moved point whose triangles fold stays in
   /// place. Each step is counted in the result.
   bool PreventFolds = true;
+  /// Silhouette triangles at a cone's apex (PreparedMesh::apexes) keep the
+  /// silhouette on their straight edges and chords: the apex's one normal
+  /// would round the cone into a dome. Off: smoothed like any other.
+  bool KeepApexesPointed = true;
   /// The mesh is one piece of a partitioned mesh: its boundary edges may be
   /// seams with other pieces, which compute the same silhouette points and
   /// feature segments there and cannot know of a fallback, so the fold
@@ -162,6 +166,9 @@ struct SmoothingResult
   std::size_t UnresolvedFolds = 0;
   /// How many times the frame was re-meshed because of folds.
   std::size_t FoldGuardRounds = 0;
+  /// Silhouette triangles at a cone's apex (PreparedMesh::apexes), re-meshed
+  /// with the silhouette on their edges and chords; not counted above.
+  std::size_t ApexTriangles = 0;
   /// The cap of MaximumSampledPoints when it lowered a segment's samples,
   /// else 0.
   int SampleBudgetMaximum = 0;

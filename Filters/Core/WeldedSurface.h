@@ -139,7 +139,8 @@ public:
   /// surface is the one the constructor makes from the same arguments, as
   /// long as the orientation it chose still holds and no points that were
   /// apart have come together (neither is checked: the constructor would
-  /// weld such points, a moved surface keeps them apart).
+  /// weld such points, a moved surface keeps them apart), but for the cone
+  /// apexes, which stay those found first (PreparedMesh::moved).
   bool movePoints(std::vector<glm::dvec3> points, const std::vector<glm::dvec3>& normals,
     const std::vector<FeatureEdge>& markedFeatures, const SurfaceOptions& options,
     const ParallelFor& parallelFor = serialFor);

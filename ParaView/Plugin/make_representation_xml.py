@@ -22,6 +22,8 @@ props = [
    "Lower the vertices around concave silhouette segments (paper III-E).", "", False),
   ("SilhouetteFoldPrevention", "bool", "1", "Fold Prevention",
    "Never fold: silhouette triangles whose new triangles turn over or cut through others are re-meshed along the chord, then on their straight edges; lowered vertices that fold stay in place.", "", False),
+  ("SilhouetteKeepApexesPointed", "bool", "1", "Keep Apexes Pointed",
+   "Keep cones pointed: at a vertex where the surface comes to a point, the silhouette stays on the mesh's edges (its one normal would round the cone into a dome).", "", True),
   ("SilhouetteFeatureLines", "bool", "1", "Feature Lines",
    "Line cells along triangle edges mark feature edges (creases).", "", True),
   ("SilhouetteFeatureEdgeDetection", "bool", "0", "Feature Edge Detection",

@@ -31,6 +31,7 @@ void CopySettings(vtkSilhouetteSmoothingFilter* from, vtkSilhouetteSmoothingFilt
   to->SetSamplingRule(from->GetSamplingRule());
   to->SetPerturbVertices(from->GetPerturbVertices());
   to->SetFoldPrevention(from->GetFoldPrevention());
+  to->SetKeepApexesPointed(from->GetKeepApexesPointed());
   to->SetFeatureLines(from->GetFeatureLines());
   to->SetFeatureEdgeDetection(from->GetFeatureEdgeDetection());
   to->SetFeatureAngle(from->GetFeatureAngle());

@@ -56,6 +56,7 @@ public:
   void SetSilhouetteSamplingRule(int rule);
   void SetSilhouettePerturbVertices(bool perturb);
   void SetSilhouetteFoldPrevention(bool prevent);
+  void SetSilhouetteKeepApexesPointed(bool keep);
   void SetSilhouetteFeatureLines(bool use);
   void SetSilhouetteFeatureEdgeDetection(bool detect);
   void SetSilhouetteFeatureAngle(double degrees);

@@ -111,6 +111,7 @@ Figures CollectFigures(const std::string& input, const std::optional<std::string
   figures.StraightSilhouettePoints = CountFromFieldData(smoothed, "StraightSilhouettePointCount");
   figures.StraightFeatureSegments = CountFromFieldData(smoothed, "StraightFeatureSegmentCount");
   figures.PinnedPoints = CountFromFieldData(smoothed, "PinnedPointCount");
+  figures.CrowdedTriangles = CountFromFieldData(smoothed, "CrowdedTriangleCount");
   figures.UnresolvedFolds = CountFromFieldData(smoothed, "UnresolvedFoldCount");
   figures.PrepareMilliseconds = RoundToMicroseconds(prepareMilliseconds);
   figures.FilterMilliseconds = RoundToMicroseconds(filterMilliseconds);
@@ -137,7 +138,7 @@ void PrintFiguresAsText(std::ostream& out, const Figures& figures)
       << "fold fallbacks:       " << figures.ChordFallbacks << " chord, "
       << figures.StraightSilhouettePoints << " straight points, " << figures.StraightFeatureSegments
       << " straight feature segments, " << figures.PinnedPoints << " pinned points, "
-      << figures.UnresolvedFolds << " unresolved\n"
+      << figures.CrowdedTriangles << " crowded, " << figures.UnresolvedFolds << " unresolved\n"
       << "first update:         " << std::fixed << std::setprecision(3)
       << figures.PrepareMilliseconds << " ms (prepares the mesh, then one frame)\n"
       << "filter time:          " << figures.FilterMilliseconds << " ms per frame (median of "
@@ -166,6 +167,7 @@ void PrintFiguresAsJson(std::ostream& out, const Figures& figures)
       << ", \"straight_points\": " << figures.StraightSilhouettePoints
       << ", \"straight_feature_segments\": " << figures.StraightFeatureSegments
       << ", \"pinned_points\": " << figures.PinnedPoints
+      << ", \"crowded_triangles\": " << figures.CrowdedTriangles
       << ", \"unresolved\": " << figures.UnresolvedFolds << "}"
       << ", \"prepare_ms\": " << JsonNumber(figures.PrepareMilliseconds)
       << ", \"filter_ms\": " << JsonNumber(figures.FilterMilliseconds)

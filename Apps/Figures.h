@@ -33,6 +33,7 @@ struct Figures
   vtkIdType StraightSilhouettePoints = 0;
   vtkIdType StraightFeatureSegments = 0;
   vtkIdType PinnedPoints = 0;
+  vtkIdType CrowdedTriangles = 0;
   vtkIdType UnresolvedFolds = 0;
   double PrepareMilliseconds = 0.0;
   double FilterMilliseconds = 0.0;

@@ -524,6 +524,7 @@ int vtkSilhouetteSmoothingFilter::RequestViewData(vtkInformation*,
   AddCount(
     fd, "StraightFeatureSegmentCount", static_cast<vtkIdType>(result.StraightFeatureSegments));
   AddCount(fd, "PinnedPointCount", static_cast<vtkIdType>(result.PinnedPoints));
+  AddCount(fd, "CrowdedTriangleCount", static_cast<vtkIdType>(result.CrowdedTriangles));
   AddCount(fd, "UnresolvedFoldCount", static_cast<vtkIdType>(result.UnresolvedFolds));
   AddCount(fd, "FoldGuardRoundCount", static_cast<vtkIdType>(result.FoldGuardRounds));
   AddCount(fd, "SampleBudgetMaximum", static_cast<vtkIdType>(result.SampleBudgetMaximum));

@@ -92,6 +92,7 @@ SmoothingResult SilhouettePass::run()
     this->Result.ChordFallbackTriangles += level.second >= ChordLevel ? 1 : 0;
   }
   this->Result.ApexTriangles = this->ApexTriangles;
+  this->Result.CrowdedTriangles = this->CrowdedTriangles;
   this->Result.ChordFallbackTriangles -= this->ApexTriangles;
   return std::move(this->Result);
 }
@@ -272,7 +273,9 @@ bool SilhouettePass::takeFallbacks(const FoldFindings& findings, std::vector<Id>
     }
     unsigned char& level = this->Levels[t];
     // Untested (crowded) ones go straight at once: only that needs no test.
-    level = findings.FoldingRemeshed[i] == 2 ? StraightLevel : level + 1;
+    const bool crowded = findings.FoldingRemeshed[i] == 2;
+    this->CrowdedTriangles += crowded ? 1 : 0;
+    level = crowded ? StraightLevel : level + 1;
     taken = true;
     if (level == StraightLevel)
     {

@@ -305,6 +305,7 @@ private:
   std::vector<Id> StraightEdges;
   std::size_t ApexStraightEdges = 0; // the first of them, straight at apexes
   std::size_t ApexTriangles = 0;
+  std::size_t CrowdedTriangles = 0; // sent straight untested (FoldGuard.h)
   std::vector<Id> StraightFeatures;
   std::vector<Id> Pinned;
 };

@@ -163,6 +163,10 @@ struct SmoothingResult
   std::size_t StraightSilhouettePoints = 0;
   std::size_t StraightFeatureSegments = 0;
   std::size_t PinnedPoints = 0;
+  /// Of the chord fallbacks, the silhouette triangles re-meshed straight
+  /// without a test, because too many triangles crowd around them (a fan of
+  /// thousands around one point, FoldGuard.h).
+  std::size_t CrowdedTriangles = 0;
   std::size_t UnresolvedFolds = 0;
   /// How many times the frame was re-meshed because of folds.
   std::size_t FoldGuardRounds = 0;

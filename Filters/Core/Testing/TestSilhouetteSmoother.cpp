@@ -497,6 +497,7 @@ TEST(SilhouetteSmoother, FoldGuardLeavesNoFoldAndIncrementalChecksChangeNothing)
     const SmoothingResult w = smoothSilhouettes(mesh, view, whole);
     EXPECT_TRUE(sameResult(r, w)) << "view " << v;
     EXPECT_EQ(r.UnresolvedFolds, 0u) << "view " << v;
+    EXPECT_EQ(r.CrowdedTriangles, 0u) << "view " << v;
     fallbacks += r.ChordFallbackTriangles + r.StraightSilhouettePoints + r.PinnedPoints;
     extraRounds += r.FoldGuardRounds;
     // The same frame without the guard folds wherever the guard fell back.
@@ -560,6 +561,9 @@ TEST(SilhouetteSmoother, AFanTooCrowdedToTestIsReMeshedStraight)
   const SmoothingResult guarded = smoothSilhouettes(mesh, view, SmoothingParameters());
   EXPECT_EQ(guarded.UnresolvedFolds, 0u);
   EXPECT_GT(guarded.StraightSilhouettePoints, 0u);
+  // Counted, among the chord fallbacks.
+  EXPECT_GT(guarded.CrowdedTriangles, 0u);
+  EXPECT_LE(guarded.CrowdedTriangles, guarded.ChordFallbackTriangles);
   EXPECT_LE(guarded.FoldGuardRounds, 3u) << "crowded ones go straight in one round";
   EXPECT_FALSE(foldsOf(mesh, guarded, false).any());
 }

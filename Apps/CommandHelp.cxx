@@ -67,8 +67,9 @@ std::string FiguresHelp()
     "Reading, camera set-up, writing and rendering are not timed.\n"
     "With --json they are one JSON object on stdout with the keys input, output\n"
     "(a path or null), input_triangles, output_triangles, silhouette_triangles,\n"
-    "new_triangles, new_points, fold_fallbacks {chord_triangles, straight_points,\n"
-    "straight_feature_segments, pinned_points, unresolved}, prepare_ms,\n"
+    "new_triangles, new_points, apex_triangles, fold_fallbacks {chord_triangles,\n"
+    "straight_points, straight_feature_segments, pinned_points,\n"
+    "crowded_triangles, unresolved}, prepare_ms,\n"
     "filter_ms, tolerance, viewport [w, h]\n"
     "and camera {position, focal_point, view_up, view_angle, parallel}.\n";
 }

@@ -172,11 +172,22 @@ void SilhouettePass::computeSilhouettePoints()
     const VisibilityQuadratic h = visibilityAlongEdge(normals[a],
       this->View.towardViewerFrom(points[a]), normals[b], this->View.towardViewerFrom(points[b]));
     // G holds only signs for hierarchically decided vertices: the values here.
-    const double t = std::clamp(silhouetteParameter(h, this->View.visibility(points[a], normals[a]),
-                                  this->View.visibility(points[b], normals[b])),
+    double t = std::clamp(silhouetteParameter(h, this->View.visibility(points[a], normals[a]),
+                            this->View.visibility(points[b], normals[b])),
       EdgeParameterMargin, 1.0 - EdgeParameterMargin);
     NewPoint p;
     const Id feature = this->Mesh.edgeFeature(e);
+    const bool apexA = this->Mesh.isApex(static_cast<Id>(a));
+    if (this->Parameters.KeepApexesPointed && feature < 0 && !this->mayBeSeam(e) &&
+      apexA != this->Mesh.isApex(static_cast<Id>(b)))
+    {
+      // On a cone the normal is constant along each line from the apex, so
+      // such an edge holds no crossing but at the apex, where the outline's
+      // two lines meet; the apex's one normal would put it anywhere along
+      // the edge (the outline then stopped short of the tip, or ran round
+      // the far side).
+      t = apexA ? EdgeParameterMargin : 1.0 - EdgeParameterMargin;
+    }
     if (feature >= 0)
     {
       const bool forward =

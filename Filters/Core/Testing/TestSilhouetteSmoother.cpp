@@ -744,4 +744,13 @@ TEST(SilhouetteSmoother, AConesApexKeepsTheSilhouetteOnTheCone)
     worst = std::max(worst, std::hypot(p.Position.x, p.Position.y) - radius);
   }
   EXPECT_LT(worst, 1e-9) << "a new point beyond the true cone";
+  // The outline's two lines meet at the tip: the silhouette points on the
+  // apex's edges are there (the edge margin away, 1% of the edge).
+  const double edge = std::hypot(1.0, height);
+  double nearest = edge;
+  for (const NewPoint& p : r.NewPoints)
+  {
+    nearest = std::min(nearest, glm::length(p.Position - points[0]));
+  }
+  EXPECT_LT(nearest, 1.01 * EdgeParameterMargin * edge);
 }

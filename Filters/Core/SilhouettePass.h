@@ -73,6 +73,10 @@ private:
   static constexpr unsigned char StraightLevel = 2; // and points on its edges
 
   void straightenAtApexes();
+  // The end of mixed edge e at which its silhouette point sits, when e
+  // runs from an apex (apexSides: such edges' silhouette triangles,
+  // sorted); -1 for any other edge.
+  Id apexEdgeCrossing(Id e, const std::vector<std::pair<Id, Id>>& apexSides) const;
   void remeshFrame();
 
   FoldFindings findFrameFolds(

@@ -131,26 +131,71 @@ void SilhouettePass::cullOutsideFrustum()
   this->Culled = before - this->Silhouette.size();
 }
 
+// On a cone the normal is constant along each line from the apex, so an
+// edge from an apex is all front-facing or all back-facing, as its two
+// triangles are, unless they face opposite ways: then the edge is the
+// outline, which runs through the apex. The vertices' normals make the edge
+// mixed anyway (the apex's one normal is the axis; the far end's may be
+// blended with a base's across a rim not found as a crease), and the
+// crossing they give falls anywhere along it: the outline stopped short of
+// the tip, or ran round the far side. The crossing is put at the end whose
+// vertex disagrees with the triangles: the apex, unless the far end does.
+// Returns the apex's vertex, the far end's, or -1 for another edge.
+Id SilhouettePass::apexEdgeCrossing(Id e, const std::vector<std::pair<Id, Id>>& apexSides) const
+{
+  auto it = std::lower_bound(apexSides.begin(), apexSides.end(), std::make_pair(e, Id{ 0 }));
+  if (it == apexSides.end() || it->first != e)
+  {
+    return -1;
+  }
+  const Edge& edge = this->Mesh.edges().edge(e);
+  const bool lowIsApex = this->Mesh.isApex(edge.low);
+  const Id apex = lowIsApex ? edge.low : edge.high;
+  const Id far = lowIsApex ? edge.high : edge.low;
+  const auto& points = this->Mesh.points();
+  const glm::dvec3& farPoint = points[static_cast<std::size_t>(far)];
+  int front = 0;
+  int back = 0;
+  for (; it != apexSides.end() && it->first == e; ++it)
+  {
+    const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(it->second)];
+    const glm::dvec3 face = glm::cross(
+      points[static_cast<std::size_t>(tri[1])] - points[static_cast<std::size_t>(tri[0])],
+      points[static_cast<std::size_t>(tri[2])] - points[static_cast<std::size_t>(tri[0])]);
+    ++(isVisible(this->View.visibility(farPoint, face)) ? front : back);
+  }
+  const bool bothWays = front > 0 && back > 0;
+  return bothWays || this->visibleAt(far) == (front > 0) ? apex : far;
+}
+
 // One silhouette point per mixed edge, in ascending edge order, so both
 // triangles of an edge use the same point (the crack-free rule). On a feature edge
 // the silhouette bridge is the edge's feature segment (III-D, case (a)).
 void SilhouettePass::computeSilhouettePoints()
 {
   const EdgeTable& edges = this->Mesh.edges();
+  const bool apexes = this->Parameters.KeepApexesPointed && !this->Mesh.apexes().empty();
   std::vector<Id> mixedEdges;
+  std::vector<std::pair<Id, Id>> apexSides; // (mixed edge from an apex, triangle)
   for (const Id t : this->Silhouette)
   {
     for (int k = 0; k < 3; ++k)
     {
       const Id e = edges.sideEdge(t, k);
-      if (this->isMixed(edges.edge(e)))
+      const Edge& edge = edges.edge(e);
+      if (this->isMixed(edge))
       {
         mixedEdges.push_back(e);
+        if (apexes && this->Mesh.isApex(edge.low) != this->Mesh.isApex(edge.high))
+        {
+          apexSides.emplace_back(e, t);
+        }
       }
     }
   }
   std::sort(mixedEdges.begin(), mixedEdges.end());
   mixedEdges.erase(std::unique(mixedEdges.begin(), mixedEdges.end()), mixedEdges.end());
+  std::sort(apexSides.begin(), apexSides.end());
 
   const auto& points = this->Mesh.points();
   const auto& normals = this->Mesh.normals();
@@ -177,16 +222,11 @@ void SilhouettePass::computeSilhouettePoints()
       EdgeParameterMargin, 1.0 - EdgeParameterMargin);
     NewPoint p;
     const Id feature = this->Mesh.edgeFeature(e);
-    const bool apexA = this->Mesh.isApex(static_cast<Id>(a));
-    if (this->Parameters.KeepApexesPointed && feature < 0 && !this->mayBeSeam(e) &&
-      apexA != this->Mesh.isApex(static_cast<Id>(b)))
+    const Id crossing =
+      feature < 0 && !this->mayBeSeam(e) ? this->apexEdgeCrossing(e, apexSides) : Id{ -1 };
+    if (crossing >= 0)
     {
-      // On a cone the normal is constant along each line from the apex, so
-      // such an edge holds no crossing but at the apex, where the outline's
-      // two lines meet; the apex's one normal would put it anywhere along
-      // the edge (the outline then stopped short of the tip, or ran round
-      // the far side).
-      t = apexA ? EdgeParameterMargin : 1.0 - EdgeParameterMargin;
+      t = crossing == static_cast<Id>(a) ? EdgeParameterMargin : 1.0 - EdgeParameterMargin;
     }
     if (feature >= 0)
     {

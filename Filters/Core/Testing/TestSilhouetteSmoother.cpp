@@ -754,3 +754,39 @@ TEST(SilhouetteSmoother, AConesApexKeepsTheSilhouetteOnTheCone)
   }
   EXPECT_LT(nearest, 1.01 * EdgeParameterMargin * edge);
 }
+
+// The same cone closed by a base, its rim not a crease (as by default), seen
+// from near its axis above: every side faces the viewer, and the outline is
+// the rim. The rim's normals, blended with the base's, make the edges from
+// the apex mixed; their crossing is the blend's, near the rim, not at the
+// apex (which drew lines from the tip to the rim, an X).
+TEST(SilhouetteSmoother, AConesApexIsNoOutlineWhereItsSidesAllFaceTheViewer)
+{
+  const int n = 64;
+  const double pi = 3.14159265358979323846;
+  const double height = 2.0;
+  std::vector<glm::dvec3> points{ { 0, 0, height } };
+  std::vector<Triangle> triangles;
+  for (int i = 0; i < n; ++i)
+  {
+    const double a = 2 * pi * i / n;
+    points.emplace_back(std::cos(a), std::sin(a), 0.0);
+    triangles.push_back({ 0, 1 + i, 1 + (i + 1) % n });
+  }
+  points.emplace_back(0.0, 0.0, 0.0);
+  for (int i = 0; i < n; ++i)
+  {
+    triangles.push_back({ n + 1, 1 + (i + 1) % n, 1 + i });
+  }
+  const PreparedMesh mesh(points, triangles);
+  ASSERT_EQ(mesh.apexes(), std::vector<Id>{ 0 });
+  const ViewGeometry view = coretest::perspectiveFrom(glm::dvec3(1.0, 0.2, 8.0));
+  const SmoothingResult r = smoothSilhouettes(mesh, view, SmoothingParameters());
+  ASSERT_GT(r.NewPoints.size(), 0u);
+  double nearest = std::hypot(1.0, height);
+  for (const NewPoint& p : r.NewPoints)
+  {
+    nearest = std::min(nearest, glm::length(p.Position - points[0]));
+  }
+  EXPECT_GT(nearest, 0.5 * std::hypot(1.0, height)) << "a crossing at the apex";
+}

@@ -1,5 +1,7 @@
 #include "ConeApexes.h"
 
+#include "ShadingNormals.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -28,9 +30,7 @@ std::vector<Id> coneApexes(
   const double spreadCosine = std::cos(ApexSpreadDegrees * pi / 180.0);
   // False for a triangle with no area (or not finite).
   auto faceNormal = [&](const Triangle& t, glm::dvec3& normal) {
-    const glm::dvec3& a = points[static_cast<std::size_t>(t[0])];
-    const glm::dvec3 n = glm::cross(
-      points[static_cast<std::size_t>(t[1])] - a, points[static_cast<std::size_t>(t[2])] - a);
+    const glm::dvec3 n = areaVector(points, t);
     const double length = glm::length(n);
     if (!(length > 0.0) || !std::isfinite(length))
     {

@@ -1,5 +1,6 @@
 #include "EdgeClassification.h"
 
+#include "ShadingNormals.h"
 #include "SilhouettePolylines.h"
 
 #include <glm/geometric.hpp>
@@ -35,8 +36,7 @@ std::vector<FlaggedEdge> classifyEdges(const std::vector<glm::dvec3>& points,
   }
   const double cosCrease = std::cos(creaseAngleDegrees * 3.14159265358979323846 / 180.0);
   const auto normal = [&](std::size_t t) {
-    const Triangle& tri = triangles[t];
-    return glm::cross(points[tri[1]] - points[tri[0]], points[tri[2]] - points[tri[0]]);
+    return areaVector(points, triangles[t]);
   };
   std::vector<FlaggedEdge> out;
   out.reserve(edgeTriangles.size());

@@ -43,6 +43,15 @@ enum class NormalWeighting
 std::vector<glm::dvec3> vertexNormals(const std::vector<glm::dvec3>& points,
   const std::vector<Triangle>& triangles, NormalWeighting weighting);
 
+/// Triangle t's area vector: its normal as its corners wind, twice its area
+/// long.
+inline glm::dvec3 areaVector(const std::vector<glm::dvec3>& points, const Triangle& t)
+{
+  const glm::dvec3& a = points[static_cast<std::size_t>(t[0])];
+  return glm::cross(
+    points[static_cast<std::size_t>(t[1])] - a, points[static_cast<std::size_t>(t[2])] - a);
+}
+
 /// Normalises `normal`, or returns the zero vector when it is too short to
 /// have a direction (zero, denormal, or not finite). Inline: the hot loops
 /// (face and vertex normals, dihedral angles) call it per triangle.

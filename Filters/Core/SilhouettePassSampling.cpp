@@ -158,10 +158,8 @@ Id SilhouettePass::apexEdgeCrossing(Id e, const std::vector<std::pair<Id, Id>>& 
   int back = 0;
   for (; it != apexSides.end() && it->first == e; ++it)
   {
-    const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(it->second)];
-    const glm::dvec3 face = glm::cross(
-      points[static_cast<std::size_t>(tri[1])] - points[static_cast<std::size_t>(tri[0])],
-      points[static_cast<std::size_t>(tri[2])] - points[static_cast<std::size_t>(tri[0])]);
+    const glm::dvec3 face =
+      areaVector(points, this->Mesh.triangles()[static_cast<std::size_t>(it->second)]);
     ++(isVisible(this->View.visibility(farPoint, face)) ? front : back);
   }
   const bool bothWays = front > 0 && back > 0;

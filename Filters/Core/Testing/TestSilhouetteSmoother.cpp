@@ -15,6 +15,7 @@
 #include <cmath>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <memory>
 #include <random>
@@ -522,6 +523,38 @@ TEST(SilhouetteSmoother, FoldGuardLeavesNoFoldAndIncrementalChecksChangeNothing)
   EXPECT_GT(extraRounds, 40u) << "fallbacks " << fallbacks << ", folds " << unguardedFolds;
 }
 
+namespace
+{
+
+// The sides of a cone of n sides over the unit circle in z = 0, its apex
+// (point 0) at z = height: a fan of n triangles around the apex.
+void coneSides(
+  int n, double height, std::vector<glm::dvec3>& points, std::vector<Triangle>& triangles)
+{
+  const double pi = 3.14159265358979323846;
+  points.assign(1, glm::dvec3(0.0, 0.0, height));
+  triangles.clear();
+  for (int i = 0; i < n; ++i)
+  {
+    const double a = 2 * pi * i / n;
+    points.emplace_back(std::cos(a), std::sin(a), 0.0);
+    triangles.push_back({ 0, 1 + i, 1 + (i + 1) % n });
+  }
+}
+
+// The distance from `at` to the nearest of the frame's new points.
+double nearestNewPoint(const SmoothingResult& r, const glm::dvec3& at)
+{
+  double nearest = std::numeric_limits<double>::infinity();
+  for (const NewPoint& p : r.NewPoints)
+  {
+    nearest = std::min(nearest, glm::length(p.Position - at));
+  }
+  return nearest;
+}
+
+} // namespace
+
 // A blunt cone of 5,000 sides (its sides 11 degrees from flat: no apex to
 // ConeApexes.h) whose apex normal points along its axis: seen from the side
 // and a little above the apex, the silhouette crosses the far sides near the
@@ -532,17 +565,13 @@ TEST(SilhouetteSmoother, FoldGuardLeavesNoFoldAndIncrementalChecksChangeNothing)
 // test.
 TEST(SilhouetteSmoother, AFanTooCrowdedToTestIsReMeshedStraight)
 {
-  const int n = 5000;
-  const double pi = 3.14159265358979323846;
-  std::vector<glm::dvec3> points{ { 0, 0, 0.2 } };
-  std::vector<glm::dvec3> normals{ { 0, 0, 1 } };
+  std::vector<glm::dvec3> points;
   std::vector<Triangle> triangles;
-  for (int i = 0; i < n; ++i)
+  coneSides(5000, 0.2, points, triangles);
+  std::vector<glm::dvec3> normals{ { 0, 0, 1 } };
+  for (std::size_t i = 1; i < points.size(); ++i)
   {
-    const double a = 2 * pi * i / n;
-    points.emplace_back(std::cos(a), std::sin(a), 0.0);
-    normals.push_back(glm::normalize(glm::dvec3(std::cos(a), std::sin(a), 5.0)));
-    triangles.push_back({ 0, 1 + i, 1 + (i + 1) % n });
+    normals.push_back(glm::normalize(glm::dvec3(points[i].x, points[i].y, 5.0)));
   }
   const PreparedMesh mesh(points, triangles, normals);
   ASSERT_TRUE(mesh.apexes().empty());
@@ -719,17 +748,10 @@ TEST(SilhouetteSmoother, FrustumCullingLeavesOutOnlyWhatTheViewCannotShow)
 // every new point lies on the coarse cone, within the true cone.
 TEST(SilhouetteSmoother, AConesApexKeepsTheSilhouetteOnTheCone)
 {
-  const int n = 64;
-  const double pi = 3.14159265358979323846;
   const double height = 2.0;
-  std::vector<glm::dvec3> points{ { 0, 0, height } };
+  std::vector<glm::dvec3> points;
   std::vector<Triangle> triangles;
-  for (int i = 0; i < n; ++i)
-  {
-    const double a = 2 * pi * i / n;
-    points.emplace_back(std::cos(a), std::sin(a), 0.0);
-    triangles.push_back({ 0, 1 + i, 1 + (i + 1) % n });
-  }
+  coneSides(64, height, points, triangles);
   const PreparedMesh mesh(points, triangles);
   ASSERT_EQ(mesh.apexes(), std::vector<Id>{ 0 });
   const ViewGeometry view = coretest::perspectiveFrom(glm::dvec3(6.0, 1.0, 1.5));
@@ -746,13 +768,7 @@ TEST(SilhouetteSmoother, AConesApexKeepsTheSilhouetteOnTheCone)
   EXPECT_LT(worst, 1e-9) << "a new point beyond the true cone";
   // The outline's two lines meet at the tip: the silhouette points on the
   // apex's edges are there (the edge margin away, 1% of the edge).
-  const double edge = std::hypot(1.0, height);
-  double nearest = edge;
-  for (const NewPoint& p : r.NewPoints)
-  {
-    nearest = std::min(nearest, glm::length(p.Position - points[0]));
-  }
-  EXPECT_LT(nearest, 1.01 * EdgeParameterMargin * edge);
+  EXPECT_LT(nearestNewPoint(r, points[0]), 1.01 * EdgeParameterMargin * std::hypot(1.0, height));
 }
 
 // The same cone closed by a base, its rim not a crease (as by default), seen
@@ -763,16 +779,10 @@ TEST(SilhouetteSmoother, AConesApexKeepsTheSilhouetteOnTheCone)
 TEST(SilhouetteSmoother, AConesApexIsNoOutlineWhereItsSidesAllFaceTheViewer)
 {
   const int n = 64;
-  const double pi = 3.14159265358979323846;
   const double height = 2.0;
-  std::vector<glm::dvec3> points{ { 0, 0, height } };
+  std::vector<glm::dvec3> points;
   std::vector<Triangle> triangles;
-  for (int i = 0; i < n; ++i)
-  {
-    const double a = 2 * pi * i / n;
-    points.emplace_back(std::cos(a), std::sin(a), 0.0);
-    triangles.push_back({ 0, 1 + i, 1 + (i + 1) % n });
-  }
+  coneSides(n, height, points, triangles);
   points.emplace_back(0.0, 0.0, 0.0);
   for (int i = 0; i < n; ++i)
   {
@@ -783,10 +793,6 @@ TEST(SilhouetteSmoother, AConesApexIsNoOutlineWhereItsSidesAllFaceTheViewer)
   const ViewGeometry view = coretest::perspectiveFrom(glm::dvec3(1.0, 0.2, 8.0));
   const SmoothingResult r = smoothSilhouettes(mesh, view, SmoothingParameters());
   ASSERT_GT(r.NewPoints.size(), 0u);
-  double nearest = std::hypot(1.0, height);
-  for (const NewPoint& p : r.NewPoints)
-  {
-    nearest = std::min(nearest, glm::length(p.Position - points[0]));
-  }
-  EXPECT_GT(nearest, 0.5 * std::hypot(1.0, height)) << "a crossing at the apex";
+  EXPECT_GT(nearestNewPoint(r, points[0]), 0.5 * std::hypot(1.0, height))
+    << "a crossing at the apex";
 }

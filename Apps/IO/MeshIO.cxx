@@ -114,6 +114,7 @@ struct FileFacts
   PlyFacts Ply;
   FileGeometry Obj;
   FileGeometry Legacy;
+  VtpFacts Vtp;
 };
 
 // The pre-check for the format, then VTK's reader.
@@ -137,7 +138,9 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(
   }
   else if (extension == ".vtp")
   {
-    CheckVtpFile(path); // vtkXMLPolyDataReader allocates what a binary array's header declares
+    // Refuses what the reader would allocate or fill from its buffer, and
+    // reads the geometry to hold the reader to.
+    facts.Vtp = CheckVtpFile(path);
   }
   vtkSmartPointer<vtkAlgorithm> reader = NewVtkReader(path);
   if (!reader)
@@ -201,6 +204,15 @@ vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::str
   if (extension == ".vtk")
   {
     RequireReadAsWritten(facts.Legacy, read, path, "vtkPolyDataReader");
+  }
+  if (extension == ".vtp")
+  {
+    if (!facts.Vtp.Read)
+    {
+      throw RuntimeError("cannot read " + Quoted(path) + ": VTK XML: " + facts.Vtp.Unreadable +
+        ", so what vtkXMLPolyDataReader read of it cannot be checked");
+    }
+    RequireReadAsWritten(facts.Vtp.Geometry, read, path, "vtkXMLPolyDataReader");
   }
   if (extension == ".obj")
   {

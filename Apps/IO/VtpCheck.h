@@ -1,24 +1,40 @@
 #ifndef VtpCheck_h
 #define VtpCheck_h
 
+#include "FileGeometry.h"
+
 #include <string>
 
 namespace cli
 {
 
+/// What the VTK XML check read of a file.
+struct VtpFacts
+{
+  /// True when the format's rules read the file's mesh (then Geometry holds
+  /// it); false when they could not, and Unreadable says why.
+  bool Read = false;
+  FileGeometry Geometry;
+  std::string Unreadable;
+};
+
 /**
- * Checks the binary data arrays of a VTK XML file, inline or appended, before
- * vtkXMLPolyDataReader sees them. VTK 9.1's reader allocates what an array's
- * binary header declares (the uncompressed size and the block count of a
- * compressed array, the byte count of a raw one), however short the file: a
- * fuzzed 4 KB file made it take more than a gigabyte. A header that declares
- * more than 1024 bytes per byte of the file (zlib compresses at most about
- * 1032:1) or more blocks than the file has bytes throws RuntimeError with one
- * line, and so does a Piece declaring more points or cells than that bound.
- * So does an uncompressed array holding fewer bytes than its header
- * declares, which the reader fills up with whatever its buffer held.
+ * Reads a VTK XML PolyData file's mesh by the format's rules
+ * (`VtkXmlData.h`: every encoding and compressor VTK writes), to hold
+ * vtkXMLPolyDataReader to it (FileGeometry.h): the points of every piece in
+ * order, the active point normals when every piece gives them, and each
+ * piece's vertices, lines, strips and polygons, with the piece's indices
+ * offset by the points of the pieces before it.
+ *
+ * Throws RuntimeError with one line, before the reader sees the file, for a
+ * header or a Piece that declares more than the file can hold and for an
+ * uncompressed array that holds fewer bytes than its header declares (the
+ * reader would allocate it, or fill it from its buffer). A cell that names
+ * a point beyond its piece's, or offsets that go back, are refused too.
+ * Whatever else the rules cannot read is left to the reader (`Read` false):
+ * the caller refuses the file if the reader then reads it.
  */
-void CheckVtpFile(const std::string& path);
+VtpFacts CheckVtpFile(const std::string& path);
 
 } // namespace cli
 

@@ -10,7 +10,8 @@ each (8 input triangles). Each binary file cut at 60% of its length, inside
 its arrays, must be refused with one line (the check still checks). Then
 the same mesh as VTK XML in every byte order, header width (UInt32,
 UInt64), encoding (ASCII, binary, appended raw and base64) and compression
-(none, zlib) vtkXMLPolyDataWriter writes, and as PLY (ASCII, binary in either
+(none, zlib, LZ4, LZMA, in blocks of 64 bytes) vtkXMLPolyDataWriter
+writes, and as PLY (ASCII, binary in either
 byte order, with colours), STL (ASCII, binary) and OBJ: each must be read.
 Usage: TestWrittenByVtk.py SILHOUETTE_PROGRAM WORK_DIR
 """
@@ -92,11 +93,11 @@ from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 for order in ("BigEndian", "LittleEndian"):
     for header in ("UInt32", "UInt64"):
         for mode in ("ascii", "binary", "appended_raw", "appended_base64"):
-            for compressed in (False, True):
-                if mode == "ascii" and compressed:
+            for compressor in ("None", "ZLib", "LZ4", "LZMA"):
+                if mode == "ascii" and compressor != "None":
                     continue
                 name = os.path.join(work, "octahedron_%s_%s_%s%s.vtp"
-                    % (order, header, mode, "_zlib" if compressed else ""))
+                    % (order, header, mode, "" if compressor == "None" else "_" + compressor))
                 writer = vtkXMLPolyDataWriter()
                 writer.SetInputData(mesh)
                 writer.SetFileName(name)
@@ -109,10 +110,8 @@ for order in ("BigEndian", "LittleEndian"):
                 else:
                     writer.SetDataModeToAppended()
                     writer.SetEncodeAppendedData(mode == "appended_base64")
-                if compressed:
-                    writer.SetCompressorTypeToZLib()
-                else:
-                    writer.SetCompressorTypeToNone()
+                getattr(writer, "SetCompressorTypeTo" + compressor)()
+                writer.SetBlockSize(64)  # several blocks a compressed array
                 check(writer.Write() == 1, "vtkXMLPolyDataWriter wrote %s" % os.path.basename(name))
                 code, out, err = cli_checks.run(program, "smooth", name)
                 check(code == 0 and re.search(r"^input triangles: +8$", out, re.M) and not err,

@@ -343,8 +343,9 @@ Smoothing options (with the camera options wherever those are taken):
                            pointed)
   --flat-crease-angle DEG  creases between flat faces (boxes, CAD parts) are
                            edges sharper than DEG (0 to 180) whose two
-                           triangles each lie flat against another neighbour
-                           (default 65)
+                           triangles each lie flat against another neighbour,
+                           and the outlines of flat faces that sharp all
+                           round, such as a cone's base (default 65)
   --no-flat-creases        do not detect creases between flat faces
                            (default: detected)
   --no-normal-seams        do not take points at one position with different

@@ -318,8 +318,10 @@ public:
    * FlatCreaseAngle degrees (default 65) whose two triangles each lie flat
    * (within half a degree) against another of their neighbours, as the faces
    * of boxes and CAD parts do; a face of one triangle whose three edges are
-   * all that sharp counts as flat beside such a face (a wedge's ends).
-   * Tessellated smooth surfaces almost never have
+   * all that sharp counts as flat beside such a face (a wedge's ends). The
+   * outline of a flat face of two or more triangles that is that sharp all
+   * round is a crease too, whatever lies beyond it (a cone's base, a hoof's
+   * sole). Tessellated smooth surfaces almost never have
    * flat neighbours, even where they are coarse enough to have edges sharper
    * than any fixed angle (the coarse bunny has 15 edges above 80 degrees, a
    * CAD part's edges are 90), so this can be on by default where

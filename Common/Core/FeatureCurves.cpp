@@ -156,6 +156,86 @@ std::vector<FeatureEdge> flatSidedCreases(const std::vector<glm::dvec3>& points,
   return flatSidedCreases(dihedralCosines(points, triangles, sides), sides, table, angleDegrees);
 }
 
+namespace
+{
+
+// The edges on the outline of a planar face of two or more triangles that is
+// sharper than cosLimit all round (1 per such edge, by edge id): a cone's or
+// a dome's flat base, a pyramid's. Where the other side is a curved surface
+// of single triangles, the both-flat rule cannot tell such an edge from a
+// coarse organic mesh's; an outline sharp all round can (the few coplanar
+// neighbours of an organic mesh have gentle edges about them). A face that
+// meets a border or a non-manifold edge has no closed outline and counts
+// as not sharp all round. Serial: a face's triangles are joined in any order.
+std::vector<unsigned char> sharpFaceOutlines(const std::vector<double>& cosines,
+  const EdgeSides& sides, const EdgeTable& table, double cosLimit, double cosFlat,
+  const std::vector<unsigned char>& flat)
+{
+  std::vector<unsigned char> outline(table.edgeCount(), 0);
+  // Only a flat triangle with a sharp edge can be on such an outline; fine
+  // and organic meshes have none, and skip the joining (28 ms at 1.3M
+  // triangles all lying flat against their neighbours).
+  bool candidate = false;
+  for (std::size_t e = 0; e < table.edgeCount() && !candidate; ++e)
+  {
+    candidate = cosines[e] < cosLimit &&
+      (flat[static_cast<std::size_t>(sides.First[e][0] / 3)] ||
+        flat[static_cast<std::size_t>(sides.First[e][1] / 3)]);
+  }
+  if (!candidate)
+  {
+    return outline;
+  }
+  const std::size_t none = flat.size();
+  DisjointSets faces(flat.size());
+  for (std::size_t e = 0; e < table.edgeCount(); ++e)
+  {
+    if (cosines[e] >= cosFlat) // false for NaN: not exactly two sides
+    {
+      faces.unite(static_cast<std::size_t>(sides.First[e][0] / 3),
+        static_cast<std::size_t>(sides.First[e][1] / 3));
+    }
+  }
+  // The face of each side of an edge (`none` for a triangle in no planar face).
+  auto faceOf = [&](Id side) {
+    const auto t = static_cast<std::size_t>(side / 3);
+    return side >= 0 && flat[t] ? faces.find(t) : none;
+  };
+  std::vector<unsigned char> notSharp(flat.size(), 0);
+  for (std::size_t e = 0; e < table.edgeCount(); ++e)
+  {
+    const std::size_t a = faceOf(sides.First[e][0]);
+    const std::size_t b = faceOf(sides.First[e][1]);
+    if (a == b && sides.Count[e] == 2)
+    {
+      continue; // inside a face, or between two triangles in none
+    }
+    if (sides.Count[e] != 2 || !(cosines[e] < cosLimit))
+    {
+      for (const std::size_t face : { a, b })
+      {
+        if (face != none)
+        {
+          notSharp[face] = 1;
+        }
+      }
+    }
+  }
+  for (std::size_t e = 0; e < table.edgeCount(); ++e)
+  {
+    const std::size_t a = faceOf(sides.First[e][0]);
+    const std::size_t b = faceOf(sides.First[e][1]);
+    if (sides.Count[e] == 2 && a != b &&
+      ((a != none && !notSharp[a]) || (b != none && !notSharp[b])))
+    {
+      outline[e] = 1;
+    }
+  }
+  return outline;
+}
+
+} // namespace
+
 std::vector<FeatureEdge> flatSidedCreases(const std::vector<double>& cosines,
   const EdgeSides& sides, const EdgeTable& table, double angleDegrees,
   const ParallelFor& parallelFor)
@@ -200,17 +280,20 @@ std::vector<FeatureEdge> flatSidedCreases(const std::vector<double>& cosines,
       lone[t] = lonelyFace ? 1 : 0;
     }
   });
+  const std::vector<unsigned char> outline =
+    sharpFaceOutlines(cosines, sides, table, cosLimit, cosFlat, flat);
   for (std::size_t t = 0; t < triangleCount; ++t)
   {
     flat[t] = flat[t] || lone[t];
   }
   // Sharp edges between two flat triangles (a cosine is NaN unless the edge
-  // has exactly two sides).
+  // has exactly two sides), and the outlines of planar faces sharp all round.
   std::vector<FeatureEdge> result;
   for (std::size_t e = 0; e < table.edgeCount(); ++e)
   {
-    if (cosines[e] < cosLimit && flat[static_cast<std::size_t>(sides.First[e][0] / 3)] &&
-      flat[static_cast<std::size_t>(sides.First[e][1] / 3)])
+    if (outline[e] ||
+      (cosines[e] < cosLimit && flat[static_cast<std::size_t>(sides.First[e][0] / 3)] &&
+        flat[static_cast<std::size_t>(sides.First[e][1] / 3)]))
     {
       result.emplace_back(table.edge(static_cast<Id>(e)).low, table.edge(static_cast<Id>(e)).high);
     }

@@ -71,7 +71,11 @@ constexpr double FlatNeighbourDegrees = 0.5;
 /// edges sharper than any fixed angle (measured in docs/real-assets.md).
 /// A face of one triangle counts as flat when all three of its edges are
 /// sharper than the angle and border flat triangles (a wedge's end beside
-/// its rectangular sides).
+/// its rectangular sides). The outline of a flat face of two or more
+/// triangles is a crease too where it is sharper than the angle all round,
+/// whatever lies beyond (a cone's base beside single side triangles): an
+/// organic mesh's rare coplanar neighbours have gentle edges about them. A
+/// face that meets a border or a non-manifold edge has no such outline.
 /// `table`, when given, is the edge table of `triangles`.
 std::vector<FeatureEdge> flatSidedCreases(const std::vector<glm::dvec3>& points,
   const std::vector<Triangle>& triangles, double angleDegrees, const EdgeTable* table = nullptr);

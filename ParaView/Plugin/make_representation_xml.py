@@ -31,7 +31,7 @@ props = [
   ("SilhouetteFeatureAngle", "double", "30", "Feature Angle",
    "Degrees between face normals above which an edge is a feature edge.", '<DoubleRangeDomain name="range" min="0" max="180"/>', False),
   ("SilhouetteFlatCreaseDetection", "bool", "1", "Flat Crease Detection",
-   "Creases between flat faces (boxes, CAD parts): edges sharper than Flat Crease Angle whose triangles each lie flat against another neighbour.", "", True),
+   "Creases between flat faces (boxes, CAD parts): edges sharper than Flat Crease Angle whose triangles each lie flat against another neighbour, and the outlines of flat faces that sharp all round (a cone's base).", "", True),
   ("SilhouetteFlatCreaseAngle", "double", "65", "Flat Crease Angle",
    "Degrees above which an edge between flat faces is a crease.", '<DoubleRangeDomain name="range" min="0" max="180"/>', True),
   ("SilhouetteNormalSeamFeatures", "bool", "1", "Normal Seam Features",

@@ -560,3 +560,69 @@ TEST(FlatSidedCreases, AFaceOfOneTriangleBesideFlatFacesIsFlat)
     { { 1, 3, 2 } } };
   EXPECT_TRUE(flatSidedCreases(tetrahedron, four, 65.0).empty());
 }
+
+namespace
+{
+
+// A solid of revolution about z with `sides` sides: the profile's points
+// (radius, height) from the bottom's centre (radius 0) to the top's (radius
+// 0), fans at both ends and two triangles between neighbouring rings.
+void revolve(const std::vector<glm::dvec2>& profile, int sides, std::vector<glm::dvec3>& points,
+  std::vector<Triangle>& triangles)
+{
+  points.clear();
+  triangles.clear();
+  const auto rings = static_cast<Id>(profile.size()) - 2;
+  points.emplace_back(0.0, 0.0, profile.front().y);
+  for (Id r = 1; r <= rings; ++r)
+  {
+    for (int s = 0; s < sides; ++s)
+    {
+      const double a = 2.0 * 3.14159265358979 * s / sides;
+      points.emplace_back(profile[r].x * std::cos(a), profile[r].x * std::sin(a), profile[r].y);
+    }
+  }
+  points.emplace_back(0.0, 0.0, profile.back().y);
+  const Id top = static_cast<Id>(points.size()) - 1;
+  auto at = [sides](Id ring, int s) {
+    return 1 + (ring - 1) * sides + (s % sides);
+  };
+  for (int s = 0; s < sides; ++s)
+  {
+    triangles.push_back({ { 0, at(1, s + 1), at(1, s) } });
+    for (Id r = 1; r < rings; ++r)
+    {
+      triangles.push_back({ { at(r, s), at(r, s + 1), at(r + 1, s + 1) } });
+      triangles.push_back({ { at(r, s), at(r + 1, s + 1), at(r + 1, s) } });
+    }
+    triangles.push_back({ { at(rings, s), at(rings, s + 1), top } });
+  }
+}
+
+} // namespace
+
+TEST(FlatSidedCreases, TheOutlineOfAFlatFaceSharpAllRound)
+{
+  // A 16-sided cone: its flat base meets single side triangles at 117
+  // degrees. The rim is a crease, the sides' 22-degree edges are not.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  revolve({ { 0, 0 }, { 1, 0 }, { 0, 2 } }, 16, points, triangles);
+  const std::vector<FeatureEdge> rim = flatSidedCreases(points, triangles, 65.0);
+  ASSERT_EQ(rim.size(), 16u);
+  for (const FeatureEdge& edge : rim)
+  {
+    EXPECT_EQ(points[edge.first].z, 0.0);
+    EXPECT_EQ(points[edge.second].z, 0.0);
+    EXPECT_TRUE(edge.first != 0 && edge.second != 0); // not a spoke of the base
+  }
+  // The same base meeting a ring that rises at 20 degrees, then the cone:
+  // the base's outline is gentle, so nothing is a crease.
+  revolve({ { 0, 0 }, { 1, 0 }, { 2, 0.364 }, { 0, 2 } }, 16, points, triangles);
+  EXPECT_TRUE(flatSidedCreases(points, triangles, 65.0).empty());
+  // A base with a triangle missing has no closed outline.
+  revolve({ { 0, 0 }, { 1, 0 }, { 0, 2 } }, 16, points, triangles);
+  triangles.erase(triangles.begin());
+  EXPECT_TRUE(flatSidedCreases(points, triangles, 65.0).empty());
+  // Nor is a single triangle's outline a face's (the tetrahedron above).
+}

@@ -12,7 +12,7 @@
 #include <algorithm>
 #include <cstring>
 #include <limits>
-#include <sstream>
+#include <type_traits>
 
 namespace cli
 {
@@ -601,9 +601,14 @@ VtkXmlData::Element VtkXmlData::ElementOf(const XmlTag& array, const std::string
   return element;
 }
 
-void VtkXmlData::Numbers(
-  std::size_t at, std::uint64_t count, const std::string& what, std::vector<double>& to) const
+// Up to `count` values of an array, as numbers or (Value an integer type)
+// as whole numbers: ASCII words read whole, binary values converted from
+// their type, in the file's byte order.
+template<typename Value>
+void VtkXmlData::Append(
+  std::size_t at, std::uint64_t count, const std::string& what, std::vector<Value>& to) const
 {
+  constexpr bool whole = std::is_integral<Value>::value;
   const XmlTag array = ParseXmlTag(this->Text, at);
   if (array.End == std::string::npos)
   {
@@ -614,56 +619,21 @@ void VtkXmlData::Numbers(
   {
     for (const std::string& word : this->AsciiWords(array, count))
     {
-      double value = 0;
-      if (!ParseWholeNumber(word, value))
+      long long integer = 0;
+      double number = 0;
+      if (whole ? !ParseWholeInteger(word, integer) : !ParseWholeNumber(word, number))
       {
-        throw XmlUnreadable(what + " holds '" + Excerpt(word) + "', which is not a number");
+        throw XmlUnreadable(what + " holds '" + Excerpt(word) + "', which is not a " +
+          (whole ? "whole number" : "number"));
       }
-      to.push_back(value);
+      to.push_back(whole ? static_cast<Value>(integer) : static_cast<Value>(number));
       ++held;
     }
   }
   else
   {
     const Element element = this->ElementOf(array, what);
-    std::size_t first = 0;
-    const std::string data = this->Decoded(array, what, first);
-    held = std::min<std::uint64_t>((data.size() - first) / element.Size, count);
-    to.reserve(to.size() + held);
-    for (std::size_t i = 0; i < held; ++i)
-    {
-      to.push_back(element.value(data.data() + first, i, this->BigEndian));
-    }
-  }
-  this->RequireHeld(held, count, what);
-}
-
-void VtkXmlData::Integers(
-  std::size_t at, std::uint64_t count, const std::string& what, std::vector<std::int64_t>& to) const
-{
-  const XmlTag array = ParseXmlTag(this->Text, at);
-  if (array.End == std::string::npos)
-  {
-    throw XmlUnreadable(what + "'s tag is cut short");
-  }
-  std::uint64_t held = 0;
-  if (array.Attribute("format") == "ascii")
-  {
-    for (const std::string& word : this->AsciiWords(array, count))
-    {
-      long long value = 0;
-      if (!ParseWholeInteger(word, value))
-      {
-        throw XmlUnreadable(what + " holds '" + Excerpt(word) + "', which is not a whole number");
-      }
-      to.push_back(value);
-      ++held;
-    }
-  }
-  else
-  {
-    const Element element = this->ElementOf(array, what);
-    if (element.Kind == 'f')
+    if (whole && element.Kind == 'f')
     {
       throw XmlUnreadable(
         what + " is of type " + array.Attribute("type") + ", where the format wants whole numbers");
@@ -674,26 +644,33 @@ void VtkXmlData::Integers(
     to.reserve(to.size() + held);
     for (std::size_t i = 0; i < held; ++i)
     {
-      std::int64_t value = 0;
-      bool whole = true;
-      element.value(data.data() + first, i, this->BigEndian, &value, &whole);
-      if (!whole)
+      std::int64_t integer = 0;
+      bool fits = true;
+      const double number = element.value(data.data() + first, i, this->BigEndian, &integer, &fits);
+      if (whole && !fits)
       {
         throw XmlUnreadable(what + " holds a value beyond the largest cell index");
       }
-      to.push_back(value);
+      to.push_back(whole ? static_cast<Value>(integer) : static_cast<Value>(number));
     }
   }
-  this->RequireHeld(held, count, what);
-}
-
-void VtkXmlData::RequireHeld(std::uint64_t held, std::uint64_t count, const std::string& what)
-{
   if (held < count)
   {
     throw XmlUnreadable(what + " holds " + Count(held) + " values, fewer than the " + Count(count) +
       " the piece needs");
   }
+}
+
+void VtkXmlData::Numbers(
+  std::size_t at, std::uint64_t count, const std::string& what, std::vector<double>& to) const
+{
+  this->Append(at, count, what, to);
+}
+
+void VtkXmlData::Integers(
+  std::size_t at, std::uint64_t count, const std::string& what, std::vector<std::int64_t>& to) const
+{
+  this->Append(at, count, what, to);
 }
 
 } // namespace cli

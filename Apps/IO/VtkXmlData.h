@@ -94,7 +94,9 @@ private:
   std::uint64_t DeclaredBytes(const Bytes& bytes, const std::string& name) const;
   /// The array's data bytes, uncompressed; they start at `first`.
   std::string Decoded(const XmlTag& array, const std::string& what, std::size_t& first) const;
-  static void RequireHeld(std::uint64_t held, std::uint64_t count, const std::string& what);
+  template<typename Value>
+  void Append(
+    std::size_t at, std::uint64_t count, const std::string& what, std::vector<Value>& to) const;
   std::vector<std::string> AsciiWords(const XmlTag& array, std::uint64_t count) const;
   Element ElementOf(const XmlTag& array, const std::string& what) const;
 

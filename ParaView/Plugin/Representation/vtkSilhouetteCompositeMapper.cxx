@@ -225,6 +225,10 @@ void vtkSilhouetteCompositeMapper::RenderLeaf(vtkRenderer* ren, vtkActor* act, v
   if (mapperTime != leaf->CopiedMapperTime)
   {
     mapper->vtkMapper::ShallowCopy(this);
+    // vtkPolyDataMapper's own, which vtkMapper::ShallowCopy leaves out (the
+    // display's Seamless U and V).
+    mapper->SetSeamlessU(this->GetSeamlessU());
+    mapper->SetSeamlessV(this->GetSeamlessV());
     mapper->SetStatic(1);
     leaf->CopiedMapperTime = mapperTime;
   }

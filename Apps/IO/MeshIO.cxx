@@ -110,7 +110,7 @@ void RequireLegacyPolyData(vtkPolyDataReader* reader, const std::string& path)
 // What the pre-checks learnt of the file that reading it needs.
 struct FileFacts
 {
-  std::uint64_t StlFacets = 0; ///< the facets an STL file holds
+  StlFacts Stl;
   PlyFacts Ply;
   FileGeometry Obj;
   FileGeometry Legacy;
@@ -133,8 +133,9 @@ vtkSmartPointer<vtkAlgorithm> MakeReader(
   }
   else if (extension == ".stl")
   {
-    // vtkSTLReader allocates for any triangle count a binary header declares.
-    facts.StlFacets = CheckStlFile(path);
+    // Refuses what the reader would allocate for or misread, and reads the
+    // facets to hold the reader to.
+    facts.Stl = CheckStlFile(path);
   }
   else if (extension == ".vtp")
   {
@@ -236,15 +237,18 @@ vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::str
   }
   // vtkSTLReader merges equal points and drops a facet left with two corners
   // at one point, without a word.
-  const auto polys = static_cast<std::uint64_t>(read->GetNumberOfPolys());
-  if (extension == ".stl" && polys < facts.StlFacets)
+  if (extension == ".stl")
   {
-    const std::uint64_t dropped = facts.StlFacets - polys;
-    errors.Record(VtkErrorLog::Kind::Warning, true,
-      (Quoted(path) + ": left out " + std::to_string(dropped) +
-        (dropped == 1 ? " facet" : " facets") +
-        " with two corners at one point (vtkSTLReader merges them away)")
-        .c_str());
+    RequireReadAsWritten(facts.Stl.Geometry, read, path, "vtkSTLReader");
+    const std::uint64_t dropped = facts.Stl.Needles;
+    if (dropped > 0)
+    {
+      errors.Record(VtkErrorLog::Kind::Warning, true,
+        (Quoted(path) + ": left out " + std::to_string(dropped) +
+          (dropped == 1 ? " facet" : " facets") +
+          " with two corners at one point (vtkSTLReader merges them away)")
+          .c_str());
+    }
   }
   // A copy of our own, so the reader's pipeline can go.
   auto mesh = vtkSmartPointer<vtkPolyData>::New();

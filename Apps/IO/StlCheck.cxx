@@ -5,6 +5,7 @@
 
 #include <vtkSTLReader.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
@@ -39,15 +40,50 @@ public:
 constexpr std::uint64_t HeaderBytes = 84; // 80 bytes of text, a 32-bit triangle count
 constexpr std::uint64_t TriangleBytes = 50;
 
-// ASCII: the reader reads a vertex's three numbers with strtod, each from
-// where the last stopped, and ignores what follows them, so "1,5" reads as 1
-// and "1-1" as 1 and -1. A vertex must be three whole numbers.
-std::uint64_t CheckAsciiVertices(const std::string& path)
+// A facet, three corners, into the geometry, or counted as a needle when
+// two corners are one point as the reader stores them (floats).
+void AddFacet(const double corners[9], std::size_t line, StlFacts& facts)
 {
-  std::uint64_t vertices = 0;
+  const auto same = [corners](int a, int b) {
+    for (int c = 0; c < 3; ++c)
+    {
+      if (static_cast<float>(corners[3 * a + c]) != static_cast<float>(corners[3 * b + c]))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  if (same(0, 1) || same(0, 2) || same(1, 2))
+  {
+    ++facts.Needles;
+    return;
+  }
+  FileGeometry& geometry = facts.Geometry;
+  for (int k = 0; k < 3; ++k)
+  {
+    geometry.FaceCorners.push_back(geometry.VertexCount());
+    geometry.Positions.insert(geometry.Positions.end(), corners + 3 * k, corners + 3 * k + 3);
+  }
+  geometry.EndFace();
+  if (line > 0)
+  {
+    geometry.FaceLines.push_back(line);
+  }
+}
+
+// ASCII: every three vertex lines are a facet. The reader reads a vertex's
+// three numbers with strtod, each from where the last stopped, and ignores
+// what follows them, so "1,5" reads as 1 and "1-1" as 1 and -1. A vertex
+// must be three whole numbers.
+void ReadAsciiFacets(const std::string& path, StlFacts& facts)
+{
   const std::string bytes = ReadFileBytes(path);
   TextCursor cursor(bytes);
   std::size_t number = 0;
+  double corners[9];
+  int corner = 0;
+  std::size_t facetLine = 0;
   for (std::string line; cursor.NextLine(line);)
   {
     ++number;
@@ -56,9 +92,9 @@ std::uint64_t CheckAsciiVertices(const std::string& path)
     {
       continue;
     }
-    double value = 0.0;
-    const bool three = words.size() == 4 && ParseWholeNumber(words[1], value) &&
-      ParseWholeNumber(words[2], value) && ParseWholeNumber(words[3], value);
+    const bool three = words.size() == 4 && ParseWholeNumber(words[1], corners[3 * corner]) &&
+      ParseWholeNumber(words[2], corners[3 * corner + 1]) &&
+      ParseWholeNumber(words[3], corners[3 * corner + 2]);
     if (!three)
     {
       throw RuntimeError("cannot read '" + path + "': ASCII STL: line " + std::to_string(number) +
@@ -66,14 +102,33 @@ std::uint64_t CheckAsciiVertices(const std::string& path)
         "' is not a vertex of three numbers, which vtkSTLReader would "
         "misread");
     }
-    ++vertices;
+    facetLine = corner == 0 ? number : facetLine;
+    if (++corner == 3)
+    {
+      AddFacet(corners, facetLine, facts);
+      corner = 0;
+    }
   }
-  return vertices / 3;
+}
+
+// A binary record's corners: 12 little-endian floats after the normal.
+void ReadBinaryFacet(const unsigned char* record, double corners[9])
+{
+  for (int v = 0; v < 9; ++v)
+  {
+    const unsigned char* bytes = record + 12 + 4 * v;
+    const std::uint32_t bits = static_cast<std::uint32_t>(bytes[0]) |
+      (static_cast<std::uint32_t>(bytes[1]) << 8) | (static_cast<std::uint32_t>(bytes[2]) << 16) |
+      (static_cast<std::uint32_t>(bytes[3]) << 24);
+    float value = 0;
+    std::memcpy(&value, &bits, 4);
+    corners[v] = value;
+  }
 }
 
 } // namespace
 
-std::uint64_t CheckStlFile(const std::string& path)
+StlFacts CheckStlFile(const std::string& path)
 {
   std::ifstream file(path, std::ios::binary | std::ios::ate);
   if (!file)
@@ -81,10 +136,13 @@ std::uint64_t CheckStlFile(const std::string& path)
     throw RuntimeError("cannot read '" + path + "': " + std::strerror(errno));
   }
   const auto size = static_cast<std::uint64_t>(file.tellg());
+  StlFacts facts;
+  facts.Geometry.FirstIndex = 1; // facets numbered from 1 in messages
   auto probe = vtkSmartPointer<StlTypeProbe>::New();
   if (!probe->IsBinary(path))
   {
-    return CheckAsciiVertices(path);
+    ReadAsciiFacets(path, facts);
+    return facts;
   }
   const std::string where = "cannot read '" + path + "': binary STL: ";
   if (size < HeaderBytes)
@@ -103,10 +161,28 @@ std::uint64_t CheckStlFile(const std::string& path)
     throw RuntimeError(where + "the header declares " + std::to_string(declared) +
       " triangles but the file holds " + std::to_string(held) + " (truncated?)");
   }
+  // The declared records, in chunks.
+  std::vector<unsigned char> records(4096 * TriangleBytes);
+  double corners[9];
+  for (std::uint64_t read = 0; read < declared;)
+  {
+    const std::uint64_t chunk = std::min<std::uint64_t>(declared - read, 4096);
+    file.read(
+      reinterpret_cast<char*>(records.data()), static_cast<std::streamsize>(chunk * TriangleBytes));
+    if (!file)
+    {
+      throw RuntimeError(where + "the file could not be read to its end");
+    }
+    for (std::uint64_t r = 0; r < chunk; ++r)
+    {
+      ReadBinaryFacet(records.data() + r * TriangleBytes, corners);
+      AddFacet(corners, 0, facts);
+    }
+    read += chunk;
+  }
   // The reader reads records to the end of the file, whatever the count: any
   // beyond it that is not zero padding (which reads as a point, and is left
   // out) would add triangles the header does not declare.
-  file.seekg(static_cast<std::streamoff>(HeaderBytes + declared * TriangleBytes));
   std::uint64_t left = (held - declared) * TriangleBytes;
   char buffer[4096];
   while (left > 0)
@@ -128,7 +204,7 @@ std::uint64_t CheckStlFile(const std::string& path)
     }
     left -= chunk;
   }
-  return declared;
+  return facts;
 }
 
 } // namespace cli

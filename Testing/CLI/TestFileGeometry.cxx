@@ -6,6 +6,7 @@
 #include "FileGeometry.h"
 #include "LegacyCheck.h"
 #include "MeshIO.h"
+#include "StlCheck.h"
 #include "VtkErrorLog.h"
 
 #include <vtkCellArray.h>
@@ -16,6 +17,8 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataReader.h>
+#include <vtkSTLReader.h>
+#include <vtkSTLWriter.h>
 
 #include <gtest/gtest.h>
 
@@ -463,4 +466,54 @@ TEST(FileGeometry, ALegacyFileIsHeldToEveryCellItHolds)
   read->SetStrips(CellsOf({ { 0, 1, 2, 3 } }));
   EXPECT_THROW(cli::RequireReadAsWritten(file, read, path, "vtkPolyDataReader"), cli::RuntimeError);
   std::remove(path.c_str());
+}
+
+// STL, ASCII and binary: the facets in the file's order, corners by
+// position, a needle (two corners at one point) left out and counted, as
+// vtkSTLReader merges it away; the reader is held to them.
+TEST(FileGeometry, AnStlFileIsHeldToItsFacets)
+{
+  vtkNew<vtkPoints> points;
+  const double corners[5][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0.5 }, { 0, 1, 0.25 },
+    { 0, 0, 0 } };
+  for (const auto& corner : corners)
+  {
+    points->InsertNextPoint(corner);
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->SetPolys(CellsOf({ { 0, 1, 2 }, { 0, 4, 3 }, { 0, 2, 3 } })); // the second a needle
+  for (const bool binary : { false, true })
+  {
+    const std::string path = TempPath(binary ? "facets_binary.stl" : "facets_ascii.stl");
+    vtkNew<vtkSTLWriter> writer;
+    writer->SetInputData(mesh);
+    writer->SetFileName(path.c_str());
+    if (binary)
+    {
+      writer->SetFileTypeToBinary();
+    }
+    ASSERT_EQ(writer->Write(), 1);
+    const cli::StlFacts facts = cli::CheckStlFile(path);
+    EXPECT_EQ(facts.Needles, 1u);
+    ASSERT_EQ(facts.Geometry.FaceCount(), 2);
+    EXPECT_EQ(facts.Geometry.Positions,
+      std::vector<double>({ 0, 0, 0, 1, 0, 0, 1, 1, 0.5, 0, 0, 0, 1, 1, 0.5, 0, 1, 0.25 }));
+    EXPECT_EQ(facts.Geometry.FaceLines.size(), binary ? 0u : 2u);
+    vtkNew<vtkSTLReader> reader;
+    reader->SetFileName(path.c_str());
+    reader->Update();
+    vtkPolyData* read = reader->GetOutput();
+    EXPECT_NO_THROW(cli::RequireReadAsWritten(facts.Geometry, read, path, "vtkSTLReader"));
+    // A reader that turned the second facet would be refused.
+    vtkIdType npts = 0;
+    const vtkIdType* ids = nullptr;
+    read->GetPolys()->GetCellAtId(1, npts, ids);
+    ASSERT_EQ(npts, 3);
+    const std::vector<vtkIdType> turned{ ids[1], ids[0], ids[2] };
+    read->GetPolys()->ReplaceCellAtId(1, 3, turned.data());
+    EXPECT_THROW(cli::RequireReadAsWritten(facts.Geometry, read, path, "vtkSTLReader"),
+      cli::RuntimeError);
+    std::remove(path.c_str());
+  }
 }

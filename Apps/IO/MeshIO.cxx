@@ -174,6 +174,27 @@ vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::str
   errors.Clear();
   errors.Watch(reader);
   reader->Update();
+  if (extension == ".vtp" && errors.HasErrors())
+  {
+    // What the format's rules could not read names the problem; VTK's reader
+    // often only finds an array too short.
+    if (!facts.Vtp.Read)
+    {
+      throw RuntimeError("cannot read " + Quoted(path) + ": VTK XML: " + facts.Vtp.Unreadable);
+    }
+    if (facts.Vtp.Pieces > 0 && facts.Vtp.FirstPiecePoints == 0)
+    {
+      const std::int64_t points = facts.Vtp.Geometry.VertexCount();
+      if (points == 0)
+      {
+        throw RuntimeError(Quoted(path) + " holds no points");
+      }
+      throw RuntimeError("cannot read " + Quoted(path) +
+        ": its first piece has no points, which vtkXMLPolyDataReader 9.1 cannot read (its other "
+        "pieces hold " +
+        std::to_string(points) + "); write the pieces as one");
+    }
+  }
   errors.ThrowIfErrors("cannot read " + Quoted(path));
   if (facts.Ply.UnreadVertexTextureCoordinates)
   {

@@ -544,7 +544,7 @@ std::string VtkXmlData::Decoded(
       static_cast<std::size_t>(expected));
     if (got != expected)
     {
-      throw XmlUnreadable(what + "'s block " + Count(b + 1) + " of " + Count(blocks) +
+      throw XmlUnreadable(what + ": block " + Count(b + 1) + " of " + Count(blocks) +
         " does not decompress to the " + Count(expected) + " bytes its header declares");
     }
     from += size;
@@ -617,7 +617,12 @@ void VtkXmlData::Append(
   std::uint64_t held = 0;
   if (array.Attribute("format") == "ascii")
   {
-    for (const std::string& word : this->AsciiWords(array, count))
+    std::vector<std::string> words = this->AsciiWords(array, count + 1);
+    if (words.size() > count)
+    {
+      this->Fail(what + " holds more than the " + Count(count) + " values its piece gives it");
+    }
+    for (const std::string& word : words)
     {
       long long integer = 0;
       double number = 0;
@@ -640,7 +645,17 @@ void VtkXmlData::Append(
     }
     std::size_t first = 0;
     const std::string data = this->Decoded(array, what, first);
-    held = std::min<std::uint64_t>((data.size() - first) / element.Size, count);
+    // As many values as the piece's counts give the array: more (a type
+    // relabelled narrower, an offset into another array, a count lowered)
+    // would be read as another mesh without a word.
+    const std::uint64_t bytes = data.size() - first;
+    if (bytes != count * element.Size)
+    {
+      this->Fail(what + " holds " + Count(bytes) + " bytes, where its piece gives it " +
+        Count(count) + " values of " + array.Attribute("type") + " (" +
+        Count(count * element.Size) + " bytes)");
+    }
+    held = count;
     to.reserve(to.size() + held);
     for (std::size_t i = 0; i < held; ++i)
     {

@@ -35,6 +35,9 @@ public:
   {
   }
 
+  int Pieces = 0;
+  std::uint64_t FirstPiecePoints = 0;
+
   FileGeometry Read()
   {
     FileGeometry geometry;
@@ -42,17 +45,26 @@ public:
     geometry.Strips.Given = geometry.Lines.Given = geometry.Vertices.Given = true;
     const std::size_t dataset =
       FindXmlElement(this->Text, "PolyData", this->Data.XmlStart(), this->Data.XmlEnd());
-    if (this->Data.Root().Attribute("type") != "PolyData" || dataset == std::string::npos)
+    const std::string type = this->Data.Root().Attribute("type");
+    if (type != "PolyData")
+    {
+      throw XmlUnreadable(type.empty()
+          ? std::string("its VTKFile element has no type")
+          : "its VTKFile type is '" + Excerpt(type) + "', not PolyData");
+    }
+    if (dataset == std::string::npos)
     {
       throw XmlUnreadable("it holds no PolyData element");
     }
     bool everyPieceHasNormals = true;
-    int index = 0;
+    int index = 0; // pieces numbered from 0, as VTK's reader numbers them
     for (std::size_t at = FindXmlElement(this->Text, "Piece", dataset, this->Data.XmlEnd());
          at != std::string::npos;
          at = FindXmlElement(this->Text, "Piece", at + 1, this->Data.XmlEnd()))
     {
-      const Piece piece = this->PieceAt(at, ++index);
+      const Piece piece = this->PieceAt(at, index++);
+      this->FirstPiecePoints = index == 1 ? piece.Points : this->FirstPiecePoints;
+      this->Pieces = index;
       const auto base = geometry.VertexCount();
       this->ReadPoints(piece, geometry, everyPieceHasNormals);
       FileCells* cells[4] = { &geometry.Vertices, &geometry.Lines, &geometry.Strips, nullptr };
@@ -101,7 +113,11 @@ private:
       const std::string value = tag.Attribute(names[c]);
       if (value.empty() && !tag.Has(names[c]))
       {
-        continue; // none of them
+        if (c == 0)
+        {
+          throw XmlUnreadable(piece.Name + " has no NumberOfPoints");
+        }
+        continue; // none of these cells
       }
       if (!ParseXmlCount(value, *counts[c]))
       {
@@ -152,7 +168,12 @@ private:
 
   void RequireThreeComponents(std::size_t at, const std::string& what) const
   {
-    const std::string components = ParseXmlTag(this->Text, at).Attribute("NumberOfComponents");
+    const XmlTag tag = ParseXmlTag(this->Text, at);
+    if (!tag.Has("NumberOfComponents"))
+    {
+      throw XmlUnreadable(what + " has no NumberOfComponents, where 3 are wanted");
+    }
+    const std::string components = tag.Attribute("NumberOfComponents");
     if (components != "3")
     {
       throw XmlUnreadable(
@@ -257,8 +278,11 @@ VtpFacts CheckVtpFile(const std::string& path)
   data.CheckDeclaredSizes();
   try
   {
-    facts.Geometry = PolyDataReading(text, data).Read();
+    PolyDataReading reading(text, data);
+    facts.Geometry = reading.Read();
     facts.Read = true;
+    facts.Pieces = reading.Pieces;
+    facts.FirstPiecePoints = reading.FirstPiecePoints;
   }
   catch (const XmlUnreadable& unreadable)
   {

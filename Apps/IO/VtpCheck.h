@@ -3,6 +3,7 @@
 
 #include "FileGeometry.h"
 
+#include <cstdint>
 #include <string>
 
 namespace cli
@@ -16,6 +17,10 @@ struct VtpFacts
   bool Read = false;
   FileGeometry Geometry;
   std::string Unreadable;
+  /// The pieces, and the points of the first (vtkXMLPolyDataReader 9.1
+  /// cannot read a file whose first piece has none).
+  int Pieces = 0;
+  std::uint64_t FirstPiecePoints = 0;
 };
 
 /**

@@ -18,6 +18,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -179,14 +180,22 @@ TEST(VtpCheck, WhatTheRulesCannotReadIsSaid)
   facts =
     check("<Piece NumberOfPoints=\"-3\" NumberOfPolys=\"1\">\n", points + polys("0 1 2", "3"));
   EXPECT_FALSE(facts.Read);
-  EXPECT_EQ(facts.Unreadable, "piece 1's NumberOfPoints is '-3', not a count");
+  EXPECT_EQ(facts.Unreadable, "piece 0's NumberOfPoints is '-3', not a count");
   facts = check(piece, points + polys("0 1 2.5", "3"));
   EXPECT_EQ(
-    facts.Unreadable, "piece 1's Polys connectivity holds '2.5', which is not a whole number");
+    facts.Unreadable, "piece 0's Polys connectivity holds '2.5', which is not a whole number");
   facts = check(piece, points + polys("0 1", "3"));
   EXPECT_EQ(facts.Unreadable,
-    "piece 1's Polys connectivity holds 2 values, fewer than the 3 the piece needs");
+    "piece 0's Polys connectivity holds 2 values, fewer than the 3 the piece needs");
+  facts = check("<Piece NumberOfPolys=\"1\">\n", points + polys("0 1 2", "3"));
+  EXPECT_EQ(facts.Unreadable, "piece 0 has no NumberOfPoints");
   EXPECT_THROW(check(piece, points + polys("0 1 3", "3")), cli::RuntimeError); // no point 3
+  // More values than the piece's counts give an array: read as another mesh
+  // by the reader, without a word.
+  EXPECT_THROW(check(piece, points + polys("0 1 2 0", "3")), cli::RuntimeError);
+  EXPECT_THROW(
+    check("<Piece NumberOfPoints=\"2\" NumberOfPolys=\"1\">\n", points + polys("0 1 1", "3")),
+    cli::RuntimeError);
   EXPECT_THROW(check("<Piece NumberOfPoints=\"3\" NumberOfPolys=\"2\">\n",
                  points + polys("0 1 2 0 1 2", "3 2")),
     cli::RuntimeError); // offsets going back
@@ -201,4 +210,51 @@ TEST(VtpCheck, WhatTheRulesCannotReadIsSaid)
       << error.what();
   }
   std::remove(TempPath("made.vtp").c_str());
+}
+
+// Each array holds as many values as its piece's counts give it: a type
+// relabelled narrower (Int64 connectivity marked Int32) would otherwise be
+// read, by the reader too, as another mesh without a word.
+TEST(VtpCheck, AnArrayHoldsWhatItsPieceGivesIt)
+{
+  vtkSmartPointer<vtkPolyData> mesh = SquareWithEveryCell();
+  const Mode modes[] = { { "binary", vtkXMLWriter::Binary, false },
+    { "raw", vtkXMLWriter::Appended, false }, { "base64", vtkXMLWriter::Appended, true } };
+  for (const Mode& mode : modes)
+  {
+    for (const int compressor : { vtkXMLWriter::NONE, vtkXMLWriter::ZLIB })
+    {
+      const std::string path = TempPath(std::string("relabelled_") + mode.Name + ".vtp");
+      vtkNew<vtkXMLPolyDataWriter> writer;
+      writer->SetInputData(mesh);
+      writer->SetFileName(path.c_str());
+      writer->SetDataMode(mode.DataMode);
+      writer->SetEncodeAppendedData(mode.Encoded);
+      writer->SetCompressorType(compressor);
+      ASSERT_EQ(writer->Write(), 1);
+      ASSERT_TRUE(cli::CheckVtpFile(path).Read) << path;
+      std::string text;
+      {
+        std::ifstream in(path, std::ios::binary);
+        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+      }
+      const std::string wide = "type=\"Int64\" Name=\"connectivity\"";
+      const std::size_t at = text.find(wide);
+      ASSERT_NE(at, std::string::npos) << path;
+      text.replace(at, wide.size(), "type=\"Int32\" Name=\"connectivity\"");
+      std::ofstream(path, std::ios::binary) << text;
+      try
+      {
+        cli::CheckVtpFile(path);
+        ADD_FAILURE() << mode.Name << ", compressor " << compressor
+                      << ": a relabelled connectivity array was let through";
+      }
+      catch (const cli::RuntimeError& error)
+      {
+        EXPECT_NE(std::string(error.what()).find("connectivity holds"), std::string::npos)
+          << error.what();
+      }
+      std::remove(path.c_str());
+    }
+  }
 }

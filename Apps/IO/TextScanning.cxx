@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -23,12 +24,16 @@ std::string ReadFileBytes(const std::string& path)
   }
   // In chunks into room for the whole file: a character at a time, a large
   // file took three times the reader's own time.
+  // A pipe cannot seek (read it as it comes); a directory's size is no
+  // size (reading it fails below, with the system's reason).
   std::string bytes;
   file.seekg(0, std::ios::end);
   const std::streamoff size = file ? static_cast<std::streamoff>(file.tellg()) : -1;
   file.clear();
   file.seekg(0, std::ios::beg);
-  if (size > 0)
+  const bool rewound = static_cast<bool>(file);
+  file.clear();
+  if (rewound && size > 0 && static_cast<std::uint64_t>(size) < bytes.max_size() / 2)
   {
     bytes.reserve(static_cast<std::size_t>(size));
   }

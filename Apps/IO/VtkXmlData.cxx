@@ -330,16 +330,22 @@ VtkXmlData::VtkXmlData(const std::string& text, std::string where)
         close != std::string::npos && close >= this->AppendedStart ? close : text.size();
     }
   }
-  for (std::size_t at = FindXmlElement(text, "DataArray", this->RootEnd, this->XmlStop);
-       at != std::string::npos; at = FindXmlElement(text, "DataArray", at + 1, this->XmlStop))
+  // Where every appended array starts, string arrays (<Array>) included.
+  for (const char* element : { "DataArray", "Array" })
   {
-    const XmlTag array = ParseXmlTag(text, at);
-    std::uint64_t offset = 0;
-    if (array.Attribute("format") == "appended" && ParseXmlCount(array.Attribute("offset"), offset))
+    for (std::size_t at = FindXmlElement(text, element, this->RootEnd, this->XmlStop);
+         at != std::string::npos; at = FindXmlElement(text, element, at + 1, this->XmlStop))
     {
-      this->AppendedOffsets.push_back(offset);
+      const XmlTag array = ParseXmlTag(text, at);
+      std::uint64_t offset = 0;
+      if (array.Attribute("format") == "appended" &&
+        ParseXmlCount(array.Attribute("offset"), offset))
+      {
+        this->AppendedOffsets.push_back(offset);
+      }
     }
   }
+  std::sort(this->AppendedOffsets.begin(), this->AppendedOffsets.end());
 }
 
 void VtkXmlData::Fail(const std::string& what) const
@@ -376,16 +382,13 @@ bool VtkXmlData::Locate(const XmlTag& array, Bytes& bytes) const
   bytes.Data = this->AppendedStart + static_cast<std::size_t>(offset);
   bytes.Stop = this->AppendedEnd;
   bytes.Raw = this->AppendedRaw;
-  if (!bytes.Raw)
+  // Appended arrays follow each other: an array's bytes end where the next
+  // one's start (sorted offsets, so each lookup is a search).
+  const auto next =
+    std::upper_bound(this->AppendedOffsets.begin(), this->AppendedOffsets.end(), offset);
+  if (next != this->AppendedOffsets.end() && this->AppendedStart + *next < bytes.Stop)
   {
-    // Base64 arrays follow each other with nothing between them.
-    for (const std::uint64_t next : this->AppendedOffsets)
-    {
-      if (next > offset && this->AppendedStart + next < bytes.Stop)
-      {
-        bytes.Stop = this->AppendedStart + static_cast<std::size_t>(next);
-      }
-    }
+    bytes.Stop = this->AppendedStart + static_cast<std::size_t>(*next);
   }
   return true;
 }
@@ -414,6 +417,14 @@ std::uint64_t VtkXmlData::DeclaredBytes(const Bytes& bytes, const std::string& n
       this->Fail("a compressed data array declares " + Count(blocks) +
         " blocks, more than a file of " + Count(size) + " bytes can hold");
     }
+    // The block sizes must lie in the array's own bytes: a header that
+    // cannot is cut short (no copy of what it declares).
+    const std::uint64_t available =
+      bytes.Raw ? bytes.Stop - bytes.Data : (bytes.Stop - bytes.Data) / 4 * 3 + 3;
+    if (blocks > available / width)
+    {
+      return std::numeric_limits<std::uint64_t>::max();
+    }
     // Each block's compressed bytes are in the file: VTK 9.1's reader
     // allocates a buffer of that size before it finds the data short.
     const std::string sizes = bytes.prefix(this->Text, (3 + blocks) * width);
@@ -426,12 +437,21 @@ std::uint64_t VtkXmlData::DeclaredBytes(const Bytes& bytes, const std::string& n
           " bytes, more than a file of " + Count(size) + " bytes holds");
       }
     }
+    // blocks - 1 full blocks and the last (lastSize, or a full one when 0);
+    // a block size counts only when a full block is used. Checked against
+    // the limit before multiplying: 64-bit words can wrap.
     const std::uint64_t last = lastSize != 0 ? lastSize : blockSize;
-    // Overflow-safe: blocks <= size, and sizes beyond the limit fail below.
-    declared = blocks == 0 ? 0
-      : (blockSize > this->MostDeclared || last > this->MostDeclared)
-      ? this->MostDeclared + 1
-      : (blocks - 1) * blockSize + last;
+    const bool fullBlocks = blocks > 1 || lastSize == 0;
+    if (blocks > 0 &&
+      (last > this->MostDeclared ||
+        (fullBlocks &&
+          blockSize > (this->MostDeclared - last) / std::max<std::uint64_t>(blocks - 1, 1))))
+    {
+      this->Fail("a compressed data array declares " + Count(blocks) + " blocks of " +
+        Count(blockSize) + " bytes (the last " + Count(lastSize) + "), more than a file of " +
+        Count(size) + " bytes can hold");
+    }
+    declared = blocks == 0 ? 0 : (blocks - 1) * blockSize + last;
   }
   if (declared > this->MostDeclared)
   {
@@ -649,7 +669,7 @@ void VtkXmlData::Append(
     // relabelled narrower, an offset into another array, a count lowered)
     // would be read as another mesh without a word.
     const std::uint64_t bytes = data.size() - first;
-    if (bytes != count * element.Size)
+    if (count > bytes / element.Size || bytes != count * element.Size)
     {
       this->Fail(what + " holds " + Count(bytes) + " bytes, where its piece gives it " +
         Count(count) + " values of " + array.Attribute("type") + " (" +

@@ -124,13 +124,6 @@ private:
         throw XmlUnreadable(
           piece.Name + "'s " + names[c] + " is '" + Excerpt(value) + "', not a count");
       }
-      // The reader allocates for it before it reads the arrays.
-      if (*counts[c] > this->Data.Limit())
-      {
-        this->Data.Fail("a piece declares " + std::string(names[c]) + "=" +
-          std::to_string(*counts[c]) + ", more than a file of " +
-          std::to_string(this->Text.size()) + " bytes can hold");
-      }
     }
     return piece;
   }
@@ -263,6 +256,39 @@ private:
   const VtkXmlData& Data;
 };
 
+// The reader allocates for every piece's counts, all pieces together,
+// before it reads an array: their sums must be what the file can hold (a
+// point three values, a cell at least one, of a byte at least), checked on
+// every piece before anything can stop the reading of the geometry.
+void CheckPieceCounts(const std::string& text, const VtkXmlData& data)
+{
+  const char* const names[5] = { "NumberOfPoints", "NumberOfVerts", "NumberOfLines",
+    "NumberOfStrips", "NumberOfPolys" };
+  std::uint64_t sums[5] = { 0, 0, 0, 0, 0 };
+  for (std::size_t at = FindXmlElement(text, "Piece", data.XmlStart(), data.XmlEnd());
+       at != std::string::npos; at = FindXmlElement(text, "Piece", at + 1, data.XmlEnd()))
+  {
+    const XmlTag tag = ParseXmlTag(text, at);
+    for (int c = 0; c < 5; ++c)
+    {
+      std::uint64_t count = 0;
+      if (!ParseXmlCount(tag.Attribute(names[c]), count))
+      {
+        continue; // not a count: said when the geometry is read
+      }
+      const std::uint64_t most = c == 0 ? data.Limit() / 3 : data.Limit();
+      sums[c] += count;
+      if (count > most || sums[c] > most)
+      {
+        data.Fail(std::string(count > most ? "a piece declares " : "the pieces declare ") +
+          names[c] + "=" + std::to_string(count > most ? count : sums[c]) +
+          (count > most ? "" : " in all") + ", more than a file of " + std::to_string(text.size()) +
+          " bytes can hold");
+      }
+    }
+  }
+}
+
 } // namespace
 
 VtpFacts CheckVtpFile(const std::string& path)
@@ -276,6 +302,7 @@ VtpFacts CheckVtpFile(const std::string& path)
     return facts;
   }
   data.CheckDeclaredSizes();
+  CheckPieceCounts(text, data);
   try
   {
     PolyDataReading reading(text, data);

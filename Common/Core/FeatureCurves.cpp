@@ -202,6 +202,18 @@ std::vector<unsigned char> sharpFaceOutlines(const std::vector<double>& cosines,
     return side >= 0 && flat[t] ? faces.find(t) : none;
   };
   std::vector<unsigned char> notSharp(flat.size(), 0);
+  // A face touching a border or a non-manifold edge, from every side (an
+  // edge's sides beyond its first two are only found from the triangles).
+  for (std::size_t t = 0; t < flat.size(); ++t)
+  {
+    for (int k = 0; k < 3 && flat[t]; ++k)
+    {
+      if (sides.Count[static_cast<std::size_t>(table.sideEdge(static_cast<Id>(t), k))] != 2)
+      {
+        notSharp[faces.find(t)] = 1;
+      }
+    }
+  }
   for (std::size_t e = 0; e < table.edgeCount(); ++e)
   {
     const std::size_t a = faceOf(sides.First[e][0]);

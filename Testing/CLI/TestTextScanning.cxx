@@ -2,8 +2,12 @@
 // words and whole-word numbers, with the cases the readers disagree on.
 #include "TextScanning.h"
 
+#include "CliErrors.h"
+
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -99,4 +103,25 @@ TEST(TextScanning, ExcerptsArePrintableAndShort)
   EXPECT_EQ(Excerpt("POINTS\x02\x1b[31m"), "POINTS??[31m");
   EXPECT_EQ(Excerpt(std::string(100, 'a')).size(), 40u);
   EXPECT_EQ(Lowercase("POLYGONS Offsets"), "polygons offsets");
+}
+
+// A whole file, a directory refused with the system's reason (its size, as
+// a stream reports it, is no size to make room for).
+TEST(TextScanning, ReadFileBytesReadsFilesAndRefusesDirectories)
+{
+  const std::string path = testing::TempDir() + "text_scanning_bytes.txt";
+  std::string written(3 << 20, 'x'); // more than one chunk
+  written[12345] = '\0';
+  std::ofstream(path, std::ios::binary) << written;
+  EXPECT_EQ(cli::ReadFileBytes(path), written);
+  std::remove(path.c_str());
+  try
+  {
+    cli::ReadFileBytes(testing::TempDir());
+    ADD_FAILURE() << "a directory was read";
+  }
+  catch (const cli::RuntimeError& error)
+  {
+    EXPECT_NE(std::string(error.what()).find("Is a directory"), std::string::npos) << error.what();
+  }
 }

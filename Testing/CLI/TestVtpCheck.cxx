@@ -199,6 +199,14 @@ TEST(VtpCheck, WhatTheRulesCannotReadIsSaid)
   EXPECT_THROW(check("<Piece NumberOfPoints=\"3\" NumberOfPolys=\"2\">\n",
                  points + polys("0 1 2 0 1 2", "3 2")),
     cli::RuntimeError); // offsets going back
+  // Every piece's counts are held to the file's size, even after a piece
+  // the rules cannot read.
+  EXPECT_THROW(check(piece +
+                   "<Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" "
+                   "format=\"ascii\">0 0 junk</DataArray></Points>\n" +
+                   polys("0 1 2", "3") + "</Piece>\n<Piece NumberOfPoints=\"4000000000\">\n",
+                 ""),
+    cli::RuntimeError);
   try
   {
     check("<Piece NumberOfPoints=\"99999999999\" NumberOfPolys=\"1\">\n", points);
@@ -257,4 +265,24 @@ TEST(VtpCheck, AnArrayHoldsWhatItsPieceGivesIt)
       std::remove(path.c_str());
     }
   }
+}
+
+// A block size larger than the data, as SetBlockSize allows: only the last
+// block's size is used, and the file is read (it was refused as declaring
+// the block size).
+TEST(VtpCheck, OneBlockLargerThanItsDataIsRead)
+{
+  vtkSmartPointer<vtkPolyData> mesh = SquareWithEveryCell();
+  const std::string path = TempPath("big_block.vtp");
+  vtkNew<vtkXMLPolyDataWriter> writer;
+  writer->SetInputData(mesh);
+  writer->SetFileName(path.c_str());
+  writer->SetCompressorTypeToZLib();
+  writer->SetBlockSize(1 << 27);
+  ASSERT_EQ(writer->Write(), 1);
+  cli::VtpFacts facts;
+  ASSERT_NO_THROW(facts = cli::CheckVtpFile(path));
+  EXPECT_TRUE(facts.Read) << facts.Unreadable;
+  EXPECT_EQ(facts.Geometry.VertexCount(), 4);
+  std::remove(path.c_str());
 }

@@ -626,3 +626,41 @@ TEST(FlatSidedCreases, TheOutlineOfAFlatFaceSharpAllRound)
   EXPECT_TRUE(flatSidedCreases(points, triangles, 65.0).empty());
   // Nor is a single triangle's outline a face's (the tetrahedron above).
 }
+
+TEST(FlatSidedCreases, AFaceOnANonManifoldEdgeHasNoOutline)
+{
+  // The 8-sided cone's base with a fin on one rim edge: that edge has three
+  // triangles, so the base has no closed outline, whichever side the fin's
+  // triangle is listed on (only two sides of an edge are kept per edge).
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  revolve({ { 0, 0 }, { 1, 0 }, { 0, 2 } }, 8, points, triangles);
+  ASSERT_EQ(flatSidedCreases(points, triangles, 65.0).size(), 8u);
+  points.emplace_back(1.0, 0.0, -1.0);
+  const Triangle fin{ { 1, 2, static_cast<Id>(points.size()) - 1 } }; // on rim edge (1, 2)
+  std::vector<Triangle> finFirst{ fin };
+  finFirst.insert(finFirst.end(), triangles.begin(), triangles.end());
+  std::vector<Triangle> finLast = triangles;
+  finLast.push_back(fin);
+  // The fin and the side triangles before the base's fan: the edge's first
+  // two sides are then the fin and a side triangle, not the base.
+  std::vector<Triangle> baseLast{ fin };
+  for (const bool base : { false, true })
+  {
+    for (const Triangle& t : triangles)
+    {
+      if ((t[0] == 0) == base) // the base's fan starts at its centre, 0
+      {
+        baseLast.push_back(t);
+      }
+    }
+  }
+  for (const auto* order : { &finFirst, &finLast, &baseLast })
+  {
+    for (const FeatureEdge& edge : flatSidedCreases(points, *order, 65.0))
+    {
+      EXPECT_FALSE(points[edge.first].z == 0.0 && points[edge.second].z == 0.0)
+        << "rim edge (" << edge.first << ", " << edge.second << ") taken as a crease";
+    }
+  }
+}

@@ -37,6 +37,18 @@ def show_bunny_view(view):
     view.CameraParallelProjection = 0
 
 
+def plain_render_view(size):
+    """A new render view of `size` pixels, white, without orientation axes,
+    whose first render keeps the camera it is given."""
+    simple._DisableFirstRenderCameraReset()
+    view = simple.CreateView("RenderView")
+    view.ViewSize = size
+    view.OrientationAxesVisibility = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [1.0, 1.0, 1.0]
+    return view
+
+
 def bunny_render_view(size):
     """A new render view of `size` pixels with the image tests' look and
     camera (show_bunny_view), which its first render keeps."""

@@ -19,17 +19,12 @@ import os
 from paraview import simple
 from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 
-from SilhouetteTestUtils import finish, load_representation_plugin, setting
+from SilhouetteTestUtils import finish, load_representation_plugin, plain_render_view, setting
 
 load_representation_plugin()
 
 size = [400, 200]
-simple._DisableFirstRenderCameraReset()
-view = simple.CreateView("RenderView")
-view.ViewSize = size
-view.OrientationAxesVisibility = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [1.0, 1.0, 1.0]
+view = plain_render_view(size)
 # Looking down z at spheres of radius 0.5 centred at x = -1 and 1: 100 pixels
 # per unit, the centres at pixels (100, 100) and (300, 100).
 view.CameraPosition = [0.0, 0.0, 10.0]

@@ -15,7 +15,7 @@ from vtkmodules.vtkCommonCore import vtkUnsignedCharArray
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkIOImage import vtkPNGWriter
 
-from SilhouetteTestUtils import finish, image_error, load_representation_plugin, setting
+from SilhouetteTestUtils import finish, image_error, load_representation_plugin, plain_render_view, setting
 
 load_representation_plugin()
 output_dir = setting("SILHOUETTE_OUTPUT_DIR")
@@ -39,12 +39,7 @@ writer.SetFileName(stripes)
 writer.Write()
 
 size = [400, 400]
-simple._DisableFirstRenderCameraReset()
-view = simple.CreateView("RenderView")
-view.ViewSize = size
-view.OrientationAxesVisibility = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [1.0, 1.0, 1.0]
+view = plain_render_view(size)
 
 sphere = simple.Sphere(ThetaResolution=16, PhiResolution=12, Radius=1.0)
 mapped = simple.TextureMaptoSphere(Input=sphere)

@@ -66,6 +66,20 @@ struct Mode
   bool Encoded;
 };
 
+// A writer of `mesh` to `path` in `mode`, compressed by `compressor`; the
+// caller sets the rest and writes.
+vtkSmartPointer<vtkXMLPolyDataWriter> WriterOf(
+  vtkPolyData* mesh, const std::string& path, const Mode& mode, int compressor)
+{
+  auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+  writer->SetInputData(mesh);
+  writer->SetFileName(path.c_str());
+  writer->SetDataMode(mode.DataMode);
+  writer->SetEncodeAppendedData(mode.Encoded);
+  writer->SetCompressorType(compressor);
+  return writer;
+}
+
 } // namespace
 
 // Every byte order, header width, data mode and compressor, with blocks
@@ -89,12 +103,7 @@ TEST(VtpCheck, EveryModeVtkWritesIsReadAsWritten)
           for (int order = vtkXMLWriter::BigEndian; order <= vtkXMLWriter::LittleEndian; ++order)
           {
             const std::string path = TempPath(std::string(mode.Name) + ".vtp");
-            vtkNew<vtkXMLPolyDataWriter> writer;
-            writer->SetInputData(mesh);
-            writer->SetFileName(path.c_str());
-            writer->SetDataMode(mode.DataMode);
-            writer->SetEncodeAppendedData(mode.Encoded);
-            writer->SetCompressorType(compressor);
+            auto writer = WriterOf(mesh, path, mode, compressor);
             writer->SetBlockSize(16); // the points take 3 blocks
             writer->SetHeaderType(header);
             writer->SetByteOrder(order);
@@ -233,13 +242,7 @@ TEST(VtpCheck, AnArrayHoldsWhatItsPieceGivesIt)
     for (const int compressor : { vtkXMLWriter::NONE, vtkXMLWriter::ZLIB })
     {
       const std::string path = TempPath(std::string("relabelled_") + mode.Name + ".vtp");
-      vtkNew<vtkXMLPolyDataWriter> writer;
-      writer->SetInputData(mesh);
-      writer->SetFileName(path.c_str());
-      writer->SetDataMode(mode.DataMode);
-      writer->SetEncodeAppendedData(mode.Encoded);
-      writer->SetCompressorType(compressor);
-      ASSERT_EQ(writer->Write(), 1);
+      ASSERT_EQ(WriterOf(mesh, path, mode, compressor)->Write(), 1);
       ASSERT_TRUE(cli::CheckVtpFile(path).Read) << path;
       std::string text;
       {

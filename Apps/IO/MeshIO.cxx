@@ -174,14 +174,16 @@ vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::str
   errors.Clear();
   errors.Watch(reader);
   reader->Update();
+  if (extension == ".vtp" && !facts.Vtp.Read)
+  {
+    // What the format's rules could not read names the problem where the
+    // reader failed too (it often only finds an array too short), and where
+    // it did not, its mesh cannot be checked.
+    throw RuntimeError("cannot read " + Quoted(path) + ": VTK XML: " + facts.Vtp.Unreadable +
+      (errors.HasErrors() ? "" : ", so what vtkXMLPolyDataReader read of it cannot be checked"));
+  }
   if (extension == ".vtp" && errors.HasErrors())
   {
-    // What the format's rules could not read names the problem; VTK's reader
-    // often only finds an array too short.
-    if (!facts.Vtp.Read)
-    {
-      throw RuntimeError("cannot read " + Quoted(path) + ": VTK XML: " + facts.Vtp.Unreadable);
-    }
     if (facts.Vtp.Pieces > 0 && facts.Vtp.FirstPiecePoints == 0)
     {
       const std::int64_t points = facts.Vtp.Geometry.VertexCount();
@@ -229,11 +231,6 @@ vtkSmartPointer<vtkPolyData> ReadWithVtk(const std::string& path, const std::str
   }
   if (extension == ".vtp")
   {
-    if (!facts.Vtp.Read)
-    {
-      throw RuntimeError("cannot read " + Quoted(path) + ": VTK XML: " + facts.Vtp.Unreadable +
-        ", so what vtkXMLPolyDataReader read of it cannot be checked");
-    }
     RequireReadAsWritten(facts.Vtp.Geometry, read, path, "vtkXMLPolyDataReader");
   }
   if (extension == ".obj")

@@ -111,15 +111,19 @@ void ReadAsciiFacets(const std::string& path, StlFacts& facts)
   }
 }
 
+// The little-endian 32-bit word at `bytes` (binary STL's byte order).
+std::uint32_t LittleEndian32(const unsigned char* bytes)
+{
+  return static_cast<std::uint32_t>(bytes[0]) | (static_cast<std::uint32_t>(bytes[1]) << 8) |
+    (static_cast<std::uint32_t>(bytes[2]) << 16) | (static_cast<std::uint32_t>(bytes[3]) << 24);
+}
+
 // A binary record's corners: 12 little-endian floats after the normal.
 void ReadBinaryFacet(const unsigned char* record, double corners[9])
 {
   for (int v = 0; v < 9; ++v)
   {
-    const unsigned char* bytes = record + 12 + 4 * v;
-    const std::uint32_t bits = static_cast<std::uint32_t>(bytes[0]) |
-      (static_cast<std::uint32_t>(bytes[1]) << 8) | (static_cast<std::uint32_t>(bytes[2]) << 16) |
-      (static_cast<std::uint32_t>(bytes[3]) << 24);
+    const std::uint32_t bits = LittleEndian32(record + 12 + 4 * v);
     float value = 0;
     std::memcpy(&value, &bits, 4);
     corners[v] = value;
@@ -153,8 +157,7 @@ StlFacts CheckStlFile(const std::string& path)
   unsigned char count[4];
   file.seekg(80);
   file.read(reinterpret_cast<char*>(count), 4);
-  const std::uint64_t declared = count[0] | (count[1] << 8) | (count[2] << 16) |
-    (static_cast<std::uint64_t>(count[3]) << 24); // little-endian
+  const std::uint64_t declared = LittleEndian32(count);
   const std::uint64_t held = (size - HeaderBytes) / TriangleBytes;
   if (!file || declared > held)
   {

@@ -92,17 +92,23 @@ std::size_t Base64Length(
   return DecodeBase64(text, at, count, stop, [](char) {});
 }
 
-// Unsigned word `index` of `width` bytes (4 or 8), in the file's byte order.
-std::uint64_t Word(const std::string& bytes, std::size_t index, std::size_t width, bool bigEndian)
+// The unsigned value of the `width` bytes (1 to 8) at `bytes`, in the
+// file's byte order.
+std::uint64_t UnsignedAt(const char* bytes, std::size_t width, bool bigEndian)
 {
   std::uint64_t value = 0;
   for (std::size_t b = 0; b < width; ++b)
   {
     const std::size_t shift = bigEndian ? width - 1 - b : b;
-    value |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[index * width + b]))
-      << (8 * shift);
+    value |= static_cast<std::uint64_t>(static_cast<unsigned char>(bytes[b])) << (8 * shift);
   }
   return value;
+}
+
+// Header word `index` of `width` bytes (4 or 8).
+std::uint64_t Word(const std::string& bytes, std::size_t index, std::size_t width, bool bigEndian)
+{
+  return UnsignedAt(bytes.data() + index * width, width, bigEndian);
 }
 
 bool IsSpace(char c)
@@ -248,13 +254,7 @@ struct VtkXmlData::Element
   double value(const char* data, std::size_t index, bool bigEndian, std::int64_t* integer = nullptr,
     bool* whole = nullptr) const
   {
-    std::uint64_t bits = 0;
-    for (std::size_t b = 0; b < this->Size; ++b)
-    {
-      const std::size_t shift = bigEndian ? this->Size - 1 - b : b;
-      bits |= static_cast<std::uint64_t>(static_cast<unsigned char>(data[index * this->Size + b]))
-        << (8 * shift);
-    }
+    const std::uint64_t bits = UnsignedAt(data + index * this->Size, this->Size, bigEndian);
     if (this->Kind == 'f')
     {
       if (this->Size == 4)
@@ -634,10 +634,9 @@ void VtkXmlData::Append(
   {
     throw XmlUnreadable(what + "'s tag is cut short");
   }
-  std::uint64_t held = 0;
   if (array.Attribute("format") == "ascii")
   {
-    std::vector<std::string> words = this->AsciiWords(array, count + 1);
+    const std::vector<std::string> words = this->AsciiWords(array, count + 1);
     if (words.size() > count)
     {
       this->Fail(what + " holds more than the " + Count(count) + " values its piece gives it");
@@ -652,47 +651,43 @@ void VtkXmlData::Append(
           (whole ? "whole number" : "number"));
       }
       to.push_back(whole ? static_cast<Value>(integer) : static_cast<Value>(number));
-      ++held;
     }
+    if (words.size() < count)
+    {
+      throw XmlUnreadable(what + " holds " + Count(words.size()) + " values, fewer than the " +
+        Count(count) + " the piece needs");
+    }
+    return;
   }
-  else
+  const Element element = this->ElementOf(array, what);
+  if (whole && element.Kind == 'f')
   {
-    const Element element = this->ElementOf(array, what);
-    if (whole && element.Kind == 'f')
-    {
-      throw XmlUnreadable(
-        what + " is of type " + array.Attribute("type") + ", where the format wants whole numbers");
-    }
-    std::size_t first = 0;
-    const std::string data = this->Decoded(array, what, first);
-    // As many values as the piece's counts give the array: more (a type
-    // relabelled narrower, an offset into another array, a count lowered)
-    // would be read as another mesh without a word.
-    const std::uint64_t bytes = data.size() - first;
-    if (count > bytes / element.Size || bytes != count * element.Size)
-    {
-      this->Fail(what + " holds " + Count(bytes) + " bytes, where its piece gives it " +
-        Count(count) + " values of " + array.Attribute("type") + " (" +
-        Count(count * element.Size) + " bytes)");
-    }
-    held = count;
-    to.reserve(to.size() + held);
-    for (std::size_t i = 0; i < held; ++i)
-    {
-      std::int64_t integer = 0;
-      bool fits = true;
-      const double number = element.value(data.data() + first, i, this->BigEndian, &integer, &fits);
-      if (whole && !fits)
-      {
-        throw XmlUnreadable(what + " holds a value beyond the largest cell index");
-      }
-      to.push_back(whole ? static_cast<Value>(integer) : static_cast<Value>(number));
-    }
+    throw XmlUnreadable(
+      what + " is of type " + array.Attribute("type") + ", where the format wants whole numbers");
   }
-  if (held < count)
+  std::size_t first = 0;
+  const std::string data = this->Decoded(array, what, first);
+  // As many values as the piece's counts give the array: more (a type
+  // relabelled narrower, an offset into another array, a count lowered)
+  // would be read as another mesh without a word.
+  const std::uint64_t bytes = data.size() - first;
+  if (count > bytes / element.Size || bytes != count * element.Size)
   {
-    throw XmlUnreadable(what + " holds " + Count(held) + " values, fewer than the " + Count(count) +
-      " the piece needs");
+    this->Fail(what + " holds " + Count(bytes) + " bytes, where its piece gives it " +
+      Count(count) + " values of " + array.Attribute("type") + " (" + Count(count * element.Size) +
+      " bytes)");
+  }
+  to.reserve(to.size() + count);
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    std::int64_t integer = 0;
+    bool fits = true;
+    const double number = element.value(data.data() + first, i, this->BigEndian, &integer, &fits);
+    if (whole && !fits)
+    {
+      throw XmlUnreadable(what + " holds a value beyond the largest cell index");
+    }
+    to.push_back(whole ? static_cast<Value>(integer) : static_cast<Value>(number));
   }
 }
 

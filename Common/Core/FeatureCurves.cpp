@@ -196,52 +196,56 @@ std::vector<unsigned char> sharpFaceOutlines(const std::vector<double>& cosines,
         static_cast<std::size_t>(sides.First[e][1] / 3));
     }
   }
-  // The face of each side of an edge (`none` for a triangle in no planar face).
-  auto faceOf = [&](Id side) {
-    const auto t = static_cast<std::size_t>(side / 3);
-    return side >= 0 && flat[t] ? faces.find(t) : none;
-  };
+  // Each triangle's face (`none` for a triangle in no planar face).
+  std::vector<std::size_t> face(flat.size(), none);
+  for (std::size_t t = 0; t < flat.size(); ++t)
+  {
+    face[t] = flat[t] ? faces.find(t) : none;
+  }
   std::vector<unsigned char> notSharp(flat.size(), 0);
   // A face touching a border or a non-manifold edge, from every side (an
   // edge's sides beyond its first two are only found from the triangles).
   for (std::size_t t = 0; t < flat.size(); ++t)
   {
-    for (int k = 0; k < 3 && flat[t]; ++k)
+    for (int k = 0; k < 3 && face[t] != none; ++k)
     {
       if (sides.Count[static_cast<std::size_t>(table.sideEdge(static_cast<Id>(t), k))] != 2)
       {
-        notSharp[faces.find(t)] = 1;
+        notSharp[face[t]] = 1;
       }
     }
   }
+  // Below, only edges of exactly two sides: the others are counted above.
+  auto facesOf = [&](std::size_t e) {
+    return std::make_pair(face[static_cast<std::size_t>(sides.First[e][0] / 3)],
+      face[static_cast<std::size_t>(sides.First[e][1] / 3)]);
+  };
   for (std::size_t e = 0; e < table.edgeCount(); ++e)
   {
-    const std::size_t a = faceOf(sides.First[e][0]);
-    const std::size_t b = faceOf(sides.First[e][1]);
-    if (a == b && sides.Count[e] == 2)
+    if (sides.Count[e] != 2 || cosines[e] < cosLimit)
     {
-      continue; // inside a face, or between two triangles in none
+      continue;
     }
-    if (sides.Count[e] != 2 || !(cosines[e] < cosLimit))
+    const auto [a, b] = facesOf(e);
+    if (a != b) // a gentle (or NaN) edge on a face's outline
     {
-      for (const std::size_t face : { a, b })
+      for (const std::size_t f : { a, b })
       {
-        if (face != none)
+        if (f != none)
         {
-          notSharp[face] = 1;
+          notSharp[f] = 1;
         }
       }
     }
   }
   for (std::size_t e = 0; e < table.edgeCount(); ++e)
   {
-    const std::size_t a = faceOf(sides.First[e][0]);
-    const std::size_t b = faceOf(sides.First[e][1]);
-    if (sides.Count[e] == 2 && a != b &&
-      ((a != none && !notSharp[a]) || (b != none && !notSharp[b])))
+    if (sides.Count[e] != 2)
     {
-      outline[e] = 1;
+      continue;
     }
+    const auto [a, b] = facesOf(e);
+    outline[e] = a != b && ((a != none && !notSharp[a]) || (b != none && !notSharp[b])) ? 1 : 0;
   }
   return outline;
 }

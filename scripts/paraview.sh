@@ -21,6 +21,15 @@
 #   bash scripts/paraview.sh --run bash
 # runs a command there with the mounts in place, after making the root (give
 # xvfb-run there a display number of your own, -n 300 say, rather than -a).
+#   bash scripts/paraview.sh --prepare
+# only makes the root and installs its packages: minutes of downloading and
+# unpacking on a fresh machine, little of it CPU, so CI does it in the
+# background while the main suite builds and runs (.ci/run); a run that
+# follows waits for it on the root's lock. Its one host package, debootstrap,
+# is installed by
+#   bash scripts/paraview.sh --host-packages
+# (which does nothing else), so that .ci/run can install it in the foreground:
+# two apt-get runs on the host at once fail on apt's lock.
 #
 # The mirror is the host's: read at run time from its apt configuration.
 # Needs root (or sudo) for debootstrap, mount and chroot.
@@ -30,9 +39,9 @@ case "${1:-}" in
     sed -n '2,/^set -euo/p' "$0" | sed '$d' | sed 's/^# \{0,1\}//'
     exit 0
     ;;
-  "" | --run | --remove-root) ;;
+  "" | --run | --prepare | --host-packages | --remove-root) ;;
   *)
-    echo "paraview.sh: unknown option '$1' (--run COMMAND..., --remove-root or --help)" >&2
+    echo "paraview.sh: unknown option '$1' (--prepare, --host-packages, --run COMMAND..., --remove-root or --help)" >&2
     exit 2
     ;;
 esac
@@ -90,6 +99,17 @@ trap 'exit 130' INT TERM
 
 mounted_under_root() { findmnt -rn -o TARGET | grep -F -- "$root/" || true; }
 
+install_host_packages() {
+  command -v debootstrap >/dev/null && return
+  log "installing debootstrap on the host (nothing else is installed there)"
+  apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends debootstrap >/dev/null
+}
+if [ "${1:-}" = "--host-packages" ]; then
+  install_host_packages
+  exit 0
+fi
+
 # One run at a time on one root.
 mkdir -p "$(dirname "$root")"
 exec 9>"$root.lock"
@@ -143,11 +163,7 @@ in_root() {
 # 1. The root.
 step_start
 if [ ! -f "$root/.silhouette-root-complete" ]; then
-  command -v debootstrap >/dev/null || {
-    log "installing debootstrap on the host (nothing else is installed there)"
-    apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends debootstrap >/dev/null
-  }
+  install_host_packages
   if [ -e "$root" ]; then
     [ -z "$(mounted_under_root)" ] || die "an unfinished root at $root has mounts in it: $(mounted_under_root)"
     log "removing an unfinished root at $root"
@@ -238,6 +254,10 @@ else
   step_end "package check"
 fi
 
+if [ "${1:-}" = "--prepare" ]; then
+  log "the root is ready at $root"
+  exit 0
+fi
 if [ "${1:-}" = "--run" ]; then
   shift
   set +e

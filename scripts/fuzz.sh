@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Fuzzes with libFuzzer (clang), under AddressSanitizer and
-# UndefinedBehaviorSanitizer, two targets one after the other:
+# UndefinedBehaviorSanitizer, three targets, two at a time:
 #   fuzz_core     the algorithm core alone: random meshes (repeated ids,
 #                 non-manifold fans, inconsistent orientation, zero normals,
 #                 1e-30 to 1e30) and views (Testing/Fuzz/FuzzSilhouetteSmoother.cpp)
@@ -12,7 +12,7 @@
 #                 mesh, the edge classification and the brushes
 #                 (Testing/Fuzz/FuzzProgressiveStrokes.cpp)
 #
-#   bash scripts/fuzz.sh [SECONDS]   fuzz each target SECONDS (default 30; CI: 30, 90 s in all)
+#   bash scripts/fuzz.sh [SECONDS]   fuzz each target SECONDS (default 30; CI: 30, a minute in all)
 #
 # Builds with CMake in build-fuzz/ (SILHOUETTE_FUZZ=ON; our code instrumented,
 # VTK as installed); needs what scripts/setup.sh installs, and installs clang
@@ -92,9 +92,13 @@ run() { # target corpus max_len [seeds]
   rate=$(grep -o 'stat::average_exec_per_sec: *[0-9]*' "$work/$target.log" | grep -o '[0-9]*$')
   echo "fuzz: $target: $runs inputs ($rate a second), no crash, no sanitizer report, no invariant broken"
 }
-# Inputs it once failed on come first (Testing/Fuzz/Regressions).
-run fuzz_core "$work/corpus-core" 2048 "$here/Testing/Fuzz/Regressions/core"
+# A fuzzer is one process on one core: fuzz_mesh_io runs on one core while
+# the other two run one after the other on the other.
 # VTK's readers leak on some error paths; see the suppression file.
 LSAN_OPTIONS="suppressions=$here/Testing/Fuzz/lsan-vtk.supp:print_suppressions=0" \
-  run fuzz_mesh_io "$work/corpus-mesh" 8192 "$seeds"
+  run fuzz_mesh_io "$work/corpus-mesh" 8192 "$seeds" &
+mesh_io=$!
+# Inputs it once failed on come first (Testing/Fuzz/Regressions).
+run fuzz_core "$work/corpus-core" 2048 "$here/Testing/Fuzz/Regressions/core"
 run fuzz_progressive_strokes "$work/corpus-strokes" 4096
+wait "$mesh_io"

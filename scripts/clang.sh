@@ -5,17 +5,7 @@
 # builds the instrumented trees: libFuzzer is clang's, and with ASan, UBSan
 # or TSan clang compiles our code in about three quarters of GCC's time
 # (docs/testing.md).
-clang_missing=()
-for package in clang libclang-rt-14-dev; do
-  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" ||
-    clang_missing+=("$package")
-done
-if [ "${#clang_missing[@]}" -gt 0 ]; then
-  clang_sudo=()
-  [ "$(id -u)" -ne 0 ] && clang_sudo=(sudo)
-  echo "clang: installing ${clang_missing[*]}"
-  DEBIAN_FRONTEND=noninteractive "${clang_sudo[@]}" apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive "${clang_sudo[@]}" apt-get install -y -qq --no-install-recommends \
-    "${clang_missing[@]}" >/dev/null
-fi
+# shellcheck source=packages.sh disable=SC2154 # `here`: set by the script that sources this one
+source "$here/scripts/packages.sh"
+install_missing clang clang libclang-rt-14-dev
 export CC=clang CXX=clang++

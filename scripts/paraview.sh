@@ -99,12 +99,10 @@ trap 'exit 130' INT TERM
 
 mounted_under_root() { findmnt -rn -o TARGET | grep -F -- "$root/" || true; }
 
-install_host_packages() {
-  command -v debootstrap >/dev/null && return
-  log "installing debootstrap on the host (nothing else is installed there)"
-  apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends debootstrap >/dev/null
-}
+# shellcheck source=packages.sh
+source "$here/scripts/packages.sh"
+# debootstrap is the one package the host gets; everything else goes in the root.
+install_host_packages() { install_missing paraview debootstrap; }
 if [ "${1:-}" = "--host-packages" ]; then
   install_host_packages
   exit 0

@@ -393,25 +393,36 @@ bool VtkXmlData::Locate(const XmlTag& array, Bytes& bytes) const
   return true;
 }
 
-// The uncompressed bytes an array's header declares (a compressed one's:
-// blocks, block size, last block's size, then each block's compressed
-// size), held to the file's size; max() when the header is cut short.
-std::uint64_t VtkXmlData::DeclaredBytes(const Bytes& bytes, const std::string& name) const
+// A binary or appended array's header: an uncompressed array's byte count,
+// or a compressed one's blocks, block size, last block's size, then each
+// block's compressed size.
+struct VtkXmlData::Header
 {
+  bool Complete = false;                      ///< false: the array's bytes stop inside it
+  std::uint64_t Declared = 0;                 ///< the uncompressed bytes it declares
+  std::uint64_t Length = 0;                   ///< bytes of the header itself
+  std::uint64_t BlockSize = 0;                ///< compressed arrays: every block's but the last's
+  std::vector<std::uint64_t> CompressedSizes; ///< compressed arrays: a word a block
+};
+
+VtkXmlData::Header VtkXmlData::ReadHeader(const Bytes& bytes, const std::string& name) const
+{
+  Header header;
   const std::size_t width = this->Width;
   const std::size_t words = this->Compressor.empty() ? 1 : 3;
-  const std::string header = bytes.prefix(this->Text, words * width);
-  if (header.size() < words * width)
+  const std::string front = bytes.prefix(this->Text, words * width);
+  if (front.size() < words * width)
   {
-    return std::numeric_limits<std::uint64_t>::max();
+    return header;
   }
   const auto size = static_cast<std::uint64_t>(this->Text.size());
-  std::uint64_t declared = Word(header, 0, width, this->BigEndian);
+  std::uint64_t declared = Word(front, 0, width, this->BigEndian);
+  header.Length = words * width;
   if (!this->Compressor.empty())
   {
     const std::uint64_t blocks = declared;
-    const std::uint64_t blockSize = Word(header, 1, width, this->BigEndian);
-    const std::uint64_t lastSize = Word(header, 2, width, this->BigEndian);
+    const std::uint64_t blockSize = Word(front, 1, width, this->BigEndian);
+    const std::uint64_t lastSize = Word(front, 2, width, this->BigEndian);
     if (blocks > size)
     {
       this->Fail("a compressed data array declares " + Count(blocks) +
@@ -423,11 +434,12 @@ std::uint64_t VtkXmlData::DeclaredBytes(const Bytes& bytes, const std::string& n
       bytes.Raw ? bytes.Stop - bytes.Data : (bytes.Stop - bytes.Data) / 4 * 3 + 3;
     if (blocks > available / width)
     {
-      return std::numeric_limits<std::uint64_t>::max();
+      return header;
     }
     // Each block's compressed bytes are in the file: VTK 9.1's reader
     // allocates a buffer of that size before it finds the data short.
-    const std::string sizes = bytes.prefix(this->Text, (3 + blocks) * width);
+    header.Length = (3 + blocks) * width;
+    const std::string sizes = bytes.prefix(this->Text, header.Length);
     for (std::uint64_t b = 0; (3 + b + 1) * width <= sizes.size(); ++b)
     {
       const std::uint64_t compressedSize = Word(sizes, 3 + b, width, this->BigEndian);
@@ -436,6 +448,7 @@ std::uint64_t VtkXmlData::DeclaredBytes(const Bytes& bytes, const std::string& n
         this->Fail("a compressed block declares " + Count(compressedSize) +
           " bytes, more than a file of " + Count(size) + " bytes holds");
       }
+      header.CompressedSizes.push_back(compressedSize);
     }
     // blocks - 1 full blocks and the last (lastSize, or a full one when 0);
     // a block size counts only when a full block is used. Checked against
@@ -452,6 +465,11 @@ std::uint64_t VtkXmlData::DeclaredBytes(const Bytes& bytes, const std::string& n
         Count(size) + " bytes can hold");
     }
     declared = blocks == 0 ? 0 : (blocks - 1) * blockSize + last;
+    header.BlockSize = blockSize;
+    if (header.CompressedSizes.size() < blocks)
+    {
+      return header; // cut short in the block sizes
+    }
   }
   if (declared > this->MostDeclared)
   {
@@ -472,7 +490,9 @@ std::uint64_t VtkXmlData::DeclaredBytes(const Bytes& bytes, const std::string& n
       this->Fail(name + " declares " + Count(declared) + " bytes but holds " + Count(held));
     }
   }
-  return declared;
+  header.Declared = declared;
+  header.Complete = true;
+  return header;
 }
 
 void VtkXmlData::CheckDeclaredSizes() const
@@ -489,7 +509,7 @@ void VtkXmlData::CheckDeclaredSizes() const
     const std::string name = array.Attribute("Name").empty()
       ? std::string("a data array")
       : "data array '" + array.Attribute("Name") + "'";
-    this->DeclaredBytes(bytes, name);
+    this->ReadHeader(bytes, name);
   }
 }
 
@@ -505,34 +525,26 @@ std::string VtkXmlData::Decoded(
     throw XmlUnreadable(what + " has no data where its tag says (format '" +
       array.Attribute("format") + "', offset '" + array.Attribute("offset") + "')");
   }
-  const std::uint64_t declared = this->DeclaredBytes(bytes, what);
-  if (declared == std::numeric_limits<std::uint64_t>::max())
+  const Header header = this->ReadHeader(bytes, what);
+  if (!header.Complete)
   {
     throw XmlUnreadable(what + "'s header is cut short");
   }
-  const std::size_t width = this->Width;
   if (this->Compressor.empty())
   {
-    first = width;
-    return bytes.prefix(this->Text, width + declared);
-  }
-  const std::uint64_t blocks = Word(bytes.prefix(this->Text, width), 0, width, this->BigEndian);
-  const std::uint64_t headerBytes = (3 + blocks) * width;
-  const std::string header = bytes.prefix(this->Text, headerBytes);
-  if (header.size() < headerBytes)
-  {
-    throw XmlUnreadable(what + "'s header is cut short");
+    first = header.Length;
+    return bytes.prefix(this->Text, header.Length + header.Declared);
   }
   std::uint64_t compressed = 0;
-  for (std::uint64_t b = 0; b < blocks; ++b)
+  for (const std::uint64_t size : header.CompressedSizes)
   {
-    compressed += Word(header, 3 + b, width, this->BigEndian);
+    compressed += size;
   }
-  const std::string all = bytes.prefix(this->Text, headerBytes + compressed);
-  if (all.size() < headerBytes + compressed)
+  const std::string all = bytes.prefix(this->Text, header.Length + compressed);
+  if (all.size() < header.Length + compressed)
   {
     throw XmlUnreadable(what + " declares " + Count(compressed) + " compressed bytes but holds " +
-      Count(all.size() - headerBytes));
+      Count(all.size() - header.Length));
   }
   vtkSmartPointer<vtkDataCompressor> codec;
   if (this->Compressor == "vtkZLibDataCompressor")
@@ -551,16 +563,17 @@ std::string VtkXmlData::Decoded(
   {
     throw XmlUnreadable("the compressor '" + Excerpt(this->Compressor) + "' is not one of VTK's");
   }
-  const std::uint64_t blockSize = Word(header, 1, width, this->BigEndian);
-  std::string data(static_cast<std::size_t>(declared), '\0');
-  std::uint64_t from = headerBytes;
+  const std::uint64_t blocks = header.CompressedSizes.size();
+  std::string data(static_cast<std::size_t>(header.Declared), '\0');
+  std::uint64_t from = header.Length;
   for (std::uint64_t b = 0; b < blocks; ++b)
   {
-    const std::uint64_t size = Word(header, 3 + b, width, this->BigEndian);
-    const std::uint64_t expected = b + 1 < blocks ? blockSize : declared - b * blockSize;
+    const std::uint64_t size = header.CompressedSizes[b];
+    const std::uint64_t expected =
+      b + 1 < blocks ? header.BlockSize : header.Declared - b * header.BlockSize;
     const std::size_t got = codec->Uncompress(
       reinterpret_cast<const unsigned char*>(all.data() + from), static_cast<std::size_t>(size),
-      reinterpret_cast<unsigned char*>(&data[static_cast<std::size_t>(b * blockSize)]),
+      reinterpret_cast<unsigned char*>(&data[static_cast<std::size_t>(b * header.BlockSize)]),
       static_cast<std::size_t>(expected));
     if (got != expected)
     {

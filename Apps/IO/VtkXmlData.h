@@ -90,8 +90,11 @@ public:
 private:
   struct Bytes;
   struct Element;
+  struct Header;
   bool Locate(const XmlTag& array, Bytes& bytes) const;
-  std::uint64_t DeclaredBytes(const Bytes& bytes, const std::string& name) const;
+  /// The array's header, read once and checked against the file's size
+  /// (Fail when it declares more than the file can hold).
+  Header ReadHeader(const Bytes& bytes, const std::string& name) const;
   /// The array's data bytes, uncompressed; they start at `first`.
   std::string Decoded(const XmlTag& array, const std::string& what, std::size_t& first) const;
   template<typename Value>

@@ -170,10 +170,33 @@ private:
     return false;
   }
 
-  // The crossings of the sides of triangle `from` through triangle `into`.
+  // The crossings of triangle `from` through triangle `into`: its corners
+  // that lie in `into` (within a rounding error of its plane), then its
+  // sides. A corner is named by itself alone (Low == High): where the curve
+  // passes through a corner, the two pairs on either side of it along the
+  // curve both find it, so they chain by that name; its sides' crossings
+  // there, within rounding of it, are the same point and are dropped.
   void crossingsOf(Id from, Id into, std::vector<Crossing>& out) const
   {
     const Triangle& corner = this->Corners[static_cast<std::size_t>(from)];
+    const TriangleShape& target = this->Shapes[static_cast<std::size_t>(into)];
+    const double near = 1e-12 *
+      std::max(this->Shapes[static_cast<std::size_t>(from)].LongestSide, target.LongestSide);
+    for (int k = 0; k < 3; ++k)
+    {
+      const glm::dvec3& p = this->Points[static_cast<std::size_t>(corner[k])];
+      if (std::abs(glm::dot(target.UnitNormal, p - target.Corners.P[0])) <= near &&
+        inTriangle(p, target))
+      {
+        Crossing crossing;
+        crossing.Name.Low = corner[k];
+        crossing.Name.High = corner[k];
+        crossing.Name.Crossed = into;
+        crossing.OnTriangle = from;
+        crossing.Point = p;
+        out.push_back(crossing);
+      }
+    }
     for (int k = 0; k < 3; ++k)
     {
       Crossing crossing;

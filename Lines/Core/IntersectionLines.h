@@ -15,8 +15,10 @@
 // (the side is always taken from its lower welded end). An end found from
 // both triangles (a side of each, crossing) is one point; the pieces that
 // meet there under two names are joined afterwards, where exactly two ends
-// lie within 1e-9 of the curves' size. A pair whose crossings are not two (a
-// curve through a corner) adds no segment: a gap shorter than a triangle.
+// lie within 1e-9 of the curves' size. Where the curve passes through a
+// corner of one triangle (the corner within 1e-12 of the other's plane, and
+// in it), that corner is an end, named by the corner and the triangle it
+// lies in. A pair whose crossings are not two adds no segment.
 //
 // Invariants: every point lies on both triangles of its segment (up to
 // rounding); polylines stop where other than two pieces meet (curves that

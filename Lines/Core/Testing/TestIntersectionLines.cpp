@@ -230,3 +230,42 @@ TEST(IntersectionLines, BoxesWhoseFacesLineUpMeetWhereTheyCross)
   EXPECT_EQ(lines.size(), 4u);
   EXPECT_NEAR(totalLength(lines), 4.0, 1e-12);
 }
+
+TEST(IntersectionLines, ACurveThroughACornerIsWhole)
+{
+  // A tetrahedron with one corner, v, on the face x = 2 of the box [0, 2]^3
+  // (in the face's lower triangle, off its diagonal), one corner inside the
+  // box and two outside: the plane x = 2 cuts it in the triangle v, p, q,
+  // through v itself. The two faces of the tetrahedron at v meet the box's
+  // face only in pairs with one crossing of a side (the corner is on the
+  // plane, so no side of it crosses the plane there); without the corner as
+  // an end those pairs gave no segment, and the loop lost v and the stretch
+  // to the face's diagonal on either side of it.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  addBox({ 0, 0, 0 }, { 2, 2, 2 }, points, triangles);
+  const Id base = static_cast<Id>(points.size());
+  const glm::dvec3 v(2.0, 1.0, 0.8);
+  const glm::dvec3 a(2.5, 0.6, 0.7);
+  const glm::dvec3 b(2.5, 1.5, 0.8);
+  const glm::dvec3 c(1.5, 1.0, 1.5);
+  points.insert(points.end(), { v, a, b, c });
+  triangles.push_back({ base, base + 1, base + 2 });
+  triangles.push_back({ base, base + 2, base + 3 });
+  triangles.push_back({ base, base + 3, base + 1 });
+  triangles.push_back({ base + 1, base + 3, base + 2 });
+  const std::vector<IntersectionLine> lines = intersectionLines(points, triangles);
+  ASSERT_EQ(lines.size(), 1u);
+  const IntersectionLine& loop = lines[0];
+  EXPECT_EQ(loop.Points.front(), loop.Points.back());
+  const glm::dvec3 p = 0.5 * (a + c);
+  const glm::dvec3 q = 0.5 * (b + c);
+  EXPECT_NEAR(lengthOf(loop), glm::length(p - v) + glm::length(q - p) + glm::length(v - q), 1e-12);
+  bool throughTheCorner = false;
+  for (const glm::dvec3& point : loop.Points)
+  {
+    EXPECT_NEAR(point.x, 2.0, 1e-12);
+    throughTheCorner = throughTheCorner || point == v;
+  }
+  EXPECT_TRUE(throughTheCorner);
+}

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <tuple>
 #include <utility>
@@ -145,7 +146,13 @@ public:
       for (const Id u : candidates)
       {
         Segment segment;
-        if (static_cast<std::size_t>(u) > t && this->segmentOf(static_cast<Id>(t), u, segment))
+        if (static_cast<std::size_t>(u) <= t)
+        {
+          continue;
+        }
+        const Id a = static_cast<Id>(t);
+        if (this->segmentOf(a, u, segment) || this->sideSegmentOf(a, u, segment) ||
+          this->sideSegmentOf(u, a, segment))
         {
           found.push_back(segment);
         }
@@ -255,10 +262,186 @@ private:
     return true;
   }
 
+  // Where a side of triangle `a` lies in the plane of triangle `b` (both
+  // ends within a rounding error of it) and the surface crosses `b` there:
+  // `a`'s third corner is on b's front and the third corner of the other
+  // triangle at that side is on its back (both clearly; on one side, the
+  // surface only touches b). The curve is then the part of that side in `b`
+  // (a sphere centred on a box's face, its equator's ring in the face). Only
+  // the triangle in front gives it, so it is found once. Its ends: a corner
+  // of the side in `b`, named by the corner as in crossingsOf (the next side
+  // along the curve ends there too); or where a side of `b` crosses it,
+  // named by that side of `b` and by `a` (the pair of `a` with b's
+  // neighbour across that side finds the same point under the same name).
+  bool sideSegmentOf(Id a, Id b, Segment& segment) const
+  {
+    const TriangleShape& sa = this->Shapes[static_cast<std::size_t>(a)];
+    const TriangleShape& sb = this->Shapes[static_cast<std::size_t>(b)];
+    const Triangle& ca = this->Corners[static_cast<std::size_t>(a)];
+    if (sa.NoInterior || sb.NoInterior ||
+      this->shareAVertex(ca, this->Corners[static_cast<std::size_t>(b)]))
+    {
+      return false;
+    }
+    const double near = 1e-12 * std::max(sa.LongestSide, sb.LongestSide);
+    const auto height = [&](Id point) {
+      return glm::dot(
+        sb.UnitNormal, this->Points[static_cast<std::size_t>(point)] - sb.Corners.P[0]);
+    };
+    int third = -1;
+    for (int k = 0; k < 3; ++k)
+    {
+      if (std::abs(height(ca[k])) > near)
+      {
+        if (third >= 0)
+        {
+          return false; // two corners off the plane: no side in it
+        }
+        third = k;
+      }
+    }
+    if (third < 0 || height(ca[third]) <= near)
+    {
+      return false; // a lies in b's plane, or behind it (its neighbour gives the curve)
+    }
+    const Id p = ca[(third + 1) % 3];
+    const Id q = ca[(third + 2) % 3];
+    const Id across = this->otherTriangleAt(a, p, q);
+    if (across < 0 ||
+      this->shareAVertex(this->Corners[static_cast<std::size_t>(across)],
+        this->Corners[static_cast<std::size_t>(b)]))
+    {
+      return false;
+    }
+    const Triangle& cx = this->Corners[static_cast<std::size_t>(across)];
+    const Id opposite =
+      cx[0] != p && cx[0] != q ? cx[0] : (cx[1] != p && cx[1] != q ? cx[1] : cx[2]);
+    if (height(opposite) >= -near)
+    {
+      return false;
+    }
+    return this->sidePartIn(a, std::min(p, q), std::max(p, q), b, segment);
+  }
+
+  // The part of side (low, high) of `a`, lying in b's plane, that lies in
+  // `b` (its sides included, as inTriangle): false when that part is a
+  // point or nothing.
+  bool sidePartIn(Id a, Id low, Id high, Id b, Segment& segment) const
+  {
+    const TriangleShape& sb = this->Shapes[static_cast<std::size_t>(b)];
+    const Triangle& cb = this->Corners[static_cast<std::size_t>(b)];
+    const glm::dvec3& from = this->Points[static_cast<std::size_t>(low)];
+    const glm::dvec3& to = this->Points[static_cast<std::size_t>(high)];
+    // The side from `from` (0) to `to` (1), clipped by b's sides exactly;
+    // an end clipped off by less than inTriangle's tolerance is the corner
+    // itself (so the part of a neighbouring side in a neighbouring triangle
+    // meets it at that point, not a rounding error beyond it).
+    double enter = 0.0;
+    double leave = 1.0;
+    int enterSide = -1;
+    int leaveSide = -1;
+    for (int k = 0; k < 3; ++k)
+    {
+      const glm::dvec3& s0 = sb.Corners.P[k];
+      const glm::dvec3& s1 = sb.Corners.P[(k + 1) % 3];
+      const double f = glm::dot(glm::cross(s1 - s0, from - s0), sb.UnitNormal);
+      const double g = glm::dot(glm::cross(s1 - s0, to - s0), sb.UnitNormal);
+      if (f < 0.0 && g < 0.0)
+      {
+        return false;
+      }
+      if (f < 0.0)
+      {
+        const double at = f / (f - g);
+        if (at > enter)
+        {
+          enter = at;
+          enterSide = k;
+        }
+      }
+      else if (g < 0.0)
+      {
+        const double at = f / (f - g);
+        if (at < leave)
+        {
+          leave = at;
+          leaveSide = k;
+        }
+      }
+    }
+    if (enterSide >= 0 && inTriangle(from, sb))
+    {
+      enter = 0.0;
+      enterSide = -1;
+    }
+    if (leaveSide >= 0 && inTriangle(to, sb))
+    {
+      leave = 1.0;
+      leaveSide = -1;
+    }
+    const double close = 1e-9;
+    if (leave - enter <= close)
+    {
+      return false;
+    }
+    const auto end = [&](double at, int side, Id corner, Crossing& c) {
+      c.OnTriangle = a;
+      if (side < 0)
+      {
+        c.Name = { corner, corner, b };
+        c.Point = this->Points[static_cast<std::size_t>(corner)];
+        return;
+      }
+      c.Name.Low = std::min(cb[side], cb[(side + 1) % 3]);
+      c.Name.High = std::max(cb[side], cb[(side + 1) % 3]);
+      c.Name.Crossed = a;
+      c.Point = from + at * (to - from);
+    };
+    end(enter, enterSide, low, segment.End[0]);
+    end(leave, leaveSide, high, segment.End[1]);
+    return true;
+  }
+
+  // The triangle other than `a` at side (p, q), when exactly two share it;
+  // -1 otherwise. The table of sides is made when first asked: most
+  // surfaces never ask.
+  Id otherTriangleAt(Id a, Id p, Id q) const
+  {
+    if (this->SideTriangles.empty())
+    {
+      for (std::size_t t = 0; t < this->Corners.size(); ++t)
+      {
+        const Triangle& c = this->Corners[t];
+        for (int k = 0; k < 3; ++k)
+        {
+          this->SideTriangles.push_back(
+            { std::min(c[k], c[(k + 1) % 3]), std::max(c[k], c[(k + 1) % 3]), static_cast<Id>(t) });
+        }
+      }
+      std::sort(this->SideTriangles.begin(), this->SideTriangles.end());
+    }
+    const std::array<Id, 3> key{ std::min(p, q), std::max(p, q), Id(-1) };
+    auto at = std::lower_bound(this->SideTriangles.begin(), this->SideTriangles.end(), key);
+    Id other = -1;
+    int count = 0;
+    for (; at != this->SideTriangles.end() && (*at)[0] == key[0] && (*at)[1] == key[1]; ++at)
+    {
+      ++count;
+      if ((*at)[2] != a)
+      {
+        other = (*at)[2];
+      }
+    }
+    return count == 2 ? other : -1;
+  }
+
   const std::vector<glm::dvec3>& Points;
   std::vector<Id> Welded;
   std::vector<Triangle> Corners;
   std::vector<TriangleShape> Shapes;
+  /// (low, high, triangle) per side of every triangle, sorted; made when
+  /// otherTriangleAt is first asked.
+  mutable std::vector<std::array<Id, 3>> SideTriangles;
 };
 
 /// Chains segments whose ends share a name: through names that two ends

@@ -269,3 +269,48 @@ TEST(IntersectionLines, ACurveThroughACornerIsWhole)
   }
   EXPECT_TRUE(throughTheCorner);
 }
+
+TEST(IntersectionLines, ARingInTheOtherPartsFaceIsTheCurve)
+{
+  // A UV sphere of radius 0.5 centred on the face z = 1 of the box
+  // [-1, 1]^3, its equator's ring of 16 points in that face: the surfaces
+  // cross along the ring's sides, which no triangle crosses (each triangle
+  // at the ring touches the face along a side). One closed loop, the
+  // 16-gon, every point in the face. Raised by 0.1 the sphere touches
+  // nothing at a side and the loop is the cut of its band, nearer the pole.
+  for (const double lift : { 0.0, 0.1 })
+  {
+    std::vector<glm::dvec3> points;
+    std::vector<Triangle> triangles;
+    addBox({ -1, -1, -1 }, { 1, 1, 1 }, points, triangles);
+    std::vector<glm::dvec3> sphere;
+    std::vector<Triangle> sphereTriangles;
+    unitSphere(8, 16, sphere, sphereTriangles);
+    const Id base = static_cast<Id>(points.size());
+    for (const glm::dvec3& p : sphere)
+    {
+      points.push_back(0.5 * p + glm::dvec3(0.0, 0.0, 1.0 - lift));
+      ASSERT_TRUE(lift != 0.0 || std::abs(p.z) > 0.1 || points.back().z == 1.0);
+    }
+    for (const Triangle& t : sphereTriangles)
+    {
+      triangles.push_back({ t[0] + base, t[1] + base, t[2] + base });
+    }
+    const std::vector<IntersectionLine> lines = intersectionLines(points, triangles);
+    ASSERT_EQ(lines.size(), 1u) << "lift " << lift;
+    EXPECT_EQ(lines[0].Points.front(), lines[0].Points.back());
+    for (const glm::dvec3& p : lines[0].Points)
+    {
+      EXPECT_NEAR(p.z, 1.0, 1e-12);
+    }
+    if (lift == 0.0)
+    {
+      EXPECT_NEAR(lengthOf(lines[0]), 16.0 * std::sin(M_PI / 16.0), 1e-12);
+    }
+    else
+    {
+      EXPECT_GT(lengthOf(lines[0]), 2.0);
+      EXPECT_LT(lengthOf(lines[0]), 16.0 * std::sin(M_PI / 16.0));
+    }
+  }
+}

@@ -81,13 +81,16 @@ std::vector<FeatureEdge> flatSidedCreases(const std::vector<glm::dvec3>& points,
   const std::vector<Triangle>& triangles, double angleDegrees, const EdgeTable* table = nullptr);
 
 /// Each edge's first two sides (3t + k, in triangle order; -1 where there
-/// are fewer) and how many sides it has, counted up to 3: the topology the
-/// dihedral angles read, kept by a caller that asks for them again over
-/// moved points.
+/// are fewer), how many sides it has, counted up to 3, and whether its first
+/// two sides walk it the same way (one of their triangles is turned over):
+/// the topology the dihedral angles read, kept by a caller that asks for
+/// them again over moved points (the dihedral angles then read only the
+/// points and these arrays, in edge order).
 struct EdgeSides
 {
   std::vector<std::array<Id, 2>> First;
   std::vector<unsigned char> Count;
+  std::vector<unsigned char> SameWay;
 };
 EdgeSides edgeSidesOf(const std::vector<Triangle>& triangles, const EdgeTable& table);
 

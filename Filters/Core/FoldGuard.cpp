@@ -173,6 +173,34 @@ MeetingTriangles trianglesMeeting(const FoldGuardMesh& mesh, const std::vector<g
   // few boxes are asked about by every triangle, and smaller cells than 4
   // per box hold fewer boxes that a triangle's query must test.
   const TriangleGrid boxes(lows, highs, mesh.Triangles.size() / 8);
+  // The finite boxes' union: most triangles lie well away from it (a
+  // silhouette's boxes are a thin ring around the surface) and are dropped
+  // by one test instead of a query. triangleMeetsBox's tolerance is 1e-9 of
+  // the box's and the corners' spans from its centre, so a triangle whose
+  // box lies beyond the union by more than 2e-9 of the two spans meets none
+  // of the boxes.
+  glm::dvec3 allLow(HUGE_VAL);
+  glm::dvec3 allHigh(-HUGE_VAL);
+  for (std::size_t b = 0; b < count; ++b)
+  {
+    if (isFinite(lows[b]) && isFinite(highs[b]))
+    {
+      allLow = glm::min(allLow, lows[b]);
+      allHigh = glm::max(allHigh, highs[b]);
+    }
+  }
+  const glm::dvec3 allSpan = allHigh - allLow;
+  const double unionSpan = std::max({ allSpan.x, allSpan.y, allSpan.z });
+  const auto beyondEveryBox = [&](const glm::dvec3& low, const glm::dvec3& high) {
+    if (!(unionSpan >= 0.0))
+    {
+      return true; // no finite box
+    }
+    const glm::dvec3 span = high - low;
+    const double reach = 2e-9 * (unionSpan + std::max({ span.x, span.y, span.z }));
+    return low.x > allHigh.x + reach || low.y > allHigh.y + reach || low.z > allHigh.z + reach ||
+      high.x < allLow.x - reach || high.y < allLow.y - reach || high.z < allLow.z - reach;
+  };
   // How many triangles met each box so far; a box is not tested once past
   // its cap, so the count ends above the cap exactly when the box is
   // crowded, however the work is split.
@@ -195,7 +223,8 @@ MeetingTriangles trianglesMeeting(const FoldGuardMesh& mesh, const std::vector<g
       {
         glm::dvec3 low;
         glm::dvec3 high;
-        if (!TriangleGrid::boxOf(mesh.Points, mesh.Triangles[t], low, high))
+        if (!TriangleGrid::boxOf(mesh.Points, mesh.Triangles[t], low, high) ||
+          beyondEveryBox(low, high))
         {
           continue;
         }

@@ -329,23 +329,39 @@ std::unique_ptr<PreparedMesh> WeldedSurface::prepareGeometry(std::vector<glm::dv
     // surface on the whole (summed against the area normals), reverse them
     // all. Decided per component, not per point: a normal nearly in the
     // plane of its triangles says little about the side.
+    // Each corner's term in parallel (the points and normals are read at
+    // random), then summed per component in triangle order, the same sums
+    // on any split; a skipped corner's term is exactly zero, which leaves a
+    // sum as it was.
+    std::vector<double> ownTerms;
+    std::vector<double>& terms = reusable ? this->MovedAgreementTerms : ownTerms;
+    terms.resize(3 * welded.size());
+    parallelFor(welded.size(), [&](std::size_t begin, std::size_t end) {
+      for (std::size_t t = begin; t < end; ++t)
+      {
+        if (this->Components[t] < 0)
+        {
+          continue;
+        }
+        const glm::dvec3& a = points[static_cast<std::size_t>(welded[t][0])];
+        const glm::dvec3 areaNormal = glm::cross(points[static_cast<std::size_t>(welded[t][1])] - a,
+          points[static_cast<std::size_t>(welded[t][2])] - a);
+        for (std::size_t k = 0; k < 3; ++k)
+        {
+          const glm::dvec3& normal = givenCornerNormal(t, k);
+          terms[3 * t + k] = isFinite(normal) ? glm::dot(areaNormal, normal) : 0.0;
+        }
+      }
+    });
     std::vector<double> agreement(statistics.ComponentCount, 0.0);
     for (std::size_t t = 0; t < welded.size(); ++t)
     {
-      if (this->Components[t] < 0)
+      if (this->Components[t] >= 0)
       {
-        continue;
-      }
-      const glm::dvec3& a = points[static_cast<std::size_t>(welded[t][0])];
-      const glm::dvec3 areaNormal = glm::cross(points[static_cast<std::size_t>(welded[t][1])] - a,
-        points[static_cast<std::size_t>(welded[t][2])] - a);
-      for (std::size_t k = 0; k < 3; ++k)
-      {
-        const glm::dvec3& normal = givenCornerNormal(t, k);
-        if (isFinite(normal))
-        {
-          agreement[static_cast<std::size_t>(this->Components[t])] += glm::dot(areaNormal, normal);
-        }
+        double& sum = agreement[static_cast<std::size_t>(this->Components[t])];
+        sum += terms[3 * t];
+        sum += terms[3 * t + 1];
+        sum += terms[3 * t + 2];
       }
     }
     reversedComponent.resize(agreement.size(), 0);

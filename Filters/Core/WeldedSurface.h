@@ -270,6 +270,8 @@ private:
   /// first move.
   std::vector<glm::dvec3> MovedFaceNormals;
   std::vector<double> MovedCosines;
+  /// The same for the given normals' agreement with the area normals.
+  std::vector<double> MovedAgreementTerms;
   std::vector<Id> Components;
   /// Per triangle: whether the output writes it reversed from the oriented
   /// surface (its part's majority winding; chooseWrittenWinding).

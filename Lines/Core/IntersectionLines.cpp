@@ -1,5 +1,6 @@
 #include "IntersectionLines.h"
 
+#include "DisjointSets.h"
 #include "SurfaceWelding.h"
 #include "TriangleGrid.h"
 #include "TriangleIntersection.h"
@@ -230,10 +231,8 @@ private:
     // side, crossing sides only. The surfaces cross where each triangle has
     // corners on both sides of the other's plane; a triangle that touches the
     // other along its side, or lies in its plane, does not cross it.
-    if (sb.NoInterior ||
-      this->shareAVertex(
-        this->Corners[static_cast<std::size_t>(a)], this->Corners[static_cast<std::size_t>(b)]) ||
-      !straddles(sa, sb) || !straddles(sb, sa))
+    if (sb.NoInterior || !straddles(sa, sb) || !straddles(sb, sa) ||
+      this->neighboursOnOneSheet(a, b))
     {
       return false;
     }
@@ -278,8 +277,7 @@ private:
     const TriangleShape& sa = this->Shapes[static_cast<std::size_t>(a)];
     const TriangleShape& sb = this->Shapes[static_cast<std::size_t>(b)];
     const Triangle& ca = this->Corners[static_cast<std::size_t>(a)];
-    if (sa.NoInterior || sb.NoInterior ||
-      this->shareAVertex(ca, this->Corners[static_cast<std::size_t>(b)]))
+    if (sa.NoInterior || sb.NoInterior)
     {
       return false;
     }
@@ -307,9 +305,7 @@ private:
     const Id p = ca[(third + 1) % 3];
     const Id q = ca[(third + 2) % 3];
     const Id across = this->otherTriangleAt(a, p, q);
-    if (across < 0 ||
-      this->shareAVertex(this->Corners[static_cast<std::size_t>(across)],
-        this->Corners[static_cast<std::size_t>(b)]))
+    if (across < 0 || this->neighboursOnOneSheet(a, b) || this->neighboursOnOneSheet(across, b))
     {
       return false;
     }
@@ -407,19 +403,7 @@ private:
   // surfaces never ask.
   Id otherTriangleAt(Id a, Id p, Id q) const
   {
-    if (this->SideTriangles.empty())
-    {
-      for (std::size_t t = 0; t < this->Corners.size(); ++t)
-      {
-        const Triangle& c = this->Corners[t];
-        for (int k = 0; k < 3; ++k)
-        {
-          this->SideTriangles.push_back(
-            { std::min(c[k], c[(k + 1) % 3]), std::max(c[k], c[(k + 1) % 3]), static_cast<Id>(t) });
-        }
-      }
-      std::sort(this->SideTriangles.begin(), this->SideTriangles.end());
-    }
+    this->makeSideTable();
     const std::array<Id, 3> key{ std::min(p, q), std::max(p, q), Id(-1) };
     auto at = std::lower_bound(this->SideTriangles.begin(), this->SideTriangles.end(), key);
     Id other = -1;
@@ -435,6 +419,59 @@ private:
     return count == 2 ? other : -1;
   }
 
+  void makeSideTable() const
+  {
+    if (!this->SideTriangles.empty())
+    {
+      return;
+    }
+    for (std::size_t t = 0; t < this->Corners.size(); ++t)
+    {
+      const Triangle& c = this->Corners[t];
+      for (int k = 0; k < 3; ++k)
+      {
+        this->SideTriangles.push_back(
+          { std::min(c[k], c[(k + 1) % 3]), std::max(c[k], c[(k + 1) % 3]), static_cast<Id>(t) });
+      }
+    }
+    std::sort(this->SideTriangles.begin(), this->SideTriangles.end());
+  }
+
+  // Whether a and b share a vertex and lie on one sheet: joined by a path of
+  // triangles across shared sides. Such neighbours are not tested (a
+  // surface that folds onto its neighbour has no curve to draw there); parts
+  // that only touch at a point (two solids with a corner in common, which
+  // welding makes one vertex) are sheets of their own, and where they cross
+  // there the curve is drawn. The sheets are found when first asked.
+  bool neighboursOnOneSheet(Id a, Id b) const
+  {
+    if (!this->shareAVertex(
+          this->Corners[static_cast<std::size_t>(a)], this->Corners[static_cast<std::size_t>(b)]))
+    {
+      return false;
+    }
+    if (this->Sheet.empty())
+    {
+      this->makeSideTable();
+      DisjointSets sheets(this->Corners.size());
+      for (std::size_t i = 1; i < this->SideTriangles.size(); ++i)
+      {
+        const std::array<Id, 3>& side = this->SideTriangles[i];
+        const std::array<Id, 3>& before = this->SideTriangles[i - 1];
+        if (side[0] != side[1] && side[0] == before[0] && side[1] == before[1])
+        {
+          sheets.unite(static_cast<std::size_t>(side[2]), static_cast<std::size_t>(before[2]));
+        }
+      }
+      this->Sheet.resize(this->Corners.size());
+      for (std::size_t t = 0; t < this->Corners.size(); ++t)
+      {
+        this->Sheet[t] = sheets.find(t);
+      }
+    }
+    return this->Sheet[static_cast<std::size_t>(a)] == this->Sheet[static_cast<std::size_t>(b)];
+  }
+
   const std::vector<glm::dvec3>& Points;
   std::vector<Id> Welded;
   std::vector<Triangle> Corners;
@@ -442,6 +479,8 @@ private:
   /// (low, high, triangle) per side of every triangle, sorted; made when
   /// otherTriangleAt is first asked.
   mutable std::vector<std::array<Id, 3>> SideTriangles;
+  /// Per triangle, its sheet (neighboursOnOneSheet); made when first asked.
+  mutable std::vector<std::size_t> Sheet;
 };
 
 /// Chains segments whose ends share a name: through names that two ends

@@ -18,13 +18,19 @@
 // lie within 1e-9 of the curves' size. Where the curve passes through a
 // corner of one triangle (the corner within 1e-12 of the other's plane, and
 // in it), that corner is an end, named by the corner and the triangle it
-// lies in. A pair whose crossings are not two adds no segment.
+// lies in. A pair whose crossings are not two adds no segment. A side lying
+// in a triangle's plane (both ends within 1e-12), whose two triangles lie
+// clearly on either side of that plane, carries the curve: the part of it
+// inside the triangle is a segment (a sphere's equator ring in a box's
+// face); sides whose triangles are on one side only touch.
 //
 // Invariants: every point lies on both triangles of its segment (up to
 // rounding); polylines stop where other than two pieces meet (curves that
 // cross), and a closed loop repeats its first point at the end, to the bit.
-// Triangles sharing a vertex are not tested: a surface that folds onto its
-// neighbour has no curve to draw there.
+// Triangles sharing a vertex are not tested when they lie on one sheet
+// (joined across shared sides): a surface that folds onto its neighbour has
+// no curve to draw there. Parts that only touch at a point are sheets of
+// their own, and are tested there.
 #pragma once
 
 #include "MeshTopology.h"

@@ -314,3 +314,63 @@ TEST(IntersectionLines, ARingInTheOtherPartsFaceIsTheCurve)
     }
   }
 }
+
+TEST(IntersectionLines, PartsWithACornerInCommonCrossThere)
+{
+  // The sphere of the test above on an 8 x 8 grid of squares in z = 1
+  // (each split by a diagonal): four of its equator's points are grid
+  // points, which the search welds to one vertex each, so the sphere's
+  // triangles there share a vertex with the grid's. They are parts that
+  // only touch at those points, not neighbours on one sheet: the curve
+  // still runs through them, one closed 16-gon.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  constexpr int cells = 8;
+  for (int j = 0; j <= cells; ++j)
+  {
+    for (int i = 0; i <= cells; ++i)
+    {
+      points.emplace_back(-1.0 + 0.25 * i, -1.0 + 0.25 * j, 1.0);
+    }
+  }
+  for (int j = 0; j < cells; ++j)
+  {
+    for (int i = 0; i < cells; ++i)
+    {
+      const Id corner = j * (cells + 1) + i;
+      triangles.push_back({ corner, corner + 1, corner + cells + 2 });
+      triangles.push_back({ corner, corner + cells + 2, corner + cells + 1 });
+    }
+  }
+  std::vector<glm::dvec3> sphere;
+  std::vector<Triangle> sphereTriangles;
+  unitSphere(8, 16, sphere, sphereTriangles);
+  const Id base = static_cast<Id>(points.size());
+  int shared = 0;
+  for (const glm::dvec3& p : sphere)
+  {
+    // Coordinates within rounding of a grid line put on it (cos(pi / 2) is
+    // 6e-17, not 0), so that the points at 0, 90, 180 and 270 degrees are
+    // grid points to the bit.
+    glm::dvec3 at = 0.5 * p + glm::dvec3(0.0, 0.0, 1.0);
+    for (int k = 0; k < 3; ++k)
+    {
+      const double line = 0.25 * std::round(4.0 * at[k]);
+      at[k] = std::abs(at[k] - line) < 1e-12 ? line : at[k];
+    }
+    points.push_back(at);
+    for (Id g = 0; g < base; ++g)
+    {
+      shared += points.back() == points[static_cast<std::size_t>(g)] ? 1 : 0;
+    }
+  }
+  ASSERT_EQ(shared, 4); // the case under test: equator points that are grid points
+  for (const Triangle& t : sphereTriangles)
+  {
+    triangles.push_back({ t[0] + base, t[1] + base, t[2] + base });
+  }
+  const std::vector<IntersectionLine> lines = intersectionLines(points, triangles);
+  ASSERT_EQ(lines.size(), 1u);
+  EXPECT_EQ(lines[0].Points.front(), lines[0].Points.back());
+  EXPECT_NEAR(lengthOf(lines[0]), 16.0 * std::sin(M_PI / 16.0), 1e-12);
+}

@@ -181,6 +181,92 @@ std::vector<Triangle> weldTriangles(
   return welded;
 }
 
+std::vector<Id> weldWithinSheets(const std::vector<Triangle>& triangles, std::vector<Id> vertex)
+{
+  const std::size_t n = vertex.size();
+  bool anyWelded = false;
+  for (std::size_t i = 0; i < n && !anyWelded; ++i)
+  {
+    anyWelded = vertex[i] != static_cast<Id>(i);
+  }
+  if (!anyWelded)
+  {
+    return vertex;
+  }
+  // Sheets: the welded triangles joined across shared sides.
+  std::vector<std::array<Id, 3>> sides; // (low, high, triangle)
+  sides.reserve(3 * triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      const Id a = vertex[static_cast<std::size_t>(triangles[t][k])];
+      const Id b = vertex[static_cast<std::size_t>(triangles[t][(k + 1) % 3])];
+      if (a != b)
+      {
+        sides.push_back({ std::min(a, b), std::max(a, b), static_cast<Id>(t) });
+      }
+    }
+  }
+  std::sort(sides.begin(), sides.end());
+  DisjointSets sheets(triangles.size());
+  for (std::size_t i = 1; i < sides.size(); ++i)
+  {
+    if (sides[i][0] == sides[i - 1][0] && sides[i][1] == sides[i - 1][1])
+    {
+      sheets.unite(
+        static_cast<std::size_t>(sides[i][2]), static_cast<std::size_t>(sides[i - 1][2]));
+    }
+  }
+  // Each point's sheet; a group with a point on two sheets stays whole.
+  constexpr std::size_t none = static_cast<std::size_t>(-1);
+  std::vector<std::size_t> sheetOfPoint(n, none);
+  std::vector<unsigned char> keepWhole(n, 0);
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const std::size_t sheet = sheets.find(t);
+    for (const Id p : triangles[t])
+    {
+      std::size_t& s = sheetOfPoint[static_cast<std::size_t>(p)];
+      if (s != none && s != sheet)
+      {
+        keepWhole[static_cast<std::size_t>(vertex[static_cast<std::size_t>(p)])] = 1;
+      }
+      s = sheet;
+    }
+  }
+  // A group's points on one sheet take the lowest of them; in ascending
+  // order, so the first point of each (group, sheet) is its vertex.
+  std::unordered_map<std::size_t, std::vector<std::pair<std::size_t, Id>>> firstOnSheet;
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    const Id group = vertex[i];
+    if (group == static_cast<Id>(i) && sheetOfPoint[i] == none)
+    {
+      continue;
+    }
+    if (keepWhole[static_cast<std::size_t>(group)] || sheetOfPoint[i] == none)
+    {
+      continue; // unused points stay with their group's lowest point
+    }
+    std::vector<std::pair<std::size_t, Id>>& seen = firstOnSheet[static_cast<std::size_t>(group)];
+    const auto found = std::find_if(seen.begin(), seen.end(),
+      [&](const std::pair<std::size_t, Id>& e) { return e.first == sheetOfPoint[i]; });
+    if (found == seen.end())
+    {
+      seen.emplace_back(sheetOfPoint[i], static_cast<Id>(i));
+      vertex[i] = static_cast<Id>(i);
+    }
+    else
+    {
+      vertex[i] = found->second;
+    }
+  }
+  // The group's lowest point kept its id (it is the first of its sheet), so
+  // unused points welded to it still name a vertex that names itself.
+  return vertex;
+}
+
 std::vector<FeatureEdge> normalSeamEdges(const std::vector<Triangle>& triangles,
   const std::vector<Id>& vertex, const std::vector<glm::dvec3>& normals, double angleDegrees,
   std::size_t* interiorEdges, const std::vector<Triangle>* givenWelded, const EdgeTable* givenTable)

@@ -29,6 +29,16 @@ constexpr double NormalSeamAngleDegrees = 1.0;
 /// non-finite coordinates are never welded.
 std::vector<Id> weldCoincidentPoints(const std::vector<glm::dvec3>& points, double tolerance = 0.0);
 
+/// The weld `vertex` (as weldCoincidentPoints gives it) kept within sheets:
+/// points welded together stay one vertex only where their triangles are
+/// joined across sides once welded. Parts that only touch at a point (two
+/// solids with a corner in common, a sphere's equator point on a grid point
+/// of a face) keep a vertex each there, so that neither's normals blend into
+/// the other's. A group with a point whose own triangles lie on two sheets
+/// (a pinched surface) stays whole; points no triangle uses stay with their
+/// group's lowest point. The same invariants as weldCoincidentPoints.
+std::vector<Id> weldWithinSheets(const std::vector<Triangle>& triangles, std::vector<Id> vertex);
+
 /// Edges far shorter than the mesh: what exporters leave where they write
 /// one point twice with rounded coordinates (OpenSCAD's STL writes copies
 /// 1e-5 to 1e-4 apart, joined by sliver triangles). Welding equal

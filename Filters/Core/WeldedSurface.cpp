@@ -69,7 +69,8 @@ WeldedSurface::GivenNormals WeldedSurface::weldAndOrient(const std::vector<glm::
   this->Vertex.resize(n);
   if (options.Weld)
   {
-    this->Vertex = weldCoincidentPoints(points, options.WeldTolerance);
+    this->Vertex =
+      weldWithinSheets(this->InputTriangles, weldCoincidentPoints(points, options.WeldTolerance));
   }
   else
   {

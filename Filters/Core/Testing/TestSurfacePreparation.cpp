@@ -66,6 +66,38 @@ TEST(SurfaceWelding, ToleranceJoinsNearPointsTransitively)
   EXPECT_EQ(weldCoincidentPoints(points, 1e-4), (std::vector<Id>{ 0, 1, 2, 3, 4 }));
 }
 
+TEST(SurfaceWelding, WeldingStaysWithinSheets)
+{
+  // Two squares of two triangles each, the second's corner 4 at the first's
+  // corner 2 (they touch at that point only), and a texture seam: the first
+  // square's corner 0 written twice (0 and 8, each used by one triangle).
+  const std::vector<glm::dvec3> points{ { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 },
+    { 1, 1, 0 }, { 2, 1, 1 }, { 2, 2, 1 }, { 1, 2, 1 }, { 0, 0, 0 } };
+  const std::vector<Triangle> triangles{ { 0, 1, 2 }, { 8, 2, 3 }, { 4, 5, 6 }, { 4, 6, 7 } };
+  const std::vector<Id> welded = weldCoincidentPoints(points);
+  EXPECT_EQ(welded, (std::vector<Id>{ 0, 1, 2, 3, 2, 5, 6, 7, 0 }));
+  // The seam stays welded (its triangles share the side 0-2 once welded);
+  // the touching corner does not (the squares share no side).
+  EXPECT_EQ(weldWithinSheets(triangles, welded), (std::vector<Id>{ 0, 1, 2, 3, 4, 5, 6, 7, 0 }));
+  // A point whose own triangles lie on two sheets (the second square pinned
+  // to the first by its corner 2 itself) keeps its group whole.
+  const std::vector<Triangle> pinched{ { 0, 1, 2 }, { 8, 2, 3 }, { 2, 5, 6 }, { 4, 6, 7 } };
+  EXPECT_EQ(weldWithinSheets(pinched, welded), welded);
+
+  // The surface keeps the squares' shading apart at the corner they touch
+  // at: the flat square's normal there is its own, (0, 0, 1), not a blend
+  // with the tilted square's (a user's trial found smeared patches where a
+  // sphere's points sat on a face's grid points).
+  SurfaceOptions options = coretest::plainOptions();
+  options.DetectFeatures = false;
+  const WeldedSurface surface(points, triangles, {}, {}, options);
+  // (The prepared mesh's points are the input's, welded ones unused.)
+  const std::vector<glm::dvec3>& normals = surface.prepared().normals();
+  ASSERT_GE(normals.size(), 5u);
+  EXPECT_NEAR(normals[2].z, 1.0, 1e-12);
+  EXPECT_LT(glm::dot(normals[4], glm::dvec3(0.0, 0.0, 1.0)), 0.99);
+}
+
 TEST(SurfaceWelding, NearCopiesAreEdgesBelowAHundredThousandthOfTheDiagonal)
 {
   // A unit square (diagonal sqrt 2) split in two, corner 2 with a copy (4)

@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <numeric>
 #include <tuple>
 #include <unordered_map>
@@ -181,7 +182,8 @@ std::vector<Triangle> weldTriangles(
   return welded;
 }
 
-std::vector<Id> weldWithinSheets(const std::vector<Triangle>& triangles, std::vector<Id> vertex)
+std::vector<Id> weldWithinSheets(
+  const std::vector<Triangle>& triangles, std::vector<Id> vertex, const EdgeTable& weldedTable)
 {
   const std::size_t n = vertex.size();
   bool anyWelded = false;
@@ -193,29 +195,29 @@ std::vector<Id> weldWithinSheets(const std::vector<Triangle>& triangles, std::ve
   {
     return vertex;
   }
-  // Sheets: the welded triangles joined across shared sides.
-  std::vector<std::array<Id, 3>> sides; // (low, high, triangle)
-  sides.reserve(3 * triangles.size());
+  // Sheets: the welded triangles joined across shared sides (a side whose
+  // ends are one vertex joins nothing).
+  constexpr Id noTriangle = -1;
+  std::vector<Id> firstAtEdge(weldedTable.edgeCount(), noTriangle);
+  DisjointSets sheets(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
-    for (std::size_t k = 0; k < 3; ++k)
+    for (int k = 0; k < 3; ++k)
     {
-      const Id a = vertex[static_cast<std::size_t>(triangles[t][k])];
-      const Id b = vertex[static_cast<std::size_t>(triangles[t][(k + 1) % 3])];
-      if (a != b)
+      const auto e = static_cast<std::size_t>(weldedTable.sideEdge(static_cast<Id>(t), k));
+      const Edge& edge = weldedTable.edge(static_cast<Id>(e));
+      if (edge.low == edge.high)
       {
-        sides.push_back({ std::min(a, b), std::max(a, b), static_cast<Id>(t) });
+        continue;
       }
-    }
-  }
-  std::sort(sides.begin(), sides.end());
-  DisjointSets sheets(triangles.size());
-  for (std::size_t i = 1; i < sides.size(); ++i)
-  {
-    if (sides[i][0] == sides[i - 1][0] && sides[i][1] == sides[i - 1][1])
-    {
-      sheets.unite(
-        static_cast<std::size_t>(sides[i][2]), static_cast<std::size_t>(sides[i - 1][2]));
+      if (firstAtEdge[e] == noTriangle)
+      {
+        firstAtEdge[e] = static_cast<Id>(t);
+      }
+      else
+      {
+        sheets.unite(static_cast<std::size_t>(firstAtEdge[e]), t);
+      }
     }
   }
   // Each point's sheet; a group with a point on two sheets stays whole.
@@ -235,35 +237,30 @@ std::vector<Id> weldWithinSheets(const std::vector<Triangle>& triangles, std::ve
       s = sheet;
     }
   }
-  // A group's points on one sheet take the lowest of them; in ascending
-  // order, so the first point of each (group, sheet) is its vertex.
-  std::unordered_map<std::size_t, std::vector<std::pair<std::size_t, Id>>> firstOnSheet;
+  // The group's first sheet (in ascending point order) keeps the group's
+  // vertex, so a group on one sheet is left as it was; each further sheet's
+  // points take the lowest of them (rare: looked up in a small map).
+  std::vector<std::size_t> firstSheet(n, none);
+  std::map<std::pair<Id, std::size_t>, Id> furtherSheets;
   for (std::size_t i = 0; i < n; ++i)
   {
     const Id group = vertex[i];
-    if (group == static_cast<Id>(i) && sheetOfPoint[i] == none)
-    {
-      continue;
-    }
-    if (keepWhole[static_cast<std::size_t>(group)] || sheetOfPoint[i] == none)
+    const std::size_t sheet = sheetOfPoint[i];
+    if (sheet == none || keepWhole[static_cast<std::size_t>(group)])
     {
       continue; // unused points stay with their group's lowest point
     }
-    std::vector<std::pair<std::size_t, Id>>& seen = firstOnSheet[static_cast<std::size_t>(group)];
-    const auto found = std::find_if(seen.begin(), seen.end(),
-      [&](const std::pair<std::size_t, Id>& e) { return e.first == sheetOfPoint[i]; });
-    if (found == seen.end())
+    std::size_t& first = firstSheet[static_cast<std::size_t>(group)];
+    if (first == none)
     {
-      seen.emplace_back(sheetOfPoint[i], static_cast<Id>(i));
-      vertex[i] = static_cast<Id>(i);
+      first = sheet;
     }
-    else
+    if (first != sheet)
     {
-      vertex[i] = found->second;
+      vertex[i] =
+        furtherSheets.emplace(std::make_pair(group, sheet), static_cast<Id>(i)).first->second;
     }
   }
-  // The group's lowest point kept its id (it is the first of its sheet), so
-  // unused points welded to it still name a vertex that names itself.
   return vertex;
 }
 

@@ -37,7 +37,10 @@ std::vector<Id> weldCoincidentPoints(const std::vector<glm::dvec3>& points, doub
 /// the other's. A group with a point whose own triangles lie on two sheets
 /// (a pinched surface) stays whole; points no triangle uses stay with their
 /// group's lowest point. The same invariants as weldCoincidentPoints.
-std::vector<Id> weldWithinSheets(const std::vector<Triangle>& triangles, std::vector<Id> vertex);
+/// `weldedTable` is the edge table of weldTriangles(triangles, vertex).
+/// O(points + triangles).
+std::vector<Id> weldWithinSheets(
+  const std::vector<Triangle>& triangles, std::vector<Id> vertex, const EdgeTable& weldedTable);
 
 /// Edges far shorter than the mesh: what exporters leave where they write
 /// one point twice with rounded coordinates (OpenSCAD's STL writes copies

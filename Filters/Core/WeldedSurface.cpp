@@ -69,8 +69,7 @@ WeldedSurface::GivenNormals WeldedSurface::weldAndOrient(const std::vector<glm::
   this->Vertex.resize(n);
   if (options.Weld)
   {
-    this->Vertex =
-      weldWithinSheets(this->InputTriangles, weldCoincidentPoints(points, options.WeldTolerance));
+    this->Vertex = weldCoincidentPoints(points, options.WeldTolerance);
   }
   else
   {
@@ -79,14 +78,26 @@ WeldedSurface::GivenNormals WeldedSurface::weldAndOrient(const std::vector<glm::
       this->Vertex[i] = static_cast<Id>(i);
     }
   }
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    this->Statistics.WeldedPointCount += this->Vertex[i] != static_cast<Id>(i) ? 1 : 0;
-  }
   std::vector<Triangle> welded = weldTriangles(this->InputTriangles, this->Vertex);
   // One edge table for the whole preparation: built for the welded
   // triangles, its sides turned with the triangles once they are oriented.
   EdgeTable table(welded);
+  if (options.Weld)
+  {
+    // Points of separate parts that only touch are one vertex no longer
+    // (rare: the table is then built again).
+    std::vector<Id> withinSheets = weldWithinSheets(this->InputTriangles, this->Vertex, table);
+    if (withinSheets != this->Vertex)
+    {
+      this->Vertex = std::move(withinSheets);
+      welded = weldTriangles(this->InputTriangles, this->Vertex);
+      table = EdgeTable(welded);
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i)
+  {
+    this->Statistics.WeldedPointCount += this->Vertex[i] != static_cast<Id>(i) ? 1 : 0;
+  }
   const NearCopies nearCopies = nearCopyEdges(points, table);
   this->Statistics.NearCopyEdgeCount = nearCopies.EdgeCount;
   this->Statistics.LongestNearCopyEdge = nearCopies.LongestEdge;

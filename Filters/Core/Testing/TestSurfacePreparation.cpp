@@ -78,11 +78,12 @@ TEST(SurfaceWelding, WeldingStaysWithinSheets)
   EXPECT_EQ(welded, (std::vector<Id>{ 0, 1, 2, 3, 2, 5, 6, 7, 0 }));
   // The seam stays welded (its triangles share the side 0-2 once welded);
   // the touching corner does not (the squares share no side).
-  EXPECT_EQ(weldWithinSheets(triangles, welded), (std::vector<Id>{ 0, 1, 2, 3, 4, 5, 6, 7, 0 }));
+  EXPECT_EQ(weldWithinSheets(triangles, welded, EdgeTable(weldTriangles(triangles, welded))),
+    (std::vector<Id>{ 0, 1, 2, 3, 4, 5, 6, 7, 0 }));
   // A point whose own triangles lie on two sheets (the second square pinned
   // to the first by its corner 2 itself) keeps its group whole.
   const std::vector<Triangle> pinched{ { 0, 1, 2 }, { 8, 2, 3 }, { 2, 5, 6 }, { 4, 6, 7 } };
-  EXPECT_EQ(weldWithinSheets(pinched, welded), welded);
+  EXPECT_EQ(weldWithinSheets(pinched, welded, EdgeTable(weldTriangles(pinched, welded))), welded);
 
   // The surface keeps the squares' shading apart at the corner they touch
   // at: the flat square's normal there is its own, (0, 0, 1), not a blend

@@ -182,30 +182,17 @@ std::vector<Triangle> weldTriangles(
   return welded;
 }
 
-std::vector<Id> weldWithinSheets(
-  const std::vector<Triangle>& triangles, std::vector<Id> vertex, const EdgeTable& weldedTable)
+std::vector<std::size_t> sheetsOf(const std::vector<Triangle>& triangles, const EdgeTable& table)
 {
-  const std::size_t n = vertex.size();
-  bool anyWelded = false;
-  for (std::size_t i = 0; i < n && !anyWelded; ++i)
-  {
-    anyWelded = vertex[i] != static_cast<Id>(i);
-  }
-  if (!anyWelded)
-  {
-    return vertex;
-  }
-  // Sheets: the welded triangles joined across shared sides (a side whose
-  // ends are one vertex joins nothing).
   constexpr Id noTriangle = -1;
-  std::vector<Id> firstAtEdge(weldedTable.edgeCount(), noTriangle);
+  std::vector<Id> firstAtEdge(table.edgeCount(), noTriangle);
   DisjointSets sheets(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
     for (int k = 0; k < 3; ++k)
     {
-      const auto e = static_cast<std::size_t>(weldedTable.sideEdge(static_cast<Id>(t), k));
-      const Edge& edge = weldedTable.edge(static_cast<Id>(e));
+      const auto e = static_cast<std::size_t>(table.sideEdge(static_cast<Id>(t), k));
+      const Edge& edge = table.edge(static_cast<Id>(e));
       if (edge.low == edge.high)
       {
         continue;
@@ -220,13 +207,35 @@ std::vector<Id> weldWithinSheets(
       }
     }
   }
+  std::vector<std::size_t> sheet(triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    sheet[t] = sheets.find(t);
+  }
+  return sheet;
+}
+
+std::vector<Id> weldWithinSheets(
+  const std::vector<Triangle>& triangles, std::vector<Id> vertex, const EdgeTable& weldedTable)
+{
+  const std::size_t n = vertex.size();
+  bool anyWelded = false;
+  for (std::size_t i = 0; i < n && !anyWelded; ++i)
+  {
+    anyWelded = vertex[i] != static_cast<Id>(i);
+  }
+  if (!anyWelded)
+  {
+    return vertex;
+  }
+  const std::vector<std::size_t> sheets = sheetsOf(triangles, weldedTable);
   // Each point's sheet; a group with a point on two sheets stays whole.
   constexpr std::size_t none = static_cast<std::size_t>(-1);
   std::vector<std::size_t> sheetOfPoint(n, none);
   std::vector<unsigned char> keepWhole(n, 0);
   for (std::size_t t = 0; t < triangles.size(); ++t)
   {
-    const std::size_t sheet = sheets.find(t);
+    const std::size_t sheet = sheets[t];
     for (const Id p : triangles[t])
     {
       std::size_t& s = sheetOfPoint[static_cast<std::size_t>(p)];

@@ -29,6 +29,12 @@ constexpr double NormalSeamAngleDegrees = 1.0;
 /// non-finite coordinates are never welded.
 std::vector<Id> weldCoincidentPoints(const std::vector<glm::dvec3>& points, double tolerance = 0.0);
 
+/// Each triangle's sheet: the lowest id among the triangles joined to it
+/// across shared sides of `table` (their edge table; a side whose ends are
+/// one point joins nothing). Parts that only touch at a point are sheets of
+/// their own. O(triangles).
+std::vector<std::size_t> sheetsOf(const std::vector<Triangle>& triangles, const EdgeTable& table);
+
 /// The weld `vertex` (as weldCoincidentPoints gives it) kept within sheets:
 /// points welded together stay one vertex only where their triangles are
 /// joined across sides once welded. Parts that only touch at a point (two

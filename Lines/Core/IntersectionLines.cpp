@@ -1,6 +1,5 @@
 #include "IntersectionLines.h"
 
-#include "DisjointSets.h"
 #include "SurfaceWelding.h"
 #include "TriangleGrid.h"
 #include "TriangleIntersection.h"
@@ -9,8 +8,8 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
+#include <memory>
 #include <tuple>
 #include <utility>
 
@@ -304,7 +303,7 @@ private:
     }
     const Id p = ca[(third + 1) % 3];
     const Id q = ca[(third + 2) % 3];
-    const Id across = this->otherTriangleAt(a, p, q);
+    const Id across = this->otherTriangleAt(a, (third + 1) % 3); // side (p, q)
     if (across < 0 || this->neighboursOnOneSheet(a, b) || this->neighboursOnOneSheet(across, b))
     {
       return false;
@@ -398,51 +397,27 @@ private:
     return true;
   }
 
-  // The triangle other than `a` at side (p, q), when exactly two share it;
-  // -1 otherwise. The table of sides is made when first asked: most
-  // surfaces never ask.
-  Id otherTriangleAt(Id a, Id p, Id q) const
+  // The triangle other than `a` at its side k, when exactly two share it;
+  // -1 otherwise.
+  Id otherTriangleAt(Id a, int k) const
   {
-    this->makeSideTable();
-    const std::array<Id, 3> key{ std::min(p, q), std::max(p, q), Id(-1) };
-    auto at = std::lower_bound(this->SideTriangles.begin(), this->SideTriangles.end(), key);
-    Id other = -1;
-    int count = 0;
-    for (; at != this->SideTriangles.end() && (*at)[0] == key[0] && (*at)[1] == key[1]; ++at)
+    const Topology& topology = this->topology();
+    const auto e = static_cast<std::size_t>(topology.Table.sideEdge(a, k));
+    if (topology.Sides.Count[e] != 2)
     {
-      ++count;
-      if ((*at)[2] != a)
-      {
-        other = (*at)[2];
-      }
+      return -1;
     }
-    return count == 2 ? other : -1;
+    const Id first = topology.Sides.First[e][0] / 3;
+    const Id second = topology.Sides.First[e][1] / 3;
+    const Id other = first == a ? second : first;
+    return other == a ? -1 : other;
   }
 
-  void makeSideTable() const
-  {
-    if (!this->SideTriangles.empty())
-    {
-      return;
-    }
-    for (std::size_t t = 0; t < this->Corners.size(); ++t)
-    {
-      const Triangle& c = this->Corners[t];
-      for (int k = 0; k < 3; ++k)
-      {
-        this->SideTriangles.push_back(
-          { std::min(c[k], c[(k + 1) % 3]), std::max(c[k], c[(k + 1) % 3]), static_cast<Id>(t) });
-      }
-    }
-    std::sort(this->SideTriangles.begin(), this->SideTriangles.end());
-  }
-
-  // Whether a and b share a vertex and lie on one sheet: joined by a path of
-  // triangles across shared sides. Such neighbours are not tested (a
-  // surface that folds onto its neighbour has no curve to draw there); parts
-  // that only touch at a point (two solids with a corner in common, which
-  // welding makes one vertex) are sheets of their own, and where they cross
-  // there the curve is drawn. The sheets are found when first asked.
+  // Whether a and b share a vertex and lie on one sheet (sheetsOf). Such
+  // neighbours are not tested (a surface that folds onto its neighbour has
+  // no curve to draw there); parts that only touch at a point (two solids
+  // with a corner in common, which welding makes one vertex) are sheets of
+  // their own, and where they cross there the curve is drawn.
   bool neighboursOnOneSheet(Id a, Id b) const
   {
     if (!this->shareAVertex(
@@ -450,37 +425,36 @@ private:
     {
       return false;
     }
-    if (this->Sheet.empty())
+    const std::vector<std::size_t>& sheet = this->topology().Sheet;
+    return sheet[static_cast<std::size_t>(a)] == sheet[static_cast<std::size_t>(b)];
+  }
+
+  // The welded triangles' edges, their sides and sheets: made when first
+  // asked (by a pair that passed the geometric tests), which most pairs of
+  // most surfaces never are.
+  struct Topology
+  {
+    EdgeTable Table;
+    EdgeSides Sides;
+    std::vector<std::size_t> Sheet;
+  };
+  const Topology& topology() const
+  {
+    if (!this->Built)
     {
-      this->makeSideTable();
-      DisjointSets sheets(this->Corners.size());
-      for (std::size_t i = 1; i < this->SideTriangles.size(); ++i)
-      {
-        const std::array<Id, 3>& side = this->SideTriangles[i];
-        const std::array<Id, 3>& before = this->SideTriangles[i - 1];
-        if (side[0] != side[1] && side[0] == before[0] && side[1] == before[1])
-        {
-          sheets.unite(static_cast<std::size_t>(side[2]), static_cast<std::size_t>(before[2]));
-        }
-      }
-      this->Sheet.resize(this->Corners.size());
-      for (std::size_t t = 0; t < this->Corners.size(); ++t)
-      {
-        this->Sheet[t] = sheets.find(t);
-      }
+      this->Built = std::make_unique<Topology>();
+      this->Built->Table = EdgeTable(this->Corners);
+      this->Built->Sides = edgeSidesOf(this->Corners, this->Built->Table);
+      this->Built->Sheet = sheetsOf(this->Corners, this->Built->Table);
     }
-    return this->Sheet[static_cast<std::size_t>(a)] == this->Sheet[static_cast<std::size_t>(b)];
+    return *this->Built;
   }
 
   const std::vector<glm::dvec3>& Points;
   std::vector<Id> Welded;
   std::vector<Triangle> Corners;
   std::vector<TriangleShape> Shapes;
-  /// (low, high, triangle) per side of every triangle, sorted; made when
-  /// otherTriangleAt is first asked.
-  mutable std::vector<std::array<Id, 3>> SideTriangles;
-  /// Per triangle, its sheet (neighboursOnOneSheet); made when first asked.
-  mutable std::vector<std::size_t> Sheet;
+  mutable std::unique_ptr<Topology> Built; ///< topology(), when asked
 };
 
 /// Chains segments whose ends share a name: through names that two ends

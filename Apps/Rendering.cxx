@@ -175,6 +175,9 @@ vtkSmartPointer<vtkSilhouetteLineVisibility> MakeVisibleLines(
   // smoothed surface's flat triangles can stand a pixel or two beyond the
   // curve and cut gaps into a drawing's outline (the Wuson's back).
   visible->SetOutlinePixels(1.0);
+  // Where the outline is concave, the surface's front facets can stand
+  // beyond the curve and hide it: their edge is drawn where no line is.
+  visible->SetOutlineGapPixels(1.5);
   // One vertex where the filter made one: with --weld-tolerance, the near
   // copies an exporter left would otherwise cut the surface, and the sliver
   // triangles between them would draw creases.

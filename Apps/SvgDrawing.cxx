@@ -34,6 +34,10 @@ const char* KindName(double kind)
   {
     return "intersection";
   }
+  if (kind == 4.0)
+  {
+    return "outline";
+  }
   return "silhouette";
 }
 

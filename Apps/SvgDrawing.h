@@ -18,7 +18,8 @@ struct DrawnLine
 {
   std::vector<std::array<double, 2>> Points;
   std::vector<double> Depths;
-  std::string Kind; ///< silhouette, crease, border (LineKind 0, 1, 2), or stroke
+  std::string
+    Kind; ///< silhouette, crease, border, intersection, outline (LineKind 0 to 4), or stroke
   bool Hidden = false;
 };
 

@@ -173,14 +173,16 @@ int RequestTessellation(vtkAlgorithm* self, vtkInformationVector** inputVector,
 bool ReportProgress(vtkAlgorithm* self, double fraction);
 
 /// The cell array `LineKind` of the line filters (0 silhouette, 1 crease,
-/// 2 border, 3 where the surface passes through itself: the kinds of a line
-/// drawing), `count` tuples of `kind`.
+/// 2 border, 3 where the surface passes through itself, 4 the surface's own
+/// outline where no other line is drawn: the kinds of a line drawing),
+/// `count` tuples of `kind`.
 enum LineKindValue : unsigned char
 {
   SilhouetteLine = 0,
   CreaseLine = 1,
   BorderLine = 2,
-  IntersectionLine = 3
+  IntersectionLine = 3,
+  OutlineLine = 4
 };
 vtkSmartPointer<vtkUnsignedCharArray> LineKindArray(vtkIdType count, LineKindValue kind);
 

@@ -116,6 +116,25 @@ public:
 
   ///@{
   /**
+   * Closes the gaps a drawing leaves in the surface's outline. Where a
+   * coarse mesh's outline is concave, its silhouette curve can run inside
+   * the outline the surface has (its front facets stand beyond the curve,
+   * up to several pixels), so the curve is hidden and the outline has no
+   * line. With a positive value, the surface's own contour (its edges
+   * between a triangle facing the eye and one facing away) is added where
+   * it is the outline of the surface's image and no visible line of the
+   * output lies within this many pixels: visible pieces of no input cell
+   * (`OriginalCellId` -1), `LineKind` 4 when the input has that array, the
+   * other arrays' values null. Default 0 (off); `silhouette render` uses
+   * 1.5. Negative or NaN values are refused. A positive value makes the
+   * output depend on the viewport's size.
+   */
+  void SetOutlineGapPixels(double pixels);
+  vtkGetMacro(OutlineGapPixels, double);
+  ///@}
+
+  ///@{
+  /**
    * Keep the hidden pieces in the output (flagged 0 in `Visible`). Default on.
    */
   vtkSetMacro(PassHiddenLines, vtkTypeBool);
@@ -137,6 +156,7 @@ protected:
   double Tolerance = 0.0;
   double EdgeTolerance = 0.0;
   double OutlinePixels = 0.0;
+  double OutlineGapPixels = 0.0;
   vtkTypeBool PassHiddenLines = 1;
 
 private:

@@ -347,8 +347,8 @@ double OcclusionMesh::toleranceAt(
     rule.Tolerance, std::max(rule.LocalToleranceFactor * longest, 2.0 * rule.Contact));
 }
 
-std::optional<bool> OcclusionMesh::hiddenOnBothSides(const ViewGeometry& view,
-  const glm::dvec3& point, const glm::dvec3& direction, double pixels, double contact) const
+std::optional<std::array<glm::dvec3, 2>> OcclusionMesh::besidePoints(const ViewGeometry& view,
+  const glm::dvec3& point, const glm::dvec3& direction, double pixels) const
 {
   const glm::dvec3 toward = view.towardViewerFrom(point);
   glm::dvec3 across = glm::cross(toward, direction);
@@ -374,7 +374,36 @@ std::optional<bool> OcclusionMesh::hiddenOnBothSides(const ViewGeometry& view,
     return std::nullopt;
   }
   const glm::dvec3 offset = (pixels * step / pixelsPerStep) * across;
-  return this->hides(view, point + offset, contact) && this->hides(view, point - offset, contact);
+  return std::array<glm::dvec3, 2>{ point + offset, point - offset };
+}
+
+std::optional<bool> OcclusionMesh::hiddenOnBothSides(const ViewGeometry& view,
+  const glm::dvec3& point, const glm::dvec3& direction, double pixels, double contact) const
+{
+  const auto beside = this->besidePoints(view, point, direction, pixels);
+  if (!beside)
+  {
+    return std::nullopt;
+  }
+  return this->hides(view, (*beside)[0], contact) && this->hides(view, (*beside)[1], contact);
+}
+
+bool OcclusionMesh::covers(const ViewGeometry& view, const glm::dvec3& point, double behind) const
+{
+  // From the point `behind` farther along its line of sight, the ray
+  // towards the viewer crosses all of the line that counts.
+  glm::dvec3 away = -view.towardViewerFrom(point);
+  const double length = glm::length(away);
+  if (!(length > 0.0) || !std::isfinite(length))
+  {
+    return false;
+  }
+  // Beyond the surface's box at most: no triangle lies farther.
+  const double reach = std::min(behind,
+    2.0 * glm::length(this->High - this->Low) +
+      glm::length(point - 0.5 * (this->Low + this->High)));
+  const glm::dvec3 start = point + (reach / length) * away;
+  return isFinite(start) && this->hides(view, start, 0.0);
 }
 
 bool OcclusionMesh::nearTheOutline(const ViewGeometry& view, const glm::dvec3& point,
@@ -401,6 +430,63 @@ bool OcclusionMesh::nearTheOutline(const ViewGeometry& view, const glm::dvec3& p
   const std::vector<Id> sheet = this->localSheet(point, under, reach);
   return !this->anyHit(view, point, rule.Contact, reach,
     [&](Id t, double) { return !std::binary_search(sheet.begin(), sheet.end(), t); });
+}
+
+bool OcclusionMesh::besideTheOutline(const ViewGeometry& view, const glm::dvec3& point,
+  const glm::dvec3& direction, double pixels, double behind) const
+{
+  const auto beside = this->besidePoints(view, point, direction, pixels);
+  return beside &&
+    (!this->covers(view, (*beside)[0], behind) || !this->covers(view, (*beside)[1], behind));
+}
+
+std::vector<std::array<Id, 2>> OcclusionMesh::contourEdges(const ViewGeometry& view) const
+{
+  auto vertex = [&](Id corner) {
+    return this->VertexOf[static_cast<std::size_t>(corner)];
+  };
+  auto faces = [&](const Triangle& t) {
+    const glm::dvec3& a = this->Points[static_cast<std::size_t>(t[0])];
+    const glm::dvec3 normal = glm::cross(this->Points[static_cast<std::size_t>(t[1])] - a,
+      this->Points[static_cast<std::size_t>(t[2])] - a);
+    return view.visibility(a, normal) > 0.0;
+  };
+  std::vector<std::array<Id, 2>> edges;
+  for (std::size_t t = 0; t < this->Triangles.size(); ++t)
+  {
+    const Triangle& front = this->Triangles[t];
+    const Triangle corners = { vertex(front[0]), vertex(front[1]), vertex(front[2]) };
+    if (hasRepeatedCorner(corners) || !faces(front))
+    {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k)
+    {
+      const Id u = corners[static_cast<std::size_t>(k)];
+      const Id v = corners[static_cast<std::size_t>((k + 1) % 3)];
+      // The other triangles with both ends: exactly one, facing away.
+      Id across = -1;
+      int others = 0;
+      const auto row = static_cast<std::size_t>(u);
+      for (std::size_t i = this->VertexTriangleOffsets[row];
+           i < this->VertexTriangleOffsets[row + 1] && others < 2; ++i)
+      {
+        const Id other = this->VertexTriangles[i];
+        const Triangle& o = this->Triangles[static_cast<std::size_t>(other)];
+        if (other != static_cast<Id>(t) &&
+          (vertex(o[0]) == v || vertex(o[1]) == v || vertex(o[2]) == v))
+        {
+          across = other;
+          ++others;
+        }
+      }
+      if (others == 1 && !faces(this->Triangles[static_cast<std::size_t>(across)]))
+      {
+        edges.push_back({ u, v });
+      }
+    }
+  }
+  return edges;
 }
 
 bool OcclusionMesh::insideTheOutline(const ViewGeometry& view, const glm::dvec3& point,

@@ -46,6 +46,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -154,6 +155,31 @@ public:
   bool insideTheOutline(const ViewGeometry& view, const glm::dvec3& point,
     const glm::dvec3& direction, const LineVisibilityParameters& rule) const;
 
+  /// Whether the line of sight through a point `pixels` beside `point`, on
+  /// one side or the other across the line along `direction` in the image,
+  /// meets no triangle in front of it or within `behind` behind it: the
+  /// surface's image ends within that distance, or jumps in depth there.
+  /// False when the image gives no such points.
+  bool besideTheOutline(const ViewGeometry& view, const glm::dvec3& point,
+    const glm::dvec3& direction, double pixels, double behind) const;
+
+  /// Whether the line of sight through `point` meets a triangle in front of
+  /// the point or within `behind` behind it (infinity: anywhere behind; the
+  /// surface's image covers the point's pixel).
+  bool covers(const ViewGeometry& view, const glm::dvec3& point, double behind) const;
+
+  /// The surface's contour edges for the view, as pairs of vertices (point
+  /// ids, one per welded vertex): the edges of exactly two triangles, one
+  /// facing the viewer (its corners' winding counter-clockwise seen from
+  /// there) and one not. Each edge once, in the order of its front triangle.
+  std::vector<std::array<Id, 2>> contourEdges(const ViewGeometry& view) const;
+
+  bool empty() const { return this->Triangles.empty(); }
+  const glm::dvec3& position(Id point) const
+  {
+    return this->Points[static_cast<std::size_t>(point)];
+  }
+
   /// How far inside the surface's image (in OutlinePixels) a silhouette its
   /// own sheet exempts may lie and still be drawn. 1.5 measured best on real
   /// meshes (docs/line-drawings.md): 1 lost outline where the smoothed curve
@@ -183,6 +209,11 @@ private:
   /// along `direction` in the image, are hidden by hits farther than
   /// `contact` (the outline rules' test); nullopt when the image gives no
   /// such points (no projection there, or a line along the ray).
+  /// The points `pixels` to both sides of `point`, across the line along
+  /// `direction` in the image, at its depth; nullopt when the image gives
+  /// no such points (no projection there, or a line along the ray).
+  std::optional<std::array<glm::dvec3, 2>> besidePoints(const ViewGeometry& view,
+    const glm::dvec3& point, const glm::dvec3& direction, double pixels) const;
   std::optional<bool> hiddenOnBothSides(const ViewGeometry& view, const glm::dvec3& point,
     const glm::dvec3& direction, double pixels, double contact) const;
   /// The triangles within `contact` of the point: the ones it lies on.

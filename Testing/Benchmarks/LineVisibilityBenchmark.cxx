@@ -29,6 +29,8 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
 #include "vtkFloatArray.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -309,8 +311,8 @@ int main(int argc, char* argv[])
 
   std::printf("| triangles | line points | ray casts ms | depth buffer ms | ray casts wrong | "
               "depth buffer wrong | judged | methods disagree | ray casts, outline rules ms | "
-              "their wrong |\n");
-  std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+              "their wrong | with the gaps' contour ms | gap pieces |\n");
+  std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   // ring x ring / 2 quads: about 1k, 10k and 100k triangles for 320.
   const int largest = options.LargestRing;
   const std::vector<int> rings{ std::max(8, largest / 10), std::max(8, largest * 10 / 32),
@@ -338,6 +340,19 @@ int main(int argc, char* argv[])
     outlined->SetOutlinePixels(1.0);
     outlined->SetViewportSize(options.Width, options.Height);
     const std::vector<double> outlinedTimes = TimeRayCasts(outlined, lines, surface, camera);
+    // And with the surface's contour where the outline has no line within
+    // 1.5 px (OutlineGapPixels), as the program draws since 2026-12-05.
+    vtkNew<vtkSilhouetteLineVisibility> gapped;
+    gapped->SetOutlinePixels(1.0);
+    gapped->SetOutlineGapPixels(1.5);
+    gapped->SetViewportSize(options.Width, options.Height);
+    const std::vector<double> gappedTimes = TimeRayCasts(gapped, lines, surface, camera);
+    vtkDataArray* original = gapped->GetOutput()->GetCellData()->GetArray("OriginalCellId");
+    long gapPieces = 0;
+    for (vtkIdType c = 0; original && c < original->GetNumberOfTuples(); ++c)
+    {
+      gapPieces += original->GetComponent(c, 0) < 0.0 ? 1 : 0;
+    }
     std::vector<unsigned char> bufferVisible;
     const std::vector<double> bufferTimes =
       TimeDepthBuffer(window, renderer, surface, lines, bufferVisible);
@@ -349,12 +364,12 @@ int main(int argc, char* argv[])
     Verdicts unused;
     JudgeAgainstTorus(
       lines, outlined->GetOutput(), bufferVisible, camera->GetPosition(), outlinedVerdicts, unused);
-    std::printf("| %lld | %lld | %.2f | %.2f | %ld | %ld | %ld | %ld | %.2f | %ld |\n",
+    std::printf("| %lld | %lld | %.2f | %.2f | %ld | %ld | %ld | %ld | %.2f | %ld | %.2f | %ld |\n",
       static_cast<long long>(surface->GetNumberOfPolys()),
       static_cast<long long>(lines->GetNumberOfPoints()), benchmark_timing::Median(rayTimes),
       benchmark_timing::Median(bufferTimes), rayVerdicts.Disagree, bufferVerdicts.Disagree,
       rayVerdicts.Agree + rayVerdicts.Disagree, disagree, benchmark_timing::Median(outlinedTimes),
-      outlinedVerdicts.Disagree);
+      outlinedVerdicts.Disagree, benchmark_timing::Median(gappedTimes), gapPieces);
   }
   return EXIT_SUCCESS;
 }

@@ -45,6 +45,13 @@
 // The deliberately wrong variant, PassHiddenLines on (the hidden pieces
 // drawn too), must stray more than the limit on every view.
 //
+// Since 2026-12-05 the program also draws the surface's own contour where
+// the outline has no line within 1.5 px (OutlineGapPixels; where a coarse
+// mesh's outline is concave, its front facets stand beyond the smoothed
+// curve, which they hide): the outline drawn went from the values below to
+// 100% (bunny), 99.9% (spider) and 100% (Wuson), the strays unchanged. The
+// test asks for 99.5% on every view; without that contour five views fall
+// short of it.
 // The program draws with OutlinePixels 1 (a silhouette within a pixel of
 // the surface's outline is drawn; one that its own sheet hides within the
 // tolerance is drawn only within 1.5 px of the outline, or where it dips
@@ -142,6 +149,12 @@ constexpr double CreaseDegrees = 3.0; // and twice the turn on either side
 constexpr double CreaseRatio = 2.0;
 constexpr float Near = 1.5f;          // px, between pixel centres
 constexpr double OutlineDrawn = 0.95; // the target
+// With the surface's contour where no line is drawn (OutlineGapPixels, the
+// program's 1.5): 99.9% to 100% measured on every view.
+constexpr double OutlineDrawnWithGaps = 0.995;
+// Views whose drawing without that contour falls short of it (the wrong
+// variant of the limit above): five measured.
+int ViewsShortWithoutGaps = 0;
 
 bool Fail(const char* what)
 {
@@ -511,6 +524,7 @@ bool CheckMesh(const std::string& file, const Case (&views)[2], vtkRenderWindow*
     visibility->SetRenderer(renderer);
     visibility->PassHiddenLinesOff();
     visibility->SetOutlinePixels(1.0);
+    visibility->SetOutlineGapPixels(1.5);
     visibility->Update();
     vtkPolyData* surface = smoothing->GetOutput(0);
     CHECK(surface->GetPointData()->GetNormals(), "the smoothed surface has point normals");
@@ -546,12 +560,18 @@ bool CheckMesh(const std::string& file, const Case (&views)[2], vtkRenderWindow*
     const auto [drawnShare, outlinePixels] = outlineDrawn(toLine);
     // For comparison, exact visibility (OutlinePixels 0): a smoothed
     // surface standing beyond its silhouette then cuts gaps into the outline.
+    auto drawnShareNow = [&]() {
+      return outlineDrawn(
+        silhouette_eval::DistanceTransform(
+          RenderLines(window, renderer, visibility->GetOutputPort()).Dark, Width, Height))
+        .first;
+    };
+    visibility->SetOutlineGapPixels(0.0);
+    const double ungappedDrawnShare = drawnShareNow();
     visibility->SetOutlinePixels(0.0);
-    const double exactDrawnShare = outlineDrawn(
-      silhouette_eval::DistanceTransform(
-        RenderLines(window, renderer, visibility->GetOutputPort()).Dark, Width, Height))
-                                     .first;
+    const double exactDrawnShare = drawnShareNow();
     visibility->SetOutlinePixels(1.0);
+    visibility->SetOutlineGapPixels(1.5);
 
     // The wrong variant: the hidden pieces drawn too.
     visibility->PassHiddenLinesOn();
@@ -559,12 +579,13 @@ bool CheckMesh(const std::string& file, const Case (&views)[2], vtkRenderWindow*
     const Strays wrong = CountStrays(wrongDrawing, toDiscontinuity);
 
     std::printf("%s %s: strays %ld of %ld line px (%.2f%%, farthest %.1f px; limit %ld), "
-                "outline drawn %.1f%% of %ld px (exact visibility: %.1f%%); wrong variant strays "
-                "%ld of %ld (%.1f%%)\n",
+                "outline drawn %.1f%% of %ld px (without the gaps' contour: %.1f%%, exact "
+                "visibility: %.1f%%); wrong variant strays %ld of %ld (%.1f%%)\n",
       name.c_str(), view.Label, strays.Count, strays.Lines,
       strays.Lines > 0 ? 100.0 * strays.Count / strays.Lines : 0.0, strays.Farthest,
-      view.StrayLimit, 100.0 * drawnShare, outlinePixels, 100.0 * exactDrawnShare, wrong.Count,
-      wrong.Lines, wrong.Lines > 0 ? 100.0 * wrong.Count / wrong.Lines : 0.0);
+      view.StrayLimit, 100.0 * drawnShare, outlinePixels, 100.0 * ungappedDrawnShare,
+      100.0 * exactDrawnShare, wrong.Count, wrong.Lines,
+      wrong.Lines > 0 ? 100.0 * wrong.Count / wrong.Lines : 0.0);
     PrintClusters(strays, toDiscontinuity, drawing, reference, diagonal);
     if (!temporary.empty())
     {
@@ -586,6 +607,11 @@ bool CheckMesh(const std::string& file, const Case (&views)[2], vtkRenderWindow*
     {
       ok = Fail("at least 95% of the outline drawn");
     }
+    if (drawnShare < OutlineDrawnWithGaps)
+    {
+      ok = Fail("at least 99.5% of the outline drawn with the gaps' contour");
+    }
+    ViewsShortWithoutGaps += ungappedDrawnShare < OutlineDrawnWithGaps ? 1 : 0;
     if (wrong.Count <= view.StrayLimit)
     {
       ok = Fail("the wrong variant (hidden lines drawn) fails the view's stray limit");
@@ -638,5 +664,11 @@ int TestLineDrawingAccuracy(int argc, char* argv[])
   ok = CheckMesh(silhouette_test::DataFile(argc, argv, "bracket.stl"), bracket, window, renderer,
          temporary) &&
     ok;
+  std::printf("views whose outline falls short of %.1f%% without the gaps' contour: %d\n",
+    100.0 * OutlineDrawnWithGaps, ViewsShortWithoutGaps);
+  if (ViewsShortWithoutGaps < 3)
+  {
+    ok = Fail("without the gaps' contour, at least three views fall short of 99.5% drawn");
+  }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

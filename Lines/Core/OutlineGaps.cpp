@@ -1,0 +1,276 @@
+#include "OutlineGaps.h"
+
+#include "SilhouettePolylines.h"
+
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <unordered_map>
+
+namespace silsmooth
+{
+
+namespace
+{
+
+/// The drawn lines' segments in pixels, filed by the square cells of the
+/// viewport (widened by a cell) their boxes meet, to ask whether any passes
+/// within a distance of a pixel.
+class DrawnSegments
+{
+public:
+  DrawnSegments(
+    const ViewGeometry& view, const std::vector<std::vector<glm::dvec3>>& drawn, double radius)
+    : Cell(std::max(4.0 * radius, 8.0))
+    , Columns(static_cast<std::int64_t>(std::ceil(view.ViewportWidth / this->Cell)) + 2)
+    , Rows(static_cast<std::int64_t>(std::ceil(view.ViewportHeight / this->Cell)) + 2)
+  {
+    for (const std::vector<glm::dvec3>& line : drawn)
+    {
+      glm::dvec2 previous;
+      bool havePrevious = false;
+      for (const glm::dvec3& point : line)
+      {
+        glm::dvec2 pixel;
+        const bool projected = view.toPixels(point, pixel);
+        if (projected && havePrevious)
+        {
+          this->file(previous, pixel);
+        }
+        previous = pixel;
+        havePrevious = projected;
+      }
+    }
+  }
+
+  bool anyWithin(const glm::dvec2& pixel, double radius) const
+  {
+    const std::int64_t c0 = this->column(pixel.x - radius);
+    const std::int64_t c1 = this->column(pixel.x + radius);
+    const std::int64_t r0 = this->row(pixel.y - radius);
+    const std::int64_t r1 = this->row(pixel.y + radius);
+    for (std::int64_t r = r0; r <= r1; ++r)
+    {
+      for (std::int64_t c = c0; c <= c1; ++c)
+      {
+        const auto found = this->Filed.find(r * this->Columns + c);
+        if (found == this->Filed.end())
+        {
+          continue;
+        }
+        for (const std::size_t s : found->second)
+        {
+          if (distanceToSegment(pixel, this->Segments[s][0], this->Segments[s][1]) <= radius)
+          {
+            return true;
+          }
+        }
+      }
+    }
+    return false;
+  }
+
+private:
+  static double distanceToSegment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b)
+  {
+    const glm::dvec2 ab = b - a;
+    const double squared = glm::dot(ab, ab);
+    const double along = squared > 0.0 ? std::clamp(glm::dot(p - a, ab) / squared, 0.0, 1.0) : 0.0;
+    return glm::length(p - (a + along * ab));
+  }
+
+  /// Cells of the viewport widened by one cell; beyond, the border cells
+  /// (a segment or point out there is filed or looked for at the border).
+  std::int64_t column(double x) const
+  {
+    const double c = std::floor(x / this->Cell) + 1.0;
+    return static_cast<std::int64_t>(std::clamp(c, 0.0, static_cast<double>(this->Columns - 1)));
+  }
+  std::int64_t row(double y) const
+  {
+    const double r = std::floor(y / this->Cell) + 1.0;
+    return static_cast<std::int64_t>(std::clamp(r, 0.0, static_cast<double>(this->Rows - 1)));
+  }
+
+  void file(const glm::dvec2& a, const glm::dvec2& b)
+  {
+    if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y))
+    {
+      return;
+    }
+    const std::size_t index = this->Segments.size();
+    this->Segments.push_back({ a, b });
+    // By the segment's box, clamped to the widened viewport: a long
+    // diagonal is filed in more cells than it passes, never fewer.
+    for (std::int64_t r = this->row(std::min(a.y, b.y)); r <= this->row(std::max(a.y, b.y)); ++r)
+    {
+      for (std::int64_t c = this->column(std::min(a.x, b.x)); c <= this->column(std::max(a.x, b.x));
+           ++c)
+      {
+        this->Filed[r * this->Columns + c].push_back(index);
+      }
+    }
+  }
+
+  double Cell;
+  std::int64_t Columns;
+  std::int64_t Rows;
+  std::vector<std::array<glm::dvec2, 2>> Segments;
+  std::unordered_map<std::int64_t, std::vector<std::size_t>> Filed;
+};
+
+/// The stretches of `polyline` where `holds(point, direction)` is true, at
+/// probes at most `spacing` apart along each segment, their ends located by
+/// bisection to within `precision`.
+template<typename Holds>
+std::vector<std::vector<glm::dvec3>> stretchesWhere(
+  const std::vector<glm::dvec3>& polyline, double spacing, double precision, Holds holds)
+{
+  std::vector<std::vector<glm::dvec3>> stretches;
+  if (polyline.size() < 2)
+  {
+    return stretches;
+  }
+  std::vector<glm::dvec3> current;
+  bool inside = holds(polyline[0], polyline[1] - polyline[0]);
+  if (inside)
+  {
+    current.push_back(polyline[0]);
+  }
+  for (std::size_t i = 1; i < polyline.size(); ++i)
+  {
+    const glm::dvec3& a = polyline[i - 1];
+    const glm::dvec3& b = polyline[i];
+    const glm::dvec3 direction = b - a;
+    const double length = glm::length(direction);
+    const double wanted =
+      spacing > 0.0 && std::isfinite(length) ? std::ceil(length / spacing) : 1.0;
+    const int probes = static_cast<int>(std::clamp(wanted, 1.0, 100000.0));
+    double before = 0.0; // the last probe, in the current state
+    for (int k = 1; k <= probes; ++k)
+    {
+      const double at = k == probes ? 1.0 : static_cast<double>(k) / probes;
+      const bool state = holds(k == probes ? b : a + at * direction, direction);
+      if (state != inside)
+      {
+        double low = before; // keeps the current state
+        double high = at;
+        for (int step = 0; step < 64 && (high - low) * length > precision; ++step)
+        {
+          const double middle = 0.5 * (low + high);
+          (holds(a + middle * direction, direction) == inside ? low : high) = middle;
+        }
+        const glm::dvec3 change = a + (0.5 * (low + high)) * direction;
+        current.push_back(change);
+        if (inside)
+        {
+          stretches.push_back(std::move(current));
+          current.clear();
+        }
+        inside = state;
+      }
+      before = at;
+    }
+    if (inside)
+    {
+      current.push_back(b);
+    }
+  }
+  if (inside && current.size() > 1)
+  {
+    // A closed loop's stretch through its first point is one stretch.
+    if (polyline.front() == polyline.back() && !stretches.empty() &&
+      stretches.front().front() == polyline.front())
+    {
+      current.insert(current.end(), stretches.front().begin() + 1, stretches.front().end());
+      stretches.front() = std::move(current);
+    }
+    else
+    {
+      stretches.push_back(std::move(current));
+    }
+  }
+  return stretches;
+}
+
+double pixelLength(const std::vector<glm::dvec3>& line, const ViewGeometry& view)
+{
+  double length = 0.0;
+  glm::dvec2 previous;
+  bool havePrevious = false;
+  for (const glm::dvec3& point : line)
+  {
+    glm::dvec2 pixel;
+    const bool projected = view.toPixels(point, pixel);
+    if (projected && havePrevious)
+    {
+      length += glm::length(pixel - previous);
+    }
+    previous = pixel;
+    havePrevious = projected;
+  }
+  return length;
+}
+
+} // namespace
+
+std::vector<std::vector<glm::dvec3>> contourPolylines(
+  const OcclusionMesh& surface, const ViewGeometry& view)
+{
+  std::vector<std::vector<Id>> segments;
+  for (const std::array<Id, 2>& edge : surface.contourEdges(view))
+  {
+    segments.push_back({ edge[0], edge[1] });
+  }
+  std::vector<std::vector<glm::dvec3>> polylines;
+  for (const std::vector<Id>& chain : chainSegments(segments))
+  {
+    std::vector<glm::dvec3>& polyline = polylines.emplace_back();
+    polyline.reserve(chain.size());
+    for (const Id point : chain)
+    {
+      polyline.push_back(surface.position(point));
+    }
+  }
+  return polylines;
+}
+
+std::vector<std::vector<glm::dvec3>> outlineGaps(const OcclusionMesh& surface,
+  const ViewGeometry& view, const std::vector<std::vector<glm::dvec3>>& drawn,
+  const OutlineGapParameters& parameters)
+{
+  std::vector<std::vector<glm::dvec3>> gaps;
+  if (!(parameters.GapPixels > 0.0) || !(parameters.BesidePixels > 0.0))
+  {
+    return gaps;
+  }
+  const DrawnSegments drawnSegments(view, drawn, parameters.GapPixels);
+  const LineVisibilityParameters& rule = parameters.Visibility;
+  // Cheapest first: the image's drawn lines, then the rays.
+  auto inGap = [&](const glm::dvec3& point, const glm::dvec3& direction) {
+    glm::dvec2 pixel;
+    return view.toPixels(point, pixel) && pixel.x >= 0.0 && pixel.y >= 0.0 &&
+      pixel.x <= view.ViewportWidth && pixel.y <= view.ViewportHeight &&
+      !drawnSegments.anyWithin(pixel, parameters.GapPixels) &&
+      surface.occlusion(view, point, rule) != OcclusionMesh::Occlusion::Hidden &&
+      surface.besideTheOutline(
+        view, point, direction, parameters.BesidePixels, parameters.DepthJump);
+  };
+  for (const std::vector<glm::dvec3>& contour : contourPolylines(surface, view))
+  {
+    for (std::vector<glm::dvec3>& gap :
+      stretchesWhere(contour, rule.SampleSpacing, rule.Precision, inGap))
+    {
+      if (pixelLength(gap, view) >= parameters.GapPixels)
+      {
+        gaps.push_back(std::move(gap));
+      }
+    }
+  }
+  return gaps;
+}
+
+} // namespace silsmooth

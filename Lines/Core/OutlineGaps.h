@@ -1,0 +1,67 @@
+// Gaps in a line drawing's outline (issue 16), closed with the surface's own
+// contour.
+//
+// Where the mesh's outline is concave (a spider's waist seen from above),
+// its smoothed silhouette curve can run inside the outline the surface
+// actually has: the vertices next to the curve face the eye, so the method
+// re-meshes the triangles beyond them and leaves their front facets, whose
+// edge stays the outline, standing up to 10 pixels beyond the curve. The
+// curve is then rightly hidden, and the drawing has no line where the
+// shaded image has its outline. The same happens with the face-based
+// silhouette of an unsmoothed mesh.
+//
+// The surface's contour for a view: its edges between a triangle facing the
+// viewer and one facing away (joined as OcclusionMesh joins them; an edge of
+// more or fewer than two triangles is not one). A contour point is on the
+// outline when it is visible and the line of sight through a point
+// BesidePixels beside it, across the edge in the image, meets no triangle in
+// front of it nor within DepthJump behind it: the surface's image ends
+// there, or jumps in depth (a fold of the re-meshing with the surface just
+// behind it is not the outline). A gap is a stretch of outline with no drawn
+// line within GapPixels in the image.
+//
+// Invariants: every point of a gap lies on a contour edge of the surface
+// (so on the surface), and is at least GapPixels from every drawn segment
+// at the probes that classified it; gaps shorter than GapPixels in the
+// image are left out (a drawn line's end meets the outline there).
+#pragma once
+
+#include "LineVisibility.h"
+
+#include <glm/vec3.hpp>
+
+#include <limits>
+#include <vector>
+
+namespace silsmooth
+{
+
+struct OutlineGapParameters
+{
+  /// Outline farther than this from every drawn line, in pixels, is a gap.
+  double GapPixels = 1.5;
+  /// A contour point is on the outline when the line of sight through a
+  /// point this many pixels beside it meets no triangle in front of that
+  /// point nor within DepthJump behind it.
+  double DepthJump = std::numeric_limits<double>::infinity();
+  /// How far beside the contour that point is, in pixels.
+  double BesidePixels = 1.0;
+  /// Whether a contour point is visible, and how finely gaps are found: the
+  /// rule for lines lying on the surface exactly (creases), whose
+  /// SampleSpacing and Precision also place the probes and the gaps' ends.
+  LineVisibilityParameters Visibility;
+};
+
+/// The surface's contour for the view, chained into polylines (a closed
+/// loop repeats its first point).
+std::vector<std::vector<glm::dvec3>> contourPolylines(
+  const OcclusionMesh& surface, const ViewGeometry& view);
+
+/// The stretches of the surface's outline farther than GapPixels from every
+/// segment of the `drawn` polylines (model coordinates, projected with the
+/// view), as polylines along the contour.
+std::vector<std::vector<glm::dvec3>> outlineGaps(const OcclusionMesh& surface,
+  const ViewGeometry& view, const std::vector<std::vector<glm::dvec3>>& drawn,
+  const OutlineGapParameters& parameters);
+
+} // namespace silsmooth

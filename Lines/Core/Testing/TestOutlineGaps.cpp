@@ -1,0 +1,195 @@
+// Gaps in a drawing's outline closed with the surface's contour
+// (Lines/Core/OutlineGaps.h), on scenes whose answers are exact: a cube's
+// outline hexagon, drawn or not, and a fold whose contour has the surface
+// just behind it.
+#include "OutlineGaps.h"
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace silsmooth;
+
+namespace
+{
+
+// A parallel view along -toward on a 1000 x 1000 viewport, 100 pixels per
+// unit, its image consistent with its lines of sight.
+ViewGeometry parallelView(const glm::dvec3& toward)
+{
+  ViewGeometry view;
+  view.Parallel = true;
+  view.TowardViewer = glm::normalize(toward);
+  view.ViewportWidth = view.ViewportHeight = 1000;
+  const glm::dvec3 up =
+    std::abs(view.TowardViewer.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+  view.ModelToClip = glm::scale(glm::dmat4(1.0), glm::dvec3(0.2)) *
+    glm::lookAt(5.0 * view.TowardViewer, glm::dvec3(0.0), up);
+  return view;
+}
+
+OutlineGapParameters gapRule()
+{
+  OutlineGapParameters parameters;
+  parameters.Visibility.Tolerance = 1e-9;
+  parameters.Visibility.Contact = 1e-10;
+  parameters.Visibility.Precision = 1e-9;
+  parameters.Visibility.SampleSpacing = 0.01;
+  return parameters;
+}
+
+double length(const std::vector<std::vector<glm::dvec3>>& lines)
+{
+  double total = 0.0;
+  for (const std::vector<glm::dvec3>& line : lines)
+  {
+    for (std::size_t i = 1; i < line.size(); ++i)
+    {
+      total += glm::length(line[i] - line[i - 1]);
+    }
+  }
+  return total;
+}
+
+// The cube [-1, 1]^3, outward.
+OcclusionMesh cube()
+{
+  const std::vector<glm::dvec3> points{ { -1, -1, -1 }, { 1, -1, -1 }, { 1, 1, -1 }, { -1, 1, -1 },
+    { -1, -1, 1 }, { 1, -1, 1 }, { 1, 1, 1 }, { -1, 1, 1 } };
+  const std::vector<Triangle> triangles{ { { 0, 2, 1 } }, { { 0, 3, 2 } }, { { 4, 5, 6 } },
+    { { 4, 6, 7 } }, { { 0, 1, 5 } }, { { 0, 5, 4 } }, { { 1, 2, 6 } }, { { 1, 6, 5 } },
+    { { 2, 3, 7 } }, { { 2, 7, 6 } }, { { 3, 0, 4 } }, { { 3, 4, 7 } } };
+  return OcclusionMesh(points, triangles);
+}
+
+const glm::dvec3 Generic(1.0, 0.8, 0.6);
+
+// The hexagon moved `pixels` towards its centre in the image (parallel:
+// along the image plane, which holds the centre's line of sight).
+std::vector<glm::dvec3> shrunk(const std::vector<glm::dvec3>& loop, double pixels)
+{
+  const glm::dvec3 toward = glm::normalize(Generic);
+  std::vector<glm::dvec3> moved;
+  for (const glm::dvec3& p : loop)
+  {
+    const glm::dvec3 inPlane = p - glm::dot(p, toward) * toward; // from the centre's sight line
+    moved.push_back(p - (0.01 * pixels / glm::length(inPlane)) * inPlane);
+  }
+  return moved;
+}
+
+} // namespace
+
+TEST(OutlineGaps, ACubesContourIsItsOutlineHexagon)
+{
+  // Three faces face the viewer: the contour is the six edges between them
+  // and the three facing away, one closed loop through the six corners
+  // that are neither the nearest nor the farthest.
+  const OcclusionMesh surface = cube();
+  const std::vector<std::vector<glm::dvec3>> contour =
+    contourPolylines(surface, parallelView(Generic));
+  ASSERT_EQ(contour.size(), 1u);
+  ASSERT_EQ(contour[0].size(), 7u);
+  EXPECT_EQ(contour[0].front(), contour[0].back());
+  for (const glm::dvec3& corner : contour[0])
+  {
+    EXPECT_NE(corner, glm::dvec3(1, 1, 1));
+    EXPECT_NE(corner, glm::dvec3(-1, -1, -1));
+  }
+  EXPECT_DOUBLE_EQ(length(contour), 12.0);
+}
+
+TEST(OutlineGaps, AnUndrawnOutlineIsOneGapAndADrawnOneNone)
+{
+  const OcclusionMesh surface = cube();
+  const ViewGeometry view = parallelView(Generic);
+  const std::vector<glm::dvec3> hexagon = contourPolylines(surface, view)[0];
+  const OutlineGapParameters rule = gapRule();
+
+  // Nothing drawn: the whole hexagon, as one loop.
+  const std::vector<std::vector<glm::dvec3>> whole = outlineGaps(surface, view, {}, rule);
+  ASSERT_EQ(whole.size(), 1u);
+  EXPECT_NEAR(length(whole), 12.0, 1e-6);
+
+  // Drawn on the outline, or a pixel inside it: no gap.
+  EXPECT_TRUE(outlineGaps(surface, view, { hexagon }, rule).empty());
+  EXPECT_TRUE(outlineGaps(surface, view, { shrunk(hexagon, 1.0) }, rule).empty());
+
+  // Three pixels inside it: the hexagon is a gap all round.
+  EXPECT_NEAR(length(outlineGaps(surface, view, { shrunk(hexagon, 3.0) }, rule)), 12.0, 1e-6);
+
+  // The wrong variant: with half a pixel allowed, the line a pixel inside
+  // leaves the whole outline open.
+  OutlineGapParameters narrow = rule;
+  narrow.GapPixels = 0.5;
+  EXPECT_NEAR(length(outlineGaps(surface, view, { shrunk(hexagon, 1.0) }, narrow)), 12.0, 1e-6);
+}
+
+TEST(OutlineGaps, AFoldWithTheSurfaceJustBehindIsNoOutline)
+{
+  // Seen from +z: a strip A facing the viewer (z = 0, y from 0 to 1), a
+  // strip B folding back under it from its edge y = 0 (to y = 0.5, z =
+  // -0.1, facing away) and a strip C facing the viewer again (z = -0.1,
+  // y from 0.5 down to -1). Contour edges: A-B at y = 0, visible, with C
+  // 0.1 behind it on its open side; and B-C at y = 0.5, hidden behind A.
+  const std::vector<glm::dvec3> points{ { -1, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { -1, 1, 0 },
+    { -1, 0.5, -0.1 }, { 1, 0.5, -0.1 }, { 1, -1, -0.1 }, { -1, -1, -0.1 } };
+  const std::vector<Triangle> triangles{ { { 0, 1, 2 } }, { { 0, 2, 3 } }, // A, facing +z
+    { { 0, 4, 5 } }, { { 0, 5, 1 } },                                      // B, facing -z
+    { { 4, 7, 6 } }, { { 4, 6, 5 } } };                                    // C, facing +z
+  const OcclusionMesh surface(points, triangles);
+  const ViewGeometry view = parallelView(glm::dvec3(0, 0, 1));
+  const std::vector<std::vector<glm::dvec3>> contour = contourPolylines(surface, view);
+  ASSERT_EQ(contour.size(), 2u);
+  EXPECT_DOUBLE_EQ(length(contour), 4.0);
+
+  // C covers the fold's open side: no outline, so no gap.
+  OutlineGapParameters rule = gapRule();
+  EXPECT_TRUE(outlineGaps(surface, view, {}, rule).empty());
+
+  // Counting only what lies within 0.05 behind, the fold is a depth jump:
+  // its whole edge is a gap, and the hidden B-C edge is not.
+  rule.DepthJump = 0.05;
+  const std::vector<std::vector<glm::dvec3>> gaps = outlineGaps(surface, view, {}, rule);
+  ASSERT_EQ(gaps.size(), 1u);
+  EXPECT_NEAR(length(gaps), 2.0, 1e-6);
+  for (const glm::dvec3& p : gaps[0])
+  {
+    EXPECT_EQ(p.y, 0.0);
+    EXPECT_EQ(p.z, 0.0);
+  }
+}
+
+TEST(OutlineGaps, OutlineBehindAnOccluderIsNoGap)
+{
+  // A strip 0.1 wide, facing the viewer, 2 in front of the middle of one
+  // of the hexagon's edges, reaching 0.3 px beyond it: that much of the
+  // edge is hidden, though the image a pixel beside it is open outside.
+  const ViewGeometry view = parallelView(Generic);
+  const std::vector<glm::dvec3> hexagon = contourPolylines(cube(), view)[0];
+  const glm::dvec3 toward = view.TowardViewer;
+  const glm::dvec3 along = glm::normalize(hexagon[1] - hexagon[0]);
+  const glm::dvec3 across = glm::cross(toward, along);
+  const glm::dvec3 middle = 0.5 * (hexagon[0] + hexagon[1]) + 2.0 * toward;
+  std::vector<glm::dvec3> points{ { -1, -1, -1 }, { 1, -1, -1 }, { 1, 1, -1 }, { -1, 1, -1 },
+    { -1, -1, 1 }, { 1, -1, 1 }, { 1, 1, 1 }, { -1, 1, 1 } };
+  std::vector<Triangle> triangles{ { { 0, 2, 1 } }, { { 0, 3, 2 } }, { { 4, 5, 6 } },
+    { { 4, 6, 7 } }, { { 0, 1, 5 } }, { { 0, 5, 4 } }, { { 1, 2, 6 } }, { { 1, 6, 5 } },
+    { { 2, 3, 7 } }, { { 2, 7, 6 } }, { { 3, 0, 4 } }, { { 3, 4, 7 } } };
+  const glm::dvec3 edgeMiddle = 0.5 * (hexagon[0] + hexagon[1]);
+  const glm::dvec3 inward = glm::dot(toward, edgeMiddle) * toward - edgeMiddle;
+  const double in = glm::dot(inward, across) > 0.0 ? 1.0 : -1.0;
+  for (const double a : { -0.05, 0.05 })
+  {
+    for (const double b : { -0.003, 0.3 })
+    {
+      points.push_back(middle + a * along + (in * b) * across);
+    }
+  }
+  triangles.push_back({ { 8, 10, 11 } });
+  triangles.push_back({ { 8, 11, 9 } });
+  const OcclusionMesh surface(points, triangles);
+  EXPECT_NEAR(length(outlineGaps(surface, view, {}, gapRule())), 11.9, 1e-6);
+}

@@ -16,6 +16,27 @@ namespace silsmooth
 namespace
 {
 
+/// Calls segment(a, b) with each segment of `line` in pixels whose ends both
+/// project (ViewGeometry::toPixels).
+template<typename Segment>
+void forEachPixelSegment(
+  const std::vector<glm::dvec3>& line, const ViewGeometry& view, Segment segment)
+{
+  glm::dvec2 previous;
+  bool havePrevious = false;
+  for (const glm::dvec3& point : line)
+  {
+    glm::dvec2 pixel;
+    const bool projected = view.toPixels(point, pixel);
+    if (projected && havePrevious)
+    {
+      segment(previous, pixel);
+    }
+    previous = pixel;
+    havePrevious = projected;
+  }
+}
+
 /// The drawn lines' segments in pixels, filed by the square cells of the
 /// viewport (widened by a cell) their boxes meet, to ask whether any passes
 /// within a distance of a pixel.
@@ -30,19 +51,8 @@ public:
   {
     for (const std::vector<glm::dvec3>& line : drawn)
     {
-      glm::dvec2 previous;
-      bool havePrevious = false;
-      for (const glm::dvec3& point : line)
-      {
-        glm::dvec2 pixel;
-        const bool projected = view.toPixels(point, pixel);
-        if (projected && havePrevious)
-        {
-          this->file(previous, pixel);
-        }
-        previous = pixel;
-        havePrevious = projected;
-      }
+      forEachPixelSegment(
+        line, view, [this](const glm::dvec2& a, const glm::dvec2& b) { this->file(a, b); });
     }
   }
 
@@ -199,19 +209,8 @@ std::vector<std::vector<glm::dvec3>> stretchesWhere(
 double pixelLength(const std::vector<glm::dvec3>& line, const ViewGeometry& view)
 {
   double length = 0.0;
-  glm::dvec2 previous;
-  bool havePrevious = false;
-  for (const glm::dvec3& point : line)
-  {
-    glm::dvec2 pixel;
-    const bool projected = view.toPixels(point, pixel);
-    if (projected && havePrevious)
-    {
-      length += glm::length(pixel - previous);
-    }
-    previous = pixel;
-    havePrevious = projected;
-  }
+  forEachPixelSegment(
+    line, view, [&](const glm::dvec2& a, const glm::dvec2& b) { length += glm::length(b - a); });
   return length;
 }
 

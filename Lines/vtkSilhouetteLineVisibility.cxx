@@ -19,6 +19,7 @@
 #include "OutlineGaps.h"
 #include "vtkSilhouetteFilterSupport.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <sstream>
@@ -370,6 +371,7 @@ int vtkSilhouetteLineVisibility::RequestViewData(vtkInformation*,
     // the lines that lie on it exactly.
     silsmooth::OutlineGapParameters gapParameters;
     gapParameters.GapPixels = this->OutlineGapPixels;
+    gapParameters.JoinPixels = std::min(1.5, this->OutlineGapPixels);
     // A part two tolerances (mean edges) or more behind the contour leaves
     // it an outline (a depth jump); the re-meshing's own folds lie nearer.
     // One tolerance drew 5 and 14 more stray pixels on the Wuson's views of

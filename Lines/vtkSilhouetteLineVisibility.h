@@ -122,12 +122,16 @@ public:
    * up to several pixels), so the curve is hidden and the outline has no
    * line. With a positive value, the surface's own contour (its edges
    * between a triangle facing the eye and one facing away) is added where
-   * it is the outline of the surface's image and no visible line of the
-   * output lies within this many pixels: visible pieces of no input cell
+   * it is the outline of the surface's image (the image ends beside it, or
+   * jumps in depth by two tolerances) and no visible line of the output
+   * covers it: none passes within 1.5 px of it (or this value, when less),
+   * nor beside it within this many pixels (its nearest point not an end of
+   * the line: a contour alongside a drawn silhouette would double the
+   * stroke). Added pieces are visible pieces of no input cell
    * (`OriginalCellId` -1), `LineKind` 4 when the input has that array, the
-   * other arrays' values null. Default 0 (off); `silhouette render` uses
-   * 1.5. Negative or NaN values are refused. A positive value makes the
-   * output depend on the viewport's size.
+   * other arrays' values null. Default 0 (off); `silhouette render` uses 3.
+   * Negative or NaN values are refused. A positive value makes the output
+   * depend on the viewport's size.
    */
   void SetOutlineGapPixels(double pixels);
   vtkGetMacro(OutlineGapPixels, double);

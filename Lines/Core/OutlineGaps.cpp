@@ -38,8 +38,8 @@ void forEachPixelSegment(
 }
 
 /// The drawn lines' segments in pixels, filed by the square cells of the
-/// viewport (widened by a cell) their boxes meet, to ask whether any passes
-/// within a distance of a pixel.
+/// viewport (widened by a cell) their boxes meet, to ask whether a drawn
+/// line covers a pixel (covers).
 class DrawnSegments
 {
 public:
@@ -51,13 +51,31 @@ public:
   {
     for (const std::vector<glm::dvec3>& line : drawn)
     {
-      forEachPixelSegment(
-        line, view, [this](const glm::dvec2& a, const glm::dvec2& b) { this->file(a, b); });
+      const std::size_t n = line.size();
+      const bool closed = n > 2 && line.front() == line.back();
+      glm::dvec2 previous;
+      bool havePrevious = false;
+      for (std::size_t i = 0; i < n; ++i)
+      {
+        glm::dvec2 pixel;
+        const bool projected = view.toPixels(line[i], pixel);
+        if (projected && havePrevious)
+        {
+          this->file({ previous, pixel, !closed && i == 1, !closed && i + 1 == n });
+        }
+        previous = pixel;
+        havePrevious = projected;
+      }
     }
   }
 
-  bool anyWithin(const glm::dvec2& pixel, double radius) const
+  /// Whether a drawn line covers `pixel`: some drawn point lies within
+  /// `join` of it, or a drawn line passes beside it within `beside`, its
+  /// nearest point not an end of the line (a line alongside, not the end of
+  /// one that stops short).
+  bool covers(const glm::dvec2& pixel, double join, double beside) const
   {
+    const double radius = std::max(join, beside);
     const std::int64_t c0 = this->column(pixel.x - radius);
     const std::int64_t c1 = this->column(pixel.x + radius);
     const std::int64_t r0 = this->row(pixel.y - radius);
@@ -73,7 +91,15 @@ public:
         }
         for (const std::size_t s : found->second)
         {
-          if (distanceToSegment(pixel, this->Segments[s][0], this->Segments[s][1]) <= radius)
+          const Segment& segment = this->Segments[s];
+          const glm::dvec2 ab = segment.B - segment.A;
+          const double squared = glm::dot(ab, ab);
+          const double along =
+            squared > 0.0 ? std::clamp(glm::dot(pixel - segment.A, ab) / squared, 0.0, 1.0) : 0.0;
+          const double distance = glm::length(pixel - (segment.A + along * ab));
+          const bool atAnEnd =
+            (along <= 0.0 && segment.StartsLine) || (along >= 1.0 && segment.EndsLine);
+          if (distance <= join || (distance <= beside && !atAnEnd))
           {
             return true;
           }
@@ -84,13 +110,13 @@ public:
   }
 
 private:
-  static double distanceToSegment(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b)
+  struct Segment
   {
-    const glm::dvec2 ab = b - a;
-    const double squared = glm::dot(ab, ab);
-    const double along = squared > 0.0 ? std::clamp(glm::dot(p - a, ab) / squared, 0.0, 1.0) : 0.0;
-    return glm::length(p - (a + along * ab));
-  }
+    glm::dvec2 A;
+    glm::dvec2 B;
+    bool StartsLine; ///< A is the first point of an open drawn line
+    bool EndsLine;   ///< B is its last
+  };
 
   /// Cells of the viewport widened by one cell; beyond, the border cells
   /// (a segment or point out there is filed or looked for at the border).
@@ -105,14 +131,16 @@ private:
     return static_cast<std::int64_t>(std::clamp(r, 0.0, static_cast<double>(this->Rows - 1)));
   }
 
-  void file(const glm::dvec2& a, const glm::dvec2& b)
+  void file(const Segment& segment)
   {
+    const glm::dvec2& a = segment.A;
+    const glm::dvec2& b = segment.B;
     if (!std::isfinite(a.x) || !std::isfinite(a.y) || !std::isfinite(b.x) || !std::isfinite(b.y))
     {
       return;
     }
     const std::size_t index = this->Segments.size();
-    this->Segments.push_back({ a, b });
+    this->Segments.push_back(segment);
     // By the segment's box, clamped to the widened viewport: a long
     // diagonal is filed in more cells than it passes, never fewer.
     for (std::int64_t r = this->row(std::min(a.y, b.y)); r <= this->row(std::max(a.y, b.y)); ++r)
@@ -128,7 +156,7 @@ private:
   double Cell;
   std::int64_t Columns;
   std::int64_t Rows;
-  std::vector<std::array<glm::dvec2, 2>> Segments;
+  std::vector<Segment> Segments;
   std::unordered_map<std::int64_t, std::vector<std::size_t>> Filed;
 };
 
@@ -242,18 +270,22 @@ std::vector<std::vector<glm::dvec3>> outlineGaps(const OcclusionMesh& surface,
   const OutlineGapParameters& parameters)
 {
   std::vector<std::vector<glm::dvec3>> gaps;
-  if (!(parameters.GapPixels > 0.0) || !(parameters.BesidePixels > 0.0))
+  const double join = std::min(parameters.JoinPixels, parameters.GapPixels);
+  if (!(join > 0.0) || !(parameters.BesidePixels > 0.0))
   {
     return gaps;
   }
   const DrawnSegments drawnSegments(view, drawn, parameters.GapPixels);
   const LineVisibilityParameters& rule = parameters.Visibility;
+  auto inViewport = [&](const glm::dvec2& pixel) {
+    return pixel.x >= 0.0 && pixel.y >= 0.0 && pixel.x <= view.ViewportWidth &&
+      pixel.y <= view.ViewportHeight;
+  };
   // Cheapest first: the image's drawn lines, then the rays.
-  auto inGap = [&](const glm::dvec3& point, const glm::dvec3& direction) {
+  auto open = [&](const glm::dvec3& point, const glm::dvec3& direction) {
     glm::dvec2 pixel;
-    return view.toPixels(point, pixel) && pixel.x >= 0.0 && pixel.y >= 0.0 &&
-      pixel.x <= view.ViewportWidth && pixel.y <= view.ViewportHeight &&
-      !drawnSegments.anyWithin(pixel, parameters.GapPixels) &&
+    return view.toPixels(point, pixel) && inViewport(pixel) &&
+      !drawnSegments.covers(pixel, join, parameters.GapPixels) &&
       surface.occlusion(view, point, rule) != OcclusionMesh::Occlusion::Hidden &&
       surface.besideTheOutline(
         view, point, direction, parameters.BesidePixels, parameters.DepthJump);
@@ -261,9 +293,9 @@ std::vector<std::vector<glm::dvec3>> outlineGaps(const OcclusionMesh& surface,
   for (const std::vector<glm::dvec3>& contour : contourPolylines(surface, view))
   {
     for (std::vector<glm::dvec3>& gap :
-      stretchesWhere(contour, rule.SampleSpacing, rule.Precision, inGap))
+      stretchesWhere(contour, rule.SampleSpacing, rule.Precision, open))
     {
-      if (pixelLength(gap, view) >= parameters.GapPixels)
+      if (pixelLength(gap, view) >= join)
       {
         gaps.push_back(std::move(gap));
       }

@@ -17,13 +17,18 @@
 // BesidePixels beside it, across the edge in the image, meets no triangle in
 // front of it nor within DepthJump behind it: the surface's image ends
 // there, or jumps in depth (a fold of the re-meshing with the surface just
-// behind it is not the outline). A gap is a stretch of outline with no drawn
-// line within GapPixels in the image.
+// behind it is not the outline). A drawn line covers a contour point that
+// lies within JoinPixels of it, or within GapPixels beside it (its nearest
+// point not an end of the line); a gap is a stretch of outline no drawn line
+// covers. The two distances keep apart what a user sees as one line and as
+// two: a contour running 2 or 3 px beside a drawn silhouette is the same
+// edge of the image (drawing it doubled the stroke), while between two
+// lines that stop short of each other the gap runs on to within JoinPixels
+// of their ends.
 //
 // Invariants: every point of a gap lies on a contour edge of the surface
-// (so on the surface), and is at least GapPixels from every drawn segment
-// at the probes that classified it; gaps shorter than GapPixels in the
-// image are left out (a drawn line's end meets the outline there).
+// (so on the surface), and no drawn line covers it at the probes that
+// classified it; gaps shorter than JoinPixels in the image are left out.
 #pragma once
 
 #include "LineVisibility.h"
@@ -38,8 +43,12 @@ namespace silsmooth
 
 struct OutlineGapParameters
 {
-  /// Outline farther than this from every drawn line, in pixels, is a gap.
-  double GapPixels = 1.5;
+  /// A drawn line passing beside a contour point within this many pixels
+  /// covers it (a contour alongside a drawn line would double the stroke).
+  double GapPixels = 3.0;
+  /// Any drawn point within this many pixels covers it (where a drawn line
+  /// ends, the gap runs on to within this distance).
+  double JoinPixels = 1.5;
   /// A contour point is on the outline when the line of sight through a
   /// point this many pixels beside it meets no triangle in front of that
   /// point nor within DepthJump behind it.
@@ -57,9 +66,9 @@ struct OutlineGapParameters
 std::vector<std::vector<glm::dvec3>> contourPolylines(
   const OcclusionMesh& surface, const ViewGeometry& view);
 
-/// The stretches of the surface's outline farther than GapPixels from every
-/// segment of the `drawn` polylines (model coordinates, projected with the
-/// view), as polylines along the contour.
+/// The gaps in the surface's outline that the `drawn` polylines (model
+/// coordinates, projected with the view) leave, as polylines along the
+/// contour.
 std::vector<std::vector<glm::dvec3>> outlineGaps(const OcclusionMesh& surface,
   const ViewGeometry& view, const std::vector<std::vector<glm::dvec3>>& drawn,
   const OutlineGapParameters& parameters);

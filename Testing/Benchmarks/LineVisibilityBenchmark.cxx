@@ -340,11 +340,11 @@ int main(int argc, char* argv[])
     outlined->SetOutlinePixels(1.0);
     outlined->SetViewportSize(options.Width, options.Height);
     const std::vector<double> outlinedTimes = TimeRayCasts(outlined, lines, surface, camera);
-    // And with the surface's contour where the outline has no line within
-    // 1.5 px (OutlineGapPixels), as the program draws since 2026-12-05.
+    // And with the surface's contour where no line covers the outline
+    // (OutlineGapPixels 3), as the program draws since 2026-12-05.
     vtkNew<vtkSilhouetteLineVisibility> gapped;
     gapped->SetOutlinePixels(1.0);
-    gapped->SetOutlineGapPixels(1.5);
+    gapped->SetOutlineGapPixels(3.0);
     gapped->SetViewportSize(options.Width, options.Height);
     const std::vector<double> gappedTimes = TimeRayCasts(gapped, lines, surface, camera);
     vtkDataArray* original = gapped->GetOutput()->GetCellData()->GetArray("OriginalCellId");

@@ -113,18 +113,51 @@ TEST(OutlineGaps, AnUndrawnOutlineIsOneGapAndADrawnOneNone)
   ASSERT_EQ(whole.size(), 1u);
   EXPECT_NEAR(length(whole), 12.0, 1e-6);
 
-  // Drawn on the outline, or a pixel inside it: no gap.
+  // Drawn on the outline, a pixel inside it, or 2.5 px inside it (a line
+  // beside the outline, which the contour would double): no gap.
   EXPECT_TRUE(outlineGaps(surface, view, { hexagon }, rule).empty());
   EXPECT_TRUE(outlineGaps(surface, view, { shrunk(hexagon, 1.0) }, rule).empty());
+  EXPECT_TRUE(outlineGaps(surface, view, { shrunk(hexagon, 2.5) }, rule).empty());
 
-  // Three pixels inside it: the hexagon is a gap all round.
-  EXPECT_NEAR(length(outlineGaps(surface, view, { shrunk(hexagon, 3.0) }, rule)), 12.0, 1e-6);
+  // Six pixels inside it: the hexagon is a gap all round.
+  EXPECT_NEAR(length(outlineGaps(surface, view, { shrunk(hexagon, 6.0) }, rule)), 12.0, 1e-6);
 
-  // The wrong variant: with half a pixel allowed, the line a pixel inside
-  // leaves the whole outline open.
+  // The wrong variants: with half a pixel allowed, the line a pixel inside
+  // leaves the whole outline open; with a gap wherever no line is within
+  // the join distance, the line 2.5 px inside is doubled all round.
   OutlineGapParameters narrow = rule;
   narrow.GapPixels = 0.5;
   EXPECT_NEAR(length(outlineGaps(surface, view, { shrunk(hexagon, 1.0) }, narrow)), 12.0, 1e-6);
+  OutlineGapParameters doubling = rule;
+  doubling.GapPixels = doubling.JoinPixels;
+  EXPECT_NEAR(length(outlineGaps(surface, view, { shrunk(hexagon, 2.5) }, doubling)), 12.0, 1e-6);
+}
+
+TEST(OutlineGaps, AGapRunsOnToTheLinesAtItsEnds)
+{
+  // Five of the hexagon's six edges drawn: the sixth is the gap, on it, from
+  // where it leaves the drawn edges by the join distance, not by GapPixels.
+  const OcclusionMesh surface = cube();
+  const ViewGeometry view = parallelView(Generic);
+  const std::vector<glm::dvec3> hexagon = contourPolylines(surface, view)[0];
+  const std::vector<glm::dvec3> fiveEdges(hexagon.begin() + 1, hexagon.end());
+  const OutlineGapParameters rule = gapRule();
+  const std::vector<std::vector<glm::dvec3>> gaps = outlineGaps(surface, view, { fiveEdges }, rule);
+  ASSERT_EQ(gaps.size(), 1u);
+  const glm::dvec3 edge = hexagon[1] - hexagon[0];
+  for (const glm::dvec3& p : gaps[0])
+  {
+    EXPECT_LT(glm::length(glm::cross(p - hexagon[0], edge)), 1e-9); // on the undrawn edge
+  }
+  // Short of the corners by a few pixels (0.01 a pixel), 2 long.
+  const double joined = length(gaps);
+  EXPECT_GT(joined, 2.0 - 0.1);
+  EXPECT_LT(joined, 2.0 - 0.01);
+  // The wrong variant, which stops where it comes within GapPixels: shorter
+  // by a pixel or more at each end.
+  OutlineGapParameters unjoined = rule;
+  unjoined.JoinPixels = unjoined.GapPixels;
+  EXPECT_LT(length(outlineGaps(surface, view, { fiveEdges }, unjoined)), joined - 0.02);
 }
 
 TEST(OutlineGaps, AFoldWithTheSurfaceJustBehindIsNoOutline)

@@ -46,11 +46,12 @@
 // drawn too), must stray more than the limit on every view.
 //
 // Since 2026-12-05 the program also draws the surface's own contour where
-// the outline has no line within 1.5 px (OutlineGapPixels; where a coarse
-// mesh's outline is concave, its front facets stand beyond the smoothed
-// curve, which they hide): the outline drawn went from the values below to
-// 100% (bunny), 99.9% (spider) and 100% (Wuson), the strays unchanged. The
-// test asks for 99.5% on every view; without that contour five views fall
+// no line covers the outline (OutlineGapPixels 3: no line within 1.5 px, nor
+// passing beside within 3 px; where a coarse mesh's outline is concave, its
+// front facets stand beyond the smoothed curve, which they hide): the
+// outline drawn went from the values below to 99.9 and 100% (bunny), 99.7
+// and 99.5% (spider) and 100% (Wuson), the strays unchanged. The test asks
+// for 99% on every view; without that contour three or four views fall
 // short of it.
 // The program draws with OutlinePixels 1 (a silhouette within a pixel of
 // the surface's outline is drawn; one that its own sheet hides within the
@@ -150,10 +151,10 @@ constexpr double CreaseRatio = 2.0;
 constexpr float Near = 1.5f;          // px, between pixel centres
 constexpr double OutlineDrawn = 0.95; // the target
 // With the surface's contour where no line is drawn (OutlineGapPixels, the
-// program's 1.5): 99.9% to 100% measured on every view.
-constexpr double OutlineDrawnWithGaps = 0.995;
+// program's 3): 99.5% to 100% measured on every view.
+constexpr double OutlineDrawnWithGaps = 0.99;
 // Views whose drawing without that contour falls short of it (the wrong
-// variant of the limit above): five measured.
+// variant of the limit above): three or four measured.
 int ViewsShortWithoutGaps = 0;
 
 bool Fail(const char* what)
@@ -524,7 +525,7 @@ bool CheckMesh(const std::string& file, const Case (&views)[2], vtkRenderWindow*
     visibility->SetRenderer(renderer);
     visibility->PassHiddenLinesOff();
     visibility->SetOutlinePixels(1.0);
-    visibility->SetOutlineGapPixels(1.5);
+    visibility->SetOutlineGapPixels(3.0);
     visibility->Update();
     vtkPolyData* surface = smoothing->GetOutput(0);
     CHECK(surface->GetPointData()->GetNormals(), "the smoothed surface has point normals");
@@ -571,7 +572,7 @@ bool CheckMesh(const std::string& file, const Case (&views)[2], vtkRenderWindow*
     visibility->SetOutlinePixels(0.0);
     const double exactDrawnShare = drawnShareNow();
     visibility->SetOutlinePixels(1.0);
-    visibility->SetOutlineGapPixels(1.5);
+    visibility->SetOutlineGapPixels(3.0);
 
     // The wrong variant: the hidden pieces drawn too.
     visibility->PassHiddenLinesOn();
@@ -609,7 +610,7 @@ bool CheckMesh(const std::string& file, const Case (&views)[2], vtkRenderWindow*
     }
     if (drawnShare < OutlineDrawnWithGaps)
     {
-      ok = Fail("at least 99.5% of the outline drawn with the gaps' contour");
+      ok = Fail("at least 99% of the outline drawn with the gaps' contour");
     }
     ViewsShortWithoutGaps += ungappedDrawnShare < OutlineDrawnWithGaps ? 1 : 0;
     if (wrong.Count <= view.StrayLimit)
@@ -668,7 +669,7 @@ int TestLineDrawingAccuracy(int argc, char* argv[])
     100.0 * OutlineDrawnWithGaps, ViewsShortWithoutGaps);
   if (ViewsShortWithoutGaps < 3)
   {
-    ok = Fail("without the gaps' contour, at least three views fall short of 99.5% drawn");
+    ok = Fail("without the gaps' contour, at least three views fall short of 99% drawn");
   }
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -374,8 +374,9 @@ int vtkSilhouetteLineVisibility::RequestViewData(vtkInformation*,
     gapParameters.JoinPixels = std::min(1.5, this->OutlineGapPixels);
     // A part two tolerances (mean edges) or more behind the contour leaves
     // it an outline (a depth jump); the re-meshing's own folds lie nearer.
-    // One tolerance drew 5 and 14 more stray pixels on the Wuson's views of
-    // TestLineDrawingAccuracy, 2 and 4 none (docs/line-drawings.md).
+    // One tolerance drew 5 more stray pixels on the Wuson's second view of
+    // TestLineDrawingAccuracy, half of one 14 and 34 more on its two views;
+    // 2, 4 and the whole line of sight none (docs/line-drawings.md).
     gapParameters.DepthJump = 2.0 * parameters.Tolerance;
     gapParameters.Visibility = edgeParameters;
     for (const std::vector<glm::dvec3>& gap :

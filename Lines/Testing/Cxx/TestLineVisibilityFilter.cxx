@@ -12,6 +12,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
 #include "vtkIdList.h"
@@ -32,6 +33,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
 #include <vector>
 
 namespace
@@ -283,11 +285,141 @@ bool CheckOptions(
   }
   errors->Clear();
   visibility->SetOutlinePixels(0.0);
+  for (const double wrong : { -1.0, std::nan("") })
+  {
+    visibility->SetOutlineGapPixels(wrong);
+    visibility->Update();
+    if (!errors->GetError())
+    {
+      ok = Fail("a negative or NaN OutlineGapPixels was accepted");
+    }
+    errors->Clear();
+  }
+  visibility->SetOutlineGapPixels(0.0);
   visibility->SetCamera(nullptr);
   visibility->Update();
   if (!errors->GetError())
   {
     ok = Fail("no camera was accepted");
+  }
+  return ok;
+}
+
+// The lines' length in pixels: (visible pieces, added outline pieces).
+std::pair<double, double> PixelLengths(vtkPolyData* lines, vtkCamera* camera, int width, int height)
+{
+  vtkNew<vtkMatrix4x4> toClip;
+  toClip->DeepCopy(
+    camera->GetCompositeProjectionTransformMatrix(static_cast<double>(width) / height, -1.0, 1.0));
+  auto toPixels = [&](const double p[3], double pixel[2]) {
+    const double in[4] = { p[0], p[1], p[2], 1.0 };
+    double clip[4];
+    toClip->MultiplyPoint(in, clip);
+    pixel[0] = (clip[0] / clip[3] + 1.0) * 0.5 * width;
+    pixel[1] = (clip[1] / clip[3] + 1.0) * 0.5 * height;
+  };
+  vtkDataArray* visible = lines->GetCellData()->GetArray("Visible");
+  vtkDataArray* original = lines->GetCellData()->GetArray("OriginalCellId");
+  double lengths[2] = { 0.0, 0.0 };
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < lines->GetNumberOfCells(); ++c)
+  {
+    if (visible->GetComponent(c, 0) == 0.0)
+    {
+      continue;
+    }
+    lines->GetCellPoints(c, ids);
+    for (vtkIdType k = 1; k < ids->GetNumberOfIds(); ++k)
+    {
+      double a[2];
+      double b[2];
+      toPixels(lines->GetPoint(ids->GetId(k - 1)), a);
+      toPixels(lines->GetPoint(ids->GetId(k)), b);
+      lengths[original->GetComponent(c, 0) < 0.0 ? 1 : 0] += std::hypot(b[0] - a[0], b[1] - a[1]);
+    }
+  }
+  return { lengths[0], lengths[1] };
+}
+
+// OutlineGapPixels: with the torus's smoothed silhouettes, which draw its
+// outline, nothing is added; with none of them (a stub far off the torus
+// instead), the surface's contour draws the outline, as long as the
+// silhouettes' visible pieces, as pieces of no input cell with LineKind 4
+// and null point data; with the setting 0 (the wrong variant), nothing.
+bool CheckOutlineGaps(
+  vtkSilhouetteSmoothingFilter* smoother, vtkCamera* camera, int width, int height)
+{
+  bool ok = true;
+  vtkNew<vtkSilhouetteLineVisibility> visibility;
+  visibility->SetSurfaceConnection(smoother->GetOutputPort(0));
+  visibility->SetCamera(camera);
+  visibility->SetViewportSize(width, height);
+  visibility->SetOutlinePixels(1.0);
+  visibility->SetOutlineGapPixels(3.0);
+  visibility->SetInputConnection(smoother->GetOutputPort(1));
+  visibility->Update();
+  const auto [silhouettes, addedBeside] =
+    PixelLengths(visibility->GetOutput(), camera, width, height);
+
+  vtkNew<vtkPolyData> stub; // one line, far off the torus, with its arrays
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(10.0, 10.0, 10.0);
+  points->InsertNextPoint(10.1, 10.0, 10.0);
+  stub->SetPoints(points);
+  vtkNew<vtkCellArray> cells;
+  const vtkIdType line[2] = { 0, 1 };
+  cells->InsertNextCell(2, line);
+  stub->SetLines(cells);
+  vtkNew<vtkUnsignedCharArray> kind;
+  kind->SetName("LineKind");
+  kind->InsertNextValue(0);
+  stub->GetCellData()->AddArray(kind);
+  vtkNew<vtkDoubleArray> weight;
+  weight->SetName("Weight");
+  weight->InsertNextValue(5.0);
+  weight->InsertNextValue(5.0);
+  stub->GetPointData()->AddArray(weight);
+  visibility->SetInputData(stub);
+  visibility->Update();
+  vtkPolyData* out = visibility->GetOutput();
+  const auto [stubLength, added] = PixelLengths(out, camera, width, height);
+  std::printf("outline gaps: %.1f px added beside %.1f px of silhouettes; without them %.1f px "
+              "added\n",
+    addedBeside, silhouettes, added);
+  if (addedBeside != 0.0)
+  {
+    ok = Fail("the torus's silhouettes leave no gap in its outline");
+  }
+  if (!(std::abs(added - silhouettes) < 0.02 * silhouettes))
+  {
+    ok = Fail("without them, the contour draws as much outline as they do, to 2%");
+  }
+  vtkDataArray* kinds = out->GetCellData()->GetArray("LineKind");
+  vtkDataArray* original = out->GetCellData()->GetArray("OriginalCellId");
+  vtkDataArray* weights = out->GetPointData()->GetArray("Weight");
+  if (!kinds || !weights || weights->GetNumberOfTuples() != out->GetNumberOfPoints())
+  {
+    return Fail("the output keeps LineKind and a point array for every point");
+  }
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c)
+  {
+    if (original->GetComponent(c, 0) >= 0.0)
+    {
+      continue;
+    }
+    out->GetCellPoints(c, ids);
+    if (kinds->GetComponent(c, 0) != 4.0 || weights->GetComponent(ids->GetId(0), 0) != 0.0)
+    {
+      ok = Fail("an added piece is LineKind 4 with null point data");
+      break;
+    }
+  }
+  visibility->SetOutlineGapPixels(0.0);
+  visibility->Update();
+  if (PixelLengths(visibility->GetOutput(), camera, width, height).second != 0.0)
+  {
+    ok = Fail("with OutlineGapPixels 0 nothing is added");
   }
   return ok;
 }
@@ -341,5 +473,6 @@ int TestLineVisibilityFilter(int, char*[])
   ok = CheckPointsAgainstTorus(out, pointVisible, eye) && ok;
   ok = CheckChangePoints(out, original, camera, width, height) && ok;
   ok = CheckOptions(visibility, visiblePieces, eye) && ok;
+  ok = CheckOutlineGaps(smoother, camera, width, height) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -177,8 +177,8 @@ vtkSmartPointer<vtkSilhouetteLineVisibility> MakeVisibleLines(
   visible->SetOutlinePixels(1.0);
   // Where the outline is concave, the surface's front facets can stand
   // beyond the curve and hide it: their edge is drawn where no line covers
-  // it (within 1.5 px, or alongside within 3).
-  visible->SetOutlineGapPixels(3.0);
+  // it (within 1.5 px, or alongside within 4).
+  visible->SetOutlineGapPixels(4.0);
   // One vertex where the filter made one: with --weld-tolerance, the near
   // copies an exporter left would otherwise cut the surface, and the sliver
   // triangles between them would draw creases.

@@ -125,11 +125,12 @@ public:
    * it is the outline of the surface's image (the image ends beside it, or
    * jumps in depth by two tolerances) and no visible line of the output
    * covers it: none passes within 1.5 px of it (or this value, when less),
-   * nor beside it within this many pixels (its nearest point not an end of
-   * the line: a contour alongside a drawn silhouette would double the
-   * stroke). Added pieces are visible pieces of no input cell
-   * (`OriginalCellId` -1), `LineKind` 4 when the input has that array, the
-   * other arrays' values null. Default 0 (off); `silhouette render` uses 3.
+   * nor runs alongside it within this many pixels (its nearest point not an
+   * end of the line, its direction within 37 degrees of the contour's: a
+   * contour alongside a drawn silhouette would double the stroke). Added
+   * pieces are visible pieces of no input cell (`OriginalCellId` -1),
+   * `LineKind` 4 when the input has that array, the other arrays' values
+   * null. Default 0 (off); `silhouette render` uses 4.
    * Negative or NaN values are refused. A positive value makes the output
    * depend on the viewport's size.
    */

@@ -43,9 +43,10 @@ void forEachPixelSegment(
 class DrawnSegments
 {
 public:
-  DrawnSegments(
-    const ViewGeometry& view, const std::vector<std::vector<glm::dvec3>>& drawn, double radius)
-    : Cell(std::max(4.0 * radius, 8.0))
+  DrawnSegments(const ViewGeometry& view, const std::vector<std::vector<glm::dvec3>>& drawn,
+    double radius, double alongsideCosine)
+    : AlongsideCosine(alongsideCosine)
+    , Cell(std::max(4.0 * radius, 8.0))
     , Columns(static_cast<std::int64_t>(std::ceil(view.ViewportWidth / this->Cell)) + 2)
     , Rows(static_cast<std::int64_t>(std::ceil(view.ViewportHeight / this->Cell)) + 2)
   {
@@ -69,11 +70,13 @@ public:
     }
   }
 
-  /// Whether a drawn line covers `pixel`: some drawn point lies within
-  /// `join` of it, or a drawn line passes beside it within `beside`, its
-  /// nearest point not an end of the line (a line alongside, not the end of
-  /// one that stops short).
-  bool covers(const glm::dvec2& pixel, double join, double beside) const
+  /// Whether a drawn line covers `pixel` on a contour running along
+  /// `contour` (pixels, unit): some drawn point lies within `join` of it, or a
+  /// drawn line runs alongside it within `beside`: its nearest point not an
+  /// end of the line (not the end of one that stops short) and its segment
+  /// within the angle of alongsideCosine of the contour's direction (not one that
+  /// meets or crosses it).
+  bool covers(const glm::dvec2& pixel, const glm::dvec2& contour, double join, double beside) const
   {
     const double radius = std::max(join, beside);
     const std::int64_t c0 = this->column(pixel.x - radius);
@@ -99,7 +102,9 @@ public:
           const double distance = glm::length(pixel - (segment.A + along * ab));
           const bool atAnEnd =
             (along <= 0.0 && segment.StartsLine) || (along >= 1.0 && segment.EndsLine);
-          if (distance <= join || (distance <= beside && !atAnEnd))
+          if (distance <= join ||
+            (distance <= beside && !atAnEnd &&
+              std::abs(glm::dot(ab, contour)) >= this->AlongsideCosine * std::sqrt(squared)))
           {
             return true;
           }
@@ -153,6 +158,7 @@ private:
     }
   }
 
+  double AlongsideCosine;
   double Cell;
   std::int64_t Columns;
   std::int64_t Rows;
@@ -275,17 +281,29 @@ std::vector<std::vector<glm::dvec3>> outlineGaps(const OcclusionMesh& surface,
   {
     return gaps;
   }
-  const DrawnSegments drawnSegments(view, drawn, parameters.GapPixels);
+  const DrawnSegments drawnSegments(view, drawn, parameters.GapPixels, parameters.AlongsideCosine);
   const LineVisibilityParameters& rule = parameters.Visibility;
   auto inViewport = [&](const glm::dvec2& pixel) {
     return pixel.x >= 0.0 && pixel.y >= 0.0 && pixel.x <= view.ViewportWidth &&
       pixel.y <= view.ViewportHeight;
   };
   // Cheapest first: the image's drawn lines, then the rays.
+  // The contour's direction in the image at a point on a segment along
+  // `direction` (zero where it has none).
+  auto alongInPixels = [&](const glm::dvec3& point, const glm::dvec3& direction,
+                         const glm::dvec2& pixel) {
+    glm::dvec2 ahead;
+    if (!view.toPixels(point + 1e-3 * direction, ahead) || !(glm::length(ahead - pixel) > 0.0))
+    {
+      return glm::dvec2(0.0);
+    }
+    return glm::normalize(ahead - pixel);
+  };
   auto open = [&](const glm::dvec3& point, const glm::dvec3& direction) {
     glm::dvec2 pixel;
     return view.toPixels(point, pixel) && inViewport(pixel) &&
-      !drawnSegments.covers(pixel, join, parameters.GapPixels) &&
+      !drawnSegments.covers(
+        pixel, alongInPixels(point, direction, pixel), join, parameters.GapPixels) &&
       surface.occlusion(view, point, rule) != OcclusionMesh::Occlusion::Hidden &&
       surface.besideTheOutline(
         view, point, direction, parameters.BesidePixels, parameters.DepthJump);

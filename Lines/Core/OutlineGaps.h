@@ -18,13 +18,12 @@
 // front of it nor within DepthJump behind it: the surface's image ends
 // there, or jumps in depth (a fold of the re-meshing with the surface just
 // behind it is not the outline). A drawn line covers a contour point that
-// lies within JoinPixels of it, or within GapPixels beside it (its nearest
-// point not an end of the line); a gap is a stretch of outline no drawn line
-// covers. The two distances keep apart what a user sees as one line and as
-// two: a contour running 2 or 3 px beside a drawn silhouette is the same
-// edge of the image (drawing it doubled the stroke), while between two
-// lines that stop short of each other the gap runs on to within JoinPixels
-// of their ends.
+// lies within JoinPixels of it, or that it runs alongside within GapPixels
+// (its nearest point not an end of the line, its direction near the
+// contour's); a gap is a stretch of outline no drawn line covers. The two distances keep apart what
+// a user sees as one line and as two: a contour running 2 or 3 px beside a drawn silhouette is the
+// same edge of the image (drawing it doubled the stroke), while between two lines that stop short
+// of each other the gap runs on to within JoinPixels of their ends.
 //
 // Invariants: every point of a gap lies on a contour edge of the surface
 // (so on the surface), and no drawn line covers it at the probes that
@@ -43,9 +42,12 @@ namespace silsmooth
 
 struct OutlineGapParameters
 {
-  /// A drawn line passing beside a contour point within this many pixels
-  /// covers it (a contour alongside a drawn line would double the stroke).
-  double GapPixels = 3.0;
+  /// A drawn line running alongside a contour point within this many
+  /// pixels covers it (the contour would double the stroke): its nearest
+  /// point not one of its ends, its direction within the angle whose cosine
+  /// is AlongsideCosine of the contour's.
+  double GapPixels = 4.0;
+  double AlongsideCosine = 0.8; // about 37 degrees
   /// Any drawn point within this many pixels covers it (where a drawn line
   /// ends, the gap runs on to within this distance).
   double JoinPixels = 1.5;

@@ -341,10 +341,10 @@ int main(int argc, char* argv[])
     outlined->SetViewportSize(options.Width, options.Height);
     const std::vector<double> outlinedTimes = TimeRayCasts(outlined, lines, surface, camera);
     // And with the surface's contour where no line covers the outline
-    // (OutlineGapPixels 3), as the program draws since 2026-12-05.
+    // (OutlineGapPixels 4), as the program draws since 2026-12-05.
     vtkNew<vtkSilhouetteLineVisibility> gapped;
     gapped->SetOutlinePixels(1.0);
-    gapped->SetOutlineGapPixels(3.0);
+    gapped->SetOutlineGapPixels(4.0);
     gapped->SetViewportSize(options.Width, options.Height);
     const std::vector<double> gappedTimes = TimeRayCasts(gapped, lines, surface, camera);
     vtkDataArray* original = gapped->GetOutput()->GetCellData()->GetArray("OriginalCellId");

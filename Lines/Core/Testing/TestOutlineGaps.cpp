@@ -226,3 +226,29 @@ TEST(OutlineGaps, OutlineBehindAnOccluderIsNoGap)
   const OcclusionMesh surface(points, triangles);
   EXPECT_NEAR(length(outlineGaps(surface, view, {}, gapRule())), 11.9, 1e-6);
 }
+
+TEST(OutlineGaps, ALineAcrossTheOutlineCoversItOnlyWhereItMeetsIt)
+{
+  // Nothing drawn but a line 0.4 long (40 px) across the middle of one of
+  // the hexagon's edges, square to it in the image: it covers the outline
+  // within the join distance of it (1.5 px each side, 0.03 in all), not the
+  // GapPixels (4 px) a line running alongside covers.
+  const OcclusionMesh surface = cube();
+  const ViewGeometry view = parallelView(Generic);
+  const std::vector<glm::dvec3> hexagon = contourPolylines(surface, view)[0];
+  const glm::dvec3 across = glm::normalize(glm::cross(view.TowardViewer, hexagon[1] - hexagon[0]));
+  const glm::dvec3 middle = 0.5 * (hexagon[0] + hexagon[1]);
+  const std::vector<glm::dvec3> crossing{ middle - 0.2 * across, middle + 0.2 * across };
+  // A pixel along the edge is 0.01 / foreshortening of it.
+  const glm::dvec3 edge = glm::normalize(hexagon[1] - hexagon[0]);
+  const double foreshortening =
+    glm::length(edge - glm::dot(edge, view.TowardViewer) * view.TowardViewer);
+  const OutlineGapParameters rule = gapRule();
+  const double open = length(outlineGaps(surface, view, { crossing }, rule));
+  EXPECT_NEAR(open, 12.0 - 0.03 / foreshortening, 1e-6);
+  // The wrong variant, any direction counting as alongside: 4 px each side.
+  OutlineGapParameters anyDirection = rule;
+  anyDirection.AlongsideCosine = 0.0;
+  EXPECT_NEAR(length(outlineGaps(surface, view, { crossing }, anyDirection)),
+    12.0 - 0.08 / foreshortening, 1e-6);
+}

@@ -46,13 +46,12 @@
 // drawn too), must stray more than the limit on every view.
 //
 // Since 2026-12-05 the program also draws the surface's own contour where
-// no line covers the outline (OutlineGapPixels 3: no line within 1.5 px, nor
-// passing beside within 3 px; where a coarse mesh's outline is concave, its
-// front facets stand beyond the smoothed curve, which they hide): the
-// outline drawn went from the values below to 99.9 and 100% (bunny), 99.7
-// and 99.5% (spider) and 100% (Wuson), the strays unchanged. The test asks
-// for 99% on every view; without that contour three or four views fall
-// short of it.
+// no line covers the outline (OutlineGapPixels 4: no line within 1.5 px, nor
+// running alongside within 4 px; where a coarse mesh's outline is concave,
+// its front facets stand beyond the smoothed curve, which they hide): the
+// outline drawn went from the values below to 100 and 99.9% (bunny), 99.4
+// and 99.1% (spider) and 100% (Wuson), the strays unchanged. The test asks
+// for 99% on every view; without that contour three views fall short of it.
 // The program draws with OutlinePixels 1 (a silhouette within a pixel of
 // the surface's outline is drawn; one that its own sheet hides within the
 // tolerance is drawn only within 1.5 px of the outline, or where it dips
@@ -151,10 +150,10 @@ constexpr double CreaseRatio = 2.0;
 constexpr float Near = 1.5f;          // px, between pixel centres
 constexpr double OutlineDrawn = 0.95; // the target
 // With the surface's contour where no line is drawn (OutlineGapPixels, the
-// program's 3): 99.5% to 100% measured on every view.
+// program's 4): 99.1% to 100% measured on every view.
 constexpr double OutlineDrawnWithGaps = 0.99;
 // Views whose drawing without that contour falls short of it (the wrong
-// variant of the limit above): three or four measured.
+// variant of the limit above): three measured.
 int ViewsShortWithoutGaps = 0;
 
 bool Fail(const char* what)
@@ -525,7 +524,7 @@ bool CheckMesh(const std::string& file, const Case (&views)[2], vtkRenderWindow*
     visibility->SetRenderer(renderer);
     visibility->PassHiddenLinesOff();
     visibility->SetOutlinePixels(1.0);
-    visibility->SetOutlineGapPixels(3.0);
+    visibility->SetOutlineGapPixels(4.0);
     visibility->Update();
     vtkPolyData* surface = smoothing->GetOutput(0);
     CHECK(surface->GetPointData()->GetNormals(), "the smoothed surface has point normals");
@@ -572,7 +571,7 @@ bool CheckMesh(const std::string& file, const Case (&views)[2], vtkRenderWindow*
     visibility->SetOutlinePixels(0.0);
     const double exactDrawnShare = drawnShareNow();
     visibility->SetOutlinePixels(1.0);
-    visibility->SetOutlineGapPixels(3.0);
+    visibility->SetOutlineGapPixels(4.0);
 
     // The wrong variant: the hidden pieces drawn too.
     visibility->PassHiddenLinesOn();

@@ -563,25 +563,6 @@ void appendPiece(LinePiece& piece, const LinePiece& next)
   piece.Along.insert(piece.Along.end(), next.Along.begin() + 1, next.Along.end());
 }
 
-// The length of the piece's image in pixels, counted up to `enough` (the
-// count stops there), or infinity when a point has no image.
-double pixelLength(const LinePiece& piece, const ViewGeometry& view, double enough)
-{
-  double length = 0.0;
-  glm::dvec2 last;
-  for (std::size_t k = 0; k < piece.Points.size() && length < enough; ++k)
-  {
-    glm::dvec2 at;
-    if (!view.toPixels(piece.Points[k], at))
-    {
-      return std::numeric_limits<double>::infinity();
-    }
-    length += k > 0 ? glm::length(at - last) : 0.0;
-    last = at;
-  }
-  return length;
-}
-
 // splitByVisibility's last step before mergeShortPieces: a hidden piece
 // shorter than InsideGapOutlines times OutlinePixels in the image, between
 // two visible pieces, that no probe found hidden by the ray rule
@@ -605,7 +586,7 @@ std::vector<LinePiece> closeShortInsideGaps(std::vector<LinePiece> pieces,
   {
     LinePiece& piece = pieces[i];
     const bool gap = !piece.Visible && !hiddenByRay[i] && i + 1 < pieces.size() &&
-      closed.back().Visible && pixelLength(piece, view, longest) < longest;
+      closed.back().Visible && pixelLength(piece.Points, view, longest) < longest;
     if (gap || piece.Visible == closed.back().Visible)
     {
       appendPiece(closed.back(), piece);
@@ -643,6 +624,23 @@ std::vector<LinePiece> closeShortInsideGaps(std::vector<LinePiece> pieces,
 }
 
 } // namespace
+
+double pixelLength(const std::vector<glm::dvec3>& points, const ViewGeometry& view, double enough)
+{
+  double length = 0.0;
+  glm::dvec2 last;
+  for (std::size_t k = 0; k < points.size() && length < enough; ++k)
+  {
+    glm::dvec2 at;
+    if (!view.toPixels(points[k], at))
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+    length += k > 0 ? glm::length(at - last) : 0.0;
+    last = at;
+  }
+  return length;
+}
 
 std::vector<LinePiece> mergeShortPieces(std::vector<LinePiece> pieces, double minimumLength)
 {

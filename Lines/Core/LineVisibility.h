@@ -47,6 +47,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -239,6 +240,11 @@ private:
   double Step = 0.0;     ///< length of the ray pieces whose boxes are queried
   glm::dvec3 Pad{ 0.0 }; ///< added around each piece's box
 };
+
+/// The length of the polyline's image in pixels, counted up to `enough`
+/// (the count stops there), or infinity when a point has no image.
+double pixelLength(const std::vector<glm::dvec3>& points, const ViewGeometry& view,
+  double enough = std::numeric_limits<double>::infinity());
 
 /// Joins each piece shorter than `minimumLength` with its neighbours, in
 /// their state, shortest first; keeps the invariants above.

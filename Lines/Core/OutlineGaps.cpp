@@ -16,27 +16,6 @@ namespace silsmooth
 namespace
 {
 
-/// Calls segment(a, b) with each segment of `line` in pixels whose ends both
-/// project (ViewGeometry::toPixels).
-template<typename Segment>
-void forEachPixelSegment(
-  const std::vector<glm::dvec3>& line, const ViewGeometry& view, Segment segment)
-{
-  glm::dvec2 previous;
-  bool havePrevious = false;
-  for (const glm::dvec3& point : line)
-  {
-    glm::dvec2 pixel;
-    const bool projected = view.toPixels(point, pixel);
-    if (projected && havePrevious)
-    {
-      segment(previous, pixel);
-    }
-    previous = pixel;
-    havePrevious = projected;
-  }
-}
-
 /// The drawn lines' segments in pixels, filed by the square cells of the
 /// viewport (widened by a cell) their boxes meet, to ask whether a drawn
 /// line covers a pixel (covers).
@@ -240,14 +219,6 @@ std::vector<std::vector<glm::dvec3>> stretchesWhere(
   return stretches;
 }
 
-double pixelLength(const std::vector<glm::dvec3>& line, const ViewGeometry& view)
-{
-  double length = 0.0;
-  forEachPixelSegment(
-    line, view, [&](const glm::dvec2& a, const glm::dvec2& b) { length += glm::length(b - a); });
-  return length;
-}
-
 } // namespace
 
 std::vector<std::vector<glm::dvec3>> contourPolylines(
@@ -287,7 +258,6 @@ std::vector<std::vector<glm::dvec3>> outlineGaps(const OcclusionMesh& surface,
     return pixel.x >= 0.0 && pixel.y >= 0.0 && pixel.x <= view.ViewportWidth &&
       pixel.y <= view.ViewportHeight;
   };
-  // Cheapest first: the image's drawn lines, then the rays.
   // The contour's direction in the image at a point on a segment along
   // `direction` (zero where it has none).
   auto alongInPixels = [&](const glm::dvec3& point, const glm::dvec3& direction,
@@ -299,6 +269,7 @@ std::vector<std::vector<glm::dvec3>> outlineGaps(const OcclusionMesh& surface,
     }
     return glm::normalize(ahead - pixel);
   };
+  // Cheapest first: the image's drawn lines, then the rays.
   auto open = [&](const glm::dvec3& point, const glm::dvec3& direction) {
     glm::dvec2 pixel;
     return view.toPixels(point, pixel) && inViewport(pixel) &&

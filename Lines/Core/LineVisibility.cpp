@@ -683,42 +683,22 @@ std::vector<LinePiece> mergeShortPieces(std::vector<LinePiece> pieces, double mi
   return pieces;
 }
 
-std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const ViewGeometry& view,
-  const std::vector<glm::dvec3>& polyline, const LineVisibilityParameters& parameters)
+std::vector<LinePiece> splitWhere(const std::vector<glm::dvec3>& polyline, double spacing,
+  double precision, const std::function<bool(const glm::dvec3&, const glm::dvec3&)>& holds,
+  const std::function<void(bool)>& pieceEnds)
 {
   std::vector<LinePiece> pieces;
   if (polyline.empty())
   {
     return pieces;
   }
-  // Along the segment being classified (OutlinePixels' "across the line").
-  // A repeated point has no direction: the last segment's (or the first
-  // real one's) stands for it.
   glm::dvec3 direction(0.0);
   for (std::size_t i = 1; i < polyline.size() && direction == glm::dvec3(0.0); ++i)
   {
     direction = polyline[i] - polyline[i - 1];
   }
-  // Whether p is visible; `byRay` tells a point hidden by the ray rule from
-  // one only insideTheOutline hides (closeShortInsideGaps).
-  auto visible = [&](const glm::dvec3& p, bool& byRay) {
-    byRay = false;
-    switch (surface.occlusion(view, p, parameters))
-    {
-      case OcclusionMesh::Occlusion::Hidden:
-        byRay = !surface.nearTheOutline(view, p, direction, parameters);
-        return !byRay;
-      case OcclusionMesh::Occlusion::BehindItsOwnSheet:
-        return !surface.insideTheOutline(view, p, direction, parameters);
-      default:
-        return true;
-    }
-  };
-  std::vector<unsigned char> hiddenByRay; // per piece: some probe of it was
-  bool byRay = false;
   LinePiece current;
-  current.Visible = visible(polyline.front(), byRay);
-  bool currentByRay = byRay;
+  current.Visible = holds(polyline.front(), direction);
   current.Points.push_back(polyline.front());
   current.Along.push_back(0.0);
   for (std::size_t i = 1; i < polyline.size(); ++i)
@@ -731,47 +711,34 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
     }
     const double length = glm::length(b - a);
     // Probes at fractions k / probes of the segment; the last is b.
-    const double wanted = parameters.SampleSpacing > 0.0 && std::isfinite(length)
-      ? std::ceil(length / parameters.SampleSpacing)
-      : 1.0;
+    const double wanted =
+      spacing > 0.0 && std::isfinite(length) ? std::ceil(length / spacing) : 1.0;
     const int probes = static_cast<int>(std::clamp(wanted, 1.0, 100000.0));
     double before = 0.0; // the fraction of the last probe, in the current state
     for (int k = 1; k <= probes; ++k)
     {
       const double at = k == probes ? 1.0 : static_cast<double>(k) / probes;
-      const bool state = visible(k == probes ? b : a + at * (b - a), byRay);
-      if (state == current.Visible)
+      const bool state = holds(k == probes ? b : a + at * (b - a), direction);
+      if (state != current.Visible)
       {
-        currentByRay = currentByRay || byRay;
-      }
-      else
-      {
-        bool nextByRay = byRay;
         // Bisection between the probes: `low` keeps the current state.
         double low = before;
         double high = at;
-        for (int step = 0; step < 64 && (high - low) * length > parameters.Precision; ++step)
+        for (int step = 0; step < 64 && (high - low) * length > precision; ++step)
         {
           const double middle = 0.5 * (low + high);
-          if (visible(a + middle * (b - a), byRay) == current.Visible)
-          {
-            currentByRay = currentByRay || byRay;
-            low = middle;
-          }
-          else
-          {
-            nextByRay = nextByRay || byRay;
-            high = middle;
-          }
+          (holds(a + middle * (b - a), direction) == current.Visible ? low : high) = middle;
         }
         const double fraction = 0.5 * (low + high);
         const glm::dvec3 change = a + fraction * (b - a);
         const double along = static_cast<double>(i - 1) + fraction;
         current.Points.push_back(change);
         current.Along.push_back(along);
+        if (pieceEnds)
+        {
+          pieceEnds(current.Visible);
+        }
         pieces.push_back(std::move(current));
-        hiddenByRay.push_back(currentByRay ? 1 : 0);
-        currentByRay = nextByRay;
         current = LinePiece();
         current.Visible = state;
         current.Points.push_back(change);
@@ -782,8 +749,46 @@ std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const Vie
     current.Points.push_back(b);
     current.Along.push_back(static_cast<double>(i));
   }
+  if (pieceEnds)
+  {
+    pieceEnds(current.Visible);
+  }
   pieces.push_back(std::move(current));
-  hiddenByRay.push_back(currentByRay ? 1 : 0);
+  return pieces;
+}
+
+std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const ViewGeometry& view,
+  const std::vector<glm::dvec3>& polyline, const LineVisibilityParameters& parameters)
+{
+  // Whether p is visible (`direction` is OutlinePixels' "along the line");
+  // each piece also records whether a probe of it was hidden by the ray
+  // rule, not only by insideTheOutline (closeShortInsideGaps).
+  bool byRayIn[2] = { false, false }; // per state, since the last piece in it ended
+  auto visible = [&](const glm::dvec3& p, const glm::dvec3& direction) {
+    bool byRay = false;
+    bool state = true;
+    switch (surface.occlusion(view, p, parameters))
+    {
+      case OcclusionMesh::Occlusion::Hidden:
+        byRay = !surface.nearTheOutline(view, p, direction, parameters);
+        state = !byRay;
+        break;
+      case OcclusionMesh::Occlusion::BehindItsOwnSheet:
+        state = !surface.insideTheOutline(view, p, direction, parameters);
+        break;
+      default:
+        break;
+    }
+    byRayIn[state] = byRayIn[state] || byRay;
+    return state;
+  };
+  std::vector<unsigned char> hiddenByRay; // per piece
+  auto pieceEnds = [&](bool state) {
+    hiddenByRay.push_back(byRayIn[state] ? 1 : 0);
+    byRayIn[state] = false;
+  };
+  std::vector<LinePiece> pieces =
+    splitWhere(polyline, parameters.SampleSpacing, parameters.Precision, visible, pieceEnds);
   pieces = closeShortInsideGaps(std::move(pieces), hiddenByRay, view, parameters);
   return mergeShortPieces(std::move(pieces), parameters.MinimumPieceLength);
 }

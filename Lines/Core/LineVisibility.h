@@ -47,6 +47,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -249,6 +250,19 @@ double pixelLength(const std::vector<glm::dvec3>& points, const ViewGeometry& vi
 /// Joins each piece shorter than `minimumLength` with its neighbours, in
 /// their state, shortest first; keeps the invariants above.
 std::vector<LinePiece> mergeShortPieces(std::vector<LinePiece> pieces, double minimumLength);
+
+/// Splits `polyline` where `holds(point, direction)` changes: probes at most
+/// `spacing` apart along each segment (the last at its end), and between two
+/// probes that differ, bisection to within `precision` (model units).
+/// `direction` is the segment's vector (at a repeated point, the last real
+/// segment's, or the first real one's). The pieces alternate in state
+/// (LinePiece::Visible is what `holds` said) and each starts at the
+/// change point the one before ends at. `pieceEnds(state)`, when given, is
+/// called as each piece ends, after every probe that decided its end and
+/// before any later probe.
+std::vector<LinePiece> splitWhere(const std::vector<glm::dvec3>& polyline, double spacing,
+  double precision, const std::function<bool(const glm::dvec3&, const glm::dvec3&)>& holds,
+  const std::function<void(bool)>& pieceEnds = {});
 
 /// Splits `polyline` into visible and hidden pieces for the view.
 std::vector<LinePiece> splitByVisibility(const OcclusionMesh& surface, const ViewGeometry& view,

@@ -145,9 +145,9 @@ private:
   std::unordered_map<std::int64_t, std::vector<std::size_t>> Filed;
 };
 
-/// The stretches of `polyline` where `holds(point, direction)` is true, at
-/// probes at most `spacing` apart along each segment, their ends located by
-/// bisection to within `precision`.
+/// The stretches of `polyline` where `holds(point, direction)` is true
+/// (splitWhere's pieces in that state); on a closed loop, a stretch through
+/// its first point is one stretch.
 template<typename Holds>
 std::vector<std::vector<glm::dvec3>> stretchesWhere(
   const std::vector<glm::dvec3>& polyline, double spacing, double precision, Holds holds)
@@ -157,63 +157,20 @@ std::vector<std::vector<glm::dvec3>> stretchesWhere(
   {
     return stretches;
   }
-  std::vector<glm::dvec3> current;
-  bool inside = holds(polyline[0], polyline[1] - polyline[0]);
-  if (inside)
+  std::vector<LinePiece> pieces = splitWhere(polyline, spacing, precision, holds);
+  const bool closed = polyline.front() == polyline.back();
+  if (closed && pieces.size() > 2 && pieces.front().Visible && pieces.back().Visible)
   {
-    current.push_back(polyline[0]);
+    std::vector<glm::dvec3>& last = pieces.back().Points;
+    last.insert(last.end(), pieces.front().Points.begin() + 1, pieces.front().Points.end());
+    pieces.front().Points = std::move(last);
+    pieces.pop_back();
   }
-  for (std::size_t i = 1; i < polyline.size(); ++i)
+  for (LinePiece& piece : pieces)
   {
-    const glm::dvec3& a = polyline[i - 1];
-    const glm::dvec3& b = polyline[i];
-    const glm::dvec3 direction = b - a;
-    const double length = glm::length(direction);
-    const double wanted =
-      spacing > 0.0 && std::isfinite(length) ? std::ceil(length / spacing) : 1.0;
-    const int probes = static_cast<int>(std::clamp(wanted, 1.0, 100000.0));
-    double before = 0.0; // the last probe, in the current state
-    for (int k = 1; k <= probes; ++k)
+    if (piece.Visible)
     {
-      const double at = k == probes ? 1.0 : static_cast<double>(k) / probes;
-      const bool state = holds(k == probes ? b : a + at * direction, direction);
-      if (state != inside)
-      {
-        double low = before; // keeps the current state
-        double high = at;
-        for (int step = 0; step < 64 && (high - low) * length > precision; ++step)
-        {
-          const double middle = 0.5 * (low + high);
-          (holds(a + middle * direction, direction) == inside ? low : high) = middle;
-        }
-        const glm::dvec3 change = a + (0.5 * (low + high)) * direction;
-        current.push_back(change);
-        if (inside)
-        {
-          stretches.push_back(std::move(current));
-          current.clear();
-        }
-        inside = state;
-      }
-      before = at;
-    }
-    if (inside)
-    {
-      current.push_back(b);
-    }
-  }
-  if (inside && current.size() > 1)
-  {
-    // A closed loop's stretch through its first point is one stretch.
-    if (polyline.front() == polyline.back() && !stretches.empty() &&
-      stretches.front().front() == polyline.front())
-    {
-      current.insert(current.end(), stretches.front().begin() + 1, stretches.front().end());
-      stretches.front() = std::move(current);
-    }
-    else
-    {
-      stretches.push_back(std::move(current));
+      stretches.push_back(std::move(piece.Points));
     }
   }
   return stretches;

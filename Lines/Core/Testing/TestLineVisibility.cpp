@@ -583,6 +583,54 @@ TEST(LineVisibility, ShortPiecesJoinTheirNeighbours)
   EXPECT_FALSE(middle[0].Visible);
 }
 
+TEST(LineVisibility, SplitWhereFindsEachChangeAndEndsEachPieceAfterItsLastProbe)
+{
+  // x from 0 to 10 in two segments (a repeated point between them); true
+  // below 3.3 and above 7.1. Probes 1 apart find both changes; bisection
+  // puts them within 1e-9. Each piece ends after the probes that decided
+  // it: counted per state since the last end, the false piece's probes
+  // include the bisections' far sides.
+  const std::vector<glm::dvec3> line{ { 0, 0, 0 }, { 5, 0, 0 }, { 5, 0, 0 }, { 10, 0, 0 } };
+  int probes[2] = { 0, 0 };
+  std::vector<glm::dvec3> directions;
+  auto holds = [&](const glm::dvec3& p, const glm::dvec3& direction) {
+    directions.push_back(direction);
+    const bool state = p.x < 3.3 || p.x > 7.1;
+    ++probes[state];
+    return state;
+  };
+  std::vector<std::pair<bool, int>> ended;
+  auto pieceEnds = [&](bool state) {
+    ended.emplace_back(state, probes[state]);
+    probes[state] = 0;
+  };
+  const std::vector<LinePiece> pieces = splitWhere(line, 1.0, 1e-9, holds, pieceEnds);
+  ASSERT_EQ(pieces.size(), 3u);
+  EXPECT_TRUE(pieces[0].Visible);
+  EXPECT_FALSE(pieces[1].Visible);
+  EXPECT_TRUE(pieces[2].Visible);
+  EXPECT_NEAR(pieces[1].Points.front().x, 3.3, 1e-9);
+  EXPECT_NEAR(pieces[1].Points.back().x, 7.1, 1e-9);
+  EXPECT_EQ(pieces[0].Points.back(), pieces[1].Points.front());
+  EXPECT_EQ(pieces[1].Points.back(), pieces[2].Points.front());
+  EXPECT_NEAR(pieces[1].Along.front(), 3.3 / 5.0, 1e-9);
+  EXPECT_NEAR(pieces[1].Along.back(), 2.0 + 2.1 / 5.0, 1e-9);
+  // The repeated point is probed with the last real segment's direction.
+  for (const glm::dvec3& direction : directions)
+  {
+    EXPECT_EQ(direction, glm::dvec3(5, 0, 0));
+  }
+  ASSERT_EQ(ended.size(), 3u);
+  EXPECT_TRUE(ended[0].first);
+  EXPECT_FALSE(ended[1].first);
+  EXPECT_TRUE(ended[2].first);
+  EXPECT_GT(ended[1].second, 4); // probes at 4, 5, 5, 6, 7 and the bisections' far sides
+  EXPECT_EQ(probes[0] + probes[1], 0);
+  // With no spacing only the vertices are probed, and both are true:
+  // one piece (the wrong variant of probing the vertices alone).
+  EXPECT_EQ(splitWhere({ { 0, 0, 0 }, { 10, 0, 0 } }, 0.0, 1e-9, holds).size(), 1u);
+}
+
 TEST(LineVisibility, ProbesFindAnOccluderBetweenTwoVisibleEnds)
 {
   // One long segment from x = -3 to 3 under a square of side 2: both ends

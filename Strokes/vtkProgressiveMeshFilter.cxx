@@ -15,7 +15,9 @@
 #include "vtkPolyData.h"
 
 #include "ProgressiveMesh.h"
+#include "SurfaceWelding.h"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
@@ -28,6 +30,11 @@ struct vtkProgressiveMeshFilter::Internal
   std::optional<silsmooth::ProgressiveMesh> Mesh;
   vtkPolyData* Input = nullptr;
   vtkMTimeType InputTime = 0;
+  bool Weld = true;
+  // When welded: per input triangle its own input points, per input point
+  // its vertex (the lowest id at its position).
+  std::vector<silsmooth::Triangle> InputCorners;
+  std::vector<silsmooth::Id> Vertex;
 };
 
 vtkProgressiveMeshFilter::vtkProgressiveMeshFilter()
@@ -48,6 +55,66 @@ void AddCount(vtkPolyData* output, const char* name, std::size_t value)
   output->GetFieldData()->AddArray(array);
 }
 
+// The level's corners given back as input points: a corner is its
+// triangle's own input point where that point is a copy of the corner's
+// vertex (always so at the full level), else another copy of the vertex
+// the triangle has, else the vertex itself. `points` and `pointIds` become
+// the input points used, in input order, each at its vertex's position.
+void WithInputCopies(std::vector<glm::dvec3>& points, std::vector<silsmooth::Triangle>& triangles,
+  std::vector<silsmooth::Id>& pointIds, const std::vector<silsmooth::Id>& triangleIds,
+  const std::vector<silsmooth::Triangle>& inputCorners, const std::vector<silsmooth::Id>& vertex)
+{
+  std::vector<silsmooth::Id> copies; // per corner, 3 per triangle
+  copies.reserve(3 * triangles.size());
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const silsmooth::Triangle& own = inputCorners[static_cast<std::size_t>(triangleIds[t])];
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      const silsmooth::Id v = pointIds[static_cast<std::size_t>(triangles[t][k])];
+      silsmooth::Id copy = v;
+      for (std::size_t j = 0; j < 3; ++j)
+      {
+        // Its own corner k first: a triangle welded to a repeated corner
+        // keeps each of its points in place.
+        const silsmooth::Id c = own[(k + j) % 3];
+        if (vertex[static_cast<std::size_t>(c)] == v)
+        {
+          copy = c;
+          break;
+        }
+      }
+      copies.push_back(copy);
+    }
+  }
+  std::vector<silsmooth::Id> used = copies;
+  std::sort(used.begin(), used.end());
+  used.erase(std::unique(used.begin(), used.end()), used.end());
+  // Where each vertex is at this level.
+  std::vector<std::pair<silsmooth::Id, glm::dvec3>> at(pointIds.size());
+  for (std::size_t i = 0; i < pointIds.size(); ++i)
+  {
+    at[i] = { pointIds[i], points[i] };
+  }
+  std::sort(at.begin(), at.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  auto positionOf = [&](silsmooth::Id v) {
+    return std::lower_bound(at.begin(), at.end(), v, [](const auto& entry, silsmooth::Id id) {
+      return entry.first < id;
+    })->second;
+  };
+  points.resize(used.size());
+  for (std::size_t i = 0; i < used.size(); ++i)
+  {
+    points[i] = positionOf(vertex[static_cast<std::size_t>(used[i])]);
+  }
+  for (std::size_t c = 0; c < copies.size(); ++c)
+  {
+    triangles[c / 3][c % 3] = static_cast<silsmooth::Id>(
+      std::lower_bound(used.begin(), used.end(), copies[c]) - used.begin());
+  }
+  pointIds = std::move(used);
+}
+
 } // namespace
 
 int vtkProgressiveMeshFilter::RequestData(
@@ -60,9 +127,12 @@ int vtkProgressiveMeshFilter::RequestData(
     return 0;
   }
   Internal& cache = *this->Cache;
-  if (!cache.Mesh || cache.Input != input || cache.InputTime != input->GetMTime())
+  if (!cache.Mesh || cache.Input != input || cache.InputTime != input->GetMTime() ||
+    cache.Weld != this->WeldCoincidentPoints)
   {
     cache.Mesh.reset();
+    cache.InputCorners.clear();
+    cache.Vertex.clear();
     if (input->GetNumberOfStrips() > 0)
     {
       vtkErrorMacro("The input has triangle strips: run vtkTriangleFilter first.");
@@ -99,6 +169,12 @@ int vtkProgressiveMeshFilter::RequestData(
         triangles.push_back({ ids[0], ids[1], ids[2] });
       }
     }
+    if (this->WeldCoincidentPoints)
+    {
+      cache.Vertex = silsmooth::weldCoincidentPoints(points);
+      cache.InputCorners = triangles;
+      triangles = silsmooth::weldTriangles(cache.InputCorners, cache.Vertex);
+    }
     this->UpdateProgress(0.1);
     cache.Mesh.emplace(std::move(points), std::move(triangles), 0, [this](double done) {
       return vtkSilhouetteFilterSupport::ReportProgress(this, 0.1 + 0.8 * done);
@@ -110,6 +186,7 @@ int vtkProgressiveMeshFilter::RequestData(
     }
     cache.Input = input;
     cache.InputTime = input->GetMTime();
+    cache.Weld = this->WeldCoincidentPoints;
     this->UpdateProgress(0.9);
   }
   silsmooth::ProgressiveMesh& mesh = *cache.Mesh;
@@ -124,6 +201,10 @@ int vtkProgressiveMeshFilter::RequestData(
   std::vector<silsmooth::Id> pointIds;
   std::vector<silsmooth::Id> triangleIds;
   mesh.compact(points, triangles, pointIds, triangleIds);
+  if (!cache.Vertex.empty())
+  {
+    WithInputCopies(points, triangles, pointIds, triangleIds, cache.InputCorners, cache.Vertex);
+  }
 
   vtkNew<vtkPoints> outPoints;
   outPoints->SetDataTypeToDouble();
@@ -178,4 +259,5 @@ void vtkProgressiveMeshFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "TriangleCount: " << this->TriangleCount << "\n";
   os << indent << "Fraction: " << this->Fraction << "\n";
+  os << indent << "WeldCoincidentPoints: " << (this->WeldCoincidentPoints ? "On" : "Off") << "\n";
 }

@@ -15,6 +15,14 @@
  * triangle), same triangles in the same order. Strokes/Core/ProgressiveMesh.h
  * has the details.
  *
+ * Points at one position are one vertex of the progressive mesh
+ * (WeldCoincidentPoints, default on), so that a triangle soup or an asset
+ * file cut along texture seams coarsens as the surface it stands for; each
+ * corner is given back as its triangle's own input point wherever the
+ * triangle still has that vertex, so the full level is still the input
+ * exactly, and seams keep their copies (and point data) where the mesh is
+ * at full resolution.
+ *
  * Input: triangles only (polygons of other sizes and strips are an error; run
  * vtkTriangleFilter first); verts and lines are ignored. Output: the active
  * points in input order with point data copied from the input point, the
@@ -53,6 +61,17 @@ public:
   vtkGetMacro(Fraction, double);
   ///@}
 
+  ///@{
+  /**
+   * Coarsen points at one position as one vertex (default on). Off, each
+   * point is a vertex of its own: a triangle soup cannot coarsen. Changing
+   * it builds the sequence again.
+   */
+  vtkSetMacro(WeldCoincidentPoints, bool);
+  vtkGetMacro(WeldCoincidentPoints, bool);
+  vtkBooleanMacro(WeldCoincidentPoints, bool);
+  ///@}
+
 protected:
   vtkProgressiveMeshFilter();
   ~vtkProgressiveMeshFilter() override;
@@ -61,6 +80,7 @@ protected:
 
   vtkIdType TriangleCount = -1;
   double Fraction = 1.0;
+  bool WeldCoincidentPoints = true;
 
 private:
   vtkProgressiveMeshFilter(const vtkProgressiveMeshFilter&) = delete;

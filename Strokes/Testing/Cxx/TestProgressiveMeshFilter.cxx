@@ -1,13 +1,21 @@
 // vtkProgressiveMeshFilter (Kim and Choe 3.1): on the bunnies, every level is
 // a manifold mesh with consistent orientation, the triangle count asked for
 // is met by the lowest level that has it, and the full level gives back the
-// input exactly (points bit for bit, triangles in order).
+// input exactly (points bit for bit, triangles in order). A triangle soup of
+// the icosphere (each triangle with points of its own, as VTK reads a
+// textured OBJ) coarsens as the welded sphere does, each level a closed
+// manifold once its copies are merged, and comes back as the soup exactly,
+// each point with its own data; with WeldCoincidentPoints off it cannot
+// coarsen into a surface (the wrong variant).
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCleanPolyData.h"
 #include "vtkFieldData.h"
+#include "vtkFloatArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkProgressiveMeshFilter.h"
 
@@ -95,12 +103,98 @@ bool RunOn(const std::string& path)
   return true;
 }
 
+// Every triangle with three points of its own, each with a value of its own
+// in the point array "Corner".
+vtkSmartPointer<vtkPolyData> Soup(vtkPolyData* mesh)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkFloatArray> corner;
+  corner->SetName("Corner");
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfPolys(); ++c)
+  {
+    mesh->GetPolys()->GetCellAtId(c, n, ids);
+    vtkIdType own[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      own[k] = points->InsertNextPoint(mesh->GetPoint(ids[k]));
+      corner->InsertNextValue(static_cast<float>(3 * c + k));
+    }
+    polys->InsertNextCell(3, own);
+  }
+  auto soup = vtkSmartPointer<vtkPolyData>::New();
+  soup->SetPoints(points);
+  soup->SetPolys(polys);
+  soup->GetPointData()->AddArray(corner);
+  return soup;
+}
+
+bool RunOnSoup(const std::string& path)
+{
+  auto welded = silhouette_test::ReadMesh(path);
+  CHECK(welded && welded->GetNumberOfPolys() > 0, "mesh read");
+  vtkSmartPointer<vtkPolyData> soup = Soup(welded);
+  const vtkIdType full = soup->GetNumberOfPolys();
+  vtkNew<vtkProgressiveMeshFilter> pm;
+  pm->SetInputData(soup);
+  pm->SetTriangleCount(0);
+  pm->Update();
+  const vtkIdType base = Field(pm->GetOutput(), "BaseTriangleCount");
+  std::printf("%s as a soup: %lld triangles, base mesh %lld triangles\n", path.c_str(),
+    static_cast<long long>(full), static_cast<long long>(base));
+  CHECK(base > 0 && base < full / 10, "the soup coarsens far");
+  for (vtkIdType count : { base, full / 4, full / 2 })
+  {
+    pm->SetTriangleCount(count);
+    pm->Update();
+    vtkNew<vtkCleanPolyData> merged; // the copies at one position as one point
+    merged->SetInputData(pm->GetOutput());
+    merged->PointMergingOn();
+    merged->SetTolerance(0.0);
+    merged->Update();
+    const auto report = silhouette_test::AnalyzeTopology(merged->GetOutput());
+    CHECK(report.closedManifold() && report.OrientationConflicts == 0 &&
+        report.DegenerateTriangles == 0,
+      report.summary().c_str());
+  }
+  pm->SetTriangleCount(full);
+  pm->Update();
+  vtkPolyData* out = pm->GetOutput();
+  CHECK(SameAsInput(soup, out), "the full level is the soup exactly");
+  auto* pointIds = vtkIdTypeArray::SafeDownCast(out->GetPointData()->GetArray("OriginalPointId"));
+  vtkDataArray* corner = out->GetPointData()->GetArray("Corner");
+  CHECK(corner && out->GetNumberOfPoints() == soup->GetNumberOfPoints(), "every copy kept");
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    CHECK(corner->GetTuple1(i) == static_cast<double>(pointIds->GetValue(i)),
+      "each copy with its own point data");
+  }
+  // Unwelded, every triangle is a part of its own with borders all round:
+  // half of the soup's triangles are no closed surface.
+  pm->WeldCoincidentPointsOff();
+  pm->SetTriangleCount(full / 2);
+  pm->Update();
+  vtkNew<vtkCleanPolyData> merged;
+  merged->SetInputData(pm->GetOutput());
+  merged->PointMergingOn();
+  merged->SetTolerance(0.0);
+  merged->Update();
+  const auto unwelded = silhouette_test::AnalyzeTopology(merged->GetOutput());
+  std::printf("unwelded, half the soup: %s\n", unwelded.summary().c_str());
+  CHECK(!unwelded.closedManifold(), "unwelded, the soup falls apart (the wrong variant)");
+  return true;
+}
+
 } // namespace
 
 int TestProgressiveMeshFilter(int argc, char* argv[])
 {
   const bool ok = RunOn(silhouette_test::DataFile(argc, argv, "bunny_coarse.ply")) &&
     RunOn(silhouette_test::DataFile(argc, argv, "bunny.ply")) &&
-    RunOn(silhouette_test::DataFile(argc, argv, "sphere_ico80.vtp"));
+    RunOn(silhouette_test::DataFile(argc, argv, "sphere_ico80.vtp")) &&
+    RunOnSoup(silhouette_test::DataFile(argc, argv, "bunny_coarse.ply"));
   return ok ? 0 : 1;
 }

@@ -23,7 +23,6 @@
 #include <vtkProgressiveMeshFilter.h>
 #include <vtkRenderer.h>
 #include <vtkSilhouetteSmoothingFilter.h>
-#include <vtkTriangleFilter.h>
 
 #include <algorithm>
 #include <cmath>
@@ -233,15 +232,11 @@ void RunProgressiveSketch(const RenderOptions& options)
   }
   PrepareSketchFolder(options.Output);
   vtkSmartPointer<vtkPolyData> mesh = ReadMeshWithTriangles(options.Input);
-  vtkNew<vtkTriangleFilter> triangles; // the progressive mesh takes triangles only
-  triangles->SetInputData(mesh);
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
   vtkNew<vtkProgressiveMeshFilter> progressive;
   VtkErrorLog& errors = VtkErrorLog::Instance();
   errors.Clear();
   errors.Watch(progressive);
-  progressive->SetInputConnection(triangles->GetOutputPort());
+  progressive->SetInputData(mesh);
   progressive->SetTriangleCount(0); // the base mesh
   progressive->Update();
   errors.ThrowIfErrors("the progressive mesh failed");

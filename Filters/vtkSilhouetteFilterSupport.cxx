@@ -8,6 +8,7 @@
 #include "vtkDataArray.h"
 #include "vtkDemandDrivenPipeline.h"
 #include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
 #include "vtkFloatArray.h"
 #include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
@@ -405,6 +406,36 @@ std::string ReadFiniteTriangles(vtkPolyData* input, Triangles& out)
   }
   return "Input has " + std::to_string(out.NonFinitePoints) +
     " points with NaN or infinite coordinates.";
+}
+
+std::string Triangulate(vtkPolyData* input, vtkPolyData* output)
+{
+  output->Initialize();
+  Triangles mesh;
+  const std::string error = ReadTriangles(input, mesh);
+  if (!error.empty())
+  {
+    return error;
+  }
+  const auto count = static_cast<vtkIdType>(mesh.Cells.size());
+  vtkNew<vtkCellArray> polys;
+  polys->AllocateExact(count, 3 * count);
+  for (const silsmooth::Triangle& t : mesh.Cells)
+  {
+    const vtkIdType ids[3] = { t[0], t[1], t[2] };
+    polys->InsertNextCell(3, ids);
+  }
+  output->SetPoints(input->GetPoints());
+  output->GetPointData()->PassData(input->GetPointData());
+  output->SetPolys(polys);
+  vtkCellData* outCd = output->GetCellData();
+  outCd->CopyAllocate(input->GetCellData(), count);
+  for (vtkIdType t = 0; t < count; ++t)
+  {
+    outCd->CopyData(input->GetCellData(), mesh.CellIds[static_cast<std::size_t>(t)], t);
+  }
+  output->GetFieldData()->PassData(input->GetFieldData());
+  return "";
 }
 
 PassedCells PassVertsAndLines(vtkPolyData* input)

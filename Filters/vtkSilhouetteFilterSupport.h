@@ -114,6 +114,15 @@ std::optional<Surface> ReadSurface(
 /// coordinates, for the filters that cannot use such input at all.
 std::string ReadFiniteTriangles(vtkPolyData* input, Triangles& out);
 
+/// The input's polygons and strips as the module's filters read them
+/// (ReadTriangles), for a program or filter that needs triangles before
+/// them (vtkTriangleFilter cuts some concave polygons into fewer
+/// triangles than they take): `output` gets the input's points with their
+/// point data and one triangle per ReadTriangles triangle with its cell's
+/// data; vertex and line cells are left out. Returns "" or ReadTriangles'
+/// error (then `output` is left empty).
+std::string Triangulate(vtkPolyData* input, vtkPolyData* output);
+
 /// The vertex and line cells a mesh-output filter passes through: those with
 /// enough points for their kind (a vertex cell one, a line two), with each
 /// one's input cell id. The others draw nothing, and VTK's XML writer crashes

@@ -31,6 +31,8 @@ struct vtkProgressiveMeshFilter::Internal
   vtkPolyData* Input = nullptr;
   vtkMTimeType InputTime = 0;
   bool Weld = true;
+  // Per triangle read, its input cell.
+  std::vector<vtkIdType> CellIds;
   // When welded: per input triangle its own input points, per input point
   // its vertex (the lowest id at its position).
   std::vector<silsmooth::Triangle> InputCorners;
@@ -131,44 +133,21 @@ int vtkProgressiveMeshFilter::RequestData(
     cache.Weld != this->WeldCoincidentPoints)
   {
     cache.Mesh.reset();
+    cache.CellIds.clear();
     cache.InputCorners.clear();
     cache.Vertex.clear();
-    if (input->GetNumberOfStrips() > 0)
+    // Polygons and strips as triangles, as the module's other filters read
+    // them (a concave polygon by ear clipping).
+    vtkSilhouetteFilterSupport::Triangles read;
+    const std::string error = vtkSilhouetteFilterSupport::ReadFiniteTriangles(input, read);
+    if (!error.empty())
     {
-      vtkErrorMacro("The input has triangle strips: run vtkTriangleFilter first.");
+      vtkErrorMacro(<< error);
       return 0;
     }
-    std::vector<glm::dvec3> points(static_cast<std::size_t>(input->GetNumberOfPoints()));
-    for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
-    {
-      input->GetPoint(i, &points[static_cast<std::size_t>(i)][0]);
-    }
-    std::vector<silsmooth::Triangle> triangles;
-    if (vtkCellArray* polys = input->GetPolys())
-    {
-      vtkIdType count = 0;
-      const vtkIdType* ids = nullptr;
-      auto iterator = vtk::TakeSmartPointer(polys->NewIterator());
-      for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal(); iterator->GoToNextCell())
-      {
-        iterator->GetCurrentCell(count, ids);
-        if (count != 3)
-        {
-          vtkErrorMacro(
-            "The input has a polygon of " << count << " points: run vtkTriangleFilter first.");
-          return 0;
-        }
-        for (int k = 0; k < 3; ++k)
-        {
-          if (ids[k] < 0 || ids[k] >= input->GetNumberOfPoints())
-          {
-            vtkErrorMacro("The input has a triangle with a point id out of range.");
-            return 0;
-          }
-        }
-        triangles.push_back({ ids[0], ids[1], ids[2] });
-      }
-    }
+    std::vector<glm::dvec3> points = std::move(read.Points);
+    std::vector<silsmooth::Triangle> triangles = std::move(read.Cells);
+    cache.CellIds = std::move(read.CellIds);
     if (this->WeldCoincidentPoints)
     {
       cache.Vertex = silsmooth::weldCoincidentPoints(points);
@@ -224,8 +203,6 @@ int vtkProgressiveMeshFilter::RequestData(
   }
   outPd->AddArray(originalPoint);
 
-  // Input cell ids: VTK numbers verts, then lines, then polys.
-  const vtkIdType polyOffset = input->GetNumberOfVerts() + input->GetNumberOfLines();
   vtkNew<vtkCellArray> polys;
   polys->AllocateExact(
     static_cast<vtkIdType>(triangles.size()), 3 * static_cast<vtkIdType>(triangles.size()));
@@ -240,7 +217,7 @@ int vtkProgressiveMeshFilter::RequestData(
     const vtkIdType ids[3] = { static_cast<vtkIdType>(triangles[t][0]),
       static_cast<vtkIdType>(triangles[t][1]), static_cast<vtkIdType>(triangles[t][2]) };
     polys->InsertNextCell(3, ids);
-    const vtkIdType inputCell = polyOffset + static_cast<vtkIdType>(triangleIds[t]);
+    const vtkIdType inputCell = cache.CellIds[static_cast<std::size_t>(triangleIds[t])];
     outCd->CopyData(inCd, inputCell, static_cast<vtkIdType>(t));
     originalCell->SetValue(static_cast<vtkIdType>(t), inputCell);
   }

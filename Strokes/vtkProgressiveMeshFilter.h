@@ -12,7 +12,8 @@
  * negative). The sequence is built once per input; changing the count only
  * applies splits or collapses. At the full count the output is the input
  * mesh exactly: same points (positions bit for bit, less points used by no
- * triangle), same triangles in the same order. Strokes/Core/ProgressiveMesh.h
+ * triangle), same triangles in the same order (a polygon's or strip's as
+ * they are read, below). Strokes/Core/ProgressiveMesh.h
  * has the details.
  *
  * Points at one position are one vertex of the progressive mesh
@@ -23,8 +24,11 @@
  * exactly, and seams keep their copies (and point data) where the mesh is
  * at full resolution.
  *
- * Input: triangles only (polygons of other sizes and strips are an error; run
- * vtkTriangleFilter first); verts and lines are ignored. Output: the active
+ * Input: polygons and strips, as triangles the way the module's other
+ * filters read them (a polygon as a fan, a concave one by ear clipping;
+ * vtkTriangleFilter cuts some concave polygons into fewer triangles than
+ * they take); verts and lines are ignored; points with NaN or infinite
+ * coordinates are an error. Output: the active
  * points in input order with point data copied from the input point, the
  * active triangles in input order with cell data copied; point
  * `OriginalPointId` and cell `OriginalCellId` (vtkIdType, the input's ids);

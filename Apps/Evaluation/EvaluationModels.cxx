@@ -14,12 +14,12 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
+#include "vtkSilhouetteFilterSupport.h"
 #include "vtkSilhouetteQuadricDecimation.h"
 #include "vtkStaticCellLocator.h"
 #include "vtkTorusSurfaceSource.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
-#include "vtkTriangleFilter.h"
 
 #include <cmath>
 #include <map>
@@ -406,14 +406,30 @@ double EnclosedVolume(vtkPolyData* mesh)
   return volume;
 }
 
+namespace
+{
+
+// The input's triangles as the filters read them (vtkTriangleFilter cuts
+// some concave polygons into fewer triangles than they take: assimp's
+// concave_polygon.obj, 17 of 64).
+vtkSmartPointer<vtkPolyData> FiltersTriangles(vtkPolyData* input)
+{
+  auto triangles = vtkSmartPointer<vtkPolyData>::New();
+  const std::string error = vtkSilhouetteFilterSupport::Triangulate(input, triangles);
+  if (!error.empty())
+  {
+    throw std::runtime_error(error);
+  }
+  return triangles;
+}
+
+} // namespace
+
 vtkSmartPointer<vtkPolyData> WeldedTriangles(vtkPolyData* input, vtkIdType* merged)
 {
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(input);
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
+  vtkSmartPointer<vtkPolyData> triangles = FiltersTriangles(input);
   vtkNew<vtkCleanPolyData> clean;
-  clean->SetInputConnection(triangles->GetOutputPort());
+  clean->SetInputData(triangles);
   clean->PointMergingOn();
   clean->SetTolerance(0.0);
   // Merged, pieces of one surface may still disagree on their winding (the
@@ -444,7 +460,7 @@ vtkSmartPointer<vtkPolyData> WeldedTriangles(vtkPolyData* input, vtkIdType* merg
   {
     // Points no triangle uses go too; only those sharing a position count.
     vtkNew<vtkCleanPolyData> unused;
-    unused->SetInputConnection(triangles->GetOutputPort());
+    unused->SetInputData(triangles);
     unused->PointMergingOff();
     unused->Update();
     *merged = unused->GetOutput()->GetNumberOfPoints() - mesh->GetNumberOfPoints();
@@ -454,12 +470,7 @@ vtkSmartPointer<vtkPolyData> WeldedTriangles(vtkPolyData* input, vtkIdType* merg
 
 vtkSmartPointer<vtkPolyData> Decimate(vtkPolyData* original, int triangles)
 {
-  vtkNew<vtkTriangleFilter> triangulate;
-  triangulate->SetInputData(original);
-  triangulate->PassVertsOff();
-  triangulate->PassLinesOff();
-  triangulate->Update();
-  vtkPolyData* input = triangulate->GetOutput();
+  vtkSmartPointer<vtkPolyData> input = FiltersTriangles(original);
   const vtkIdType have = input->GetNumberOfPolys();
   auto coarse = vtkSmartPointer<vtkPolyData>::New();
   if (have <= triangles)

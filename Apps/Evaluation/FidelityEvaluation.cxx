@@ -25,7 +25,6 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSilhouetteSmoothingFilter.h"
-#include "vtkTriangleFilter.h"
 
 #include <glm/vec3.hpp>
 

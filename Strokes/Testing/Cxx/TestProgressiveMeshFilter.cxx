@@ -6,7 +6,10 @@
 // textured OBJ) coarsens as the welded sphere does, each level a closed
 // manifold once its copies are merged, and comes back as the soup exactly,
 // each point with its own data; with WeldCoincidentPoints off it cannot
-// coarsen into a surface (the wrong variant).
+// coarsen into a surface (the wrong variant). assimp's concave_polygon.obj
+// (one face of 66 corners, a ring walked through a slit) behind a vertex
+// cell is read as the module's filters read it: 64 triangles at the full
+// level, each with the polygon's cell id and data.
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkCleanPolyData.h"
@@ -22,6 +25,7 @@
 #include "SilhouetteTestSupport.h"
 
 #include <cstdio>
+#include <string>
 
 namespace
 {
@@ -188,6 +192,42 @@ bool RunOnSoup(const std::string& path)
   return true;
 }
 
+bool RunOnPolygon()
+{
+  const std::string assets = silhouette_test::AssetModelsFolder();
+  CHECK(!assets.empty(), "Debian's assimp-testmodels is installed (scripts/setup.sh installs it)");
+  vtkSmartPointer<vtkPolyData> ring =
+    silhouette_test::ReadMesh(assets + "/OBJ/concave_polygon.obj");
+  CHECK(ring && ring->GetNumberOfPolys() == 1 && ring->GetNumberOfVerts() == 0, "one polygon");
+  vtkNew<vtkCellArray> verts;
+  const vtkIdType first = 0;
+  verts->InsertNextCell(1, &first);
+  ring->SetVerts(verts);
+  ring->GetCellData()->Initialize(); // the reader's arrays have one tuple, for the polygon
+  vtkNew<vtkIdTypeArray> label; // the vertex cell's, then the polygon's
+  label->SetName("Label");
+  label->InsertNextValue(7);
+  label->InsertNextValue(42);
+  ring->GetCellData()->AddArray(label);
+  vtkNew<vtkProgressiveMeshFilter> pm;
+  pm->SetInputData(ring);
+  pm->Update();
+  vtkPolyData* out = pm->GetOutput();
+  std::printf("concave_polygon.obj: %lld triangles at the full level, base mesh %lld\n",
+    static_cast<long long>(out->GetNumberOfPolys()),
+    static_cast<long long>(Field(out, "BaseTriangleCount")));
+  CHECK(out->GetNumberOfPolys() == 64 && Field(out, "FullTriangleCount") == 64,
+    "the ring's 64 triangles");
+  auto* cells = vtkIdTypeArray::SafeDownCast(out->GetCellData()->GetArray("OriginalCellId"));
+  auto* labels = vtkIdTypeArray::SafeDownCast(out->GetCellData()->GetArray("Label"));
+  CHECK(cells && labels, "OriginalCellId and the cell data");
+  for (vtkIdType t = 0; t < out->GetNumberOfPolys(); ++t)
+  {
+    CHECK(cells->GetValue(t) == 1 && labels->GetValue(t) == 42, "each triangle the polygon's");
+  }
+  return true;
+}
+
 } // namespace
 
 int TestProgressiveMeshFilter(int argc, char* argv[])
@@ -195,6 +235,6 @@ int TestProgressiveMeshFilter(int argc, char* argv[])
   const bool ok = RunOn(silhouette_test::DataFile(argc, argv, "bunny_coarse.ply")) &&
     RunOn(silhouette_test::DataFile(argc, argv, "bunny.ply")) &&
     RunOn(silhouette_test::DataFile(argc, argv, "sphere_ico80.vtp")) &&
-    RunOnSoup(silhouette_test::DataFile(argc, argv, "bunny_coarse.ply"));
+    RunOnSoup(silhouette_test::DataFile(argc, argv, "bunny_coarse.ply")) && RunOnPolygon();
   return ok ? 0 : 1;
 }

@@ -10,18 +10,26 @@
 //   outside and inside.
 // - A mesh already consistent keeps its triangles as they were, corner for
 //   corner (the points renumbered).
+// - assimp's concave_polygon.obj (one face of 66 corners, a ring walked
+//   through a slit) comes back as the 64 triangles the filters cut it into,
+//   with the ring's area; vtkTriangleFilter, which this used before (the
+//   wrong variant, counted here), cuts it into 17, and `figure` drew the
+//   ring with pieces missing.
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
+#include "vtkTriangleFilter.h"
 
 #include "EvaluationModels.h"
 #include "SilhouetteTestSupport.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 #include <utility>
 
 namespace
@@ -77,6 +85,53 @@ bool CheckSoup(vtkPolyData* bunny, bool reverseFirst)
 
 } // namespace
 
+// Half the length of the summed cross products: the area of triangles that
+// tile a flat region facing one way.
+double FlatArea(vtkPolyData* mesh)
+{
+  double sum[3] = { 0.0, 0.0, 0.0 };
+  auto it = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      double a[3];
+      double b[3];
+      mesh->GetPoint(ids[k], a);
+      mesh->GetPoint(ids[(k + 1) % n], b);
+      sum[0] += a[1] * b[2] - a[2] * b[1];
+      sum[1] += a[2] * b[0] - a[0] * b[2];
+      sum[2] += a[0] * b[1] - a[1] * b[0];
+    }
+  }
+  return 0.5 * std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+}
+
+bool CheckConcavePolygon()
+{
+  const std::string assets = silhouette_test::AssetModelsFolder();
+  CHECK(!assets.empty(), "Debian's assimp-testmodels is installed (scripts/setup.sh installs it)");
+  vtkSmartPointer<vtkPolyData> ring =
+    silhouette_test::ReadMesh(assets + "/OBJ/concave_polygon.obj");
+  CHECK(ring && ring->GetNumberOfPolys() == 1, "the file reads, one polygon");
+  vtkSmartPointer<vtkPolyData> welded = silhouette_eval::WeldedTriangles(ring);
+  vtkNew<vtkTriangleFilter> stock;
+  stock->SetInputData(ring);
+  stock->Update();
+  const double area = FlatArea(ring);
+  std::printf("concave_polygon.obj (area %.4f): %lld triangles of area %.4f (vtkTriangleFilter: "
+              "%lld)\n",
+    area, static_cast<long long>(welded->GetNumberOfPolys()), FlatArea(welded),
+    static_cast<long long>(stock->GetOutput()->GetNumberOfPolys()));
+  CHECK(welded->GetNumberOfPolys() == 64, "the ring's 64 triangles");
+  CHECK(std::abs(FlatArea(welded) - area) < 1e-6 * area, "the ring's area");
+  CHECK(stock->GetOutput()->GetNumberOfPolys() < 64, "vtkTriangleFilter drops part of it");
+  return true;
+}
+
 int TestEvaluationWelding(int argc, char* argv[])
 {
   const auto bunny = silhouette_test::ReadMesh(silhouette_test::DataFile(argc, argv, "bunny.ply"));
@@ -87,6 +142,7 @@ int TestEvaluationWelding(int argc, char* argv[])
   }
   bool ok = CheckSoup(bunny, false);
   ok = CheckSoup(bunny, true) && ok;
+  ok = CheckConcavePolygon() && ok;
   // A consistent mesh keeps its triangles.
   vtkSmartPointer<vtkPolyData> same = silhouette_eval::WeldedTriangles(bunny);
   bool identical = same->GetNumberOfPolys() == bunny->GetNumberOfPolys();

@@ -1,5 +1,6 @@
 #include "PrintableText.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace cli
@@ -44,6 +45,18 @@ std::size_t Utf8SequenceLength(const std::string& text, std::size_t at)
   return length;
 }
 
+// The length of the printable character at `at` (ASCII or a UTF-8
+// letter), or 0 for a byte PrintableText escapes.
+std::size_t PrintableLength(const std::string& text, std::size_t at)
+{
+  const auto byte = static_cast<unsigned char>(text[at]);
+  if (byte >= 0x20 && byte < 0x7F)
+  {
+    return 1;
+  }
+  return byte >= 0x80 ? Utf8SequenceLength(text, at) : 0;
+}
+
 void AppendEscaped(std::string& out, unsigned char byte)
 {
   char escaped[5];
@@ -66,7 +79,7 @@ std::string PrintableText(const std::string& text)
       ++at;
       continue;
     }
-    const std::size_t length = byte >= 0x80 ? Utf8SequenceLength(text, at) : 0;
+    const std::size_t length = PrintableLength(text, at);
     if (length > 0)
     {
       out.append(text, at, length);
@@ -79,6 +92,32 @@ std::string PrintableText(const std::string& text)
     }
   }
   return out;
+}
+
+std::string WithoutBinaryTail(const std::string& text)
+{
+  std::size_t first = text.size();
+  int escaped = 0;
+  for (std::size_t at = 0; at < text.size();)
+  {
+    const std::size_t length = PrintableLength(text, at);
+    if (length == 0)
+    {
+      first = std::min(first, at);
+      ++escaped;
+    }
+    at += length > 0 ? length : 1;
+  }
+  if (escaped < 4)
+  {
+    return text;
+  }
+  std::string cut = text.substr(0, first);
+  while (!cut.empty() && cut.back() == ' ')
+  {
+    cut.pop_back();
+  }
+  return cut + " [binary data]";
 }
 
 } // namespace cli

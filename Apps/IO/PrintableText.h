@@ -15,6 +15,14 @@ namespace cli
  */
 std::string PrintableText(const std::string& text);
 
+/**
+ * `text` cut before its binary tail, with " [binary data]" in its place: from
+ * the first byte PrintableText would escape, when at least four bytes from
+ * there on would be (a reader quoting a line of a file of random bytes).
+ * Text with fewer such bytes is returned as it is.
+ */
+std::string WithoutBinaryTail(const std::string& text);
+
 } // namespace cli
 
 #endif

@@ -1,6 +1,7 @@
 #include "VtkErrorLog.h"
 
 #include "CliErrors.h"
+#include "PrintableText.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
@@ -203,7 +204,7 @@ std::string EssenceOfVtkMessage(const std::string& text)
   {
     essence.pop_back();
   }
-  essence = Trim(essence);
+  essence = Trim(WithoutBinaryTail(essence));
   if (essence.size() > MessageLength)
   {
     essence = essence.substr(0, MessageLength) + " [...]";

@@ -6,6 +6,7 @@
 #include "FileGeometry.h"
 #include "LegacyCheck.h"
 #include "MeshIO.h"
+#include "PrintableText.h"
 #include "StlCheck.h"
 #include "VtkErrorLog.h"
 
@@ -410,6 +411,25 @@ TEST(FileGeometry, AReadersMessageIsOneShortLine)
     cli::EssenceOfVtkMessage("vtkPLYReader (0x1): Cannot read geometry."), "Cannot read geometry");
 }
 
+TEST(FileGeometry, AReadersMessageLeavesOutTheBinaryItQuotes)
+{
+  // A file of random bytes: vtkOBJReader quotes its first "line", which
+  // escaped for the terminal made a 664-byte message (a user's trial,
+  // 2026-12-05). UTF-8 letters and up to three stray bytes stay.
+  std::string binary = "Line longer than 262144: ";
+  for (int i = 0; i < 200; ++i)
+  {
+    binary += static_cast<char>(0x80 + (i * 37) % 0x80);
+  }
+  EXPECT_EQ(cli::EssenceOfVtkMessage("vtkOBJReader (0x1): " + binary),
+    "Line longer than 262144: [binary data]");
+  const std::string letters = "Cannot open file caf\xC3\xA9 \xE6\x96\x87.obj";
+  EXPECT_EQ(cli::EssenceOfVtkMessage("vtkOBJReader (0x1): " + letters), letters);
+  const std::string few = std::string("bad tag \x01\x02\x03 here");
+  EXPECT_EQ(cli::WithoutBinaryTail(few), few);
+  EXPECT_EQ(cli::WithoutBinaryTail(few + "\x04"), "bad tag [binary data]");
+}
+
 TEST(FileGeometry, OtherCellsAreComparedByPosition)
 {
   cli::FileGeometry file = SquareInFile();
@@ -512,8 +532,8 @@ TEST(FileGeometry, AnStlFileIsHeldToItsFacets)
     ASSERT_EQ(npts, 3);
     const std::vector<vtkIdType> turned{ ids[1], ids[0], ids[2] };
     read->GetPolys()->ReplaceCellAtId(1, 3, turned.data());
-    EXPECT_THROW(cli::RequireReadAsWritten(facts.Geometry, read, path, "vtkSTLReader"),
-      cli::RuntimeError);
+    EXPECT_THROW(
+      cli::RequireReadAsWritten(facts.Geometry, read, path, "vtkSTLReader"), cli::RuntimeError);
     std::remove(path.c_str());
   }
 }

@@ -77,6 +77,18 @@ bool HasTriangleWithArea(vtkPolyData* mesh)
   return false;
 }
 
+// A drawing of nothing, of a mesh that has an outline from some view, says
+// why (a flat mesh seen from its side drew a blank image with no word).
+void WarnIfBlank(bool blank, const std::string& path, vtkPolyData* mesh)
+{
+  if (blank && HasTriangleWithArea(mesh))
+  {
+    std::cerr << "silhouette: warning: '" << PrintableText(path)
+              << "' shows nothing of the mesh: it is outside the view, or seen edge-on (a flat "
+                 "mesh from its side); try another --azimuth or --elevation\n";
+  }
+}
+
 // Reads the mesh and refuses one the filter could do nothing with. One whose
 // triangles all lack an area (all its points at one place, or on one line)
 // goes on, as the filter's input without a proper triangle does, but says
@@ -280,7 +292,8 @@ void RunProgressiveSketch(const RenderOptions& options)
     }
     else
     {
-      RenderToPng(view, run.Filter, levelMesh, levelOptions);
+      WarnIfBlank(
+        RenderToPng(view, run.Filter, levelMesh, levelOptions), levelOptions.Output, levelMesh);
     }
     const Figures figures =
       CollectFigures(options.Input, levelOptions.Output, run.Filter->GetOutput(),
@@ -358,7 +371,7 @@ void RunRender(const RenderOptions& options)
   }
   else
   {
-    RenderToPng(view, run.Filter, mesh, options, &outputs);
+    WarnIfBlank(RenderToPng(view, run.Filter, mesh, options, &outputs), options.Output, mesh);
   }
   if (options.LinesOutput)
   {

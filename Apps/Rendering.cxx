@@ -15,6 +15,7 @@
 #include <vtkDataObject.h>
 #include <vtkDataSetMapper.h>
 #include <vtkFaceSilhouetteLines.h>
+#include <vtkImageData.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
@@ -122,7 +123,34 @@ void ShadeAsSurface(vtkActor* actor)
   property->SetSpecularPower(20.0);
 }
 
-void WriteWindowPng(vtkRenderWindow* window, const std::string& path, FileBatch* batch)
+namespace
+{
+
+// Whether every pixel of the captured image has one colour (nothing drawn).
+bool IsOneColour(vtkImageData* image)
+{
+  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  auto* bytes = vtkUnsignedCharArray::SafeDownCast(scalars);
+  if (!bytes || bytes->GetNumberOfTuples() == 0)
+  {
+    return false;
+  }
+  const int components = bytes->GetNumberOfComponents();
+  const unsigned char* first = bytes->GetPointer(0);
+  const vtkIdType values = bytes->GetNumberOfValues();
+  for (vtkIdType i = components; i < values; ++i)
+  {
+    if (first[i] != first[i % components])
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+} // namespace
+
+bool WriteWindowPng(vtkRenderWindow* window, const std::string& path, FileBatch* batch)
 {
   VtkErrorLog& errors = VtkErrorLog::Instance();
   errors.Clear();
@@ -133,6 +161,8 @@ void WriteWindowPng(vtkRenderWindow* window, const std::string& path, FileBatch*
   // An offscreen window keeps the frame just rendered; rendering it again
   // would count as a frame in a viewer's frame rate.
   capture->SetShouldRerender(!window->GetOffScreenRendering());
+  capture->Update();
+  const bool blank = IsOneColour(capture->GetOutput());
   vtkNew<vtkPNGWriter> writer;
   errors.Watch(writer);
   writer->SetInputConnection(capture->GetOutputPort());
@@ -154,6 +184,7 @@ void WriteWindowPng(vtkRenderWindow* window, const std::string& path, FileBatch*
   {
     WriteFileAtomically(path, bytes);
   }
+  return blank;
 }
 
 namespace
@@ -428,7 +459,7 @@ void RequireDisplay()
   }
 }
 
-void RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
+bool RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
   vtkPolyData* input, const RenderOptions& options, FileBatch* batch)
 {
   VtkErrorLog& errors = VtkErrorLog::Instance();
@@ -454,7 +485,7 @@ void RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   view.Window->Render();
   errors.ThrowIfErrors("rendering failed");
 
-  WriteWindowPng(view.Window, options.Output, batch);
+  return WriteWindowPng(view.Window, options.Output, batch);
 }
 
 void RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,

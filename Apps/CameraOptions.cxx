@@ -309,7 +309,8 @@ std::string CameraOptionsHelp()
   --elevation DEG          turn the camera up or down over the focal point;
                            the view-up turns with it (default 0)
   --zoom F                 divide the view angle (the parallel scale with
-                           --parallel) by F > 0 (default 1)
+                           --parallel) by F > 0 (default 1); a view angle
+                           past 1e-8 to 179 degrees is clamped, with a warning
   --camera-position X Y Z  put the camera at X Y Z instead of the framing
                            camera (default: the framing camera, see below)
   --focal-point X Y Z      the point the explicit camera looks at; needs
@@ -489,7 +490,16 @@ void SetUpCamera(vtkRenderer* renderer, const double bounds[6], const CameraOpti
   }
   if (options.Zoom != 1.0)
   {
+    // VTK keeps a view angle within [1e-8, 179] degrees: a zoom past that
+    // is clamped, which the user is told (it changes nothing more).
+    const double wanted = camera->GetViewAngle() / options.Zoom;
     camera->Zoom(options.Zoom);
+    if (!camera->GetParallelProjection() && camera->GetViewAngle() != wanted)
+    {
+      std::cerr << "silhouette: warning: --zoom " << options.Zoom << " asks for a view angle of "
+                << wanted << " degrees; VTK keeps it within 1e-08 to 179, so it is "
+                << camera->GetViewAngle() << "\n";
+    }
   }
   if (finiteBounds)
   {

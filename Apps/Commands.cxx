@@ -84,8 +84,9 @@ void WarnIfBlank(bool blank, const std::string& path, vtkPolyData* mesh)
   if (blank && HasTriangleWithArea(mesh))
   {
     std::cerr << "silhouette: warning: '" << PrintableText(path)
-              << "' shows nothing of the mesh: it is outside the view, or seen edge-on (a flat "
-                 "mesh from its side); try another --azimuth or --elevation\n";
+              << "' shows nothing of the mesh: it is outside the view, smaller than a pixel, or "
+                 "seen edge-on (a flat mesh from its side); try another --azimuth, --elevation or "
+                 "--zoom\n";
   }
 }
 

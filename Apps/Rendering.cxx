@@ -25,6 +25,7 @@
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
 #include <vtkSilhouetteLineVisibility.h>
 #include <vtkSilhouetteSmoothingFilter.h>
 #include <vtkSilhouetteSmoothingMapper.h>
@@ -34,6 +35,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <unistd.h>
@@ -126,21 +128,22 @@ void ShadeAsSurface(vtkActor* actor)
 namespace
 {
 
-// Whether every pixel of the captured image has one colour (nothing drawn).
-bool IsOneColour(vtkImageData* image)
+// Whether every pixel of the captured image is the background's colour
+// (nothing drawn; a mesh filling the whole image is one colour too).
+bool IsBackgroundOnly(vtkImageData* image, const double background[3])
 {
   vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
   auto* bytes = vtkUnsignedCharArray::SafeDownCast(scalars);
-  if (!bytes || bytes->GetNumberOfTuples() == 0)
+  if (!bytes || bytes->GetNumberOfTuples() == 0 || bytes->GetNumberOfComponents() < 3)
   {
     return false;
   }
   const int components = bytes->GetNumberOfComponents();
-  const unsigned char* first = bytes->GetPointer(0);
-  const vtkIdType values = bytes->GetNumberOfValues();
-  for (vtkIdType i = components; i < values; ++i)
+  const unsigned char* values = bytes->GetPointer(0);
+  for (vtkIdType i = 0; i < bytes->GetNumberOfValues(); ++i)
   {
-    if (first[i] != first[i % components])
+    const int c = static_cast<int>(i % components);
+    if (c < 3 && std::abs(values[i] - 255.0 * background[c]) > 1.0)
     {
       return false;
     }
@@ -162,7 +165,8 @@ bool WriteWindowPng(vtkRenderWindow* window, const std::string& path, FileBatch*
   // would count as a frame in a viewer's frame rate.
   capture->SetShouldRerender(!window->GetOffScreenRendering());
   capture->Update();
-  const bool blank = IsOneColour(capture->GetOutput());
+  vtkRenderer* first = window->GetRenderers()->GetFirstRenderer();
+  const bool blank = first && IsBackgroundOnly(capture->GetOutput(), first->GetBackground());
   vtkNew<vtkPNGWriter> writer;
   errors.Watch(writer);
   writer->SetInputConnection(capture->GetOutputPort());

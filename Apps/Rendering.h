@@ -66,7 +66,7 @@ void ShadeAsSurface(vtkActor* actor);
 
 /// Writes the window's last frame to a PNG file (re-rendering only an
 /// onscreen window), or adds it to `batch`; throws RuntimeError on failure.
-/// Returns whether the frame is all one colour (nothing drawn).
+/// Returns whether the frame is all its first renderer's background (nothing drawn).
 bool WriteWindowPng(vtkRenderWindow* window, const std::string& path, FileBatch* batch = nullptr);
 
 /**
@@ -88,7 +88,7 @@ void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter,
  * Draws `options.Style` of the filter's output (or of `input` with
  * --no-smoothing) into `view` with the camera already set up, and writes
  * the PNG image (or adds it to `batch`). Throws RuntimeError on any VTK error.
- * Returns whether the image is all one colour (nothing drawn).
+ * Returns whether the image is all background (nothing drawn).
  */
 bool RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
   vtkPolyData* input, const RenderOptions& options, FileBatch* batch = nullptr);

@@ -79,14 +79,22 @@ private:
   // usemtl, up to white space) into a 100-byte buffer without a bound: a
   // name of 100 characters or more writes past it (a crash from 112 on in a
   // file with texture coordinates; shorter overruns corrupt it silently).
+  // A usemtl with no name it refuses, saying only "Error reading 'usemtl'"
+  // (assimp's empty_mat.obj): the user is told what to change.
   void RefuseLongMaterialNames() const
   {
     constexpr std::size_t buffer = 100;
     for (const Statement& statement : this->Statements)
     {
-      if (statement.Keyword() != "usemtl" || statement.Words.size() < 2)
+      if (statement.Keyword() != "usemtl")
       {
         continue;
+      }
+      if (statement.Words.size() < 2)
+      {
+        this->Fail(statement,
+          ": 'usemtl' names no material, which vtkOBJReader refuses (name one, or delete the "
+          "line)");
       }
       const std::string& name = statement.Words[1];
       const std::size_t length = static_cast<std::size_t>(

@@ -283,7 +283,10 @@ void RunProgressiveSketch(const RenderOptions& options)
     SetUpCamera(view.Renderer, mesh->GetBounds(), options.Camera);
     vtkCamera* camera = view.Renderer->GetActiveCamera();
     const SmoothingRun run = SmoothSilhouette(levelMesh, camera, options.Camera);
-    if (level == 0)
+    // The smoothing's warnings about the file (near copies to weld, normals
+    // it ignores) are those of the input's own level; the coarser levels'
+    // points are the progressive mesh's, which the user cannot change.
+    if (level + 1 == options.ProgressiveLevels)
     {
       PrintWarnings(run);
     }

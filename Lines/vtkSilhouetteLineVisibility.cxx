@@ -379,8 +379,14 @@ int vtkSilhouetteLineVisibility::RequestViewData(vtkInformation*,
     // 2, 4 and the whole line of sight none (docs/line-drawings.md).
     gapParameters.DepthJump = 2.0 * parameters.Tolerance;
     gapParameters.Visibility = edgeParameters;
-    for (const std::vector<glm::dvec3>& gap :
-      silsmooth::outlineGaps(occluder, view.Geometry, writer.visiblePieces(), gapParameters))
+    // Each gap joined to the lines at its ends: it stops where they cover
+    // the contour (1.5 px from a line's end, or beside one within
+    // OutlineGapPixels), which left a break of a pixel or two at each end of
+    // a filled gap (a user's trial: the Wuson's back read as a dashed line).
+    const std::vector<std::vector<glm::dvec3>>& drawn = writer.visiblePieces();
+    for (const std::vector<glm::dvec3>& gap : silsmooth::joinedToDrawnLines(
+           silsmooth::outlineGaps(occluder, view.Geometry, drawn, gapParameters), view.Geometry,
+           drawn, this->OutlineGapPixels + 1.0))
     {
       writer.appendOutlineGap(gap);
     }

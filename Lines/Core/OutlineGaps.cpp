@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <unordered_map>
 
 namespace silsmooth
@@ -41,7 +42,8 @@ public:
         const bool projected = view.toPixels(line[i], pixel);
         if (projected && havePrevious)
         {
-          this->file({ previous, pixel, !closed && i == 1, !closed && i + 1 == n });
+          this->file(
+            { previous, pixel, line[i - 1], line[i], !closed && i == 1, !closed && i + 1 == n });
         }
         previous = pixel;
         havePrevious = projected;
@@ -93,11 +95,48 @@ public:
     return false;
   }
 
+  /// The drawn point nearest `pixel`, within `reach` pixels, in model
+  /// coordinates (interpolated along its segment as in the image), or no
+  /// value. Ties go to the segment filed first.
+  std::optional<glm::dvec3> nearest(const glm::dvec2& pixel, double reach) const
+  {
+    std::optional<glm::dvec3> found;
+    double best = reach;
+    for (std::int64_t r = this->row(pixel.y - reach); r <= this->row(pixel.y + reach); ++r)
+    {
+      for (std::int64_t c = this->column(pixel.x - reach); c <= this->column(pixel.x + reach); ++c)
+      {
+        const auto filed = this->Filed.find(r * this->Columns + c);
+        if (filed == this->Filed.end())
+        {
+          continue;
+        }
+        for (const std::size_t s : filed->second)
+        {
+          const Segment& segment = this->Segments[s];
+          const glm::dvec2 ab = segment.B - segment.A;
+          const double squared = glm::dot(ab, ab);
+          const double along =
+            squared > 0.0 ? std::clamp(glm::dot(pixel - segment.A, ab) / squared, 0.0, 1.0) : 0.0;
+          const double distance = glm::length(pixel - (segment.A + along * ab));
+          if (distance < best || (!found && distance <= reach))
+          {
+            best = distance;
+            found = segment.ModelA + along * (segment.ModelB - segment.ModelA);
+          }
+        }
+      }
+    }
+    return found;
+  }
+
 private:
   struct Segment
   {
     glm::dvec2 A;
     glm::dvec2 B;
+    glm::dvec3 ModelA; ///< A in model coordinates
+    glm::dvec3 ModelB;
     bool StartsLine; ///< A is the first point of an open drawn line
     bool EndsLine;   ///< B is its last
   };
@@ -244,6 +283,35 @@ std::vector<std::vector<glm::dvec3>> outlineGaps(const OcclusionMesh& surface,
       if (pixelLength(gap, view) >= join)
       {
         gaps.push_back(std::move(gap));
+      }
+    }
+  }
+  return gaps;
+}
+
+std::vector<std::vector<glm::dvec3>> joinedToDrawnLines(std::vector<std::vector<glm::dvec3>> gaps,
+  const ViewGeometry& view, const std::vector<std::vector<glm::dvec3>>& drawn, double reach)
+{
+  const DrawnSegments drawnSegments(view, drawn, reach, 1.0);
+  for (std::vector<glm::dvec3>& gap : gaps)
+  {
+    if (gap.size() < 2 || gap.front() == gap.back())
+    {
+      continue; // a closed loop has no ends
+    }
+    glm::dvec2 pixel;
+    if (view.toPixels(gap.back(), pixel))
+    {
+      if (const auto to = drawnSegments.nearest(pixel, reach))
+      {
+        gap.push_back(*to);
+      }
+    }
+    if (view.toPixels(gap.front(), pixel))
+    {
+      if (const auto to = drawnSegments.nearest(pixel, reach))
+      {
+        gap.insert(gap.begin(), *to);
       }
     }
   }

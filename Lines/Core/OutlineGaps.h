@@ -75,4 +75,14 @@ std::vector<std::vector<glm::dvec3>> outlineGaps(const OcclusionMesh& surface,
   const ViewGeometry& view, const std::vector<std::vector<glm::dvec3>>& drawn,
   const OutlineGapParameters& parameters);
 
+/// The gaps with each open end joined to the drawn lines: where a drawn
+/// line passes within `reach` pixels of a gap's end, the line's nearest
+/// point (in model coordinates) is added to the gap before its first point
+/// or after its last, so that the drawing has no break there (a gap stops
+/// JoinPixels short of a line that ends, and the contour can run a pixel or
+/// more beside the line it continues). Closed gaps and ends with no line
+/// within reach are left as they are.
+std::vector<std::vector<glm::dvec3>> joinedToDrawnLines(std::vector<std::vector<glm::dvec3>> gaps,
+  const ViewGeometry& view, const std::vector<std::vector<glm::dvec3>>& drawn, double reach);
+
 } // namespace silsmooth

@@ -160,6 +160,35 @@ TEST(OutlineGaps, AGapRunsOnToTheLinesAtItsEnds)
   EXPECT_LT(length(outlineGaps(surface, view, { fiveEdges }, unjoined)), joined - 0.02);
 }
 
+TEST(OutlineGaps, AGapJoinedToTheLinesAtItsEndsLeavesNoBreak)
+{
+  // The gap of the test above stops 1.5 px short of the drawn edges' ends
+  // (the corners); joined within 2.5 px, it runs from corner to corner,
+  // exactly the sixth edge. Within 1 px (the wrong variant) nothing is
+  // joined. With nothing drawn, the whole hexagon is a closed gap, which
+  // has no ends to join.
+  const OcclusionMesh surface = cube();
+  const ViewGeometry view = parallelView(Generic);
+  const std::vector<glm::dvec3> hexagon = contourPolylines(surface, view)[0];
+  const std::vector<glm::dvec3> fiveEdges(hexagon.begin() + 1, hexagon.end());
+  const std::vector<std::vector<glm::dvec3>> gaps =
+    outlineGaps(surface, view, { fiveEdges }, gapRule());
+  ASSERT_EQ(gaps.size(), 1u);
+  const std::vector<std::vector<glm::dvec3>> joined =
+    joinedToDrawnLines(gaps, view, { fiveEdges }, 2.5);
+  ASSERT_EQ(joined.size(), 1u);
+  ASSERT_EQ(joined[0].size(), gaps[0].size() + 2);
+  const glm::dvec3& first = joined[0].front();
+  const glm::dvec3& last = joined[0].back();
+  const bool forward = glm::length(first - hexagon[0]) < glm::length(first - hexagon[1]);
+  EXPECT_LT(glm::length(first - hexagon[forward ? 0 : 1]), 1e-9);
+  EXPECT_LT(glm::length(last - hexagon[forward ? 1 : 0]), 1e-9);
+  EXPECT_NEAR(length(joined), 2.0, 1e-9);
+  EXPECT_EQ(joinedToDrawnLines(gaps, view, { fiveEdges }, 1.0), gaps);
+  const std::vector<std::vector<glm::dvec3>> loop = outlineGaps(surface, view, {}, gapRule());
+  EXPECT_EQ(joinedToDrawnLines(loop, view, { fiveEdges }, 2.5), loop);
+}
+
 TEST(OutlineGaps, AFoldWithTheSurfaceJustBehindIsNoOutline)
 {
   // Seen from +z: a strip A facing the viewer (z = 0, y from 0 to 1), a

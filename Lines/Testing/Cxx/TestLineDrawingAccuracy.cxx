@@ -52,6 +52,11 @@
 // outline drawn went from the values below to 100 and 99.9% (bunny), 99.4
 // and 99.1% (spider) and 100% (Wuson), the strays unchanged. The test asks
 // for 99% on every view; without that contour three views fall short of it.
+// Since the same day each such gap is joined to the lines at its ends (it
+// stopped 1.5 px short of them, or beside a line running 3 px inside the
+// outline, and left a break of a pixel or two at each end): the joins add 2
+// strays on the spider's view 2 (15) and 2 on the Wuson's view 1 (3), and
+// their limits rose with them (19 and 5).
 // The program draws with OutlinePixels 1 (a silhouette within a pixel of
 // the surface's outline is drawn; one that its own sheet hides within the
 // tolerance is drawn only within 1.5 px of the outline, or where it dips
@@ -650,8 +655,8 @@ int TestLineDrawingAccuracy(int argc, char* argv[])
   const Case bunny[2] = { { "view 1 (azimuth 0, elevation 20)", 0.0, 20.0, 2 },
     { "view 2 (azimuth 120, elevation -15)", 120.0, -15.0, 23 } };
   const Case spider[2] = { { "view 1 (azimuth 0, elevation 20)", 0.0, 20.0, 17 },
-    { "view 2 (azimuth 120, elevation -15)", 120.0, -15.0, 17 } };
-  const Case wuson[2] = { { "view 1 (azimuth 30, elevation 20)", 30.0, 20.0, 3 },
+    { "view 2 (azimuth 120, elevation -15)", 120.0, -15.0, 19 } };
+  const Case wuson[2] = { { "view 1 (azimuth 30, elevation 20)", 30.0, 20.0, 5 },
     { "view 2 (azimuth 225, elevation 10)", 225.0, 10.0, 18 } };
   const Case bracket[2] = { { "view 1 (azimuth 0, elevation 20)", 0.0, 20.0, 0 },
     { "view 2 (azimuth 120, elevation -15)", 120.0, -15.0, 0 } };

@@ -176,6 +176,16 @@ StylizedStroke stylizeStroke(const std::vector<glm::dvec3>& stroke, const Stroke
     effective.wavelength = length / periods;
     knotPeriod = static_cast<std::uint64_t>(periods);
   }
+  // A brush's offsets stay within a quarter of its stroke's length: a short
+  // stroke (a speck, a piece of a tuft of lines) moved by the full amplitude
+  // became a scribble or a straight spike many times its length (the rough
+  // brush moves points along the tangent).
+  if (std::isfinite(parameters.amplitude) && std::isfinite(length))
+  {
+    effective.amplitude =
+      std::copysign(std::min(std::abs(parameters.amplitude), ShortStrokeAmplitude * length),
+        parameters.amplitude);
+  }
   const BrushFunction brush(effective, strokeIndex, knotPeriod);
   for (std::size_t i = 0; i < n; ++i)
   {

@@ -98,13 +98,18 @@ private:
   std::uint64_t KnotPeriod;
 };
 
+/// The largest amplitude a stroke is drawn with, as a share of its length
+/// (ours; the paper does not say): a stroke shorter than 4 A is drawn with
+/// A = its length / 4.
+constexpr double ShortStrokeAmplitude = 0.25;
+
 /// Stylizes one stroke (`strokeIndex` selects its noise). Strokes of fewer
 /// than two distinct points are returned unmoved. A closed stroke (three or
 /// more points, the last equal to the first) stays closed without a seam:
 /// its wavelength becomes L / m (L its length, m = max(1, round(L / W)), so
 /// a whole number of periods fits), the hand noise repeats every m knots,
 /// the tangents wrap round, and the last point is the first (same offsets).
-/// The amplitude bound is unchanged.
+/// The amplitude is at most ShortStrokeAmplitude times the stroke's length.
 StylizedStroke stylizeStroke(const std::vector<glm::dvec3>& stroke, const StrokeView& view,
   const StrokeParameters& parameters, std::uint64_t strokeIndex);
 

@@ -45,11 +45,14 @@ TEST(StrokeStylizer, OffsetsAreBoundedByTheAmplitude)
         ASSERT_EQ(s.points.size(), s.base.size());
         ASSERT_GT(s.points.size(), 600u); // resampled
         double largestX = 0.0, largestY = 0.0;
+        // A stroke shorter than 4 A is drawn with A a quarter of its length
+        // (the unit circle's 6.28 caps A = 2 at 1.57).
+        const double bound = std::min(amplitude, ShortStrokeAmplitude * s.arcLength.back());
         for (std::size_t i = 0; i < s.points.size(); ++i)
         {
           // Exact bound on the brush values...
-          ASSERT_LE(std::abs(s.tangentOffset[i]), amplitude) << brushName(brush);
-          ASSERT_LE(std::abs(s.normalOffset[i]), amplitude) << brushName(brush);
+          ASSERT_LE(std::abs(s.tangentOffset[i]), bound) << brushName(brush);
+          ASSERT_LE(std::abs(s.normalOffset[i]), bound) << brushName(brush);
           largestX = std::max(largestX, std::abs(s.tangentOffset[i]));
           largestY = std::max(largestY, std::abs(s.normalOffset[i]));
           // ... and the moved point is that far from the stroke, along
@@ -62,21 +65,48 @@ TEST(StrokeStylizer, OffsetsAreBoundedByTheAmplitude)
         // The brushes use their range: not everything is near zero.
         if (brush == Brush::Rough)
         {
-          EXPECT_GT(largestX, 0.9 * amplitude);
+          EXPECT_GT(largestX, 0.9 * bound);
           EXPECT_EQ(largestY, 0.0); // tangent only (Table 1)
         }
         else if (brush == Brush::Hand)
         {
-          EXPECT_GT(largestX, 0.3 * amplitude);
-          EXPECT_GT(largestY, 0.3 * amplitude);
+          EXPECT_GT(largestX, 0.3 * bound);
+          EXPECT_GT(largestY, 0.3 * bound);
         }
         else
         {
-          EXPECT_GT(largestY, 0.9 * amplitude);
+          EXPECT_GT(largestY, 0.9 * bound);
           EXPECT_EQ(largestX, 0.0);
         }
       }
     }
+  }
+}
+
+TEST(StrokeStylizer, AShortStrokeMovesAQuarterOfItsLengthAtMost)
+{
+  // A straight stroke 0.08 long, rough brush of amplitude 0.05 (a speck of a
+  // tuft at the program's rough settings): its points move along it by at
+  // most 0.02, and use that range; the same brush on a stroke 1 long uses
+  // the whole 0.05, which the short one would without the cap (the wrong
+  // variant: points thrown up to 0.05 past a stroke of 0.08, a spike).
+  const StrokeView view;
+  StrokeParameters parameters;
+  parameters.brush = Brush::Rough;
+  parameters.amplitude = 0.05;
+  parameters.spacing = 0.004;
+  for (double length : { 0.08, 1.0 })
+  {
+    const StylizedStroke s =
+      stylizeStroke({ { 0.0, 0.0, 0.0 }, { length, 0.0, 0.0 } }, view, parameters, 3);
+    const double bound = std::min(0.05, 0.25 * length);
+    double largest = 0.0;
+    for (std::size_t i = 0; i < s.points.size(); ++i)
+    {
+      ASSERT_LE(std::abs(s.tangentOffset[i]), bound);
+      largest = std::max(largest, std::abs(s.tangentOffset[i]));
+    }
+    EXPECT_GT(largest, 0.9 * bound) << length;
   }
 }
 

@@ -177,10 +177,9 @@ Options:
                           smoothed). The figures still describe the
                           smoothing.
   --hidden none|dashed    the parts of the lines the surface hides: left out
-                          (none), or drawn in grey (dashed): dashed and
-                          thinner in an SVG drawing, with any line style;
-                          solid light grey in a PNG image, with --style
-                          lines only (default: none)
+                          (none), or drawn grey, dashed and thinner (dashed):
+                          in an SVG drawing with any line style, in a PNG
+                          image with --style lines only (default: none)
   --width-by-depth        in an SVG drawing, each visible line's width
                           follows its distance from the eye: 2 pixels at the
                           focal point's distance, times that distance over

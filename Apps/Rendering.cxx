@@ -11,15 +11,19 @@
 #include <vtkActor.h>
 #include <vtkAppendPolyData.h>
 #include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkCreaseAndBorderLines.h>
 #include <vtkDataObject.h>
 #include <vtkDataSetMapper.h>
 #include <vtkFaceSilhouetteLines.h>
+#include <vtkIdList.h>
 #include <vtkImageData.h>
 #include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -86,6 +90,92 @@ void AddBlackLines(vtkRenderer* renderer, vtkActor* actor)
   property->SetLineWidth(2.0);
   property->LightingOff();
   renderer->AddActor(actor);
+}
+
+// The hidden pieces (cell array Visible 0) of `lines` as dashes in the
+// renderer's image: `on` pixels drawn, `off` left out, along each piece
+// from its start (its points interpolated in model coordinates as in the
+// image). For a PNG of a fixed view, as an SVG's stroke-dasharray does.
+vtkSmartPointer<vtkPolyData> HiddenPiecesAsDashes(
+  vtkPolyData* lines, vtkRenderer* renderer, double on, double off)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> dashes;
+  auto* visible = vtkUnsignedCharArray::SafeDownCast(lines->GetCellData()->GetArray("Visible"));
+  auto toPixels = [renderer](const double p[3], double pixel[2]) {
+    renderer->SetWorldPoint(p[0], p[1], p[2], 1.0);
+    renderer->WorldToDisplay();
+    const double* display = renderer->GetDisplayPoint();
+    pixel[0] = display[0];
+    pixel[1] = display[1];
+  };
+  const double period = on + off;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType cell = 0; visible && cell < lines->GetNumberOfCells(); ++cell)
+  {
+    const int type = lines->GetCellType(cell);
+    if (visible->GetValue(cell) != 0 || (type != VTK_POLY_LINE && type != VTK_LINE))
+    {
+      continue;
+    }
+    lines->GetCellPoints(cell, ids);
+    double along = 0.0; // pixels from the piece's start
+    std::vector<vtkIdType> dash;
+    for (vtkIdType k = 0; k + 1 < ids->GetNumberOfIds(); ++k)
+    {
+      double a[3], b[3], pa[2], pb[2];
+      lines->GetPoint(ids->GetId(k), a);
+      lines->GetPoint(ids->GetId(k + 1), b);
+      toPixels(a, pa);
+      toPixels(b, pb);
+      const double length = std::hypot(pb[0] - pa[0], pb[1] - pa[1]);
+      if (!(length > 0.0) || !std::isfinite(length))
+      {
+        continue;
+      }
+      // The segment's stretches between changes of dash and gap.
+      double at = 0.0;
+      while (at < length)
+      {
+        const double phase = std::fmod(along + at, period);
+        const bool drawn = phase < on;
+        const double next = std::min(length, at + (drawn ? on - phase : period - phase));
+        if (drawn)
+        {
+          double p[3];
+          for (int i = 0; i < 3; ++i)
+          {
+            p[i] = a[i] + (at / length) * (b[i] - a[i]);
+          }
+          if (dash.empty())
+          {
+            dash.push_back(points->InsertNextPoint(p));
+          }
+          for (int i = 0; i < 3; ++i)
+          {
+            p[i] = a[i] + (next / length) * (b[i] - a[i]);
+          }
+          dash.push_back(points->InsertNextPoint(p));
+        }
+        else if (!dash.empty())
+        {
+          dashes->InsertNextCell(static_cast<vtkIdType>(dash.size()), dash.data());
+          dash.clear();
+        }
+        at = next;
+      }
+      along += length;
+    }
+    if (dash.size() >= 2)
+    {
+      dashes->InsertNextCell(static_cast<vtkIdType>(dash.size()), dash.data());
+    }
+  }
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->SetPoints(points);
+  result->SetLines(dashes);
+  return result;
 }
 
 // The face-based silhouette of `input` (vtkFaceSilhouetteLines, Xing's Fig.
@@ -349,25 +439,36 @@ void AddStyleActors(vtkRenderer* renderer, vtkSilhouetteSmoothingFilter* filter,
     {
       vtkSmartPointer<vtkSilhouetteLineVisibility> lines =
         MakeVisibleLines(renderer, filter, input, smoothed);
-      vtkSmartPointer<vtkActor> actor = MakeActor(lines->GetOutputPort());
-      if (hiddenLines)
+      if (!hiddenLines)
       {
-        // The hidden pieces too, light grey: colour by the cell array Visible.
-        lines->PassHiddenLinesOn();
-        vtkNew<vtkLookupTable> shades;
-        shades->SetNumberOfTableValues(2);
-        shades->SetTableRange(0.0, 1.0);
-        shades->SetTableValue(0, 0.7, 0.7, 0.7);
-        shades->SetTableValue(1, Black[0], Black[1], Black[2]);
-        shades->Build();
-        vtkMapper* mapper = actor->GetMapper();
-        mapper->SetLookupTable(shades);
-        mapper->UseLookupTableScalarRangeOn();
-        mapper->SetScalarModeToUseCellFieldData();
-        mapper->SelectColorArray("Visible");
-        mapper->SetColorModeToMapScalars();
-        mapper->ScalarVisibilityOn();
+        AddBlackLines(renderer, MakeActor(lines->GetOutputPort()));
+        break;
       }
+      // The hidden pieces too, light grey and dashed (4 px drawn, 3 left
+      // out) for the camera as it is now (render's view is fixed), under
+      // the visible ones.
+      lines->PassHiddenLinesOn();
+      lines->Update();
+      vtkNew<vtkPolyDataMapper> dashMapper;
+      dashMapper->SetInputData(HiddenPiecesAsDashes(lines->GetOutput(), renderer, 4.0, 3.0));
+      vtkNew<vtkActor> dashes;
+      dashes->SetMapper(dashMapper);
+      dashes->GetProperty()->SetColor(0.6, 0.6, 0.6);
+      dashes->GetProperty()->SetLineWidth(1.5);
+      dashes->GetProperty()->LightingOff();
+      renderer->AddActor(dashes);
+      vtkNew<vtkThreshold> visibleOnly;
+      visibleOnly->SetInputConnection(lines->GetOutputPort());
+      visibleOnly->SetInputArrayToProcess(
+        0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_CELLS, "Visible");
+      visibleOnly->SetLowerThreshold(1.0);
+      visibleOnly->SetUpperThreshold(1.0);
+      visibleOnly->SetThresholdFunction(vtkThreshold::THRESHOLD_BETWEEN);
+      vtkNew<vtkDataSetMapper> visibleMapper;
+      visibleMapper->SetInputConnection(visibleOnly->GetOutputPort());
+      visibleMapper->ScalarVisibilityOff();
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(visibleMapper);
       AddBlackLines(renderer, actor);
       break;
     }

@@ -59,74 +59,32 @@ public:
   /// meets or crosses it).
   bool covers(const glm::dvec2& pixel, const glm::dvec2& contour, double join, double beside) const
   {
-    const double radius = std::max(join, beside);
-    const std::int64_t c0 = this->column(pixel.x - radius);
-    const std::int64_t c1 = this->column(pixel.x + radius);
-    const std::int64_t r0 = this->row(pixel.y - radius);
-    const std::int64_t r1 = this->row(pixel.y + radius);
-    for (std::int64_t r = r0; r <= r1; ++r)
-    {
-      for (std::int64_t c = c0; c <= c1; ++c)
-      {
-        const auto found = this->Filed.find(r * this->Columns + c);
-        if (found == this->Filed.end())
-        {
-          continue;
-        }
-        for (const std::size_t s : found->second)
-        {
-          const Segment& segment = this->Segments[s];
-          const glm::dvec2 ab = segment.B - segment.A;
-          const double squared = glm::dot(ab, ab);
-          const double along =
-            squared > 0.0 ? std::clamp(glm::dot(pixel - segment.A, ab) / squared, 0.0, 1.0) : 0.0;
-          const double distance = glm::length(pixel - (segment.A + along * ab));
-          const bool atAnEnd =
-            (along <= 0.0 && segment.StartsLine) || (along >= 1.0 && segment.EndsLine);
-          if (distance <= join ||
-            (distance <= beside && !atAnEnd &&
-              std::abs(glm::dot(ab, contour)) >= this->AlongsideCosine * std::sqrt(squared)))
-          {
-            return true;
-          }
-        }
-      }
-    }
-    return false;
+    return this->anySegmentNear(
+      pixel, std::max(join, beside), [&](const Segment& segment, double along, double distance) {
+        const glm::dvec2 ab = segment.B - segment.A;
+        const bool atAnEnd =
+          (along <= 0.0 && segment.StartsLine) || (along >= 1.0 && segment.EndsLine);
+        return distance <= join ||
+          (distance <= beside && !atAnEnd &&
+            std::abs(glm::dot(ab, contour)) >= this->AlongsideCosine * glm::length(ab));
+      });
   }
 
   /// The drawn point nearest `pixel`, within `reach` pixels, in model
   /// coordinates (interpolated along its segment as in the image), or no
-  /// value. Ties go to the segment filed first.
+  /// value. Ties go to the segment looked at first.
   std::optional<glm::dvec3> nearest(const glm::dvec2& pixel, double reach) const
   {
     std::optional<glm::dvec3> found;
     double best = reach;
-    for (std::int64_t r = this->row(pixel.y - reach); r <= this->row(pixel.y + reach); ++r)
-    {
-      for (std::int64_t c = this->column(pixel.x - reach); c <= this->column(pixel.x + reach); ++c)
+    this->anySegmentNear(pixel, reach, [&](const Segment& segment, double along, double distance) {
+      if (distance < best || (!found && distance <= reach))
       {
-        const auto filed = this->Filed.find(r * this->Columns + c);
-        if (filed == this->Filed.end())
-        {
-          continue;
-        }
-        for (const std::size_t s : filed->second)
-        {
-          const Segment& segment = this->Segments[s];
-          const glm::dvec2 ab = segment.B - segment.A;
-          const double squared = glm::dot(ab, ab);
-          const double along =
-            squared > 0.0 ? std::clamp(glm::dot(pixel - segment.A, ab) / squared, 0.0, 1.0) : 0.0;
-          const double distance = glm::length(pixel - (segment.A + along * ab));
-          if (distance < best || (!found && distance <= reach))
-          {
-            best = distance;
-            found = segment.ModelA + along * (segment.ModelB - segment.ModelA);
-          }
-        }
+        best = distance;
+        found = segment.ModelA + along * (segment.ModelB - segment.ModelA);
       }
-    }
+      return false; // every segment near
+    });
     return found;
   }
 
@@ -140,6 +98,41 @@ private:
     bool StartsLine; ///< A is the first point of an open drawn line
     bool EndsLine;   ///< B is its last
   };
+
+  /// Calls `visit(segment, along, distance)` for the segments filed in the
+  /// cells within `radius` of `pixel` (`along` the nearest point's fraction
+  /// of the segment, `distance` its distance in pixels; a segment filed in
+  /// several cells may be visited more than once) until it returns true;
+  /// returns whether it did.
+  template<typename Visit>
+  bool anySegmentNear(const glm::dvec2& pixel, double radius, Visit visit) const
+  {
+    for (std::int64_t r = this->row(pixel.y - radius); r <= this->row(pixel.y + radius); ++r)
+    {
+      for (std::int64_t c = this->column(pixel.x - radius); c <= this->column(pixel.x + radius);
+           ++c)
+      {
+        const auto filed = this->Filed.find(r * this->Columns + c);
+        if (filed == this->Filed.end())
+        {
+          continue;
+        }
+        for (const std::size_t s : filed->second)
+        {
+          const Segment& segment = this->Segments[s];
+          const glm::dvec2 ab = segment.B - segment.A;
+          const double squared = glm::dot(ab, ab);
+          const double along =
+            squared > 0.0 ? std::clamp(glm::dot(pixel - segment.A, ab) / squared, 0.0, 1.0) : 0.0;
+          if (visit(segment, along, glm::length(pixel - (segment.A + along * ab))))
+          {
+            return true;
+          }
+        }
+      }
+    }
+    return false;
+  }
 
   /// Cells of the viewport widened by one cell; beyond, the border cells
   /// (a segment or point out there is filed or looked for at the border).

@@ -433,11 +433,42 @@ bool OcclusionMesh::nearTheOutline(const ViewGeometry& view, const glm::dvec3& p
 }
 
 bool OcclusionMesh::besideTheOutline(const ViewGeometry& view, const glm::dvec3& point,
-  const glm::dvec3& direction, double pixels, double behind) const
+  const glm::dvec3& direction, double pixels, double behind, double contact) const
 {
   const auto beside = this->besidePoints(view, point, direction, pixels);
-  return beside &&
-    (!this->covers(view, (*beside)[0], behind) || !this->covers(view, (*beside)[1], behind));
+  if (!beside)
+  {
+    return false;
+  }
+  std::vector<Id> sheet;
+  if (std::isfinite(behind) && contact > 0.0)
+  {
+    sheet = this->localSheet(point, this->trianglesUnder(point, contact), behind);
+  }
+  if (sheet.empty())
+  {
+    return !this->covers(view, (*beside)[0], behind) || !this->covers(view, (*beside)[1], behind);
+  }
+  // Covered: anything in front of the point beside, or the contour's own
+  // sheet within `behind` behind it (a fold of the re-meshing); another part
+  // just behind leaves the contour an outline (a head over a thorax).
+  auto coveredBy = [&](const glm::dvec3& side) {
+    if (this->hides(view, side, 0.0))
+    {
+      return true;
+    }
+    const glm::dvec3 away = -view.towardViewerFrom(side);
+    const double length = glm::length(away);
+    if (!(length > 0.0) || !std::isfinite(length))
+    {
+      return false;
+    }
+    const glm::dvec3 start = side + (behind / length) * away;
+    return isFinite(start) && this->anyHit(view, start, 0.0, behind, [&](Id c, double) {
+      return std::binary_search(sheet.begin(), sheet.end(), c);
+    });
+  };
+  return !coveredBy((*beside)[0]) || !coveredBy((*beside)[1]);
 }
 
 std::vector<std::array<Id, 2>> OcclusionMesh::contourEdges(const ViewGeometry& view) const

@@ -159,11 +159,14 @@ public:
 
   /// Whether the line of sight through a point `pixels` beside `point`, on
   /// one side or the other across the line along `direction` in the image,
-  /// meets no triangle in front of it or within `behind` behind it: the
-  /// surface's image ends within that distance, or jumps in depth there.
-  /// False when the image gives no such points.
+  /// meets no triangle in front of it, nor within `behind` behind it a
+  /// triangle of `point`'s own sheet (the triangles joined to those within
+  /// `contact` of it, within `behind` of it; every triangle when `behind`
+  /// is not finite or `contact` finds none): the surface's image ends
+  /// there, or jumps in depth, or another part lies just behind. False when
+  /// the image gives no such points.
   bool besideTheOutline(const ViewGeometry& view, const glm::dvec3& point,
-    const glm::dvec3& direction, double pixels, double behind) const;
+    const glm::dvec3& direction, double pixels, double behind, double contact = 0.0) const;
 
   /// Whether the line of sight through `point` meets a triangle in front of
   /// the point or within `behind` behind it (infinity: anywhere behind; the

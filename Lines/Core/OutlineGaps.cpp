@@ -266,7 +266,7 @@ std::vector<std::vector<glm::dvec3>> outlineGaps(const OcclusionMesh& surface,
         pixel, alongInPixels(point, direction, pixel), join, parameters.GapPixels) &&
       surface.occlusion(view, point, rule) != OcclusionMesh::Occlusion::Hidden &&
       surface.besideTheOutline(
-        view, point, direction, parameters.BesidePixels, parameters.DepthJump);
+        view, point, direction, parameters.BesidePixels, parameters.DepthJump, rule.Contact);
   };
   for (const std::vector<glm::dvec3>& contour : contourPolylines(surface, view))
   {

@@ -224,6 +224,38 @@ TEST(OutlineGaps, AFoldWithTheSurfaceJustBehindIsNoOutline)
   }
 }
 
+TEST(OutlineGaps, AnotherPartJustBehindLeavesTheContourAnOutline)
+{
+  // The fold of the test above without C: A facing the viewer, B folding
+  // back under it from its edge y = 0, and apart from them a strip D facing
+  // the viewer 0.15 behind (z = -0.15, y from -1 to 0.4), joined to
+  // nothing (a thorax under a head). Its depth jump at the A-B contour is
+  // less than DepthJump (0.2), but D is not the contour's own sheet: the
+  // whole edge (2 long) is an outline, and a gap. Counting every triangle
+  // within DepthJump behind (the wrong variant, no contact distance to find
+  // the contour's sheet by) gives none.
+  const std::vector<glm::dvec3> points{ { -1, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { -1, 1, 0 },
+    { -1, 0.5, -0.1 }, { 1, 0.5, -0.1 }, { -1, -1, -0.15 }, { 1, -1, -0.15 }, { 1, 0.4, -0.15 },
+    { -1, 0.4, -0.15 } };
+  const std::vector<Triangle> triangles{ { { 0, 1, 2 } }, { { 0, 2, 3 } }, // A, facing +z
+    { { 0, 4, 5 } }, { { 0, 5, 1 } },                                      // B, facing -z
+    { { 6, 7, 8 } }, { { 6, 8, 9 } } };                                    // D, facing +z
+  const OcclusionMesh surface(points, triangles);
+  const ViewGeometry view = parallelView(glm::dvec3(0, 0, 1));
+  OutlineGapParameters rule = gapRule();
+  rule.DepthJump = 0.2;
+  const std::vector<std::vector<glm::dvec3>> gaps = outlineGaps(surface, view, {}, rule);
+  ASSERT_EQ(gaps.size(), 1u);
+  EXPECT_NEAR(length(gaps), 2.0, 1e-6);
+  for (const glm::dvec3& p : gaps[0])
+  {
+    EXPECT_EQ(p.y, 0.0);
+    EXPECT_EQ(p.z, 0.0);
+  }
+  rule.Visibility.Contact = 0.0;
+  EXPECT_TRUE(outlineGaps(surface, view, {}, rule).empty());
+}
+
 TEST(OutlineGaps, OutlineBehindAnOccluderIsNoGap)
 {
   // A strip 0.1 wide, facing the viewer, 2 in front of the middle of one

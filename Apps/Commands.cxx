@@ -292,7 +292,8 @@ void RunProgressiveSketch(const RenderOptions& options)
     }
     if (options.ProgressiveSvg)
     {
-      RenderToSvg(view, run.Filter, levelMesh, levelOptions);
+      WarnIfBlank(
+        RenderToSvg(view, run.Filter, levelMesh, levelOptions), levelOptions.Output, levelMesh);
     }
     else
     {
@@ -371,7 +372,7 @@ void RunRender(const RenderOptions& options)
   FileBatch outputs;
   if (svg)
   {
-    RenderToSvg(view, run.Filter, mesh, options, &outputs);
+    WarnIfBlank(RenderToSvg(view, run.Filter, mesh, options, &outputs), options.Output, mesh);
   }
   else
   {

@@ -39,6 +39,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <algorithm>
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
@@ -593,7 +594,7 @@ bool RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   return WriteWindowPng(view.Window, options.Output, batch);
 }
 
-void RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
+bool RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
   vtkPolyData* input, const RenderOptions& options, FileBatch* batch)
 {
   VtkErrorLog& errors = VtkErrorLog::Instance();
@@ -612,6 +613,15 @@ void RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   drawn->Update();
   errors.ThrowIfErrors("drawing failed");
   std::vector<DrawnLine> lines = ProjectLines(drawn->GetOutput(), renderer, false);
+  // Blank: no visible line has a point in the image.
+  const double width = options.Camera.ViewportSize[0];
+  const double height = options.Camera.ViewportSize[1];
+  const bool blank = std::none_of(lines.begin(), lines.end(), [&](const DrawnLine& line) {
+    return line.Points.size() >= 2 &&
+      std::any_of(line.Points.begin(), line.Points.end(), [&](const std::array<double, 2>& p) {
+        return p[0] >= 0.0 && p[0] <= width && p[1] >= 0.0 && p[1] <= height;
+      });
+  });
   if (options.HiddenLines)
   {
     vtkSmartPointer<vtkSilhouetteLineVisibility> all =
@@ -641,6 +651,7 @@ void RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   {
     WriteFileAtomically(options.Output, document);
   }
+  return blank;
 }
 
 } // namespace cli

@@ -99,8 +99,9 @@ bool RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
  * view's camera, and with `options.HiddenLines` the hidden pieces, dashed.
  * Nothing is rendered: no display is needed. Throws RuntimeError on any VTK
  * error or a failed write. With a `batch`, the file is added to it.
+ * Returns whether no visible line has a point in the image (a blank drawing).
  */
-void RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
+bool RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
   vtkPolyData* input, const RenderOptions& options, FileBatch* batch = nullptr);
 
 } // namespace cli

@@ -411,6 +411,18 @@ silsmooth::SmoothingResult vtkSilhouetteSmoothingFilter::Internals::Smooth(
         << " silhouette triangles stay within NewPointBudget's " << parameters.MaximumSampledPoints
         << " new points.");
   }
+  // Re-meshed straight, untested: the fold guard tests no more than a
+  // bounded number of triangles near one triangle's new ones. A user's trial
+  // raised MinimumSamples to 400 and got the coarse outline back, silently.
+  if (result.CrowdedTriangles > 0 && self->FoldPrevention)
+  {
+    vtkWarningWithObjectMacro(self,
+      << result.CrowdedTriangles
+      << " silhouette triangles were re-meshed along the chord, not the curve: the fold check "
+         "does not test new triangles with more than 2048 triangles near them (at the centre of "
+         "a fan of thousands of triangles, or with MinimumSamples "
+      << self->MinimumSamples << " making that many new triangles per triangle).");
+  }
   return result;
 }
 

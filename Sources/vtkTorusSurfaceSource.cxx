@@ -30,6 +30,15 @@ int vtkTorusSurfaceSource::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   const int nu = this->RingResolution;
   const int nv = this->TubeResolution;
+  // A resolution of 100,000 each asked for 30 billion values, and the
+  // allocation's failure ended the program (a user's trial).
+  if (static_cast<double>(nu) * nv > static_cast<double>(MaximumPoints))
+  {
+    vtkErrorMacro("RingResolution " << nu << " x TubeResolution " << nv << " is "
+                                    << static_cast<double>(nu) * nv << " points; at most "
+                                    << MaximumPoints << " (2048 x 2048).");
+    return 0;
+  }
 
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();

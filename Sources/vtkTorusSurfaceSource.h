@@ -36,12 +36,15 @@ public:
   ///@{
   /**
    * Samples around the ring (default 24) and around the tube (default 12).
-   * At least 3 each. The mesh has 2 * U * V triangles.
+   * At least 3 each. The mesh has U * V points and 2 * U * V triangles; an
+   * update with more than MaximumPoints points (about 450 MB of mesh) fails
+   * with an error.
    */
   vtkSetClampMacro(RingResolution, int, 3, VTK_INT_MAX);
   vtkGetMacro(RingResolution, int);
   vtkSetClampMacro(TubeResolution, int, 3, VTK_INT_MAX);
   vtkGetMacro(TubeResolution, int);
+  static constexpr vtkIdType MaximumPoints = vtkIdType(1) << 22; // 4,194,304: 2048 x 2048
   ///@}
 
 protected:

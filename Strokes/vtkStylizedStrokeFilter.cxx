@@ -17,6 +17,7 @@
 #include "vtkSilhouetteFilterSupport.h"
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkStylizedStrokeFilter);
@@ -31,6 +32,45 @@ vtkStylizedStrokeFilter::vtkStylizedStrokeFilter()
 }
 
 vtkStylizedStrokeFilter::~vtkStylizedStrokeFilter() = default;
+
+namespace
+{
+
+// The error for lines naming missing points, or for points with NaN or
+// infinite coordinates; "" when there is none.
+std::string LinesError(vtkPolyData* input)
+{
+  const vtkIdType numberOfPoints = input->GetNumberOfPoints();
+  if (vtkCellArray* lines = input->GetLines())
+  {
+    auto it = vtk::TakeSmartPointer(lines->NewIterator());
+    vtkIdType count = 0;
+    const vtkIdType* ids = nullptr;
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      it->GetCurrentCell(count, ids);
+      for (vtkIdType k = 0; k < count; ++k)
+      {
+        if (ids[k] < 0 || ids[k] >= numberOfPoints)
+        {
+          return "Input cells refer to points that do not exist.";
+        }
+      }
+    }
+  }
+  vtkIdType nonFinite = 0;
+  for (vtkIdType i = 0; i < numberOfPoints; ++i)
+  {
+    double p[3];
+    input->GetPoint(i, p);
+    nonFinite += std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]) ? 0 : 1;
+  }
+  return nonFinite == 0
+    ? ""
+    : "Input has " + std::to_string(nonFinite) + " points with NaN or infinite coordinates.";
+}
+
+} // namespace
 
 int vtkStylizedStrokeFilter::RequestViewData(vtkInformation*, vtkInformationVector** inputVector,
   vtkInformationVector* outputVector, const vtkSilhouetteFilterSupport::View& modelView)
@@ -50,6 +90,20 @@ int vtkStylizedStrokeFilter::RequestViewData(vtkInformation*, vtkInformationVect
 
   vtkPoints* inPoints = input->GetPoints();
   vtkCellArray* inLines = input->GetLines();
+  // What the module's other filters refuse, refused here too: a NaN point
+  // went through to the output (a user's trial), a bad id was skipped.
+  if (const std::string error = LinesError(input); !error.empty())
+  {
+    vtkErrorMacro(<< error);
+    return 0;
+  }
+  if ((!inLines || inLines->GetNumberOfCells() == 0) && input->GetNumberOfCells() > 0)
+  {
+    vtkWarningMacro("The input has no line cells to draw strokes along (its "
+      << input->GetNumberOfCells()
+      << " cells are vertices, polygons or strips): give it lines, such as "
+         "vtkSilhouetteSmoothingFilter's second output or vtkSilhouetteLineVisibility's.");
+  }
   if (inPoints && inLines && inLines->GetNumberOfCells() > 0)
   {
     double bounds[6];
@@ -93,10 +147,6 @@ int vtkStylizedStrokeFilter::RequestViewData(vtkInformation*, vtkInformationVect
       stroke.reserve(count);
       for (vtkIdType k = 0; k < count; ++k)
       {
-        if (ids[k] < 0 || ids[k] >= numberOfPoints)
-        {
-          continue; // a bad id: skip the point
-        }
         double p[3];
         inPoints->GetPoint(ids[k], p);
         stroke.emplace_back(p[0], p[1], p[2]);

@@ -30,6 +30,11 @@
  * changes (compared by value). Before a renderer has created its camera the
  * output is empty.
  *
+ * Input: lines. Points with NaN or infinite coordinates and lines naming
+ * missing points fail the request with an error; an input with cells but no
+ * lines gives no strokes, with a warning. A stroke shorter than 4 times the
+ * amplitude is drawn with a quarter of its length as its amplitude.
+ *
  * Output: one polyline per input line cell (verts and polygons are dropped),
  * with point data `BrushOffset` (2 components: v_x and v_y in world units),
  * `StrokeArcLength`, and cell data `StrokeId` (the input line's index among

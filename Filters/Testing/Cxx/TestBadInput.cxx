@@ -21,6 +21,7 @@
 #include "vtkSilhouetteSmoothingFilter.h"
 #include "vtkStylizedStrokeFilter.h"
 #include "vtkTestErrorObserver.h"
+#include "vtkTorusSurfaceSource.h"
 
 #include "SilhouetteTestSupport.h"
 
@@ -29,6 +30,7 @@
 #include <functional>
 #include <limits>
 #include <string>
+#include <utility>
 
 namespace
 {
@@ -577,6 +579,105 @@ bool NewPointBudget()
   return true;
 }
 
+// MinimumSamples 400 on the 80-triangle icosphere makes each silhouette
+// triangle's new triangles too many for the fold check, which re-meshes them
+// along the chord: the outline is the coarse one again. A user's trial got
+// that without a word; the filter now says so. The default sampling (the
+// wrong variant for the warning) re-meshes along the curve and says nothing.
+bool CrowdedSampling()
+{
+  const auto crowded = [](Run& run) {
+    return run.Filter->GetOutput()->GetFieldData()->GetArray("CrowdedTriangleCount")->GetTuple1(0);
+  };
+  Run dense(Sphere(1), Camera(0.3, 0.2, 5), [](vtkSilhouetteSmoothingFilter* f) {
+    f->SetMaximumSamples(65536);
+    f->SetMinimumSamples(400);
+  });
+  CHECK(!dense.Failed() && crowded(dense) > 0, "the request succeeds, with crowded triangles");
+  CHECK(dense.Warning().find("re-meshed along the chord") != std::string::npos &&
+      dense.Warning().find("MinimumSamples 400") != std::string::npos,
+    "and says why the outline is the chord's");
+  Run usual(Sphere(1), Camera(0.3, 0.2, 5));
+  CHECK(crowded(usual) == 0 && usual.Warning().empty(), "the default sampling says nothing");
+  std::printf("MinimumSamples 400: %.0f triangles crowded, warned\n", crowded(dense));
+  return true;
+}
+
+// A torus of more than vtkTorusSurfaceSource::MaximumPoints points fails
+// with an error (100,000 x 100,000 ended the process with std::bad_alloc);
+// 2048 x 2048, at the limit, is made.
+bool HugeTorus()
+{
+  vtkNew<vtkTorusSurfaceSource> torus;
+  vtkNew<vtkTest::ErrorObserver> errors;
+  torus->AddObserver(vtkCommand::ErrorEvent, errors);
+  torus->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
+  torus->SetRingResolution(100000);
+  torus->SetTubeResolution(100000);
+  CHECK(torus->GetExecutive()->Update() == 0, "100,000 x 100,000 fails");
+  CHECK(errors->GetError() &&
+      std::string(errors->GetErrorMessage()).find("at most 4194304") != std::string::npos,
+    "with an error that gives the limit");
+  torus->SetRingResolution(2048);
+  torus->SetTubeResolution(2048);
+  CHECK(torus->GetExecutive()->Update() == 1 && torus->GetOutput()->GetNumberOfPoints() == 4194304,
+    "2048 x 2048 is made");
+  return true;
+}
+
+// vtkStylizedStrokeFilter refuses what the other filters refuse: a NaN
+// point went through to the strokes (a user's trial) and a line naming a
+// missing point was drawn without it; a surface with no lines warns.
+bool StrokeInput()
+{
+  const auto run = [](vtkPolyData* input, vtkTest::ErrorObserver* observer) {
+    vtkNew<vtkStylizedStrokeFilter> strokes;
+    strokes->AddObserver(vtkCommand::ErrorEvent, observer);
+    strokes->AddObserver(vtkCommand::WarningEvent, observer);
+    strokes->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, observer);
+    strokes->SetInputData(input);
+    strokes->SetCamera(Camera(0.3, 0.2, 5));
+    const int result = strokes->GetExecutive()->Update();
+    return std::make_pair(result, strokes->GetOutput()->GetNumberOfPoints());
+  };
+  const auto line = [](double nanAt, vtkIdType lastId) {
+    auto polyline = vtkSmartPointer<vtkPolyData>::New();
+    vtkNew<vtkPoints> points;
+    for (int i = 0; i < 5; ++i)
+    {
+      points->InsertNextPoint(i, 0.1 * i * i, 0);
+    }
+    if (nanAt >= 0)
+    {
+      points->SetPoint(static_cast<vtkIdType>(nanAt), std::nan(""), 0, 0);
+    }
+    vtkNew<vtkCellArray> cells;
+    const vtkIdType ids[5] = { 0, 1, 2, 3, lastId };
+    cells->InsertNextCell(5, ids);
+    polyline->SetPoints(points);
+    polyline->SetLines(cells);
+    return polyline;
+  };
+  vtkNew<vtkTest::ErrorObserver> good;
+  CHECK(run(line(-1, 4), good).first == 1 && !good->GetError() && !good->GetWarning(),
+    "a polyline is stylized without a word (the wrong variant of the checks below)");
+  vtkNew<vtkTest::ErrorObserver> nan;
+  CHECK(run(line(1, 4), nan).first == 0 && nan->GetError() &&
+      std::string(nan->GetErrorMessage()).find("NaN or infinite") != std::string::npos,
+    "a NaN point fails the request");
+  vtkNew<vtkTest::ErrorObserver> missing;
+  CHECK(run(line(-1, 99), missing).first == 0 && missing->GetError() &&
+      std::string(missing->GetErrorMessage()).find("do not exist") != std::string::npos,
+    "a line naming a missing point fails it");
+  vtkNew<vtkTest::ErrorObserver> surface;
+  const auto [result, points] = run(Sphere(1), surface);
+  CHECK(result == 1 && points == 0 && surface->GetWarning() &&
+      std::string(surface->GetWarningMessage()).find("no line cells") != std::string::npos,
+    "a surface without lines gives no strokes, with a warning");
+  std::printf("strokes: NaN points and missing ids refused, a surface without lines warned\n");
+  return true;
+}
+
 } // namespace
 
 int TestBadInput(int, char*[])
@@ -598,5 +699,8 @@ int TestBadInput(int, char*[])
   ok = ArraysOfTheWrongLength() && ok;
   ok = CellsWithTooFewPoints() && ok;
   ok = NewPointBudget() && ok;
+  ok = CrowdedSampling() && ok;
+  ok = HugeTorus() && ok;
+  ok = StrokeInput() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -15,9 +15,11 @@
 #include "vtkUnsignedCharArray.h"
 
 #include "QuadricSimplifier.h"
+#include "SurfaceWelding.h"
 #include "vtkSilhouetteFilterSupport.h"
 
 #include <cmath>
+#include <sstream>
 
 vtkStandardNewMacro(vtkSilhouetteQuadricDecimation);
 
@@ -79,9 +81,27 @@ int vtkSilhouetteQuadricDecimation::RequestData(
   }
   if (!result.ReachedTarget)
   {
+    // Points repeating another's coordinates (texture seams, a triangle
+    // soup) make borders, whose points stay: a user's trial of an asset OBJ
+    // stopped at its input's count and was not told why.
+    const std::vector<silsmooth::Id> vertex = silsmooth::weldCoincidentPoints(points);
+    std::size_t repeated = 0;
+    for (std::size_t i = 0; i < vertex.size(); ++i)
+    {
+      repeated += vertex[i] != static_cast<silsmooth::Id>(i) ? 1 : 0;
+    }
+    std::ostringstream why;
+    if (repeated > 0)
+    {
+      why << " " << repeated
+          << " of the input's points repeat another's coordinates (texture seams, or a triangle "
+             "soup), so its triangles do not share them and their edges are borders, whose "
+             "points stay: merge them first (vtkCleanPolyData, tolerance 0).";
+    }
     vtkWarningMacro("Stopped at " << result.Triangles.size() << " triangles, above the target "
                                   << this->TargetTriangles
-                                  << ": no more collapse keeps the topology and the error rule.");
+                                  << ": no more collapse keeps the topology and the error rule."
+                                  << why.str());
   }
 
   const vtkIdType outPoints = static_cast<vtkIdType>(result.Points.size());

@@ -4,13 +4,18 @@
 // of the bunny simplified with and without the proximity labels, measured
 // against the original's outline from the same camera; pipeline and errors.
 #include "vtkCamera.h"
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkExecutive.h"
 #include "vtkFieldData.h"
+#include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkTestErrorObserver.h"
 
 #include "vtkSilhouetteProximity.h"
 #include "vtkSilhouetteQuadricDecimation.h"
@@ -22,6 +27,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <string>
 
 namespace
 {
@@ -170,6 +176,70 @@ bool CheckPipelineAndErrors()
   return true;
 }
 
+// A triangle soup (every triangle its own points, as VTK reads a textured
+// OBJ) cannot be simplified: its edges are all borders, whose points stay.
+// The warning says so and how to merge them (a user's trial got only "no
+// more collapse keeps the topology"); triangles lying apart, whose target
+// is out of reach too, have no repeated points and are not told to merge
+// them (the wrong variant).
+bool CheckSoupWarning()
+{
+  vtkSmartPointer<vtkPolyData> sphere = silhouette_test::Icosphere(2);
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> cells;
+  vtkNew<vtkIdList> ids; // the soup of the sphere
+  for (vtkIdType c = 0; c < sphere->GetNumberOfCells(); ++c)
+  {
+    sphere->GetCellPoints(c, ids);
+    vtkIdType own[3];
+    for (vtkIdType k = 0; k < 3; ++k)
+    {
+      own[k] = points->InsertNextPoint(sphere->GetPoint(ids->GetId(k)));
+    }
+    cells->InsertNextCell(3, own);
+  }
+  vtkNew<vtkPolyData> soup;
+  soup->SetPoints(points);
+  soup->SetPolys(cells);
+  const auto warning = [](vtkPolyData* input, vtkIdType target) {
+    vtkNew<vtkSilhouetteQuadricDecimation> decimate;
+    vtkNew<vtkTest::ErrorObserver> observer;
+    decimate->AddObserver(vtkCommand::WarningEvent, observer);
+    decimate->SetDistanceArrayName("");
+    decimate->SetInputData(input);
+    decimate->SetTargetTriangles(target);
+    decimate->Update();
+    return observer->GetWarning() ? observer->GetWarningMessage() : std::string();
+  };
+  const std::string soupWarning = warning(soup, 100);
+  std::printf("a soup of %lld triangles: %s\n", static_cast<long long>(soup->GetNumberOfPolys()),
+    soupWarning.c_str());
+  CHECK(soupWarning.find("Stopped at 320 triangles") != std::string::npos &&
+      soupWarning.find("798 of the input's points repeat another's coordinates") !=
+        std::string::npos &&
+      soupWarning.find("vtkCleanPolyData") != std::string::npos,
+    "the soup's warning names the repeated points and how to merge them");
+  // 100 triangles apart from each other: borders everywhere too, but no
+  // point repeats another's coordinates.
+  vtkNew<vtkPoints> apartPoints;
+  vtkNew<vtkCellArray> apartCells;
+  for (int t = 0; t < 100; ++t)
+  {
+    const double x = 3.0 * t;
+    const vtkIdType own[3] = { apartPoints->InsertNextPoint(x, 0, 0),
+      apartPoints->InsertNextPoint(x + 1, 0, 0), apartPoints->InsertNextPoint(x, 1, 0) };
+    apartCells->InsertNextCell(3, own);
+  }
+  vtkNew<vtkPolyData> apart;
+  apart->SetPoints(apartPoints);
+  apart->SetPolys(apartCells);
+  const std::string apartWarning = warning(apart, 10);
+  CHECK(apartWarning.find("Stopped at 100 triangles") != std::string::npos &&
+      apartWarning.find("repeat another's") == std::string::npos,
+    "triangles apart, with no repeated point, are not told to merge");
+  return true;
+}
+
 } // namespace
 
 int TestSilhouetteSimplification(int argc, char* argv[])
@@ -177,5 +247,6 @@ int TestSilhouetteSimplification(int argc, char* argv[])
   bool ok = CheckIcosphere();
   ok = CheckBunnyOutline(argc, argv) && ok;
   ok = CheckPipelineAndErrors() && ok;
+  ok = CheckSoupWarning() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -24,6 +24,7 @@
 #include <cstring>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 vtkStandardNewMacro(vtkSilhouetteLineVisibility);
@@ -252,24 +253,22 @@ private:
 
 std::string vtkSilhouetteLineVisibility::CheckSettings() const
 {
+  // Each a length or a number of pixels: 0 or positive, and finite (an
+  // infinite OutlineGapPixels drew stray contour pieces, a user's trial).
+  const std::pair<const char*, double> settings[] = {
+    { "Tolerance must be 0 (automatic)", this->Tolerance },
+    { "EdgeTolerance must be 0 (automatic)", this->EdgeTolerance },
+    { "OutlinePixels must be 0 (off)", this->OutlinePixels },
+    { "OutlineGapPixels must be 0 (off)", this->OutlineGapPixels },
+  };
   std::ostringstream message;
-  if (!(this->Tolerance >= 0.0))
+  for (const auto& [rule, value] : settings)
   {
-    message << "Tolerance must be 0 (automatic) or positive, not " << this->Tolerance << ".";
-  }
-  else if (!(this->EdgeTolerance >= 0.0))
-  {
-    message << "EdgeTolerance must be 0 (automatic) or positive, not " << this->EdgeTolerance
-            << ".";
-  }
-  else if (!(this->OutlinePixels >= 0.0))
-  {
-    message << "OutlinePixels must be 0 (off) or positive, not " << this->OutlinePixels << ".";
-  }
-  else if (!(this->OutlineGapPixels >= 0.0))
-  {
-    message << "OutlineGapPixels must be 0 (off) or positive, not " << this->OutlineGapPixels
-            << ".";
+    if (!(value >= 0.0) || !std::isfinite(value))
+    {
+      message << rule << " or a positive finite number, not " << value << ".";
+      break;
+    }
   }
   return message.str();
 }

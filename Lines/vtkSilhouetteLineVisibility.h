@@ -64,7 +64,8 @@ public:
   /**
    * Hits nearer a line's point than this, along its ray to the eye, do not
    * hide it, in the data's units. 0 (the default): the surface's mean edge
-   * length. Negative or NaN values are refused.
+   * length. Negative, NaN or infinite values fail the
+   * request with an error.
    */
   vtkSetMacro(Tolerance, double);
   vtkGetMacro(Tolerance, double);
@@ -81,7 +82,8 @@ public:
    * edge long, a box's hidden edges would show near the visible corners.)
    * Pieces of these lines shorter than ten times this tolerance join their
    * neighbours (the stubs an occluder leaves where it meets the line).
-   * Negative or NaN values are refused.
+   * Negative, NaN or infinite values fail the
+   * request with an error.
    */
   vtkSetMacro(EdgeTolerance, double);
   vtkGetMacro(EdgeTolerance, double);
@@ -106,8 +108,8 @@ public:
    * than the tolerance, such as a spider's leg), unless it dips inside for
    * less than 8 times this distance between visible pieces. Default 0
    * (off: exact visibility); `silhouette render` uses 1 pixel. Crease and
-   * border lines (LineKind 1 and 2) do not use it. Negative or NaN values
-   * are refused. A positive value makes the output depend on the
+   * border lines (LineKind 1 and 2) do not use it. Negative, NaN or infinite
+   * values fail the request with an error. A positive value makes the output depend on the
    * viewport's size.
    */
   void SetOutlinePixels(double pixels);
@@ -131,7 +133,8 @@ public:
    * pieces are visible pieces of no input cell (`OriginalCellId` -1),
    * `LineKind` 4 when the input has that array, the other arrays' values
    * null. Default 0 (off); `silhouette render` uses 4.
-   * Negative or NaN values are refused. A positive value makes the output
+   * Negative, NaN or infinite values fail the
+   * request with an error. A positive value makes the output
    * depend on the viewport's size.
    */
   void SetOutlineGapPixels(double pixels);

@@ -33,6 +33,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -285,17 +286,39 @@ bool CheckOptions(
   }
   errors->Clear();
   visibility->SetOutlinePixels(0.0);
-  for (const double wrong : { -1.0, std::nan("") })
+  // Infinity too (it drew stray contour pieces, a user's trial): for every
+  // setting, and for each a large finite value is taken (the wrong variant).
+  const double infinity = std::numeric_limits<double>::infinity();
+  using Setter = void (vtkSilhouetteLineVisibility::*)(double);
+  const std::pair<const char*, Setter> settings[] = {
+    { "Tolerance", &vtkSilhouetteLineVisibility::SetTolerance },
+    { "EdgeTolerance", &vtkSilhouetteLineVisibility::SetEdgeTolerance },
+    { "OutlinePixels", &vtkSilhouetteLineVisibility::SetOutlinePixels },
+    { "OutlineGapPixels", &vtkSilhouetteLineVisibility::SetOutlineGapPixels },
+  };
+  for (const auto& [name, set] : settings)
   {
-    visibility->SetOutlineGapPixels(wrong);
-    visibility->Update();
-    if (!errors->GetError())
+    for (const double wrong : { -1.0, std::nan(""), infinity })
     {
-      ok = Fail("a negative or NaN OutlineGapPixels was accepted");
+      (visibility->*set)(wrong);
+      visibility->Update();
+      if (!errors->GetError() ||
+        std::string(errors->GetErrorMessage()).find(std::string(name) + " must be") ==
+          std::string::npos)
+      {
+        ok = Fail((std::string(name) + " took a negative, NaN or infinite value").c_str());
+      }
+      errors->Clear();
+    }
+    (visibility->*set)(1e6);
+    visibility->Update();
+    if (errors->GetError())
+    {
+      ok = Fail((std::string(name) + " refused a large finite value").c_str());
     }
     errors->Clear();
+    (visibility->*set)(0.0);
   }
-  visibility->SetOutlineGapPixels(0.0);
   visibility->SetCamera(nullptr);
   visibility->Update();
   if (!errors->GetError())

@@ -32,9 +32,12 @@
  * normals) is cached and rebuilt only when the input changes.
  *
  * Output port 0: the re-meshed mesh. All input points come first with their ids
- * unchanged (positions too, but for the perturbation below), then the added points. Arrays:
+ * unchanged (positions too, but for the perturbation below), then the copies made
+ * where feature edges split a vertex (FeatureLines), then the added points. Arrays:
  * - cell `NewGeometry` (unsigned char): 0 = input triangle kept as it was,
- *   1 = made by silhouette re-meshing (2 is reserved for feature-curve re-meshing);
+ *   1 = made by silhouette re-meshing, 2 = made by re-meshing along feature curves;
+ * - point `OriginalPointId` (vtkIdType): the input point each output point is or
+ *   copies, -1 for added points;
  * - cell `OriginalCellId` (vtkIdType): the input cell each output cell came from;
  * - point `Normals`: the shading normals, set as the active normals (added points
  *   get the normalised interpolated normal);
@@ -43,7 +46,9 @@
  *   original cell;
  * - field data `SilhouetteTriangleCount`, `NewTriangleCount`, `NewPointCount`,
  *   `InputTriangleCount`, `OutputTriangleCount`, `ConcaveSegmentCount`,
- *   `PerturbedPointCount` (vtkIdType, one tuple each).
+ *   `PerturbedPointCount`, the fold guard's fallbacks (`CrowdedTriangleCount`
+ *   among them) and more (vtkIdType, one tuple each; the project's docs/using.md
+ *   lists them all).
  *
  * Concave silhouettes (saddle regions, such as a torus's inner rim) would be
  * hidden behind their neighbouring triangles; with PerturbVertices on (the

@@ -15,6 +15,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkProperty.h"
 #include "vtkRenderer.h"
 #include "vtkSilhouettePatchedMapper.h"
 #include "vtkSilhouetteSmoothingFilter.h"
@@ -235,7 +236,11 @@ struct vtkSilhouetteSmoothingMapper::Internals
   PatchUpdate UpdatePatch(
     vtkSilhouetteSmoothingMapper* self, vtkPolyData* input, vtkRenderer* ren, vtkActor* act)
   {
-    const bool smooth = self->Smoothing && this->BaseReady;
+    // Points and wireframe draw the mesh as it is (the patched mapper
+    // patches surfaces only): smoothing for them was work thrown away every
+    // frame (a user's trial).
+    const bool smooth =
+      self->Smoothing && this->BaseReady && act->GetProperty()->GetRepresentation() == VTK_SURFACE;
     vtkCamera* camera = ren->GetActiveCamera();
     double model[16];
     vtkMatrix4x4::DeepCopy(model, act->GetMatrix());

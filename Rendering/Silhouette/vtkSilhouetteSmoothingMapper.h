@@ -28,7 +28,8 @@
  * vtkProperty, lighting and textures of the actor). Hardware selection
  * reports the input's cell ids, for the replacements too (the input cell
  * each came from); point selection picks the input's points on the mesh as
- * it is. Representations other than surface draw the mesh as it is.
+ * it is. Representations other than surface draw the mesh as it is, and
+ * are not smoothed.
  *
  * Ghost cells (`vtkGhostType` with DUPLICATECELL or HIDDENCELL: another
  * piece's cells) are never re-meshed and never drawn; they count for the

@@ -376,6 +376,48 @@ bool CheckLinesAreLit(vtkPolyData* bunny)
   return true;
 }
 
+// Drawn as wireframe (or points), the mesh is drawn as it is: the mapper
+// makes no new triangles and its image is that of the mapper with
+// smoothing off, pixel for pixel. It smoothed every frame all the same (a
+// user's trial: 149 new triangles drawn nowhere). Back to surface, it
+// smooths (the wrong variant).
+bool CheckWireframeIsNotSmoothed(vtkPolyData* bunny)
+{
+  bool ok = true;
+  Scene smoothing;
+  vtkNew<vtkSilhouetteSmoothingMapper> mapper;
+  mapper->SetInputData(bunny);
+  smoothing.Actor->SetMapper(mapper);
+  smoothing.Actor->GetProperty()->SetRepresentationToWireframe();
+  smoothing.Look(bunny, 0);
+  Scene plain; // the mesh as it is, with the same shading normals
+  vtkNew<vtkSilhouetteSmoothingMapper> plainMapper;
+  plainMapper->SmoothingOff();
+  plainMapper->SetInputData(bunny);
+  plain.Actor->SetMapper(plainMapper);
+  plain.Actor->GetProperty()->SetRepresentationToWireframe();
+  plain.Look(bunny, 0);
+  const long differing = Differing(smoothing.Pixels(), plain.Pixels());
+  const vtkIdType wireframeNew = mapper->GetNewTriangleCount();
+  smoothing.Actor->GetProperty()->SetRepresentationToSurface();
+  smoothing.Pixels();
+  const vtkIdType surfaceNew = mapper->GetNewTriangleCount();
+  std::printf("wireframe: %lld new triangles, %ld pixels differ from the unsmoothed mapper's; "
+              "surface: %lld new triangles\n",
+    static_cast<long long>(wireframeNew), differing, static_cast<long long>(surfaceNew));
+  if (wireframeNew != 0 || differing != 0)
+  {
+    std::printf("FAIL: the wireframe was smoothed, or drawn otherwise than as it is\n");
+    ok = false;
+  }
+  if (surfaceNew == 0)
+  {
+    std::printf("FAIL: the surface was not smoothed, so the check cannot fail\n");
+    ok = false;
+  }
+  return ok;
+}
+
 int TestSmoothingMapperUpdates(int argc, char* argv[])
 {
   const vtkSmartPointer<vtkRenderWindow> keeper = KeepTheDisplayOpen();
@@ -392,5 +434,6 @@ int TestSmoothingMapperUpdates(int argc, char* argv[])
   bool ok = CheckDeformingMesh(meshes.Bunny, filterTexture, mapperTexture);
   ok = CheckViewsInTurn(meshes.Bunny) && ok;
   ok = CheckLinesAreLit(meshes.Bunny) && ok;
+  ok = CheckWireframeIsNotSmoothed(meshes.Bunny) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -1,6 +1,6 @@
 /**
  * @class   vtkBoundaryCurveSmoothingFilter
- * @brief   silhouette smoothing by boundary curve interpolation (Wang, Wang, Wu and Sun 2003; a baseline)
+ * @brief   silhouette smoothing by boundary curve interpolation (the 2003 baseline)
  *
  * The earlier method that the 2008 paper (vtkSilhouetteSmoothingFilter) is
  * compared with: B. Wang, W. Wang, J. Wu, J. Sun, "Silhouette Smoothing by

@@ -204,7 +204,7 @@ bool RunOnPolygon()
   verts->InsertNextCell(1, &first);
   ring->SetVerts(verts);
   ring->GetCellData()->Initialize(); // the reader's arrays have one tuple, for the polygon
-  vtkNew<vtkIdTypeArray> label; // the vertex cell's, then the polygon's
+  vtkNew<vtkIdTypeArray> label;      // the vertex cell's, then the polygon's
   label->SetName("Label");
   label->InsertNextValue(7);
   label->InsertNextValue(42);

@@ -55,7 +55,7 @@
 // Since the same day each such gap is joined to the lines at its ends (it
 // stopped 1.5 px short of them, or beside a line running 3 px inside the
 // outline, and left a break of a pixel or two at each end): the joins add 2
-// strays on the spider's view 2 (15) and 2 on the Wuson's view 1 (3), and
+// strays on the spider's view 2 (15) and 1 on the Wuson's view 1 (3), and
 // their limits rose with them (19 and 5).
 // The program draws with OutlinePixels 1 (a silhouette within a pixel of
 // the surface's outline is drawn; one that its own sheet hides within the

@@ -484,30 +484,6 @@ PassedCells PassVertsAndLines(vtkPolyData* input)
   return passed;
 }
 
-std::string MismatchedArrayError(vtkPolyData* input)
-{
-  const std::array<std::pair<vtkFieldData*, vtkIdType>, 2> sets{ {
-    { input->GetPointData(), input->GetNumberOfPoints() },
-    { input->GetCellData(), input->GetNumberOfCells() },
-  } };
-  for (std::size_t s = 0; s < sets.size(); ++s)
-  {
-    vtkFieldData* data = sets[s].first;
-    for (int a = 0; a < data->GetNumberOfArrays(); ++a)
-    {
-      vtkAbstractArray* array = data->GetAbstractArray(a);
-      if (array && array->GetNumberOfTuples() != sets[s].second)
-      {
-        return std::string(s == 0 ? "Point" : "Cell") + " data array '" +
-          (array->GetName() ? array->GetName() : "(unnamed)") + "' has " +
-          std::to_string(array->GetNumberOfTuples()) + " tuples for " +
-          std::to_string(sets[s].second) + (s == 0 ? " points." : " cells.");
-      }
-    }
-  }
-  return {};
-}
-
 void WriteMesh(vtkPolyData* input, vtkPolyData* output, const std::vector<glm::dvec3>& inputNormals,
   const std::vector<glm::dvec3>& addedPoints, const std::vector<glm::dvec3>& addedNormals,
   const std::vector<PointSource>& addedSources, const std::vector<silsmooth::Triangle>& triangles,

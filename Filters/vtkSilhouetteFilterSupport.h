@@ -8,8 +8,9 @@
 #ifndef vtkSilhouetteFilterSupport_h
 #define vtkSilhouetteFilterSupport_h
 
-#include "vtkSilhouetteCheckedSetting.h" // the checked setter macro, for the filters
-#include "vtkSilhouetteViewTracker.h"    // ViewTracker, part of this support
+#include "vtkSilhouetteCheckedSetting.h"
+#include "vtkSilhouetteFittingArrays.h" // FittingArrays, part of this support // the checked setter macro, for the filters
+#include "vtkSilhouetteViewTracker.h" // ViewTracker, part of this support
 #include "vtkSmartPointer.h"
 #include "vtkTimeStamp.h"
 #include "vtkType.h"
@@ -135,11 +136,6 @@ struct PassedCells
   vtkIdType Dropped = 0;
 };
 PassedCells PassVertsAndLines(vtkPolyData* input);
-
-/// The error to report when a point data array does not have one tuple per
-/// point or a cell data array one per cell (a reader's or a user's mistake
-/// that would make the output's arrays garbage), else "".
-std::string MismatchedArrayError(vtkPolyData* input);
 
 /// An added point as a weighted sum of input points (weights sum to one).
 struct PointSource

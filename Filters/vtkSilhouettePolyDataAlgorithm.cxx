@@ -5,32 +5,70 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
 
 #include "vtkSilhouetteFilterSupport.h"
 
 #include <exception>
+#include <map>
 #include <new>
 #include <string>
+#include <utility>
+#include <vector>
 
-vtkSilhouettePolyDataAlgorithm::vtkSilhouettePolyDataAlgorithm() = default;
+struct vtkSilhouettePolyDataAlgorithm::FittingInputs
+{
+  // Per (port, connection).
+  std::map<std::pair<int, int>, vtkSilhouetteFilterSupport::FittingArrays> Inputs;
+};
+
+vtkSilhouettePolyDataAlgorithm::vtkSilhouettePolyDataAlgorithm()
+  : Fitting(new FittingInputs)
+{
+}
 
 vtkSilhouettePolyDataAlgorithm::~vtkSilhouettePolyDataAlgorithm() = default;
 
 vtkTypeBool vtkSilhouettePolyDataAlgorithm::ProcessRequest(
   vtkInformation* request, vtkInformationVector** inputs, vtkInformationVector* outputs)
 {
-  if (request && request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()) && inputs &&
-    this->GetNumberOfInputPorts() > 0)
+  const int ports = this->GetNumberOfInputPorts();
+  std::vector<vtkInformationVector*> seen(inputs, inputs + (inputs ? ports : 0));
+  // Where an input had to be replaced, the data request sees copies of the
+  // executive's information vectors that hold the replacement.
+  std::vector<vtkSmartPointer<vtkInformationVector>> replaced;
+  if (request && request->Has(vtkDemandDrivenPipeline::REQUEST_DATA()) && inputs)
   {
-    if (vtkPolyData* input = vtkPolyData::GetData(inputs[0]))
+    for (int port = 0; port < ports; ++port)
     {
-      const std::string error = vtkSilhouetteFilterSupport::MismatchedArrayError(input);
-      if (!error.empty())
+      for (int c = 0; inputs[port] && c < inputs[port]->GetNumberOfInformationObjects(); ++c)
       {
-        vtkErrorMacro(<< error);
-        return 0;
+        vtkPolyData* input = vtkPolyData::GetData(inputs[port], c);
+        if (!input)
+        {
+          continue;
+        }
+        std::string leftOut;
+        vtkPolyData* usable = this->Fitting->Inputs[{ port, c }].Of(input, leftOut);
+        if (!leftOut.empty())
+        {
+          vtkWarningMacro(<< leftOut);
+        }
+        if (usable == input)
+        {
+          continue;
+        }
+        if (seen[port] == inputs[port])
+        {
+          auto copy = vtkSmartPointer<vtkInformationVector>::New();
+          copy->Copy(inputs[port], 1); // new information objects, not the executive's
+          replaced.push_back(copy);
+          seen[port] = copy;
+        }
+        seen[port]->GetInformationObject(c)->Set(vtkDataObject::DATA_OBJECT(), usable);
       }
     }
+    inputs = seen.data();
   }
   std::string failure;
   try

@@ -9,9 +9,12 @@
  * catch exceptions, so without this an allocation failure deep in a filter
  * would end the program that runs the pipeline.
  *
- * Also, before a data request runs, a polygonal input whose arrays have the
- * wrong number of tuples is refused with an error
- * (vtkSilhouetteFilterSupport::MismatchedArrayError).
+ * Also, a data request sees each polygonal input without its arrays of the
+ * wrong number of tuples (vtkSilhouetteFilterSupport::FittingArrays: they
+ * would be read past their end), with a warning that names them once per
+ * input change, so that a filter uses what VTK's own mappers draw (VTK
+ * 9.1's OBJ readers give a file of faces and lines group ids for its faces
+ * only) and never reads past an array's end.
  *
  * @sa vtkSilhouetteViewAlgorithm
  */
@@ -20,6 +23,8 @@
 
 #include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
 #include "vtkPolyDataAlgorithm.h"
+
+#include <memory> // For std::unique_ptr
 
 class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkSilhouettePolyDataAlgorithm
   : public vtkPolyDataAlgorithm
@@ -39,6 +44,9 @@ protected:
   ~vtkSilhouettePolyDataAlgorithm() override;
 
 private:
+  struct FittingInputs;
+  std::unique_ptr<FittingInputs> Fitting;
+
   vtkSilhouettePolyDataAlgorithm(const vtkSilhouettePolyDataAlgorithm&) = delete;
   void operator=(const vtkSilhouettePolyDataAlgorithm&) = delete;
 };

@@ -551,17 +551,20 @@ int vtkSilhouetteSmoothingFilter::RequestViewData(vtkInformation*,
 
 namespace
 {
-// What RequestData gets from vtkSilhouettePolyDataAlgorithm::ProcessRequest,
-// for the calls a mapper makes outside the pipeline: arrays of the wrong
-// length refused (they would be read past their end), and an exception
-// turned into an error and a failed call (it would leave a render).
+// For the calls a mapper makes outside the pipeline, what RequestData has
+// from vtkSilhouettePolyDataAlgorithm::ProcessRequest: arrays of the wrong
+// length kept out (they would be read past their end; the caller leaves them
+// out, as the mapper does with FittingArrays, or the call is refused), and
+// an exception turned into an error and a failed call (it would leave a
+// render).
 template<typename Build>
 int GuardedBuild(vtkSilhouetteSmoothingFilter* self, vtkPolyData* input, Build build)
 {
-  const std::string mismatched = vtkSilhouetteFilterSupport::MismatchedArrayError(input);
+  const std::string mismatched = vtkSilhouetteFilterSupport::MismatchedArrays(input);
   if (!mismatched.empty())
   {
-    vtkErrorWithObjectMacro(self, << mismatched);
+    vtkErrorWithObjectMacro(
+      self, "The input has arrays of the wrong length: " << mismatched << ".");
     return 0;
   }
   try

@@ -28,12 +28,11 @@ PhongTessellationResult tessellatePhong(const std::vector<glm::dvec3>& points,
   double shapeFactor, const ProgressCallback& progress)
 {
   TessellationPatch patch;
-  patch.Position = [shapeFactor](const TriangleCorners& p, const TriangleCorners& n, double u,
-                     double v, double w) {
+  patch.Position = [shapeFactor](
+                     const CornerVectors& p, const CornerVectors& n, double u, double v, double w) {
     return phongPosition(p, n, u, v, w, shapeFactor);
   };
-  patch.Normal = [](
-                   const TriangleCorners&, const TriangleCorners& n, double u, double v, double w) {
+  patch.Normal = [](const CornerVectors&, const CornerVectors& n, double u, double v, double w) {
     return phongNormal(n, u, v, w);
   };
   // On an edge the patch is the triangle's with the third corner's weight

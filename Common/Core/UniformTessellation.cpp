@@ -89,9 +89,9 @@ TessellationResult tessellateUniformly(const std::vector<glm::dvec3>& points,
       result.TriangleSource.push_back(static_cast<Id>(t));
       continue;
     }
-    const TriangleCorners p{ { points[static_cast<std::size_t>(tri[0])],
+    const CornerVectors p{ { points[static_cast<std::size_t>(tri[0])],
       points[static_cast<std::size_t>(tri[1])], points[static_cast<std::size_t>(tri[2])] } };
-    const TriangleCorners nn{ { nrm[static_cast<std::size_t>(tri[0])],
+    const CornerVectors nn{ { nrm[static_cast<std::size_t>(tri[0])],
       nrm[static_cast<std::size_t>(tri[1])], nrm[static_cast<std::size_t>(tri[2])] } };
     // The point of side s (corner s to corner s+1) `steps` pieces from corner s.
     auto sidePoint = [&](int s, int steps) -> Id {

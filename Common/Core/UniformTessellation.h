@@ -50,7 +50,7 @@ struct TessellationResult
 };
 
 /// One triangle's corner positions or normals, in its corner order.
-using TriangleCorners = std::array<glm::dvec3, 3>;
+using CornerVectors = std::array<glm::dvec3, 3>;
 
 /// A smooth patch over each triangle, as functions of its corners.
 struct TessellationPatch
@@ -58,7 +58,7 @@ struct TessellationPatch
   /// Position or normal at barycentric (a, b, c), a + b + c = 1, of the
   /// triangle with corners `p` and unit corner normals `n`.
   using PatchFunction = std::function<glm::dvec3(
-    const TriangleCorners& p, const TriangleCorners& n, double a, double b, double c)>;
+    const CornerVectors& p, const CornerVectors& n, double a, double b, double c)>;
   /// Position or normal on the edge from (p0, n0) to (p1, n1) at t (the weight
   /// of p1). Must equal the patch of either triangle of the edge there, and
   /// use the edge's data only.

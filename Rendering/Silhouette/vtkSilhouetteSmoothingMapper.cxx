@@ -17,6 +17,7 @@
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkSilhouetteFittingArrays.h"
 #include "vtkSilhouettePatchedMapper.h"
 #include "vtkSilhouetteSmoothingFilter.h"
 #include "vtkSilhouetteViewTracker.h"
@@ -26,6 +27,7 @@
 #include <array>
 #include <chrono>
 #include <iterator>
+#include <string>
 #include <vector>
 
 vtkStandardNewMacro(vtkSilhouetteSmoothingMapper);
@@ -104,6 +106,10 @@ struct vtkSilhouetteSmoothingMapper::Internals
   vtkMTimeType BaseInputTime = 0;
   vtkMTimeType BaseSettingsTime = 0;
   bool BaseReady = false;
+  // The input without its arrays of the wrong length (the input itself when
+  // they all fit): what is smoothed and drawn.
+  vtkSilhouetteFilterSupport::FittingArrays Fitting;
+  vtkPolyData* Usable = nullptr;
   // The base mesh's ghost triangles (indices among its polygons): another
   // piece's to draw, so hidden in every frame.
   std::vector<vtkIdType> Ghosts;
@@ -130,17 +136,26 @@ struct vtkSilhouetteSmoothingMapper::Internals
     }
   }
 
-  void UpdateBase(vtkSilhouetteSmoothingMapper* self, vtkPolyData* input)
+  // Updates the base mesh for `input` and returns what is smoothed and
+  // drawn: `input` without its arrays of the wrong length.
+  vtkPolyData* UpdateBase(vtkSilhouetteSmoothingMapper* self, vtkPolyData* input)
   {
     const vtkMTimeType settings = this->Smoother->GetMTime();
     if (input == this->BaseInput && input->GetMTime() == this->BaseInputTime &&
       settings == this->BaseSettingsTime)
     {
-      return;
+      return this->Usable;
     }
     this->BaseInput = input;
     this->BaseInputTime = input->GetMTime();
     this->BaseSettingsTime = settings;
+    std::string leftOut;
+    this->Usable = this->Fitting.Of(input, leftOut);
+    if (!leftOut.empty())
+    {
+      vtkWarningWithObjectMacro(self, << leftOut);
+    }
+    input = this->Usable;
     this->BaseReady = this->Smoother->BuildBaseMesh(input, this->Base) != 0;
     if (!this->BaseReady)
     {
@@ -169,6 +184,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
         }
       }
     }
+    return input;
   }
 
   // Hands `patch` to the drawing mapper and its figures to `self`.
@@ -327,7 +343,7 @@ void vtkSilhouetteSmoothingMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   }
   const auto start = std::chrono::steady_clock::now();
   Internals& internal = *this->Internal;
-  internal.UpdateBase(this, input);
+  vtkPolyData* usable = internal.UpdateBase(this, input);
   // Colouring and clipping as this mapper's (vtkMapper's settings, not the
   // input).
   const vtkMTimeType settings = this->Superclass::GetMTime();
@@ -339,7 +355,8 @@ void vtkSilhouetteSmoothingMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
     internal.Drawn->SetStatic(1);
     internal.CopiedSettingsTime = settings;
   }
-  const bool smoothed = internal.UpdatePatch(this, input, ren, act) == Internals::PatchUpdate::Made;
+  const bool smoothed =
+    internal.UpdatePatch(this, usable, ren, act) == Internals::PatchUpdate::Made;
   this->LastPrepareSeconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (smoothed)

@@ -137,6 +137,7 @@ vtkSilhouettePatchedMapper::~vtkSilhouettePatchedMapper() = default;
 void vtkSilhouettePatchedMapper::ReleaseGraphicsResources(vtkWindow* win)
 {
   this->Patch->ReleaseGraphicsResources(win);
+  this->SelectionPatches.clear();
   this->Applied.clear();
   this->LayoutKnown = false;
   this->Superclass::ReleaseGraphicsResources(win);
@@ -521,6 +522,15 @@ void vtkSilhouettePatchedMapper::RenderPieceDraw(vtkRenderer* ren, vtkActor* act
 {
   this->Superclass::RenderPieceDraw(ren, act);
   this->PatchDrawnThisPass = this->PatchDrawn(ren, act) && this->PatchData->GetNumberOfCells() > 0;
+  if (ren->GetSelector())
+  {
+    DrawnPatch& drawn = this->SelectionPatches[act];
+    drawn.CellIds = this->PatchCellIds;
+    drawn.PointSources = this->PatchPointSources;
+    drawn.CellOffset = this->PatchCellOffset;
+    drawn.PointOffset = this->PatchPointOffset;
+    drawn.Drawn = this->PatchDrawnThisPass;
+  }
   if (!this->PatchDrawnThisPass)
   {
     return;
@@ -562,7 +572,16 @@ void vtkSilhouettePatchedMapper::ProcessSelectorPixelBuffers(
   vtkHardwareSelector* sel, std::vector<unsigned int>& pixeloffsets, vtkProp* prop)
 {
   vtkPolyData* poly = this->CurrentInput;
-  if (!this->PopulateSelectionSettings || !poly || !this->PatchDrawnThisPass)
+  const auto recorded = this->SelectionPatches.find(prop);
+  DrawnPatch current;
+  if (recorded == this->SelectionPatches.end())
+  {
+    current = { this->PatchCellIds, this->PatchPointSources, this->PatchCellOffset,
+      this->PatchPointOffset, this->PatchDrawnThisPass };
+  }
+  const DrawnPatch& drawn =
+    recorded != this->SelectionPatches.end() ? recorded->second : current;
+  if (!this->PopulateSelectionSettings || !poly || !drawn.Drawn)
   {
     this->Superclass::ProcessSelectorPixelBuffers(sel, pixeloffsets, prop);
     return;
@@ -584,8 +603,8 @@ void vtkSilhouettePatchedMapper::ProcessSelectorPixelBuffers(
   std::vector<unsigned int> mesh;
   mesh.reserve(pixeloffsets.size());
   unsigned char* out = sel->GetPixelBuffer(pass);
-  const vtkIdType patchCells = this->PatchCellIds ? this->PatchCellIds->GetNumberOfValues() : 0;
-  const vtkIdType patchPoints = static_cast<vtkIdType>(this->PatchPointSources.size());
+  const vtkIdType patchCells = drawn.CellIds ? drawn.CellIds->GetNumberOfValues() : 0;
+  const vtkIdType patchPoints = static_cast<vtkIdType>(drawn.PointSources.size());
   for (const unsigned int pos : pixeloffsets)
   {
     vtkIdType k = -1;
@@ -593,14 +612,14 @@ void vtkSilhouettePatchedMapper::ProcessSelectorPixelBuffers(
     {
       const vtkIdType raw =
         RawId(sel, vtkHardwareSelector::POINT_ID_LOW24, vtkHardwareSelector::POINT_ID_HIGH24, pos);
-      k = raw >= this->PatchPointOffset ? raw - this->PatchPointOffset : -1;
+      k = raw >= drawn.PointOffset ? raw - drawn.PointOffset : -1;
       k = k < patchPoints ? k : -1;
     }
     else if (cellPass)
     {
       const vtkIdType raw =
         RawId(sel, vtkHardwareSelector::CELL_ID_LOW24, vtkHardwareSelector::CELL_ID_HIGH24, pos);
-      k = raw >= this->PatchCellOffset ? raw - this->PatchCellOffset : -1;
+      k = raw >= drawn.CellOffset ? raw - drawn.CellOffset : -1;
       k = k < patchCells ? k : -1;
     }
     if (k < 0)
@@ -616,8 +635,7 @@ void vtkSilhouettePatchedMapper::ProcessSelectorPixelBuffers(
     {
       case vtkHardwareSelector::CELL_ID_LOW24:
       case vtkHardwareSelector::CELL_ID_HIGH24:
-        Write24(
-          out, pos, this->PatchCellIds->GetValue(k), pass == vtkHardwareSelector::CELL_ID_HIGH24);
+        Write24(out, pos, drawn.CellIds->GetValue(k), pass == vtkHardwareSelector::CELL_ID_HIGH24);
         break;
       case vtkHardwareSelector::COMPOSITE_INDEX_PASS:
         if (compositeIds)
@@ -629,7 +647,7 @@ void vtkSilhouettePatchedMapper::ProcessSelectorPixelBuffers(
         if (processIds)
         {
           Write24(out, pos,
-            processIds->GetValue(this->PatchPointSources[static_cast<std::size_t>(k)]) + 1, false);
+            processIds->GetValue(drawn.PointSources[static_cast<std::size_t>(k)]) + 1, false);
         }
         break;
       default:

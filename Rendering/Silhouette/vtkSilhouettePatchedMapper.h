@@ -44,6 +44,7 @@
 #include "vtkOpenGLPolyDataMapper.h"
 #include "vtkSmartPointer.h" // For the patch
 
+#include <map>    // For the patches of a selection
 #include <vector> // For the hidden triangles
 
 class vtkIdTypeArray;
@@ -126,6 +127,19 @@ private:
   vtkIdType PatchCellOffset = 0;
   vtkIdType PatchPointOffset = 0;
   bool PatchDrawnThisPass = false;
+  // What a selection pass drew for each prop: actors that share this mapper
+  // have patches of their own (their own matrices), and the selector
+  // converts every prop's pixels after the pass has drawn them all. Props
+  // are keys only, never dereferenced.
+  struct DrawnPatch
+  {
+    vtkSmartPointer<vtkIdTypeArray> CellIds;
+    std::vector<vtkIdType> PointSources;
+    vtkIdType CellOffset = 0;
+    vtkIdType PointOffset = 0;
+    bool Drawn = false;
+  };
+  std::map<vtkProp*, DrawnPatch> SelectionPatches;
   vtkMTimeType PatchSettingsTime = 0;
   // Whether the patch holds a copy of the input's field data, of this time.
   bool PatchFieldsCopied = false;

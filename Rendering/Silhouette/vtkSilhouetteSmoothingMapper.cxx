@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdint>
 #include <iterator>
 #include <string>
 #include <vector>
@@ -72,6 +73,29 @@ std::vector<vtkIdType> PointSources(vtkPolyData* patch)
   return sources;
 }
 
+// Whether every cell of `mesh` names points it has: VTK's OpenGL mappers
+// read the points a cell names unchecked, and crash on a missing one.
+bool CellsNameTheirPoints(vtkPolyData* mesh)
+{
+  const vtkIdType points = mesh->GetNumberOfPoints();
+  for (vtkCellArray* cells : { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(),
+         mesh->GetStrips() })
+  {
+    auto it = vtk::TakeSmartPointer(cells->NewIterator());
+    for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
+    {
+      vtkIdType size = 0;
+      const vtkIdType* ids = nullptr;
+      it->GetCurrentCell(size, ids);
+      if (std::any_of(ids, ids + size, [points](vtkIdType id) { return id < 0 || id >= points; }))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 } // namespace
 
 // One view's patch: what was smoothed for it, ready to hand to the drawing
@@ -106,6 +130,30 @@ struct vtkSilhouetteSmoothingMapper::Internals
   vtkMTimeType BaseInputTime = 0;
   vtkMTimeType BaseSettingsTime = 0;
   bool BaseReady = false;
+  // False when the input cannot even be drawn as it is (a cell names a
+  // point the input does not have).
+  bool Drawable = true;
+  // Whether the cells of this input, at this time, name their points.
+  vtkPolyData* CheckedInput = nullptr;
+  vtkMTimeType CheckedInputTime = 0;
+  bool CheckedDrawable = true;
+
+  // Reports an undrawable input once per input change.
+  bool CellsDrawable(vtkSilhouetteSmoothingMapper* self, vtkPolyData* input)
+  {
+    if (input != this->CheckedInput || input->GetMTime() != this->CheckedInputTime)
+    {
+      this->CheckedInput = input;
+      this->CheckedInputTime = input->GetMTime();
+      this->CheckedDrawable = CellsNameTheirPoints(input);
+      if (!this->CheckedDrawable)
+      {
+        vtkErrorWithObjectMacro(
+          self, "The input's cells name points it does not have: it is not drawn.");
+      }
+    }
+    return this->CheckedDrawable;
+  }
   // The input without its arrays of the wrong length (the input itself when
   // they all fit): what is smoothed and drawn.
   vtkSilhouetteFilterSupport::FittingArrays Fitting;
@@ -113,11 +161,16 @@ struct vtkSilhouetteSmoothingMapper::Internals
   // The base mesh's ghost triangles (indices among its polygons): another
   // piece's to draw, so hidden in every frame.
   std::vector<vtkIdType> Ghosts;
-  // The patches of the last two views drawn (views compared by value, as
+  // The patches of the last four views drawn (views compared by value, as
   // the filters compare them): stereo's two eyes, a shadow map's light and
-  // the camera, two renderers showing one actor each render without
-  // smoothing again while their views stay. Patches[Current] is drawn.
-  std::array<ViewPatch, 2> Patches;
+  // the camera, renderers showing one actor, actors sharing this mapper
+  // (each with its own matrix, drawn in turn in every pass of depth
+  // peeling) each render without smoothing again while their views stay.
+  // Patches[Current] is drawn; a new view replaces the one drawn longest
+  // ago (LastDrawn: when each was last drawn, counted in patch updates).
+  std::array<ViewPatch, 4> Patches;
+  std::array<std::uint64_t, 4> LastDrawn{};
+  std::uint64_t Updates = 0;
   std::size_t Current = 0;
   vtkMTimeType CopiedSettingsTime = 0;
 
@@ -157,7 +210,8 @@ struct vtkSilhouetteSmoothingMapper::Internals
     }
     input = this->Usable;
     this->BaseReady = this->Smoother->BuildBaseMesh(input, this->Base) != 0;
-    if (!this->BaseReady)
+    this->Drawable = this->BaseReady || this->CellsDrawable(self, input);
+    if (this->Drawable && !this->BaseReady)
     {
       vtkWarningWithObjectMacro(
         self, "The input cannot be smoothed (see the error above): it is drawn as it is.");
@@ -264,6 +318,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
     ren->GetTiledSizeAndOrigin(&width, &height, &x, &y);
     using Tracker = vtkSilhouetteFilterSupport::ViewTracker;
     const Tracker::Key view = Tracker::KeyOf(camera, model, { { width, height } });
+    ++this->Updates;
     for (std::size_t k = 0; k < this->Patches.size(); ++k)
     {
       // The drawn patch first: of two equal views, it is the one to keep.
@@ -271,6 +326,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
       const ViewPatch& patch = this->Patches[i];
       if (patch.Valid && patch.Smoothed == smooth && Tracker::SameView(patch.View, view))
       {
+        this->LastDrawn[i] = this->Updates;
         if (i == this->Current)
         {
           return PatchUpdate::Kept;
@@ -280,8 +336,16 @@ struct vtkSilhouetteSmoothingMapper::Internals
         return PatchUpdate::Switched;
       }
     }
-    // A new view replaces the one not drawn last.
-    this->Current = (this->Current + 1) % this->Patches.size();
+    // A new view replaces the one drawn longest ago (an invalid one first).
+    std::size_t oldest = 0;
+    for (std::size_t i = 1; i < this->Patches.size(); ++i)
+    {
+      const bool older = this->Patches[oldest].Valid &&
+        (!this->Patches[i].Valid || this->LastDrawn[i] < this->LastDrawn[oldest]);
+      oldest = older ? i : oldest;
+    }
+    this->Current = oldest;
+    this->LastDrawn[oldest] = this->Updates;
     ViewPatch& patch = this->Patches[this->Current];
     patch.View = view;
     this->Make(self, input, camera, model, width, height, smooth, patch);
@@ -311,6 +375,18 @@ vtkMTimeType vtkSilhouetteSmoothingMapper::GetMTime()
 
 double* vtkSilhouetteSmoothingMapper::GetBounds()
 {
+  // vtkPolyDataMapper's bounds are its cells', read unchecked: a cell that
+  // names a missing point is read past the points' end.
+  vtkPolyData* in = this->GetInput();
+  if (in && !this->Static && this->GetInputAlgorithm())
+  {
+    this->GetInputAlgorithm()->Update();
+  }
+  if (in && !this->Internal->CellsDrawable(this, in))
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+    return this->Bounds;
+  }
   double* bounds = this->Superclass::GetBounds(); // the input's
   const Internals& internal = *this->Internal;
   vtkPolyData* input = this->GetInput();
@@ -344,6 +420,10 @@ void vtkSilhouetteSmoothingMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   const auto start = std::chrono::steady_clock::now();
   Internals& internal = *this->Internal;
   vtkPolyData* usable = internal.UpdateBase(this, input);
+  if (!internal.Drawable)
+  {
+    return;
+  }
   // Colouring and clipping as this mapper's (vtkMapper's settings, not the
   // input).
   const vtkMTimeType settings = this->Superclass::GetMTime();

@@ -114,11 +114,11 @@ public:
 
   /**
    * How many times the mapper has smoothed for a view since it was made.
-   * It keeps the patches of the last two views it drew, compared by value
-   * (stereo's two eyes, a shadow map's light and the camera, or two
-   * renderers showing one actor), so rendering either of them again adds
-   * nothing; a third view replaces the one not drawn last. A change of the
-   * input or of the filter's settings forgets both.
+   * It keeps the patches of the last four views it drew, compared by value
+   * (stereo's two eyes, a shadow map's light and the camera, renderers
+   * showing one actor, or actors sharing this mapper), so rendering any of
+   * them again adds nothing; a fifth view replaces the one drawn longest
+   * ago. A change of the input or of the filter's settings forgets them.
    */
   vtkIdType GetSmoothingRunCount() const { return this->SmoothingRunCount; }
 

@@ -367,6 +367,16 @@ bool vtkSilhouetteSmoothingFilter::Internals::Prepare(
                        << "mesh's units): it joined " << statistics.WeldedPointCount << " of "
                        << input->GetNumberOfPoints() << " points.");
   }
+  if (rebuilt && statistics.BackToBackTriangleCount > 0)
+  {
+    // Sides written with a copy of each point are kept apart (welding
+    // within sheets); sides on the same points cannot be.
+    vtkWarningWithObjectMacro(self,
+      << statistics.BackToBackTriangleCount
+      << " triangles lie back to back with a twin on the same points (a double-sided sheet "
+         "whose sides share their points): their normals cancel, so they are shaded dark. Give "
+         "each side points of its own, or keep one side.");
+  }
   if (rebuilt && statistics.InconsistentEdgeCount > 0)
   {
     vtkWarningWithObjectMacro(

@@ -182,9 +182,86 @@ std::vector<Triangle> weldTriangles(
   return welded;
 }
 
-std::vector<std::size_t> sheetsOf(const std::vector<Triangle>& triangles, const EdgeTable& table)
+namespace
+{
+std::array<Id, 3> sortedCorners(const Triangle& c)
+{
+  std::array<Id, 3> sorted{ { c[0], c[1], c[2] } };
+  std::sort(sorted.begin(), sorted.end());
+  return sorted;
+}
+
+} // namespace
+
+std::vector<unsigned char> backToBackTwins(
+  const std::vector<Triangle>& triangles, const EdgeTable& table)
+{
+  std::vector<unsigned char> twinned(triangles.size(), 0);
+  // A twin's sides lie on edges of its twin's too, so each of its edges
+  // has at least three sides unless the pair is alone: only triangles on
+  // such an edge are looked at (none on a manifold mesh).
+  std::vector<unsigned char> sides(table.edgeCount(), 0);
+  for (std::size_t side = 0; side < table.sideCount(); ++side)
+  {
+    unsigned char& count = sides[static_cast<std::size_t>(
+      table.sideEdge(static_cast<Id>(side / 3), static_cast<int>(side % 3)))];
+    count = count < 3 ? count + 1 : count;
+  }
+  // Sorted corners -> the triangles on them, with their winding's parity.
+  std::map<std::array<Id, 3>, std::vector<std::pair<std::size_t, bool>>> byCorners;
+  for (std::size_t t = 0; t < triangles.size(); ++t)
+  {
+    const Triangle& c = triangles[t];
+    bool crowded = false;
+    for (int k = 0; k < 3; ++k)
+    {
+      crowded =
+        crowded || sides[static_cast<std::size_t>(table.sideEdge(static_cast<Id>(t), k))] >= 3;
+    }
+    if (!crowded || hasRepeatedCorner(c))
+    {
+      continue;
+    }
+    const std::array<Id, 3> sorted = sortedCorners(c);
+    // Even: a rotation of the sorted order.
+    const bool even = (c[0] == sorted[0] && c[1] == sorted[1]) ||
+      (c[1] == sorted[0] && c[2] == sorted[1]) || (c[2] == sorted[0] && c[0] == sorted[1]);
+    byCorners[sorted].emplace_back(t, even);
+  }
+  for (const auto& entry : byCorners)
+  {
+    const auto& onCorners = entry.second;
+    const auto isEven = [](const std::pair<std::size_t, bool>& x) {
+      return x.second;
+    };
+    const bool both = std::any_of(onCorners.begin(), onCorners.end(), isEven) &&
+      !std::all_of(onCorners.begin(), onCorners.end(), isEven);
+    for (const auto& x : onCorners)
+    {
+      twinned[x.first] = both ? 1 : 0;
+    }
+  }
+  return twinned;
+}
+
+std::vector<std::size_t> sheetsOf(
+  const std::vector<Triangle>& triangles, const EdgeTable& table, bool backToBackApart)
 {
   constexpr Id noTriangle = -1;
+  const std::vector<unsigned char> twinned =
+    backToBackApart ? backToBackTwins(triangles, table) : std::vector<unsigned char>();
+  const bool anyTwins = std::find(twinned.begin(), twinned.end(), 1) != twinned.end();
+  // Edges with a twinned triangle: their triangles, each with whether it
+  // runs along the edge from its low end.
+  std::vector<unsigned char> twinnedEdge(anyTwins ? table.edgeCount() : 0, 0);
+  for (std::size_t t = 0; anyTwins && t < triangles.size(); ++t)
+  {
+    for (int k = 0; k < 3 && twinned[t]; ++k)
+    {
+      twinnedEdge[static_cast<std::size_t>(table.sideEdge(static_cast<Id>(t), k))] = 1;
+    }
+  }
+  std::map<std::size_t, std::vector<std::pair<std::size_t, bool>>> alongTwinnedEdge;
   std::vector<Id> firstAtEdge(table.edgeCount(), noTriangle);
   DisjointSets sheets(triangles.size());
   for (std::size_t t = 0; t < triangles.size(); ++t)
@@ -197,13 +274,42 @@ std::vector<std::size_t> sheetsOf(const std::vector<Triangle>& triangles, const 
       {
         continue;
       }
-      if (firstAtEdge[e] == noTriangle)
+      if (anyTwins && twinnedEdge[e])
+      {
+        alongTwinnedEdge[e].emplace_back(t, triangles[t][k] == edge.low);
+      }
+      else if (firstAtEdge[e] == noTriangle)
       {
         firstAtEdge[e] = static_cast<Id>(t);
       }
       else
       {
         sheets.unite(static_cast<std::size_t>(firstAtEdge[e]), t);
+      }
+    }
+  }
+  for (const auto& entry : alongTwinnedEdge)
+  {
+    const auto& along = entry.second;
+    // Past a few triangles on one edge (a fan's spine), all are joined, as
+    // without twins: the pairs would cost their square.
+    constexpr std::size_t mostPaired = 16;
+    for (std::size_t a = 0; a < along.size() && along.size() > mostPaired; ++a)
+    {
+      sheets.unite(along[0].first, along[a].first);
+    }
+    for (std::size_t a = 0; a < along.size() && along.size() <= mostPaired; ++a)
+    {
+      for (std::size_t b = a + 1; b < along.size(); ++b)
+      {
+        const std::size_t ta = along[a].first, tb = along[b].first;
+        const bool apart = (twinned[ta] || twinned[tb]) &&
+          (along[a].second == along[b].second ||
+            sortedCorners(triangles[ta]) == sortedCorners(triangles[tb]));
+        if (!apart)
+        {
+          sheets.unite(ta, tb);
+        }
       }
     }
   }
@@ -228,7 +334,8 @@ std::vector<Id> weldWithinSheets(
   {
     return vertex;
   }
-  const std::vector<std::size_t> sheets = sheetsOf(triangles, weldedTable);
+  const std::vector<std::size_t> sheets =
+    sheetsOf(weldTriangles(triangles, vertex), weldedTable, true);
   // Each point's sheet; a group with a point on two sheets stays whole.
   constexpr std::size_t none = static_cast<std::size_t>(-1);
   std::vector<std::size_t> sheetOfPoint(n, none);

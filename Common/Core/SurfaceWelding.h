@@ -29,18 +29,33 @@ constexpr double NormalSeamAngleDegrees = 1.0;
 /// non-finite coordinates are never welded.
 std::vector<Id> weldCoincidentPoints(const std::vector<glm::dvec3>& points, double tolerance = 0.0);
 
+/// For each triangle, whether another triangle lies on the same three
+/// corners with the opposite winding (its back-to-back twin: the two sides
+/// of a double-sided sheet). `table` is the triangles' edge table; only
+/// triangles on an edge with three sides or more are looked at (a twin pair
+/// alone is not found). O(triangles) on a manifold mesh.
+std::vector<unsigned char> backToBackTwins(
+  const std::vector<Triangle>& triangles, const EdgeTable& table);
+
 /// Each triangle's sheet: the lowest id among the triangles joined to it
 /// across shared sides of `table` (their edge table; a side whose ends are
 /// one point joins nothing). Parts that only touch at a point are sheets of
-/// their own. O(triangles).
-std::vector<std::size_t> sheetsOf(const std::vector<Triangle>& triangles, const EdgeTable& table);
+/// their own. With `backToBackApart`, the two sides of a double-sided sheet
+/// (each triangle repeated on the same corners with the opposite winding,
+/// as exporters write foliage and cloth) are sheets of their own too: a
+/// triangle with such a twin joins, across a side, only triangles that run
+/// along that side the other way and are not its twin. O(triangles).
+std::vector<std::size_t> sheetsOf(
+  const std::vector<Triangle>& triangles, const EdgeTable& table, bool backToBackApart = false);
 
 /// The weld `vertex` (as weldCoincidentPoints gives it) kept within sheets:
 /// points welded together stay one vertex only where their triangles are
 /// joined across sides once welded. Parts that only touch at a point (two
 /// solids with a corner in common, a sphere's equator point on a grid point
 /// of a face) keep a vertex each there, so that neither's normals blend into
-/// the other's. A group with a point whose own triangles lie on two sheets
+/// the other's; so do the two sides of a double-sided sheet written with a
+/// copy of each point per side (sheetsOf's `backToBackApart`), whose
+/// normals would cancel. A group with a point whose own triangles lie on two sheets
 /// (a pinched surface) stays whole; points no triangle uses stay with their
 /// group's lowest point. The same invariants as weldCoincidentPoints.
 /// `weldedTable` is the edge table of weldTriangles(triangles, vertex).

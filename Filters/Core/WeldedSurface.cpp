@@ -98,6 +98,9 @@ WeldedSurface::GivenNormals WeldedSurface::weldAndOrient(const std::vector<glm::
   {
     this->Statistics.WeldedPointCount += this->Vertex[i] != static_cast<Id>(i) ? 1 : 0;
   }
+  const std::vector<unsigned char> twins = backToBackTwins(welded, table);
+  this->Statistics.BackToBackTriangleCount =
+    static_cast<std::size_t>(std::count(twins.begin(), twins.end(), 1));
   const NearCopies nearCopies = nearCopyEdges(points, table);
   this->Statistics.NearCopyEdgeCount = nearCopies.EdgeCount;
   this->Statistics.LongestNearCopyEdge = nearCopies.LongestEdge;

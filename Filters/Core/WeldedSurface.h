@@ -73,6 +73,10 @@ struct SurfaceStatistics
   std::size_t ReversedTriangleCount = 0;
   std::size_t ComponentCount = 0;
   std::size_t InconsistentEdgeCount = 0; ///< non-orientable edges left
+  /// Triangles with a back-to-back twin on the same surface vertices (a
+  /// double-sided sheet whose sides share their points: welding could not
+  /// keep the sides apart, and their normals cancel).
+  std::size_t BackToBackTriangleCount = 0;
   std::size_t NormalSeamEdgeCount = 0;
   std::size_t FlatCreaseEdgeCount = 0;
   /// The given normals were face normals (flat shading: they split along at

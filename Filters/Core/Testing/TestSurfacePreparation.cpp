@@ -99,6 +99,68 @@ TEST(SurfaceWelding, WeldingStaysWithinSheets)
   EXPECT_LT(glm::dot(normals[4], glm::dvec3(0.0, 0.0, 1.0)), 0.99);
 }
 
+TEST(SurfaceWelding, TheSidesOfADoubleSidedSheetStayApart)
+{
+  // A tent of four triangles over a 3 x 2 grid of points (a curved sheet),
+  // written double-sided as exporters write cloth: the back side repeats
+  // every triangle with the opposite winding, on copies of the points
+  // (points 6 to 11).
+  const std::vector<glm::dvec3> front{ { 0, 0, 0 }, { 1, 0, 0.5 }, { 2, 0, 0 }, { 0, 1, 0 },
+    { 1, 1, 0.5 }, { 2, 1, 0 } };
+  std::vector<glm::dvec3> points = front;
+  points.insert(points.end(), front.begin(), front.end());
+  const std::vector<Triangle> frontTriangles{ { 0, 1, 4 }, { 0, 4, 3 }, { 1, 2, 5 }, { 1, 5, 4 } };
+  std::vector<Triangle> triangles = frontTriangles;
+  for (const Triangle& t : frontTriangles)
+  {
+    triangles.push_back({ t[0] + 6, t[2] + 6, t[1] + 6 });
+  }
+  const std::vector<Id> welded = weldCoincidentPoints(points);
+  const EdgeTable table(weldTriangles(triangles, welded));
+  // Welded, each triangle has its twin on the same vertices.
+  const std::vector<unsigned char> twins = backToBackTwins(weldTriangles(triangles, welded), table);
+  EXPECT_EQ(std::count(twins.begin(), twins.end(), 1), 8);
+  // The sides are two sheets, so the copies stay apart...
+  const std::vector<Id> apart = weldWithinSheets(triangles, welded, table);
+  for (Id p = 0; p < 6; ++p)
+  {
+    EXPECT_NE(apart[static_cast<std::size_t>(p)], apart[static_cast<std::size_t>(p + 6)]);
+  }
+  // ... and each side's normals are its own: up on the front, down on the
+  // back (welded into one, they would cancel).
+  SurfaceOptions options = coretest::plainOptions();
+  options.DetectFeatures = false;
+  const WeldedSurface surface(points, triangles, {}, {}, options);
+  EXPECT_EQ(surface.statistics().BackToBackTriangleCount, 0u);
+  const std::vector<glm::dvec3>& normals = surface.prepared().normals();
+  ASSERT_GE(normals.size(), 12u);
+  EXPECT_NEAR(glm::length(normals[4]), 1.0, 1e-9);
+  EXPECT_NEAR(glm::length(normals[10]), 1.0, 1e-9);
+  EXPECT_LT(glm::dot(normals[4], normals[10]), -0.99);
+  // The wrong variant: sheets joined across the twins' edges, as without
+  // backToBackApart, keep the copies welded.
+  const std::vector<std::size_t> joined = sheetsOf(weldTriangles(triangles, welded), table);
+  EXPECT_EQ(joined[0], joined[4]);
+  const std::vector<std::size_t> sides = sheetsOf(weldTriangles(triangles, welded), table, true);
+  EXPECT_NE(sides[0], sides[4]);
+  EXPECT_EQ(sides[0], sides[3]);
+  EXPECT_EQ(sides[4], sides[7]);
+  // The same triangles repeated with the same winding are no twins; on the
+  // same points (not copies), the sides cannot be kept apart, which the
+  // statistics say.
+  std::vector<Triangle> repeated = frontTriangles;
+  repeated.insert(repeated.end(), frontTriangles.begin(), frontTriangles.end());
+  const std::vector<unsigned char> none = backToBackTwins(repeated, EdgeTable(repeated));
+  EXPECT_EQ(std::count(none.begin(), none.end(), 1), 0);
+  std::vector<Triangle> shared = frontTriangles;
+  for (const Triangle& t : frontTriangles)
+  {
+    shared.push_back({ t[0], t[2], t[1] });
+  }
+  const WeldedSurface sharedSurface(front, shared, {}, {}, options);
+  EXPECT_EQ(sharedSurface.statistics().BackToBackTriangleCount, 8u);
+}
+
 TEST(SurfaceWelding, NearCopiesAreEdgesBelowAHundredThousandthOfTheDiagonal)
 {
   // A unit square (diagonal sqrt 2) split in two, corner 2 with a copy (4)

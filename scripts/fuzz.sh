@@ -43,8 +43,10 @@ source "$here/scripts/clang.sh"
 # traces, and the build takes about half the time of RelWithDebInfo's -O2 -g.
 echo "fuzz: building fuzz_core, fuzz_mesh_io and fuzz_progressive_strokes with clang (libFuzzer, ASan, UBSan) in $work"
 mkdir -p "$work"
+# A unity build, as in scripts/sanitize.sh.
 cmake -S "$here" -B "$work" -DSILHOUETTE_FUZZ=ON -DBUILD_TESTING=OFF \
   -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
+  -DCMAKE_UNITY_BUILD=ON \
   >"$work/fuzz-configure.log" 2>&1 ||
   { cat "$work/fuzz-configure.log" >&2; exit 1; }
 cmake --build "$work" -j "$jobs" --target fuzz_core fuzz_mesh_io fuzz_progressive_strokes >"$work/fuzz-build.log" 2>&1 ||

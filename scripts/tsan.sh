@@ -32,8 +32,10 @@ source "$here/scripts/cmake_logged.sh"
 module_tests="TestConcurrentFilters;TestTopologyInvariants;TestBadInput;TestVisibilityMethod"
 module_tests+=";TestBoundaryCurveSmoothing;TestFaceSilhouetteLines;TestPNTriangleFilter"
 module_tests+=";TestProgressiveMeshFilter;TestStylizedStrokes"
+# A unity build, as in scripts/sanitize.sh.
 configure_logged tsan "$build" -DSILHOUETTE_SANITIZE_THREAD=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DSILHOUETTE_MODULE_TESTS="$module_tests"
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" -DSILHOUETTE_MODULE_TESTS="$module_tests" \
+  -DCMAKE_UNITY_BUILD=ON
 build_logged tsan "$build" -j "$jobs" --target silhouette_core_tests SilhouetteModuleTests
 echo "tsan: built in $((SECONDS - started)) s"
 

@@ -9,6 +9,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkExecutive.h"
 #include "vtkIcosphereSource.h"
+#include "vtkIdList.h"
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -121,6 +122,28 @@ TopologyReport AnalyzeTopology(vtkPolyData* mesh)
     }
   }
   return report;
+}
+
+vtkSmartPointer<vtkPolyData> Soup(vtkPolyData* mesh)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfPolys(); ++c)
+  {
+    mesh->GetPolys()->GetCellAtId(c, ids);
+    vtkIdType own[3];
+    for (vtkIdType k = 0; k < 3; ++k)
+    {
+      own[k] = points->InsertNextPoint(mesh->GetPoint(ids->GetId(k)));
+    }
+    polys->InsertNextCell(3, own);
+  }
+  auto soup = vtkSmartPointer<vtkPolyData>::New();
+  soup->SetPoints(points);
+  soup->SetPolys(polys);
+  return soup;
 }
 
 vtkSmartPointer<vtkPolyData> Icosphere(int level)

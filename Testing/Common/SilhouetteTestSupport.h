@@ -71,6 +71,12 @@ bool IsUniformTessellationOfFlatGrid(vtkPolyData* flat, vtkPolyData* output, int
 /// A copy of vtkIcosphereSource's sphere at `level` (exact normals), free to modify.
 vtkSmartPointer<vtkPolyData> Icosphere(int level);
 
+/// A triangle soup of `mesh`'s triangles: each with three points of its own
+/// (copies of its corners, double precision, in cell order: triangle c has
+/// points 3c, 3c + 1, 3c + 2), no point or cell arrays. What VTK's OBJ
+/// reader makes of a file with a texture coordinate per corner.
+vtkSmartPointer<vtkPolyData> Soup(vtkPolyData* mesh);
+
 /// `count` directions spread evenly over the unit sphere (Fibonacci spiral),
 /// deterministic.
 std::vector<std::array<double, 3>> SphereDirections(int count);

@@ -228,28 +228,9 @@ bool ClosedOverAWholeTurn(vtkPolyData* bunny)
   return true;
 }
 
-vtkSmartPointer<vtkPolyData> SoupOf(vtkPolyData* mesh)
-{
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> cells;
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < mesh->GetNumberOfPolys(); ++c)
-  {
-    mesh->GetCellPoints(c, ids);
-    vtkIdType corners[3];
-    for (vtkIdType k = 0; k < 3; ++k)
-      corners[k] = points->InsertNextPoint(mesh->GetPoint(ids->GetId(k)));
-    cells->InsertNextCell(3, corners);
-  }
-  auto soup = vtkSmartPointer<vtkPolyData>::New();
-  soup->SetPoints(points);
-  soup->SetPolys(cells);
-  return soup;
-}
-
 bool SoupIsWelded(vtkPolyData* bunny)
 {
-  const vtkSmartPointer<vtkPolyData> soup = SoupOf(bunny);
+  const vtkSmartPointer<vtkPolyData> soup = silhouette_test::Soup(bunny);
   auto camera = silhouette_test::CameraAroundMesh(bunny, { 1, 0.3, 0.5 }, 3.0, false);
   CHECK(GivesTheInputAtZeroTolerance(soup), "the soup at zero tolerance is the soup");
   vtkIdType counts[2] = { 0, 0 };

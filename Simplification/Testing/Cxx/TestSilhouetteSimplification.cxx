@@ -185,22 +185,7 @@ bool CheckPipelineAndErrors()
 bool CheckSoupWarning()
 {
   vtkSmartPointer<vtkPolyData> sphere = silhouette_test::Icosphere(2);
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> cells;
-  vtkNew<vtkIdList> ids; // the soup of the sphere
-  for (vtkIdType c = 0; c < sphere->GetNumberOfCells(); ++c)
-  {
-    sphere->GetCellPoints(c, ids);
-    vtkIdType own[3];
-    for (vtkIdType k = 0; k < 3; ++k)
-    {
-      own[k] = points->InsertNextPoint(sphere->GetPoint(ids->GetId(k)));
-    }
-    cells->InsertNextCell(3, own);
-  }
-  vtkNew<vtkPolyData> soup;
-  soup->SetPoints(points);
-  soup->SetPolys(cells);
+  vtkSmartPointer<vtkPolyData> soup = silhouette_test::Soup(sphere);
   const auto warning = [](vtkPolyData* input, vtkIdType target) {
     vtkNew<vtkSilhouetteQuadricDecimation> decimate;
     vtkNew<vtkTest::ErrorObserver> observer;

@@ -111,27 +111,14 @@ bool RunOn(const std::string& path)
 // in the point array "Corner".
 vtkSmartPointer<vtkPolyData> Soup(vtkPolyData* mesh)
 {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkCellArray> polys;
+  vtkSmartPointer<vtkPolyData> soup = silhouette_test::Soup(mesh);
   vtkNew<vtkFloatArray> corner;
   corner->SetName("Corner");
-  vtkIdType n = 0;
-  const vtkIdType* ids = nullptr;
-  for (vtkIdType c = 0; c < mesh->GetNumberOfPolys(); ++c)
+  corner->SetNumberOfValues(soup->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < soup->GetNumberOfPoints(); ++p)
   {
-    mesh->GetPolys()->GetCellAtId(c, n, ids);
-    vtkIdType own[3];
-    for (int k = 0; k < 3; ++k)
-    {
-      own[k] = points->InsertNextPoint(mesh->GetPoint(ids[k]));
-      corner->InsertNextValue(static_cast<float>(3 * c + k));
-    }
-    polys->InsertNextCell(3, own);
+    corner->SetValue(p, static_cast<float>(p));
   }
-  auto soup = vtkSmartPointer<vtkPolyData>::New();
-  soup->SetPoints(points);
-  soup->SetPolys(polys);
   soup->GetPointData()->AddArray(corner);
   return soup;
 }

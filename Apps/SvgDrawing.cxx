@@ -13,7 +13,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <set>
 #include <sstream>
+#include <string>
 
 namespace cli
 {
@@ -150,27 +152,27 @@ void AppendPoint(std::string& out, char command, const std::array<double, 2>& p)
   AppendNumber(out, p[1]);
 }
 
-// Points nearer than this (pixels) to the last one kept are left out: half
-// the resolution the paths are written in (AppendNumber's 0.01).
-constexpr double RepeatDistance = 0.005;
-
-// The points with consecutive repeats removed (they have no direction), as
-// written: a piece of a silhouette a hundredth of a pixel long, which the
-// visibility split leaves where a bore's rim hides its outline, would be a
-// path "M x yL x y", a dot with round caps.
-DrawnLine WithoutRepeats(const DrawnLine& line)
+// The line as it is written: a point whose written coordinates (a hundredth
+// of a pixel, AppendNumber) repeat the last kept point's is left out (it has
+// no direction). A piece of a silhouette a hundredth of a pixel long, which
+// the visibility split leaves where a bore's rim hides its outline, would
+// otherwise be a path "M x yL x y": a dot with round caps, which a pen
+// plotter draws by lowering its pen.
+DrawnLine AsWritten(const DrawnLine& line)
 {
   DrawnLine kept = line;
   kept.Points.clear();
   kept.Depths.clear();
+  std::string last;
   for (std::size_t i = 0; i < line.Points.size(); ++i)
   {
-    if (kept.Points.empty() ||
-      std::hypot(line.Points[i][0] - kept.Points.back()[0],
-        line.Points[i][1] - kept.Points.back()[1]) >= RepeatDistance)
+    std::string written;
+    AppendPoint(written, ' ', line.Points[i]);
+    if (kept.Points.empty() || written != last)
     {
       kept.Points.push_back(line.Points[i]);
       kept.Depths.push_back(line.Depths[i]);
+      last = std::move(written);
     }
   }
   return kept;
@@ -322,10 +324,20 @@ std::string SvgDocument(const std::vector<DrawnLine>& lines, const SvgStyle& sty
   // they cross.
   svg += "<g id=\"hidden\" fill=\"none\" stroke=\"#999999\" stroke-width=\"" + hiddenWidth +
     "\" stroke-dasharray=\"" + dash + " " + width + "\" stroke-linecap=\"butt\">\n";
+  // Each line once: a piece drawn twice (a border that is also a crease, a
+  // piece and its reverse) would be inked twice by a pen plotter.
+  std::set<std::string> written;
+  const auto firstTime = [&written](const DrawnLine& line) {
+    DrawnLine reversed = line;
+    std::reverse(reversed.Points.begin(), reversed.Points.end());
+    const std::string key = (line.Hidden ? "h" : "v") + PolylinePath(line);
+    const std::string reversedKey = (line.Hidden ? "h" : "v") + PolylinePath(reversed);
+    return written.count(reversedKey) == 0 && written.insert(key).second;
+  };
   for (const DrawnLine& raw : lines)
   {
-    const DrawnLine line = WithoutRepeats(raw);
-    if (line.Hidden && line.Points.size() >= 2)
+    const DrawnLine line = AsWritten(raw);
+    if (line.Hidden && line.Points.size() >= 2 && firstTime(line))
     {
       svg += "<path class=\"hidden " + line.Kind + "\" d=\"" + PolylinePath(line) + "\"/>\n";
     }
@@ -336,8 +348,8 @@ std::string SvgDocument(const std::vector<DrawnLine>& lines, const SvgStyle& sty
       width + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
   for (const DrawnLine& raw : lines)
   {
-    const DrawnLine line = WithoutRepeats(raw);
-    if (line.Hidden || line.Points.size() < 2)
+    const DrawnLine line = AsWritten(raw);
+    if (line.Hidden || line.Points.size() < 2 || !firstTime(line))
     {
       continue;
     }

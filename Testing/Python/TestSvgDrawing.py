@@ -15,7 +15,8 @@ the tube partly hides) and on a cube:
 - a cube from a generic direction is exactly its 9 visible edges (creases),
   and with --hidden dashed its 3 hidden ones come out as hidden paths;
 - the hidden lines' group comes before the visible one (painted under it);
-- no path is a dot (a piece of line shorter than the paths' resolution);
+- no path is a dot (a piece of line shorter than the paths' resolution),
+  and none repeats another, forwards or backwards (the bracket, the Wuson);
 - --width-by-depth draws filled outlines, thicker near the eye;
 - --progressive 4 --svg writes 4 drawings at growing triangle counts, the
   last the drawing of the input itself, path for path;
@@ -183,20 +184,42 @@ if code == 0:
     check(classes == ["crease"] * 9 + ["hidden crease"] * 3,
           "a cube is its 9 visible edges, and its 3 hidden ones dashed")
 
-# --- No dots ---------------------------------------------------------------------
+# --- No dots, no line twice ---------------------------------------------------
 # Pieces of silhouette a hundredth of a pixel long (where a bore's rim hides
 # the bore's outline) were written as paths "M x yL x y", dots with round
-# caps: 4 in this view of the bracket before 2026-12-04.
-bracket_svg = os.path.join(work, "bracket.svg")
-code, _, err = run("render", os.path.join(data, "bracket.stl"), "--style", "lines", "--azimuth",
-                   "30", "--elevation", "25", "--size", "800x600", "-o", bracket_svg)
-check(code == 0, "render the bracket (%s)" % err.strip())
-if code == 0:
-    _, drawn = paths(bracket_svg)
-    dots = [p.get("d") for p in drawn
-            if len(set(re.findall(r"[ML]([-0-9.]+ [-0-9.]+)", p.get("d")))) < 2]
-    print("bracket: %d paths, %d of them dots" % (len(drawn), len(dots)))
-    check(drawn and not dots, "no path is a dot: %s" % dots[:3])
+# caps, which a pen plotter draws by lowering its pen: 4 in the first view of
+# the bracket before 2026-12-04, and 3 in the second until 2026-12-05 (a
+# user's trial: pieces 0.005 to 0.01 px long, written as one point). And a
+# line drawn twice is inked twice: the Wuson's default view had 4 paths that
+# repeated another path backwards (a user's trial, 2026-12-05).
+def written_points(d):
+    return tuple(re.findall(r"[ML]([-0-9.]+ [-0-9.]+)", d))
+
+
+for name, mesh, view in (("bracket", os.path.join(data, "bracket.stl"), ("30", "25", "800x600")),
+                         ("bracket_2", os.path.join(data, "bracket.stl"), ("35", "30", "1024x768")),
+                         ("wuson", "/usr/share/assimp/models/OBJ/WusonOBJ.obj", None)):
+    if not os.path.exists(mesh):
+        print("%s: %s not installed, not checked" % (name, mesh))
+        continue
+    drawing = os.path.join(work, name + ".svg")
+    camera = ["--azimuth", view[0], "--elevation", view[1], "--size", view[2]] if view else []
+    code, _, err = run("render", mesh, "--style", "lines", *camera, "-o", drawing)
+    check(code == 0, "render %s (%s)" % (name, err.strip()))
+    if code != 0:
+        continue
+    _, drawn = paths(drawing)
+    dots = [p.get("d") for p in drawn if len(set(written_points(p.get("d")))) < 2]
+    seen = set()
+    twice = []
+    for p in drawn:
+        points = written_points(p.get("d"))
+        if points in seen or tuple(reversed(points)) in seen:
+            twice.append(p.get("d"))
+        seen.add(points)
+    print("%s: %d paths, %d of them dots, %d drawn before" % (name, len(drawn), len(dots), len(twice)))
+    check(drawn and not dots, "%s: no path is a dot: %s" % (name, dots[:3]))
+    check(not twice, "%s: no path repeats another: %s" % (name, twice[:2]))
 
 # --- Width by depth ------------------------------------------------------------
 depth_svg = os.path.join(work, "cube_depth.svg")

@@ -205,7 +205,9 @@ Options:
                           parents; a name ending in .png or .svg is
                           refused) that gets sketch-01.png ... sketch-NN.png,
                           and one line of figures per drawing (a JSON array
-                          with --json) (default: one drawing)
+                          with --json); drawings numbered past NN of an
+                          earlier run are left there, with a warning
+                          (default: one drawing)
   --svg                   with --progressive, write sketch-NN.svg drawings
                           (default: PNG images)
   --lines-output FILE     also write the smoothed silhouette polylines to

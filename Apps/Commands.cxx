@@ -193,21 +193,54 @@ void RunSmooth(const SmoothOptions& options)
 }
 
 // The folder of a progressive sketch: made when missing (not its parents).
-void PrepareSketchFolder(const std::string& folder)
+// The name of the sketch's drawing `number` (from 1): sketch-01.svg, ...
+std::string SketchName(int number, const std::string& extension)
+{
+  char name[32];
+  std::snprintf(name, sizeof name, "sketch-%02d.%s", number, extension.c_str());
+  return name;
+}
+
+void PrepareSketchFolder(const std::string& folder, int levels, const std::string& extension)
 {
   std::error_code error;
   const std::filesystem::path path(folder);
-  if (std::filesystem::exists(path, error))
+  if (!std::filesystem::exists(path, error))
   {
-    if (!std::filesystem::is_directory(path, error))
+    if (!std::filesystem::create_directory(path, error))
     {
-      throw RuntimeError("cannot write the sketch into '" + folder + "': it is not a directory");
+      throw RuntimeError("cannot make the sketch's directory '" + folder + "': " + error.message());
     }
     return;
   }
-  if (!std::filesystem::create_directory(path, error))
+  if (!std::filesystem::is_directory(path, error))
   {
-    throw RuntimeError("cannot make the sketch's directory '" + folder + "': " + error.message());
+    throw RuntimeError("cannot write the sketch into '" + folder + "': it is not a directory");
+  }
+  // Drawings of an earlier, longer run stay (nothing of the user's is
+  // deleted), but would pass for this run's: a user's animation mixed two
+  // runs (2026-12-05). Say which.
+  std::vector<int> stale;
+  for (const auto& entry : std::filesystem::directory_iterator(path, error))
+  {
+    const std::string name = entry.path().filename().string();
+    int number = 0;
+    char tail[8] = { 0 };
+    if (std::sscanf(name.c_str(), "sketch-%d.%7s", &number, tail) == 2 && tail == extension &&
+      number > levels && name == SketchName(number, extension))
+    {
+      stale.push_back(number);
+    }
+  }
+  if (!stale.empty())
+  {
+    std::sort(stale.begin(), stale.end());
+    std::cerr << "silhouette: warning: '" << PrintableText(folder) << "' also holds "
+              << (stale.size() == 1 ? SketchName(stale.front(), extension)
+                                    : SketchName(stale.front(), extension) + " to " +
+                       SketchName(stale.back(), extension) + " (" + std::to_string(stale.size()) +
+                       " drawings)")
+              << " of an earlier run, not of this one\n";
   }
 }
 
@@ -243,7 +276,8 @@ void RunProgressiveSketch(const RenderOptions& options)
   {
     RequireDisplay();
   }
-  PrepareSketchFolder(options.Output);
+  const std::string extension = options.ProgressiveSvg ? "svg" : "png";
+  PrepareSketchFolder(options.Output, options.ProgressiveLevels, extension);
   vtkSmartPointer<vtkPolyData> mesh = ReadMeshWithTriangles(options.Input);
   vtkNew<vtkProgressiveMeshFilter> progressive;
   VtkErrorLog& errors = VtkErrorLog::Instance();
@@ -273,10 +307,8 @@ void RunProgressiveSketch(const RenderOptions& options)
     levelMesh->DeepCopy(progressive->GetOutput());
 
     RenderOptions levelOptions = options;
-    char name[32];
-    std::snprintf(
-      name, sizeof name, "sketch-%02d.%s", level + 1, options.ProgressiveSvg ? "svg" : "png");
-    levelOptions.Output = (std::filesystem::path(options.Output) / name).string();
+    levelOptions.Output =
+      (std::filesystem::path(options.Output) / SketchName(level + 1, extension)).string();
     levelOptions.Input = options.Input;
     // Every level from the camera that frames the input (the finest level).
     const OffscreenView view = MakeOffscreenView(options.Camera.ViewportSize);

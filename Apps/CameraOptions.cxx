@@ -329,7 +329,10 @@ Smoothing options (with the camera options wherever those are taken):
                            smooth curves, with a shading normal per side
                            (default: no such detection; creases between
                            flat faces are found anyway, see
-                           --flat-crease-angle)
+                           --flat-crease-angle). CAD parts with chamfers,
+                           flutes or grooves between curved faces want 30:
+                           without it such edges are rounded and can bend
+                           the faces beside them
   --no-feature-lines       ignore the input's line cells; by default a line
                            segment along a triangle edge marks that edge as a
                            feature edge

@@ -183,8 +183,10 @@ Options:
   --width-by-depth        in an SVG drawing, each visible line's width
                           follows its distance from the eye: 2 pixels at the
                           focal point's distance, times that distance over
-                          the point's, within 0.5 to 8 pixels (default: 2
-                          pixels everywhere)
+                          the point's, within 0.5 to 8 pixels; each line is
+                          then a filled outline, not a stroke (a pen
+                          plotter traces its two sides) (default: 2 pixels
+                          everywhere, stroked)
   --lod                   refine INPUT for the view first (view-dependent
                           level of detail, vtkViewDependentLevelOfDetail): a
                           hierarchy of its edge collapses is built once, and

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <string>
@@ -236,6 +237,60 @@ std::string PolylinePath(const DrawnLine& line)
   return d;
 }
 
+// The lines in the order a pen plotter draws them with little travel: from
+// the first, each next line is the one with an end nearest the pen, turned
+// round when its last point is the nearer (nearest neighbour, O(n^2): past
+// MostOrdered lines the given order is kept). In the order the pieces came,
+// the pen travelled 3 to 11 times as far (a user's trial, 2026-12-05).
+constexpr std::size_t MostOrdered = 4000;
+
+std::vector<DrawnLine> InPenOrder(std::vector<DrawnLine> lines)
+{
+  if (lines.size() < 3 || lines.size() > MostOrdered)
+  {
+    return lines;
+  }
+  const auto distance = [](const std::array<double, 2>& a, const std::array<double, 2>& b) {
+    return std::hypot(a[0] - b[0], a[1] - b[1]);
+  };
+  std::vector<DrawnLine> ordered;
+  ordered.reserve(lines.size());
+  std::vector<unsigned char> used(lines.size(), 0);
+  used[0] = 1;
+  ordered.push_back(std::move(lines[0]));
+  for (std::size_t k = 1; k < lines.size(); ++k)
+  {
+    const std::array<double, 2> pen = ordered.back().Points.back();
+    std::size_t best = 0;
+    bool reversed = false;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < lines.size(); ++i)
+    {
+      if (used[i])
+      {
+        continue;
+      }
+      const double toFirst = distance(pen, lines[i].Points.front());
+      const double toLast = distance(pen, lines[i].Points.back());
+      if (std::min(toFirst, toLast) < nearest)
+      {
+        nearest = std::min(toFirst, toLast);
+        best = i;
+        reversed = toLast < toFirst;
+      }
+    }
+    used[best] = 1;
+    DrawnLine next = std::move(lines[best]);
+    if (reversed)
+    {
+      std::reverse(next.Points.begin(), next.Points.end());
+      std::reverse(next.Depths.begin(), next.Depths.end());
+    }
+    ordered.push_back(std::move(next));
+  }
+  return ordered;
+}
+
 } // namespace
 
 std::vector<DrawnLine> ProjectLines(vtkPolyData* lines, vtkRenderer* renderer, bool hiddenOnly)
@@ -324,35 +379,37 @@ std::string SvgDocument(const std::vector<DrawnLine>& lines, const SvgStyle& sty
   // they cross.
   svg += "<g id=\"hidden\" fill=\"none\" stroke=\"#999999\" stroke-width=\"" + hiddenWidth +
     "\" stroke-dasharray=\"" + dash + " " + width + "\" stroke-linecap=\"butt\">\n";
-  // Each line once: a piece drawn twice (a border that is also a crease, a
-  // piece and its reverse) would be inked twice by a pen plotter.
+  // Each line once, as written: a piece drawn twice (a border that is also a
+  // crease, a piece and its reverse) would be inked twice by a pen plotter.
   std::set<std::string> written;
-  const auto firstTime = [&written](const DrawnLine& line) {
-    DrawnLine reversed = line;
-    std::reverse(reversed.Points.begin(), reversed.Points.end());
-    const std::string key = (line.Hidden ? "h" : "v") + PolylinePath(line);
-    const std::string reversedKey = (line.Hidden ? "h" : "v") + PolylinePath(reversed);
-    return written.count(reversedKey) == 0 && written.insert(key).second;
-  };
+  std::vector<DrawnLine> hidden, visible;
   for (const DrawnLine& raw : lines)
   {
-    const DrawnLine line = AsWritten(raw);
-    if (line.Hidden && line.Points.size() >= 2 && firstTime(line))
+    DrawnLine line = AsWritten(raw);
+    if (line.Points.size() < 2)
     {
-      svg += "<path class=\"hidden " + line.Kind + "\" d=\"" + PolylinePath(line) + "\"/>\n";
+      continue;
     }
+    DrawnLine reversed = line;
+    std::reverse(reversed.Points.begin(), reversed.Points.end());
+    const std::string group = line.Hidden ? "h" : "v";
+    if (written.count(group + PolylinePath(reversed)) != 0 ||
+      !written.insert(group + PolylinePath(line)).second)
+    {
+      continue;
+    }
+    (line.Hidden ? hidden : visible).push_back(std::move(line));
+  }
+  for (const DrawnLine& line : InPenOrder(std::move(hidden)))
+  {
+    svg += "<path class=\"hidden " + line.Kind + "\" d=\"" + PolylinePath(line) + "\"/>\n";
   }
   svg += "</g>\n";
   svg += style.WidthByDepth ? "<g id=\"visible\" fill=\"black\" stroke=\"none\">\n"
                             : "<g id=\"visible\" fill=\"none\" stroke=\"black\" stroke-width=\"" +
       width + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
-  for (const DrawnLine& raw : lines)
+  for (const DrawnLine& line : InPenOrder(std::move(visible)))
   {
-    const DrawnLine line = AsWritten(raw);
-    if (line.Hidden || line.Points.size() < 2 || !firstTime(line))
-    {
-      continue;
-    }
     std::string d;
     if (style.WidthByDepth)
     {

@@ -400,9 +400,10 @@ public:
    * into what changes with the input only and what changes with the view,
    * outside the pipeline, with this filter's settings. Both prepare `input`
    * as RequestData does (once per input or settings change) and return 0
-   * after reporting an error: arrays of the wrong length are refused (as the
-   * pipeline refuses them before RequestData) and an exception inside
-   * becomes an error.
+   * after reporting an error: arrays of the wrong length are refused (the
+   * pipeline leaves them out before RequestData; vtkSilhouetteSmoothingMapper
+   * leaves them out before it calls these) and an exception inside becomes
+   * an error.
    *
    * BuildBaseMesh fills `base` with what RequestData outputs for a view that
    * re-meshes nothing: the input's vertices and lines, its points and the

@@ -225,9 +225,8 @@ void PrepareSketchFolder(const std::string& folder, int levels, const std::strin
   {
     const std::string name = entry.path().filename().string();
     int number = 0;
-    char tail[8] = { 0 };
-    if (std::sscanf(name.c_str(), "sketch-%d.%7s", &number, tail) == 2 && tail == extension &&
-      number > levels && name == SketchName(number, extension))
+    if (std::sscanf(name.c_str(), "sketch-%d", &number) == 1 && number > levels &&
+      name == SketchName(number, extension))
     {
       stale.push_back(number);
     }

@@ -390,11 +390,13 @@ std::string SvgDocument(const std::vector<DrawnLine>& lines, const SvgStyle& sty
     {
       continue;
     }
+    // Keyed by the path read from its smaller end, so that a piece and
+    // its reverse have one key.
     DrawnLine reversed = line;
     std::reverse(reversed.Points.begin(), reversed.Points.end());
-    const std::string group = line.Hidden ? "h" : "v";
-    if (written.count(group + PolylinePath(reversed)) != 0 ||
-      !written.insert(group + PolylinePath(line)).second)
+    const std::string key =
+      (line.Hidden ? "h" : "v") + std::min(PolylinePath(line), PolylinePath(reversed));
+    if (!written.insert(key).second)
     {
       continue;
     }

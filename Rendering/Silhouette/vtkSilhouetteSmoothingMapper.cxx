@@ -78,8 +78,8 @@ std::vector<vtkIdType> PointSources(vtkPolyData* patch)
 bool CellsNameTheirPoints(vtkPolyData* mesh)
 {
   const vtkIdType points = mesh->GetNumberOfPoints();
-  for (vtkCellArray* cells : { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(),
-         mesh->GetStrips() })
+  for (vtkCellArray* cells :
+    { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips() })
   {
     auto it = vtk::TakeSmartPointer(cells->NewIterator());
     for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
@@ -130,10 +130,8 @@ struct vtkSilhouetteSmoothingMapper::Internals
   vtkMTimeType BaseInputTime = 0;
   vtkMTimeType BaseSettingsTime = 0;
   bool BaseReady = false;
-  // False when the input cannot even be drawn as it is (a cell names a
-  // point the input does not have).
-  bool Drawable = true;
-  // Whether the cells of this input, at this time, name their points.
+  // Whether the cells of this input, at this time, name their points: an
+  // input that does not cannot even be drawn as it is.
   vtkPolyData* CheckedInput = nullptr;
   vtkMTimeType CheckedInputTime = 0;
   bool CheckedDrawable = true;
@@ -210,8 +208,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
     }
     input = this->Usable;
     this->BaseReady = this->Smoother->BuildBaseMesh(input, this->Base) != 0;
-    this->Drawable = this->BaseReady || this->CellsDrawable(self, input);
-    if (this->Drawable && !this->BaseReady)
+    if (!this->BaseReady)
     {
       vtkWarningWithObjectMacro(
         self, "The input cannot be smoothed (see the error above): it is drawn as it is.");
@@ -417,13 +414,13 @@ void vtkSilhouetteSmoothingMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   {
     return;
   }
-  const auto start = std::chrono::steady_clock::now();
   Internals& internal = *this->Internal;
-  vtkPolyData* usable = internal.UpdateBase(this, input);
-  if (!internal.Drawable)
+  if (!internal.CellsDrawable(this, input))
   {
-    return;
+    return; // neither smoothed nor drawn as it is
   }
+  const auto start = std::chrono::steady_clock::now();
+  vtkPolyData* usable = internal.UpdateBase(this, input);
   // Colouring and clipping as this mapper's (vtkMapper's settings, not the
   // input).
   const vtkMTimeType settings = this->Superclass::GetMTime();

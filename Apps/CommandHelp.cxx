@@ -121,7 +121,10 @@ the same figures as 'silhouette smooth'. Where there is no X display it
 renders through OSMesa (--backend). The line styles can also be written as
 an SVG drawing: the same visible lines as paths in image coordinates
 (pixels from the top-left corner, one path per visible piece), projected
-with the same camera and nothing rendered, so no display is needed.
+with the same camera and nothing rendered, so no display is needed. For a
+pen plotter, each stretch of line is drawn once (of lines running within
+half a line's width of each other, one keeps it), the lines are clipped to
+the image, and the paths come in a short pen order from the top-left.
 
 Options:
   -o, --output FILE       the image to write; required: a .png, or an .svg

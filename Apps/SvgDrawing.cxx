@@ -1,5 +1,7 @@
 #include "SvgDrawing.h"
 
+#include "DrawingOverlaps.h"
+
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
@@ -10,13 +12,15 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <set>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 namespace cli
 {
@@ -238,9 +242,10 @@ std::string PolylinePath(const DrawnLine& line)
 }
 
 // The lines in the order a pen plotter draws them with little travel: from
-// the first, each next line is the one with an end nearest the pen, turned
-// round when its last point is the nearer (nearest neighbour, O(n^2): past
-// MostOrdered lines the given order is kept). In the order the pieces came,
+// the image's top-left corner (where a plotter's pen rests), each next line
+// is the one with an end nearest the pen, turned round when its last point
+// is the nearer (nearest neighbour, O(n^2): past MostOrdered lines the
+// given order is kept). In the order the pieces came,
 // the pen travelled 3 to 11 times as far (a user's trial, 2026-12-05).
 constexpr std::size_t MostOrdered = 4000;
 
@@ -256,11 +261,10 @@ std::vector<DrawnLine> InPenOrder(std::vector<DrawnLine> lines)
   std::vector<DrawnLine> ordered;
   ordered.reserve(lines.size());
   std::vector<unsigned char> used(lines.size(), 0);
-  used[0] = 1;
-  ordered.push_back(std::move(lines[0]));
-  for (std::size_t k = 1; k < lines.size(); ++k)
+  for (std::size_t k = 0; k < lines.size(); ++k)
   {
-    const std::array<double, 2> pen = ordered.back().Points.back();
+    const std::array<double, 2> pen =
+      ordered.empty() ? std::array<double, 2>{ 0.0, 0.0 } : ordered.back().Points.back();
     std::size_t best = 0;
     bool reversed = false;
     double nearest = std::numeric_limits<double>::infinity();
@@ -289,6 +293,115 @@ std::vector<DrawnLine> InPenOrder(std::vector<DrawnLine> lines)
     ordered.push_back(std::move(next));
   }
   return ordered;
+}
+
+// How a kind ranks where lines run over each other: the first drawn keeps
+// the stretch (the outline is what the silhouette misses, so it ranks last).
+int KindRank(const std::string& kind)
+{
+  static const char* const order[] = { "silhouette", "crease", "border", "intersection",
+    "outline" };
+  for (int rank = 0; rank < 5; ++rank)
+  {
+    if (kind == order[rank])
+    {
+      return rank;
+    }
+  }
+  return 5;
+}
+
+double LengthOf(const std::vector<glm::dvec2>& points)
+{
+  double length = 0.0;
+  for (std::size_t i = 1; i < points.size(); ++i)
+  {
+    length += glm::distance(points[i - 1], points[i]);
+  }
+  return length;
+}
+
+// The part of `line` between two positions (Lines/Core/DrawingOverlaps.h).
+DrawnLine PieceOf(
+  const DrawnLine& line, const std::vector<glm::dvec2>& points, const silsmooth::PolylineSpan& span)
+{
+  DrawnLine piece;
+  piece.Kind = line.Kind;
+  piece.Hidden = line.Hidden;
+  for (const glm::dvec2& p : silsmooth::valuesAlong(points, span.First, span.Last))
+  {
+    piece.Points.push_back({ p.x, p.y });
+  }
+  piece.Depths = silsmooth::valuesAlong(line.Depths, span.First, span.Last);
+  return piece;
+}
+
+// The lines as written, within the image (a line's width beyond it: a pen
+// plotter would draw the rest off the page), with each stretch of line once
+// (Lines/Core/DrawingOverlaps.h): where lines run within half a line's width
+// of each other, the visible before the hidden, then by kind (KindRank),
+// then the longer, keeps the stretch. A brush's strokes overlap by design
+// and are kept as they are.
+std::vector<DrawnLine> OnceEach(const std::vector<DrawnLine>& lines, const SvgStyle& style)
+{
+  std::vector<DrawnLine> inside;
+  {
+    std::vector<std::vector<glm::dvec2>> points(lines.size());
+    for (std::size_t i = 0; i < lines.size(); ++i)
+    {
+      for (const std::array<double, 2>& p : lines[i].Points)
+      {
+        points[i].emplace_back(p[0], p[1]);
+      }
+    }
+    const double margin = style.LineWidth;
+    for (const silsmooth::PolylineSpan& span : silsmooth::spansInside(
+           points, glm::dvec2(-margin), glm::dvec2(style.Width + margin, style.Height + margin)))
+    {
+      DrawnLine piece = AsWritten(PieceOf(lines[span.Line], points[span.Line], span));
+      if (piece.Points.size() >= 2)
+      {
+        inside.push_back(std::move(piece));
+      }
+    }
+  }
+  std::vector<DrawnLine> written;
+  std::vector<DrawnLine> once;
+  for (DrawnLine& line : inside)
+  {
+    (line.Kind == "stroke" ? once : written).push_back(std::move(line));
+  }
+  std::vector<std::vector<glm::dvec2>> points(written.size());
+  std::vector<double> lengths(written.size());
+  std::vector<std::size_t> order(written.size());
+  for (std::size_t i = 0; i < written.size(); ++i)
+  {
+    for (const std::array<double, 2>& p : written[i].Points)
+    {
+      points[i].emplace_back(p[0], p[1]);
+    }
+    lengths[i] = LengthOf(points[i]);
+    order[i] = i;
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const auto rank = [&](std::size_t i) {
+      return std::make_tuple(written[i].Hidden, KindRank(written[i].Kind), -lengths[i]);
+    };
+    return rank(a) < rank(b);
+  });
+  silsmooth::DrawingOverlapParameters parameters;
+  parameters.Width = 0.5 * style.LineWidth;
+  parameters.ShortestGap = 2.0 * style.LineWidth;
+  for (const silsmooth::PolylineSpan& span :
+    silsmooth::spansNotOverlapping(points, order, parameters))
+  {
+    DrawnLine piece = AsWritten(PieceOf(written[span.Line], points[span.Line], span));
+    if (piece.Points.size() >= 2)
+    {
+      once.push_back(std::move(piece));
+    }
+  }
+  return once;
 }
 
 } // namespace
@@ -379,27 +492,12 @@ std::string SvgDocument(const std::vector<DrawnLine>& lines, const SvgStyle& sty
   // they cross.
   svg += "<g id=\"hidden\" fill=\"none\" stroke=\"#999999\" stroke-width=\"" + hiddenWidth +
     "\" stroke-dasharray=\"" + dash + " " + width + "\" stroke-linecap=\"butt\">\n";
-  // Each line once, as written: a piece drawn twice (a border that is also a
-  // crease, a piece and its reverse) would be inked twice by a pen plotter.
-  std::set<std::string> written;
+  // Each stretch of line once: lines drawn over each other (a border that
+  // is also a crease, a piece and its reverse) would be inked twice by a
+  // pen plotter.
   std::vector<DrawnLine> hidden, visible;
-  for (const DrawnLine& raw : lines)
+  for (DrawnLine& line : OnceEach(lines, style))
   {
-    DrawnLine line = AsWritten(raw);
-    if (line.Points.size() < 2)
-    {
-      continue;
-    }
-    // Keyed by the path read from its smaller end, so that a piece and
-    // its reverse have one key.
-    DrawnLine reversed = line;
-    std::reverse(reversed.Points.begin(), reversed.Points.end());
-    const std::string key =
-      (line.Hidden ? "h" : "v") + std::min(PolylinePath(line), PolylinePath(reversed));
-    if (!written.insert(key).second)
-    {
-      continue;
-    }
     (line.Hidden ? hidden : visible).push_back(std::move(line));
   }
   for (const DrawnLine& line : InPenOrder(std::move(hidden)))

@@ -46,10 +46,15 @@ struct SvgStyle
 
 /**
  * The SVG document of a line drawing: a white background, then one path per
+ * hidden line (grey, dashed, three quarters of the width), then one per
  * visible line (black, round caps and joins; with WidthByDepth a filled
- * outline instead of a stroke), then one per hidden line (grey, dashed,
- * three quarters of the width). Each path's class is its kind, `hidden` added for the
- * hidden ones. Lines of fewer than two distinct points are left out.
+ * outline instead of a stroke), in a short pen order from the top-left
+ * corner. Each path's class is its kind, `hidden` added for the hidden
+ * ones. The lines are clipped to the image (a line's width beyond it), and
+ * each stretch of line is drawn once: where lines run within half a line's
+ * width of each other, one keeps it (visible before hidden, then by kind,
+ * then the longer; Lines/Core/DrawingOverlaps.h), which may split a line
+ * into several paths. Lines of fewer than two distinct points are left out.
  */
 std::string SvgDocument(const std::vector<DrawnLine>& lines, const SvgStyle& style);
 

@@ -16,7 +16,9 @@ the tube partly hides) and on a cube:
   and with --hidden dashed its 3 hidden ones come out as hidden paths;
 - the hidden lines' group comes before the visible one (painted under it);
 - no path is a dot (a piece of line shorter than the paths' resolution),
-  and none repeats another, forwards or backwards (the bracket, the Wuson);
+  and none repeats another, forwards or backwards; lines that run over
+  each other are drawn once: few pixels are inked by two paths (the
+  bracket, assimp's regr01 and Wuson);
 - --width-by-depth draws filled outlines, thicker near the eye;
 - --progressive 4 --svg writes 4 drawings at growing triangle counts, the
   last the drawing of the input itself, path for path;
@@ -216,8 +218,37 @@ def nearest_tour(lines):
     return travel
 
 
+def inked_twice(name, svg_file):
+    """Of the pixels a drawing inks, the share inked by two paths or more:
+    each path painted black at half opacity, a pixel covered by one path
+    has ink 0.5 at most, by two 0.75."""
+    half = os.path.join(work, name + "_half.svg")
+    with open(svg_file) as source, open(half, "w") as target:
+        target.write(source.read().replace('stroke="black"', 'stroke="black" stroke-opacity="0.5"'))
+    raster = os.path.join(work, name + "_half.png")
+    subprocess.run([rsvg, "-b", "white", half, "-o", raster], check=True, timeout=120)
+    reader = vtkPNGReader()
+    reader.SetFileName(raster)
+    reader.Update()
+    scalars = reader.GetOutput().GetPointData().GetScalars()
+    ink = [1.0 - scalars.GetComponent(i, 0) / 255.0 for i in range(scalars.GetNumberOfTuples())]
+    inked = sum(1 for v in ink if v > 0.3)
+    return sum(1 for v in ink if v > 0.6) / max(inked, 1)
+
+
+# The share inked twice that a drawing may have: crossings, corners (the
+# round caps of the lines that meet there) and lines that meet at a shallow
+# angle are inked twice however they are drawn. Measured (2026-12-06): the
+# bracket's two views 1.0% (corners), regr01 5.2%, the Wuson 12.8% (its tail
+# tuft, a knot of intersection curves). With every line drawn, as before
+# that day: 1.6%, 1.3%, 12.9% and 19.6% (a crease along an intersection
+# curve, a border along a crease).
+# Not checked where the variant drawing every line does not fail the limit
+# (the bracket's second view: 1.3%).
+most_inked_twice = {"bracket": 0.012, "bracket_2": None, "regr01": 0.08, "wuson": 0.15}
 for name, mesh, view in (("bracket", os.path.join(data, "bracket.stl"), ("30", "25", "800x600")),
                          ("bracket_2", os.path.join(data, "bracket.stl"), ("35", "30", "1024x768")),
+                         ("regr01", "/usr/share/assimp/models/OBJ/regr01.obj", None),
                          ("wuson", "/usr/share/assimp/models/OBJ/WusonOBJ.obj", None)):
     if not os.path.exists(mesh):
         print("%s: %s not installed, not checked" % (name, mesh))
@@ -251,6 +282,12 @@ for name, mesh, view in (("bracket", os.path.join(data, "bracket.stl"), ("30", "
     print("%s: the pen travels %.0f px between paths, a nearest-neighbour tour %.0f px"
           % (name, in_file, tour))
     check(in_file <= 1.5 * tour + 1.0, "%s: the paths are in a short pen order" % name)
+    if rsvg and most_inked_twice[name] is not None:
+        twice = inked_twice(name, drawing)
+        print("%s: %.1f%% of the ink under two paths or more" % (name, 100 * twice))
+        check(twice <= most_inked_twice[name],
+              "%s: lines that run over each other are drawn once (%.1f%% inked twice, at most %.1f%%)"
+              % (name, 100 * twice, 100 * most_inked_twice[name]))
 
 # --- Width by depth ------------------------------------------------------------
 depth_svg = os.path.join(work, "cube_depth.svg")

@@ -1,5 +1,7 @@
 #include "DrawingOverlaps.h"
 
+#include "BoxInterval.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -181,31 +183,7 @@ std::vector<PolylineSpan> spansInside(
     bool open = false; // a span runs on from the last segment
     for (std::size_t i = 0; i + 1 < line.size(); ++i)
     {
-      // Liang and Barsky: the segment's parameters inside each slab.
-      const glm::dvec2 a = line[i];
-      const glm::dvec2 d = line[i + 1] - a;
-      double enter = 0.0;
-      double leave = 1.0;
-      for (int axis = 0; axis < 2 && enter <= leave; ++axis)
-      {
-        if (d[axis] == 0.0)
-        {
-          if (a[axis] < low[axis] || a[axis] > high[axis])
-          {
-            enter = 1.0;
-            leave = 0.0;
-          }
-          continue;
-        }
-        double t0 = (low[axis] - a[axis]) / d[axis];
-        double t1 = (high[axis] - a[axis]) / d[axis];
-        if (t0 > t1)
-        {
-          std::swap(t0, t1);
-        }
-        enter = std::max(enter, t0);
-        leave = std::min(leave, t1);
-      }
+      const auto [enter, leave] = lineInBox(line[i], line[i + 1] - line[i], low, high, 0.0, 1.0);
       if (!(enter < leave))
       {
         open = false;

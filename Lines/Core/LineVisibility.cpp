@@ -1,5 +1,7 @@
 #include "LineVisibility.h"
 
+#include "BoxInterval.h"
+
 #include "ClosestPoint.h"
 #include "FiniteVector.h"
 #include "PositionHash.h"
@@ -64,28 +66,8 @@ bool sameNormal(const glm::dvec3& m, const glm::dvec3& n)
 std::pair<double, double> rayInBox(
   const glm::dvec3& origin, const glm::dvec3& dir, const glm::dvec3& low, const glm::dvec3& high)
 {
-  double enter = -std::numeric_limits<double>::infinity();
-  double leave = std::numeric_limits<double>::infinity();
-  for (int axis = 0; axis < 3; ++axis)
-  {
-    if (dir[axis] == 0.0)
-    {
-      if (origin[axis] < low[axis] || origin[axis] > high[axis])
-      {
-        return { 1.0, 0.0 }; // parallel to the slab and outside it: empty
-      }
-      continue;
-    }
-    double t0 = (low[axis] - origin[axis]) / dir[axis];
-    double t1 = (high[axis] - origin[axis]) / dir[axis];
-    if (t0 > t1)
-    {
-      std::swap(t0, t1);
-    }
-    enter = std::max(enter, t0);
-    leave = std::min(leave, t1);
-  }
-  return { enter, leave };
+  return lineInBox(origin, dir, low, high, -std::numeric_limits<double>::infinity(),
+    std::numeric_limits<double>::infinity());
 }
 
 } // namespace

@@ -184,7 +184,8 @@ std::vector<PolylineSpan> spansInside(
     for (std::size_t i = 0; i + 1 < line.size(); ++i)
     {
       const auto [enter, leave] = lineInBox(line[i], line[i + 1] - line[i], low, high, 0.0, 1.0);
-      if (!(enter < leave))
+      const bool finite = std::isfinite(line[i].x + line[i].y + line[i + 1].x + line[i + 1].y);
+      if (!finite || !(enter < leave))
       {
         open = false;
         continue;

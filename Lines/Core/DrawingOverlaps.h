@@ -67,7 +67,8 @@ std::vector<PolylineSpan> spansNotOverlapping(const std::vector<std::vector<glm:
 
 /// The parts of each line inside the rectangle from `low` to `high`
 /// (image coordinates), as spans in the order of the lines and along each.
-/// A line that touches the rectangle only at a point gives no span.
+/// A line that touches the rectangle only at a point gives no span, nor
+/// does a segment with a coordinate that is not finite.
 std::vector<PolylineSpan> spansInside(
   const std::vector<std::vector<glm::dvec2>>& lines, const glm::dvec2& low, const glm::dvec2& high);
 

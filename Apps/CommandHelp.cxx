@@ -123,8 +123,9 @@ an SVG drawing: the same visible lines as paths in image coordinates
 (pixels from the top-left corner, one path per visible piece), projected
 with the same camera and nothing rendered, so no display is needed. For a
 pen plotter, each stretch of line is drawn once (of lines running within
-half a line's width of each other, one keeps it), the lines are clipped to
-the image, and the paths come in a short pen order from the top-left.
+three quarters of a line's width of each other, one keeps it), the lines
+are clipped to the image, and the paths come in a short pen order from the
+top-left corner.
 
 Options:
   -o, --output FILE       the image to write; required: a .png, or an .svg

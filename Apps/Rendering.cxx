@@ -613,15 +613,6 @@ bool RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   drawn->Update();
   errors.ThrowIfErrors("drawing failed");
   std::vector<DrawnLine> lines = ProjectLines(drawn->GetOutput(), renderer, false);
-  // Blank: no visible line has a point in the image.
-  const double width = options.Camera.ViewportSize[0];
-  const double height = options.Camera.ViewportSize[1];
-  const bool blank = std::none_of(lines.begin(), lines.end(), [&](const DrawnLine& line) {
-    return line.Points.size() >= 2 &&
-      std::any_of(line.Points.begin(), line.Points.end(), [&](const std::array<double, 2>& p) {
-        return p[0] >= 0.0 && p[0] <= width && p[1] >= 0.0 && p[1] <= height;
-      });
-  });
   if (options.HiddenLines)
   {
     vtkSmartPointer<vtkSilhouetteLineVisibility> all =
@@ -642,7 +633,11 @@ bool RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   // The whole command line, every option that shaped the drawing with it
   // (the input and style alone left out --hidden, --width-by-depth, --size...).
   style.Title = options.CommandText;
-  const std::string document = SvgDocument(lines, style);
+  // Blank: no visible line crosses the image (a line through it may have
+  // no point in it).
+  std::size_t visiblePaths = 0;
+  const std::string document = SvgDocument(lines, style, &visiblePaths);
+  const bool blank = visiblePaths == 0;
   if (batch)
   {
     batch->Add(options.Output, document);

@@ -1,6 +1,7 @@
 #include "SvgDrawing.h"
 
 #include "DrawingOverlaps.h"
+#include "PenOrder.h"
 
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
@@ -241,51 +242,27 @@ std::string PolylinePath(const DrawnLine& line)
   return d;
 }
 
-// The lines in the order a pen plotter draws them with little travel: from
-// the image's top-left corner (where a plotter's pen rests), each next line
-// is the one with an end nearest the pen, turned round when its last point
-// is the nearer (nearest neighbour, O(n^2): past MostOrdered lines the
-// given order is kept). In the order the pieces came,
-// the pen travelled 3 to 11 times as far (a user's trial, 2026-12-05).
-constexpr std::size_t MostOrdered = 4000;
-
+// The lines in the order a pen plotter draws them with little travel
+// (Lines/Core/PenOrder.h): from the image's top-left corner, where a
+// plotter's pen rests, each next line is the one with an end nearest the
+// pen, turned round when its last point is the nearer. In the order the
+// pieces came, the pen travelled 3 to 11 times as far (a user's trial,
+// 2026-12-05).
 std::vector<DrawnLine> InPenOrder(std::vector<DrawnLine> lines)
 {
-  if (lines.size() < 3 || lines.size() > MostOrdered)
+  std::vector<std::array<glm::dvec2, 2>> ends(lines.size());
+  for (std::size_t i = 0; i < lines.size(); ++i)
   {
-    return lines;
+    const std::array<double, 2>& first = lines[i].Points.front();
+    const std::array<double, 2>& last = lines[i].Points.back();
+    ends[i] = { glm::dvec2(first[0], first[1]), glm::dvec2(last[0], last[1]) };
   }
-  const auto distance = [](const std::array<double, 2>& a, const std::array<double, 2>& b) {
-    return std::hypot(a[0] - b[0], a[1] - b[1]);
-  };
   std::vector<DrawnLine> ordered;
   ordered.reserve(lines.size());
-  std::vector<unsigned char> used(lines.size(), 0);
-  for (std::size_t k = 0; k < lines.size(); ++k)
+  for (const silsmooth::PenStep& step : silsmooth::penOrder(ends, glm::dvec2(0.0)))
   {
-    const std::array<double, 2> pen =
-      ordered.empty() ? std::array<double, 2>{ 0.0, 0.0 } : ordered.back().Points.back();
-    std::size_t best = 0;
-    bool reversed = false;
-    double nearest = std::numeric_limits<double>::infinity();
-    for (std::size_t i = 0; i < lines.size(); ++i)
-    {
-      if (used[i])
-      {
-        continue;
-      }
-      const double toFirst = distance(pen, lines[i].Points.front());
-      const double toLast = distance(pen, lines[i].Points.back());
-      if (std::min(toFirst, toLast) < nearest)
-      {
-        nearest = std::min(toFirst, toLast);
-        best = i;
-        reversed = toLast < toFirst;
-      }
-    }
-    used[best] = 1;
-    DrawnLine next = std::move(lines[best]);
-    if (reversed)
+    DrawnLine next = std::move(lines[step.Line]);
+    if (step.Reversed)
     {
       std::reverse(next.Points.begin(), next.Points.end());
       std::reverse(next.Depths.begin(), next.Depths.end());
@@ -336,12 +313,13 @@ DrawnLine PieceOf(
   return piece;
 }
 
-// The lines as written, within the image (a line's width beyond it: a pen
-// plotter would draw the rest off the page), with each stretch of line once
-// (Lines/Core/DrawingOverlaps.h): where lines run within half a line's width
-// of each other, the visible before the hidden, then by kind (KindRank),
-// then the longer, keeps the stretch. A brush's strokes overlap by design
-// and are kept as they are.
+// The lines as written, within the image (a pen plotter would draw the
+// rest off the page), with each stretch of line once
+// (Lines/Core/DrawingOverlaps.h): where lines run within three quarters of a
+// line's width of each other (their strokes overlapping by a quarter), the
+// visible before the hidden, then by kind (KindRank), then the longer, keeps
+// the stretch; specks up to one and a half widths long on ink already there
+// are left out. A brush's strokes overlap by design and are kept as they are.
 std::vector<DrawnLine> OnceEach(const std::vector<DrawnLine>& lines, const SvgStyle& style)
 {
   std::vector<DrawnLine> inside;
@@ -354,9 +332,8 @@ std::vector<DrawnLine> OnceEach(const std::vector<DrawnLine>& lines, const SvgSt
         points[i].emplace_back(p[0], p[1]);
       }
     }
-    const double margin = style.LineWidth;
-    for (const silsmooth::PolylineSpan& span : silsmooth::spansInside(
-           points, glm::dvec2(-margin), glm::dvec2(style.Width + margin, style.Height + margin)))
+    for (const silsmooth::PolylineSpan& span :
+      silsmooth::spansInside(points, glm::dvec2(0.0), glm::dvec2(style.Width, style.Height)))
     {
       DrawnLine piece = AsWritten(PieceOf(lines[span.Line], points[span.Line], span));
       if (piece.Points.size() >= 2)
@@ -390,8 +367,9 @@ std::vector<DrawnLine> OnceEach(const std::vector<DrawnLine>& lines, const SvgSt
     return rank(a) < rank(b);
   });
   silsmooth::DrawingOverlapParameters parameters;
-  parameters.Width = 0.5 * style.LineWidth;
+  parameters.Width = 0.75 * style.LineWidth;
   parameters.ShortestGap = 2.0 * style.LineWidth;
+  parameters.LongestSpeck = 1.5 * style.LineWidth;
   for (const silsmooth::PolylineSpan& span :
     silsmooth::spansNotOverlapping(points, order, parameters))
   {
@@ -423,6 +401,17 @@ std::vector<DrawnLine> ProjectLines(vtkPolyData* lines, vtkRenderer* renderer, b
   vtkDataArray* visible = lines->GetCellData()->GetArray("Visible");
   vtkDataArray* kinds = lines->GetCellData()->GetArray("LineKind");
 
+  // In perspective, what lies nearer the eye than the near clipping plane
+  // is not drawn (as in a rendering): a line is cut where it crosses it.
+  const double nearest = std::max(camera->GetClippingRange()[0], 1e-12 * camera->GetDistance());
+  const auto project = [&](const double p[3], DrawnLine& line) {
+    const double toPoint[3] = { p[0] - eye[0], p[1] - eye[1], p[2] - eye[2] };
+    renderer->SetWorldPoint(p[0], p[1], p[2], 1.0);
+    renderer->WorldToDisplay();
+    const double* display = renderer->GetDisplayPoint();
+    line.Points.push_back({ display[0], static_cast<double>(size[1]) - display[1] });
+    line.Depths.push_back(parallel ? vtkMath::Dot(toPoint, direction) : vtkMath::Norm(toPoint));
+  };
   auto it = vtk::TakeSmartPointer(lines->GetLines()->NewIterator());
   vtkIdType cell = lines->GetNumberOfVerts(); // cell ids count vertices first
   for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
@@ -437,28 +426,39 @@ std::vector<DrawnLine> ProjectLines(vtkPolyData* lines, vtkRenderer* renderer, b
     vtkIdType n = 0;
     const vtkIdType* ids = nullptr;
     it->GetCurrentCell(n, ids);
+    double last[3] = { 0.0, 0.0, 0.0 };
+    double lastAhead = 0.0;
     for (vtkIdType i = 0; i < n; ++i)
     {
       double p[3];
       lines->GetPoint(ids[i], p);
       const double toPoint[3] = { p[0] - eye[0], p[1] - eye[1], p[2] - eye[2] };
       const double ahead = vtkMath::Dot(toPoint, direction);
-      if (!parallel && !(ahead > 0.0))
+      const bool inFront = parallel || ahead > nearest;
+      const bool lastInFront = parallel || lastAhead > nearest;
+      if (i > 0 && inFront != lastInFront)
       {
-        // Behind the eye: end the part drawn so far.
-        if (line.Points.size() >= 2)
+        // Where the segment crosses the near plane.
+        const double t = (nearest - lastAhead) / (ahead - lastAhead);
+        const double crossing[3] = { last[0] + t * (p[0] - last[0]), last[1] + t * (p[1] - last[1]),
+          last[2] + t * (p[2] - last[2]) };
+        project(crossing, line);
+        if (!inFront)
         {
-          drawn.push_back(line);
+          if (line.Points.size() >= 2)
+          {
+            drawn.push_back(line);
+          }
+          line.Points.clear();
+          line.Depths.clear();
         }
-        line.Points.clear();
-        line.Depths.clear();
-        continue;
       }
-      renderer->SetWorldPoint(p[0], p[1], p[2], 1.0);
-      renderer->WorldToDisplay();
-      const double* display = renderer->GetDisplayPoint();
-      line.Points.push_back({ display[0], static_cast<double>(size[1]) - display[1] });
-      line.Depths.push_back(parallel ? ahead : vtkMath::Norm(toPoint));
+      if (inFront)
+      {
+        project(p, line);
+      }
+      std::copy(p, p + 3, last);
+      lastAhead = ahead;
     }
     if (line.Points.size() >= 2)
     {
@@ -468,7 +468,8 @@ std::vector<DrawnLine> ProjectLines(vtkPolyData* lines, vtkRenderer* renderer, b
   return drawn;
 }
 
-std::string SvgDocument(const std::vector<DrawnLine>& lines, const SvgStyle& style)
+std::string SvgDocument(
+  const std::vector<DrawnLine>& lines, const SvgStyle& style, std::size_t* visiblePaths)
 {
   std::string svg;
   svg += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
@@ -505,6 +506,10 @@ std::string SvgDocument(const std::vector<DrawnLine>& lines, const SvgStyle& sty
     svg += "<path class=\"hidden " + line.Kind + "\" d=\"" + PolylinePath(line) + "\"/>\n";
   }
   svg += "</g>\n";
+  if (visiblePaths)
+  {
+    *visiblePaths = visible.size();
+  }
   svg += style.WidthByDepth ? "<g id=\"visible\" fill=\"black\" stroke=\"none\">\n"
                             : "<g id=\"visible\" fill=\"none\" stroke=\"black\" stroke-width=\"" +
       width + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";

@@ -26,8 +26,11 @@ struct DrawnLine
 /// The line cells of `lines` (model coordinates, as the renderer's actors
 /// would draw them with an identity matrix) projected through the
 /// renderer's active camera and viewport. The cell array `Visible` (0:
-/// hidden) and `LineKind` give Hidden and Kind when present. Points behind
-/// the eye cannot be drawn: a polyline is cut where it passes behind it.
+/// hidden) and `LineKind` give Hidden and Kind when present. In
+/// perspective, what lies nearer the eye than the camera's near clipping
+/// plane is not drawn, as in a rendering: a polyline is cut where it
+/// crosses that plane, and the part in front of it kept (its points may lie
+/// far outside the image; SvgDocument clips them to it).
 /// With `hiddenOnly`, only the cells whose Visible is 0 are taken.
 std::vector<DrawnLine> ProjectLines(vtkPolyData* lines, vtkRenderer* renderer, bool hiddenOnly);
 
@@ -50,13 +53,16 @@ struct SvgStyle
  * visible line (black, round caps and joins; with WidthByDepth a filled
  * outline instead of a stroke), in a short pen order from the top-left
  * corner. Each path's class is its kind, `hidden` added for the hidden
- * ones. The lines are clipped to the image (a line's width beyond it), and
- * each stretch of line is drawn once: where lines run within half a line's
- * width of each other, one keeps it (visible before hidden, then by kind,
- * then the longer; Lines/Core/DrawingOverlaps.h), which may split a line
- * into several paths. Lines of fewer than two distinct points are left out.
+ * ones. The lines are clipped to the image, and each stretch of line is
+ * drawn once: where lines run within three quarters of a line's width of
+ * each other, one keeps it (visible before hidden, then by kind, then the
+ * longer; Lines/Core/DrawingOverlaps.h), which may split a line into
+ * several paths, and specks on ink already there are left out. Lines of
+ * fewer than two distinct points are left out.
  */
-std::string SvgDocument(const std::vector<DrawnLine>& lines, const SvgStyle& style);
+/// `visiblePaths`, when given, counts the visible paths written.
+std::string SvgDocument(
+  const std::vector<DrawnLine>& lines, const SvgStyle& style, std::size_t* visiblePaths = nullptr);
 
 } // namespace cli
 

@@ -62,8 +62,9 @@ public:
     }
   }
 
-  /// Whether a kept piece passes within Width of p, running along `direction`.
-  bool covers(const glm::dvec2& p, const glm::dvec2& direction) const
+  /// Whether a kept piece passes within Width of p, running along `direction`
+  /// unless `anyDirection`.
+  bool covers(const glm::dvec2& p, const glm::dvec2& direction, bool anyDirection = false) const
   {
     const auto found = Cells.find(key(cellOf(p.x), cellOf(p.y)));
     if (found == Cells.end())
@@ -73,7 +74,7 @@ public:
     const double width2 = Parameters.Width * Parameters.Width;
     for (const KeptPiece& piece : found->second)
     {
-      if (std::abs(glm::dot(piece.Direction, direction)) < Parameters.AlongCosine)
+      if (!anyDirection && std::abs(glm::dot(piece.Direction, direction)) < Parameters.AlongCosine)
       {
         continue;
       }
@@ -248,12 +249,15 @@ std::vector<PolylineSpan> spansNotOverlapping(const std::vector<std::vector<glm:
       const std::size_t from = i > 0 ? i - 1 : i;
       const std::size_t to = j + 1 < samples.size() ? j + 1 : j;
       const bool between = i > 0 && j + 1 < samples.size();
-      if (!between || samples[to].Arc - samples[from].Arc >= 2.0 * parameters.Width)
+      const double length = samples[to].Arc - samples[from].Arc;
+      const bool waver = between && length < 2.0 * parameters.Width;
+      const bool speck = length <= parameters.LongestSpeck &&
+        std::all_of(samples.begin() + std::ptrdiff_t(from),
+          samples.begin() + std::ptrdiff_t(to) + 1,
+          [&](const Sample& sample) { return kept.covers(sample.Point, glm::dvec2(0.0), true); });
+      if (!waver && !speck && samples[to].Position > samples[from].Position)
       {
-        if (samples[to].Position > samples[from].Position)
-        {
-          spans.push_back({ index, samples[from].Position, samples[to].Position });
-        }
+        spans.push_back({ index, samples[from].Position, samples[to].Position });
       }
       i = j + 1;
     }

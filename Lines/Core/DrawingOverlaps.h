@@ -18,7 +18,10 @@
 // than ShortestGap is kept (a shallow crossing: lifting the pen there would
 // leave a break for nothing). A span shorter than twice Width between two
 // covered stretches is left out (it only wavers beside the line covering
-// both sides).
+// both sides). And a speck, a span no longer than LongestSpeck that lies
+// within Width of kept lines all along, whatever their direction (a stub
+// at a corner, a sliver's edge), is left out: a plotter would lower its pen
+// on ink already there.
 //
 // Invariants: every kept span lies on its line; no point of a kept span,
 // apart from its two ends and the short covered stretches kept, lies
@@ -47,6 +50,8 @@ struct DrawingOverlapParameters
   double AlongCosine = 0.94;
   /// A covered stretch inside a line shorter than this many pixels is kept.
   double ShortestGap = 4.0;
+  /// A span at most this long lying within Width of kept lines is a speck.
+  double LongestSpeck = 2.0;
 };
 
 /// A stretch of a polyline between two positions: position i + t lies on

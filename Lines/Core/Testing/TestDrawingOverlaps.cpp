@@ -226,3 +226,20 @@ TEST(DrawingOverlaps, ASpanInsideRunsOnAcrossThePointsOfItsLine)
   EXPECT_NEAR(spans[0].Last, 3.0 + 2.0 / 3.0, 1e-12);
   EXPECT_EQ(valuesAlong(zigzag, spans[0].First, spans[0].Last).size(), 5u);
 }
+
+TEST(DrawingOverlaps, ASpeckOnInkAlreadyThereIsLeftOutAndOneOnItsOwnIsKept)
+{
+  // A stub 1.5 px long across a line's end (a corner), and the same stub
+  // 5 px away from any line.
+  const Line a{ { 0, 0 }, { 100, 0 } };
+  const Line onInk{ { 100, -0.7 }, { 100, 0.8 } };
+  const Line alone{ { 50, 5 }, { 50, 6.5 } };
+  const std::vector<PolylineSpan> spans = spansOf({ a, onInk, alone });
+  ASSERT_EQ(spans.size(), 2u);
+  EXPECT_EQ(spans[0].Line, 0u);
+  EXPECT_TRUE(isWhole(spans[1], 2, alone));
+  // Longer than LongestSpeck, the stub is a line of its own.
+  DrawingOverlapParameters parameters;
+  parameters.LongestSpeck = 1.0;
+  EXPECT_EQ(spansOf({ a, onInk, alone }, parameters).size(), 3u);
+}

@@ -1,0 +1,38 @@
+// The order a pen plotter draws a drawing's lines in (issue 16): little
+// travel with the pen up.
+//
+// Greedy nearest neighbour: from the start (where the pen rests), each next
+// line is the one with an end nearest the pen, drawn from that end, so
+// turned round when its last point is the nearer; the pen is then at its
+// other end. Ties go to the lower line index, and to the first point before
+// the last. The ends are filed in a grid of about two ends a cell, searched
+// in rings around the pen until no nearer end can lie farther out, so a
+// drawing of n lines orders in about n log n where the lines are spread
+// over the page (the n-squared scan it replaces stopped at 4,000 lines).
+//
+// Invariant: every line appears once; each step's line has, of the lines
+// left, an end at the least distance from the pen (the greedy choice made
+// exactly, not approximately).
+#pragma once
+
+#include <glm/vec2.hpp>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace silsmooth
+{
+
+struct PenStep
+{
+  std::size_t Line = 0;
+  bool Reversed = false; ///< drawn from its last point to its first
+};
+
+/// The order to draw lines whose ends (first point, last point) are given,
+/// from `start`.
+std::vector<PenStep> penOrder(
+  const std::vector<std::array<glm::dvec2, 2>>& ends, const glm::dvec2& start);
+
+} // namespace silsmooth

@@ -1,0 +1,111 @@
+// The order a pen plotter draws lines in (Lines/Core/PenOrder.h), against
+// the plain greedy scan it must reproduce step for step.
+#include "PenOrder.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <random>
+#include <tuple>
+
+using namespace silsmooth;
+
+namespace
+{
+
+using Ends = std::vector<std::array<glm::dvec2, 2>>;
+
+// Each step scans every line left: the rule itself, quadratic.
+std::vector<PenStep> scannedOrder(const Ends& ends, glm::dvec2 pen)
+{
+  std::vector<PenStep> order;
+  std::vector<bool> used(ends.size(), false);
+  for (std::size_t k = 0; k < ends.size(); ++k)
+  {
+    auto best = std::make_tuple(std::numeric_limits<double>::infinity(), std::size_t(0), false);
+    for (std::size_t i = 0; i < ends.size(); ++i)
+    {
+      for (int e = 0; e < 2 && !used[i]; ++e)
+      {
+        best = std::min(best, std::make_tuple(glm::distance(pen, ends[i][e]), i, e == 1));
+      }
+    }
+    const auto [distance, line, last] = best;
+    used[line] = true;
+    order.push_back({ line, last });
+    pen = ends[line][last ? 0 : 1];
+  }
+  return order;
+}
+
+bool sameOrder(const std::vector<PenStep>& a, const std::vector<PenStep>& b)
+{
+  return a.size() == b.size() &&
+    std::equal(a.begin(), a.end(), b.begin(), [](const PenStep& x, const PenStep& y) {
+      return x.Line == y.Line && x.Reversed == y.Reversed;
+    });
+}
+
+Ends randomLines(std::size_t count, double width, double height, double length, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::uniform_real_distribution<double> x(0.0, width), y(0.0, height), step(-length, length);
+  Ends ends(count);
+  for (auto& line : ends)
+  {
+    line[0] = { x(random), y(random) };
+    line[1] = line[0] + glm::dvec2(step(random), step(random));
+  }
+  return ends;
+}
+
+} // namespace
+
+TEST(PenOrder, TakesTheNearestEndEachStepAsAScanOfEveryLineDoes)
+{
+  // Short strokes over a page, long lines across it, a row of lines on one
+  // line (a grid one cell high), starts inside and outside the ends' box.
+  const std::vector<Ends> drawings{ randomLines(3000, 800, 600, 10, 1),
+    randomLines(500, 800, 600, 400, 2), randomLines(200, 1000, 0, 5, 3) };
+  for (const Ends& ends : drawings)
+  {
+    for (const glm::dvec2 start : { glm::dvec2(0.0), glm::dvec2(400, 300), glm::dvec2(-1e4, 5e3) })
+    {
+      EXPECT_TRUE(sameOrder(penOrder(ends, start), scannedOrder(ends, start)))
+        << ends.size() << " lines from " << start.x << ", " << start.y;
+    }
+  }
+}
+
+TEST(PenOrder, TiesGoToTheLowerLineAndToItsFirstPoint)
+{
+  // Lines 1 and 2 have ends at the same distance from the pen; line 3 is
+  // a loop whose two ends are one point.
+  const Ends ends{ { glm::dvec2(100, 100), glm::dvec2(110, 100) },
+    { glm::dvec2(0, 5), glm::dvec2(0, 20) }, { glm::dvec2(20, 0), glm::dvec2(5, 0) },
+    { glm::dvec2(50, 50), glm::dvec2(50, 50) } };
+  const std::vector<PenStep> order = penOrder(ends, glm::dvec2(0.0));
+  ASSERT_EQ(order.size(), 4u);
+  EXPECT_EQ(order[0].Line, 1u);
+  EXPECT_FALSE(order[0].Reversed);
+  EXPECT_TRUE(sameOrder(order, scannedOrder(ends, glm::dvec2(0.0))));
+  EXPECT_FALSE(order[2].Reversed); // the loop, from its first point
+}
+
+TEST(PenOrder, OrdersFiftyThousandLinesAndAllAtOnePoint)
+{
+  const Ends ends = randomLines(50000, 16384, 12288, 20, 4);
+  const std::vector<PenStep> order = penOrder(ends, glm::dvec2(0.0));
+  ASSERT_EQ(order.size(), ends.size());
+  std::vector<bool> seen(ends.size(), false);
+  for (const PenStep& step : order)
+  {
+    EXPECT_FALSE(seen[step.Line]);
+    seen[step.Line] = true;
+  }
+  const Ends onePoint(100, { glm::dvec2(3, 4), glm::dvec2(3, 4) });
+  EXPECT_TRUE(
+    sameOrder(penOrder(onePoint, glm::dvec2(0.0)), scannedOrder(onePoint, glm::dvec2(0.0))));
+  EXPECT_TRUE(penOrder({}, glm::dvec2(0.0)).empty());
+}

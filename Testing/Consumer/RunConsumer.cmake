@@ -30,7 +30,11 @@ foreach (installed
     "include/SilhouetteSmoothing/vtkSilhouetteSmoothingFilter.h"
     "bin/silhouette"
     "libexec/silhouette-read" # the reading process; the runs below use it
-    "share/SilhouetteSmoothing/Data/bunny_coarse.ply")
+    "share/SilhouetteSmoothing/Data/bunny_coarse.ply"
+    # The user documentation, which the headers name (docs/using.md).
+    "share/doc/SilhouetteSmoothing/README.md"
+    "share/doc/SilhouetteSmoothing/docs/using.md"
+    "share/doc/SilhouetteSmoothing/docs/figures/bunny.png")
   if (NOT EXISTS "${prefix}/${installed}")
     message(FATAL_ERROR "FAILED: ${installed} is not installed")
   endif ()

@@ -734,8 +734,18 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NormalSeamFeatures: " << (this->NormalSeamFeatures ? "On" : "Off") << "\n";
   os << indent << "FlatCreaseDetection: " << (this->FlatCreaseDetection ? "On" : "Off") << "\n";
   os << indent << "FlatCreaseAngle: " << this->FlatCreaseAngle << "\n";
-  os << indent << "NormalEstimation: " << this->NormalEstimation << "\n";
-  os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+  static const char* const estimations[] = { "AngleWeighted", "AreaWeighted", "MaxWeighted",
+    "QuadricFit" };
+  os << indent << "NormalEstimation: "
+     << (this->NormalEstimation >= ANGLE_WEIGHTED && this->NormalEstimation <= QUADRIC_FIT
+            ? estimations[this->NormalEstimation]
+            : "?")
+     << "\n";
+  os << indent << "OutputPointsPrecision: "
+     << (this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION
+            ? "Single"
+            : this->OutputPointsPrecision == vtkAlgorithm::DOUBLE_PRECISION ? "Double" : "Default")
+     << "\n";
   os << indent << "VisibilityMethod: "
      << (this->VisibilityMethod == HIERARCHICAL ? "Hierarchical" : "PerVertex") << "\n";
 }

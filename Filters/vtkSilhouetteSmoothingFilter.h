@@ -334,7 +334,9 @@ public:
    * quads are planar, so a grid torus or UV sphere with fewer than 6 segments
    * around (rings more than 65 degrees apart) is taken as creased, and a
    * hexagonal prism's 60-degree edges are not creases unless FlatCreaseAngle
-   * is lowered. Default on.
+   * is lowered. A found edge that meets no other, nor a border, at either
+   * end is left out (a stretched coarse grid's lone sharp edge; a solid's
+   * creases meet at its corners). Default on.
    */
   vtkSetMacro(FlatCreaseDetection, bool);
   vtkGetMacro(FlatCreaseDetection, bool);
@@ -365,6 +367,10 @@ public:
   virtual void SetNormalEstimation(
     int); ///< clamped to [ANGLE_WEIGHTED, QUADRIC_FIT] with a warning
   vtkGetMacro(NormalEstimation, int);
+  void SetNormalEstimationToAngleWeighted() { this->SetNormalEstimation(ANGLE_WEIGHTED); }
+  void SetNormalEstimationToAreaWeighted() { this->SetNormalEstimation(AREA_WEIGHTED); }
+  void SetNormalEstimationToMaxWeighted() { this->SetNormalEstimation(MAX_WEIGHTED); }
+  void SetNormalEstimationToQuadricFit() { this->SetNormalEstimation(QUADRIC_FIT); }
   ///@}
 
   enum VisibilityMethods

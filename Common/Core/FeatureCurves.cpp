@@ -9,6 +9,7 @@
 #include <array>
 #include <cmath>
 #include <numeric>
+#include <unordered_map>
 
 namespace silsmooth
 {
@@ -334,6 +335,37 @@ std::vector<FeatureEdge> flatSidedCreases(const std::vector<double>& cosines,
       result.emplace_back(table.edge(static_cast<Id>(e)).low, table.edge(static_cast<Id>(e)).high);
     }
   }
+  // An edge that meets no other at either end, nor a border, is no crease:
+  // the creases of a solid bound its faces and meet at its corners (a folded
+  // sheet's run to its borders), while a stretched coarse grid (a UV sphere
+  // of 8 x 6 scaled by 2) has a lone sharp edge at each pointed end, between
+  // planar quads, which made a kink there.
+  std::unordered_map<Id, int> degree;
+  for (const FeatureEdge& edge : result)
+  {
+    ++degree[edge.first];
+    ++degree[edge.second];
+  }
+  for (std::size_t e = 0; e < table.edgeCount() && !result.empty(); ++e)
+  {
+    if (sides.Count[e] != 2)
+    {
+      // A border or a non-manifold edge: its ends count as met.
+      const Edge& edge = table.edge(static_cast<Id>(e));
+      for (const Id end : { edge.low, edge.high })
+      {
+        const auto found = degree.find(end);
+        if (found != degree.end())
+        {
+          found->second += 2;
+        }
+      }
+    }
+  }
+  result.erase(
+    std::remove_if(result.begin(), result.end(),
+      [&](const FeatureEdge& edge) { return degree[edge.first] == 1 && degree[edge.second] == 1; }),
+    result.end());
   return result;
 }
 

@@ -76,6 +76,10 @@ constexpr double FlatNeighbourDegrees = 0.5;
 /// whatever lies beyond (a cone's base beside single side triangles): an
 /// organic mesh's rare coplanar neighbours have gentle edges about them. A
 /// face that meets a border or a non-manifold edge has no such outline.
+/// An edge found so that meets no other found edge nor a border (or
+/// non-manifold edge) at either end is left out: a solid's creases meet at
+/// its corners and a folded sheet's run to its borders, while a stretched
+/// coarse grid has lone sharp edges between its planar quads.
 /// `table`, when given, is the edge table of `triangles`.
 std::vector<FeatureEdge> flatSidedCreases(const std::vector<glm::dvec3>& points,
   const std::vector<Triangle>& triangles, double angleDegrees, const EdgeTable* table = nullptr);

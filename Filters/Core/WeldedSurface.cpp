@@ -82,6 +82,20 @@ WeldedSurface::GivenNormals WeldedSurface::weldAndOrient(const std::vector<glm::
   // One edge table for the whole preparation: built for the welded
   // triangles, its sides turned with the triangles once they are oriented.
   EdgeTable table(welded);
+  if (options.Weld && !(options.WeldTolerance > 0.0))
+  {
+    // Copies that differ by rounding are one point (rare: the weld and the
+    // table are made again). Unwelded, they left a parametric torus's seam
+    // open, reported as non-orientable, with a spike in its outline.
+    const NearCopies rounding = nearCopyEdges(points, table, RoundingCopyRelative);
+    if (rounding.EdgeCount > 0)
+    {
+      this->Statistics.RoundingCopyEdgeCount = rounding.EdgeCount;
+      this->Vertex = weldCoincidentPoints(points, 2.0 * rounding.LongestEdge);
+      welded = weldTriangles(this->InputTriangles, this->Vertex);
+      table = EdgeTable(welded);
+    }
+  }
   if (options.Weld)
   {
     // Points of separate parts that only touch are one vertex no longer

@@ -631,6 +631,29 @@ TEST(FlatSidedCreases, BoxEdgesYesCoarseSphereNo)
   EXPECT_FALSE(flatSidedCreases(points, triangles, 65.0).empty());
 }
 
+TEST(FlatSidedCreases, ALoneSharpEdgeIsNoCrease)
+{
+  // vtkSphereSource's sphere of 8 x 6 samples (poles among the 6: rings at
+  // 36, 72, 108 and 144 degrees) stretched to twice its length and turned by
+  // 30 degrees (a user's trial): at each pointed end the edge across the
+  // equator, between planar quads, turns by 79 degrees, its neighbours by
+  // 50. Each meets no other sharp edge.
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::unitSphere(5, 8, points, triangles);
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  for (glm::dvec3& p : points)
+  {
+    const double x = 2.0 * p.x; // stretched, then turned (vtkTransform's order)
+    p = glm::dvec3(c * x - s * p.y, s * x + c * p.y, p.z);
+  }
+  EXPECT_EQ(featureEdgesByAngle(points, triangles, 65.0).size(), 2u);
+  EXPECT_TRUE(flatSidedCreases(points, triangles, 65.0).empty());
+  // (A box's edges, which meet at its corners, stay creases: above; a sheet
+  // folded once keeps its fold, which runs to its borders:
+  // core.WeldedSurface.MovedPointsThatMakeANewCreaseAskForARebuild.)
+}
+
 TEST(FlatSidedCreases, AFaceOfOneTriangleBesideFlatFacesIsFlat)
 {
   // A wedge (OpenSCAD's linear_extrude of a right triangle): two rectangles
@@ -758,4 +781,69 @@ TEST(FlatSidedCreases, AFaceOnANonManifoldEdgeHasNoOutline)
         << "rim edge (" << edge.first << ", " << edge.second << ") taken as a crease";
     }
   }
+}
+
+TEST(WeldedSurface, CopiesThatDifferByRoundingAreOnePoint)
+{
+  // A torus sampled as vtkParametricFunctionSource samples it: both ends of
+  // each angle's range, 0 and 2 pi, so the last row and column are copies
+  // of the first, 1e-16 to 2e-15 away, joined to them by the wrap's
+  // degenerate triangles. `apart` moves the last column (the copy of the
+  // first) that much farther out.
+  auto torus = [](double apart) {
+    constexpr int nu = 12, nv = 8;
+    std::vector<glm::dvec3> points;
+    for (int i = 0; i < nu; ++i)
+    {
+      for (int j = 0; j < nv; ++j)
+      {
+        const double u = 2.0 * M_PI * i / (nu - 1), v = 2.0 * M_PI * j / (nv - 1);
+        const double r = 1.0 + 0.4 * std::cos(v) + (i == nu - 1 ? apart : 0.0);
+        points.emplace_back(r * std::cos(u), r * std::sin(u), 0.4 * std::sin(v));
+      }
+    }
+    std::vector<Triangle> triangles;
+    for (int i = 0; i < nu; ++i)
+    {
+      for (int j = 0; j < nv; ++j)
+      {
+        const Id a = i * nv + j, b = ((i + 1) % nu) * nv + j;
+        const Id c = ((i + 1) % nu) * nv + (j + 1) % nv, d = i * nv + (j + 1) % nv;
+        triangles.push_back({ a, b, c });
+        triangles.push_back({ a, c, d });
+      }
+    }
+    return std::make_pair(points, triangles);
+  };
+  const auto [points, triangles] = torus(0.0);
+  const WeldedSurface surface(points, triangles, {}, {}, coretest::plainOptions());
+  const SurfaceStatistics& welded = surface.statistics();
+  EXPECT_GT(welded.RoundingCopyEdgeCount, 0u);
+  EXPECT_EQ(welded.NearCopyEdgeCount, 0u);
+  EXPECT_EQ(welded.InconsistentEdgeCount, 0u);
+  EXPECT_EQ(welded.WeldedPointCount, 12u + 8u - 1u); // the last row and column
+  // It smooths as the torus whose copies are exact.
+  std::vector<glm::dvec3> exact = points;
+  for (int i = 0; i < 12; ++i)
+  {
+    for (int j = 0; j < 8; ++j)
+    {
+      exact[static_cast<std::size_t>(i * 8 + j)] =
+        points[static_cast<std::size_t>((i % 11) * 8 + j % 7)];
+    }
+  }
+  const WeldedSurface exactSurface(exact, triangles, {}, {}, coretest::plainOptions());
+  EXPECT_EQ(exactSurface.statistics().RoundingCopyEdgeCount, 0u);
+  const ViewGeometry view = coretest::perspectiveFrom({ 1, 4, 2 });
+  const SmoothingResult a = smoothSilhouettes(surface.prepared(), view, SmoothingParameters());
+  const SmoothingResult b = smoothSilhouettes(exactSurface.prepared(), view, SmoothingParameters());
+  ASSERT_GT(b.SilhouetteTriangleCount, 0u);
+  EXPECT_EQ(a.SilhouetteTriangleCount, b.SilhouetteTriangleCount);
+  EXPECT_EQ(surface.assemble(a).Triangles.size(), exactSurface.assemble(b).Triangles.size());
+  // Copies 1e-7 of the mesh's size apart are not rounding: they stay apart,
+  // reported as near copies (the last row's copies are welded still).
+  const auto [apartPoints, apartTriangles] = torus(3e-7);
+  const WeldedSurface apart(apartPoints, apartTriangles, {}, {}, coretest::plainOptions());
+  EXPECT_GT(apart.statistics().NearCopyEdgeCount, 0u);
+  EXPECT_EQ(apart.statistics().WeldedPointCount, 12u); // the last row, one a column
 }

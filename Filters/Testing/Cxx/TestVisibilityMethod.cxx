@@ -69,6 +69,20 @@ bool SameOutputs(vtkPolyData* mesh, const char* name)
   std::ostringstream printed;
   tree->Print(printed);
   CHECK(printed.str().find("VisibilityMethod: Hierarchical") != std::string::npos, "PrintSelf");
+  // The other enumerations print by name too, and have their SetXTo...
+  // forms (a user's trial read "NormalEstimation: 1").
+  CHECK(printed.str().find("NormalEstimation: AreaWeighted") != std::string::npos &&
+      printed.str().find("OutputPointsPrecision: Default") != std::string::npos,
+    "PrintSelf names the normal estimation and the points' precision");
+  vtkNew<vtkSilhouetteSmoothingFilter> quadric;
+  quadric->SetNormalEstimationToQuadricFit();
+  quadric->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+  std::ostringstream printedQuadric;
+  quadric->Print(printedQuadric);
+  CHECK(quadric->GetNormalEstimation() == vtkSilhouetteSmoothingFilter::QUADRIC_FIT &&
+      printedQuadric.str().find("NormalEstimation: QuadricFit") != std::string::npos &&
+      printedQuadric.str().find("OutputPointsPrecision: Double") != std::string::npos,
+    "SetNormalEstimationToQuadricFit, printed by name");
 
   int compared = 0;
   for (vtkSilhouetteSmoothingFilter* filter : { plain.GetPointer(), tree.GetPointer() })

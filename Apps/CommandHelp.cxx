@@ -21,8 +21,8 @@ Commands:
       smooth the silhouette of INPUT for one view, optionally write the
       result, and print figures about it
   render INPUT -o IMAGE.png|DRAWING.svg [--style STYLE] [--no-smoothing]
-         [--hidden none|dashed] [--width-by-depth] [--lod] [--json]
-         [camera options]
+         [--hidden none|dashed] [--width-by-depth] [--join-lines] [--lod]
+         [--json] [camera options]
   render INPUT --style STYLE --progressive N [--svg] -o DIR [options]
       render INPUT offscreen to a PNG image (or a line style to an SVG
       drawing, or N drawings along its progressive mesh) and print the
@@ -110,7 +110,8 @@ std::string RenderHelp()
 {
   return R"(Usage: silhouette render INPUT -o IMAGE.png|DRAWING.svg [--style STYLE]
                         [--no-smoothing] [--hidden none|dashed]
-                        [--width-by-depth] [--lod] [--json] [camera options]
+                        [--width-by-depth] [--join-lines] [--lod] [--json]
+                        [camera options]
        silhouette render INPUT --style STYLE --progressive N [--svg] -o DIR
                         [the same options]
 
@@ -191,6 +192,11 @@ Options:
                           then a filled outline, not a stroke (a pen
                           plotter traces its two sides) (default: 2 pixels
                           everywhere, stroked)
+  --join-lines            in an SVG drawing, lines of one kind that meet end
+                          to end are one path (where more meet, the two
+                          that continue each other most straightly), so a
+                          pen plotter lifts its pen, and inks the corner,
+                          once there (default: one path per visible piece)
   --lod                   refine INPUT for the view first (view-dependent
                           level of detail, vtkViewDependentLevelOfDetail): a
                           hierarchy of its edge collapses is built once, and

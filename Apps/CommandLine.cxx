@@ -288,6 +288,11 @@ RenderOptions ParseRender(
       RejectInlineValue(option);
       render.WidthByDepth = true;
     }
+    else if (option.Name == "--join-lines")
+    {
+      RejectInlineValue(option);
+      render.JoinLines = true;
+    }
     else if (option.Name == "--lod")
     {
       RejectInlineValue(option);

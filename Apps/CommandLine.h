@@ -47,6 +47,7 @@ struct RenderOptions
   bool NoSmoothing = false;
   bool HiddenLines = false;  ///< --hidden dashed: the hidden parts too (grey; dashed in SVG)
   bool WidthByDepth = false; ///< SVG: lines thinner away from the eye
+  bool JoinLines = false;    ///< SVG: lines that meet end to end joined into one path
   bool Lod = false;          ///< refine the input for the view first (LevelOfDetail.h)
   /// --progressive N: N drawings along the progressive mesh into the folder
   /// Output (0: one drawing); --svg: as SVG drawings.

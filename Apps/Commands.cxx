@@ -260,6 +260,10 @@ void RunProgressiveSketch(const RenderOptions& options)
   {
     throw UsageError("--width-by-depth needs SVG drawings; add --svg to --progressive");
   }
+  if (!options.ProgressiveSvg && options.JoinLines)
+  {
+    throw UsageError("--join-lines needs SVG drawings; add --svg to --progressive");
+  }
   if (!options.ProgressiveSvg && options.HiddenLines && options.Style != RenderStyle::Lines)
   {
     throw UsageError("--hidden dashed draws the hidden lines of '--style lines' in PNG drawings "

@@ -534,6 +534,11 @@ void CheckRenderOutputPath(const RenderOptions& options)
       throw UsageError("--width-by-depth needs an .svg output; '" + options.Output +
         "' is a PNG image, whose lines have one width");
     }
+    if (options.JoinLines)
+    {
+      throw UsageError("--join-lines needs an .svg output; '" + options.Output +
+        "' is a PNG image, which has no paths to join");
+    }
     if (options.HiddenLines && options.Style != RenderStyle::Lines)
     {
       throw UsageError("--hidden dashed draws the hidden lines of '--style lines' in a PNG "
@@ -629,6 +634,7 @@ bool RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   style.Width = options.Camera.ViewportSize[0];
   style.Height = options.Camera.ViewportSize[1];
   style.WidthByDepth = options.WidthByDepth;
+  style.JoinLines = options.JoinLines;
   style.ReferenceDepth = renderer->GetActiveCamera()->GetDistance();
   // The whole command line, every option that shaped the drawing with it
   // (the input and style alone left out --hidden, --width-by-depth, --size...).

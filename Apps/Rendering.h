@@ -38,7 +38,7 @@ void CheckImageOutputPath(const std::string& path);
 bool IsSvgPath(const std::string& path);
 
 /// `render`'s output: a .png, or an .svg with a line style; throws
-/// UsageError otherwise, for --width-by-depth without an .svg and for
+/// UsageError otherwise, for --width-by-depth or --join-lines without an .svg and for
 /// --hidden dashed in a PNG of a style other than lines (all options that
 /// do not go together), RuntimeError when the folder is missing.
 void CheckRenderOutputPath(const RenderOptions& options);

@@ -1,6 +1,7 @@
 #include "SvgDrawing.h"
 
 #include "DrawingOverlaps.h"
+#include "PathJoining.h"
 #include "PenOrder.h"
 
 #include <vtkCamera.h>
@@ -17,8 +18,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -382,6 +385,54 @@ std::vector<DrawnLine> OnceEach(const std::vector<DrawnLine>& lines, const SvgSt
   return once;
 }
 
+// The lines of one kind (visible or hidden) that meet end to end, at one
+// written point, joined into one line each (Lines/Core/PathJoining.h). A
+// brush's strokes stay as they are.
+std::vector<DrawnLine> Joined(const std::vector<DrawnLine>& lines)
+{
+  std::vector<std::vector<glm::dvec2>> points(lines.size());
+  std::vector<int> groups(lines.size());
+  std::map<std::string, int> groupOf;
+  for (std::size_t i = 0; i < lines.size(); ++i)
+  {
+    for (const std::array<double, 2>& p : lines[i].Points)
+    {
+      points[i].emplace_back(p[0], p[1]);
+    }
+    const std::string group = lines[i].Kind == "stroke"
+      ? "stroke " + std::to_string(i)
+      : (lines[i].Hidden ? "hidden " : "visible ") + lines[i].Kind;
+    groups[i] = groupOf.emplace(group, static_cast<int>(groupOf.size())).first->second;
+  }
+  const auto written = +[](const glm::dvec2& p) {
+    return std::pair<std::int64_t, std::int64_t>(
+      std::llround(p.x * 100.0), std::llround(p.y * 100.0));
+  };
+  std::vector<DrawnLine> joined;
+  for (const std::vector<silsmooth::JoinedLine>& path :
+    silsmooth::joinedPaths(points, groups, written))
+  {
+    DrawnLine line;
+    line.Kind = lines[path.front().Line].Kind;
+    line.Hidden = lines[path.front().Line].Hidden;
+    for (const silsmooth::JoinedLine& piece : path)
+    {
+      DrawnLine next = lines[piece.Line];
+      if (piece.Reversed)
+      {
+        std::reverse(next.Points.begin(), next.Points.end());
+        std::reverse(next.Depths.begin(), next.Depths.end());
+      }
+      // The first point repeats the last one's written point.
+      const std::size_t from = line.Points.empty() ? 0 : 1;
+      line.Points.insert(line.Points.end(), next.Points.begin() + from, next.Points.end());
+      line.Depths.insert(line.Depths.end(), next.Depths.begin() + from, next.Depths.end());
+    }
+    joined.push_back(std::move(line));
+  }
+  return joined;
+}
+
 } // namespace
 
 std::vector<DrawnLine> ProjectLines(vtkPolyData* lines, vtkRenderer* renderer, bool hiddenOnly)
@@ -497,7 +548,12 @@ std::string SvgDocument(
   // is also a crease, a piece and its reverse) would be inked twice by a
   // pen plotter.
   std::vector<DrawnLine> hidden, visible;
-  for (DrawnLine& line : OnceEach(lines, style))
+  std::vector<DrawnLine> once = OnceEach(lines, style);
+  if (style.JoinLines)
+  {
+    once = Joined(once);
+  }
+  for (DrawnLine& line : once)
   {
     (line.Hidden ? hidden : visible).push_back(std::move(line));
   }

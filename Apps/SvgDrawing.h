@@ -44,6 +44,11 @@ struct SvgStyle
   /// (Kim and Choe 3.3: lines thin out away from the eye).
   bool WidthByDepth = false;
   double ReferenceDepth = 1.0;
+  /// Lines of one kind that meet end to end (at one written point) joined
+  /// into one path, the straightest continuation first where more meet
+  /// (Lines/Core/PathJoining.h): a pen plotter lifts its pen, and inks the
+  /// corner, once there.
+  bool JoinLines = false;
   std::string Title;
 };
 

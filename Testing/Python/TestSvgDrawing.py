@@ -22,6 +22,8 @@ the tube partly hides) and on a cube:
 - lines that pass beside the eye are drawn up to the near plane (the PNG's
   lines all there), a drawing whose lines only cross the page is not
   called blank, and every point of a zoomed-in drawing lies on the page;
+- --join-lines joins the cube's 9 edges into 3 paths or fewer, drawing the
+  same segments;
 - --width-by-depth draws filled outlines, thicker near the eye;
 - --progressive 4 --svg writes 4 drawings at growing triangle counts, the
   last the drawing of the input itself, path for path;
@@ -341,6 +343,33 @@ if code == 0:
     outside = [p for p in xy if not (0.0 <= p[0] <= 300.0 and 0.0 <= p[1] <= 200.0)]
     print("bracket zoomed in: %d points, %d off the page" % (len(xy), len(outside)))
     check(xy and not outside, "every point lies on the page: %s" % outside[:3])
+
+# --- Joined paths ---------------------------------------------------------------
+# --join-lines: lines of one kind that meet end to end are one path, so a
+# plotter lifts its pen once at a corner (the cube's 9 edges meet at its 7
+# visible corners). The same ink: the same segments, in fewer paths.
+def segments(svg_file):
+    found = set()
+    for p in paths(svg_file)[1]:
+        if p.get("class").startswith("hidden"):
+            continue
+        xy = written_points(p.get("d"))
+        for a, b in zip(xy, xy[1:]):
+            found.add((min(a, b), max(a, b)))
+    return found
+
+
+joined_svg = os.path.join(work, "cube_joined.svg")
+code, _, err = run("render", cube_file, *cube_view, "-o", joined_svg, "--join-lines")
+check(code == 0, "render --join-lines (%s)" % err.strip())
+if code == 0:
+    joined = paths(joined_svg)[1]
+    print("cube: %d paths joined, from 9" % len(joined))
+    check(len(joined) <= 3 and all(p.get("class") == "crease" for p in joined),
+          "the cube's 9 edges make 3 paths or fewer")
+    check(segments(joined_svg) == segments(cube_svg), "joined, the cube draws the same segments")
+code, _, err = run("render", cube_file, *cube_view, "-o", os.path.join(work, "joined.png"), "--join-lines")
+check(code == 2 and "--join-lines needs an .svg output" in err, "--join-lines with a PNG is refused")
 
 # --- Width by depth ------------------------------------------------------------
 depth_svg = os.path.join(work, "cube_depth.svg")

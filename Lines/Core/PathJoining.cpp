@@ -1,0 +1,128 @@
+#include "PathJoining.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <map>
+#include <tuple>
+
+namespace silsmooth
+{
+namespace
+{
+
+constexpr std::size_t none = static_cast<std::size_t>(-1);
+
+// End 2 * line + (0: first point, 1: last point).
+std::size_t endOf(std::size_t line, int last)
+{
+  return 2 * line + static_cast<std::size_t>(last);
+}
+
+// The unit direction in which the line leaves its end (towards its nearest
+// point at another position); zero for a line of one position.
+glm::dvec2 leaving(const std::vector<glm::dvec2>& line, int last)
+{
+  const std::size_t n = line.size();
+  const glm::dvec2 from = last ? line[n - 1] : line[0];
+  for (std::size_t k = 1; k < n; ++k)
+  {
+    const glm::dvec2 to = last ? line[n - 1 - k] : line[k];
+    const double length = glm::distance(from, to);
+    if (length > 0.0)
+    {
+      return (to - from) / length;
+    }
+  }
+  return glm::dvec2(0.0);
+}
+
+} // namespace
+
+std::vector<std::vector<JoinedLine>> joinedPaths(const std::vector<std::vector<glm::dvec2>>& lines,
+  const std::vector<int>& groups, std::pair<std::int64_t, std::int64_t> (*keyOf)(const glm::dvec2&))
+{
+  // The ends at each point of each group.
+  std::map<std::tuple<int, std::int64_t, std::int64_t>, std::vector<std::size_t>> meeting;
+  for (std::size_t i = 0; i < lines.size(); ++i)
+  {
+    for (int last = 0; last < 2; ++last)
+    {
+      const auto [x, y] = keyOf(last ? lines[i].back() : lines[i].front());
+      meeting[{ groups[i], x, y }].push_back(endOf(i, last));
+    }
+  }
+  // Pair the ends at each point, the straightest continuation first.
+  std::vector<std::size_t> partner(2 * lines.size(), none);
+  for (const auto& point : meeting)
+  {
+    const std::vector<std::size_t>& ends = point.second;
+    std::vector<std::tuple<double, std::size_t, std::size_t>> pairs;
+    for (std::size_t a = 0; a < ends.size(); ++a)
+    {
+      for (std::size_t b = a + 1; b < ends.size(); ++b)
+      {
+        if (ends[a] / 2 == ends[b] / 2)
+        {
+          continue; // a line's own two ends
+        }
+        const double straight = glm::dot(leaving(lines[ends[a] / 2], int(ends[a] % 2)),
+          leaving(lines[ends[b] / 2], int(ends[b] % 2)));
+        pairs.emplace_back(straight, ends[a], ends[b]);
+      }
+    }
+    std::sort(pairs.begin(), pairs.end());
+    for (const auto& [straight, a, b] : pairs)
+    {
+      if (partner[a] == none && partner[b] == none)
+      {
+        partner[a] = b;
+        partner[b] = a;
+      }
+    }
+  }
+  // Walk the chains: first those with a free end, from their lowest such
+  // line, then the closed ones.
+  std::vector<std::vector<JoinedLine>> paths;
+  std::vector<unsigned char> used(lines.size(), 0);
+  const auto walk = [&](std::size_t line, int startEnd) {
+    std::vector<JoinedLine> path;
+    std::size_t end = endOf(line, startEnd);
+    while (!used[end / 2])
+    {
+      used[end / 2] = 1;
+      path.push_back({ end / 2, end % 2 == 1 });
+      const std::size_t far = end ^ 1u; // the line's other end
+      if (partner[far] == none)
+      {
+        break;
+      }
+      end = partner[far];
+    }
+    paths.push_back(std::move(path));
+  };
+  for (std::size_t i = 0; i < lines.size(); ++i)
+  {
+    for (int last = 0; last < 2 && !used[i]; ++last)
+    {
+      if (partner[endOf(i, last)] == none)
+      {
+        walk(i, last);
+      }
+    }
+  }
+  for (std::size_t i = 0; i < lines.size(); ++i)
+  {
+    if (!used[i])
+    {
+      walk(i, 0);
+    }
+  }
+  std::sort(paths.begin(), paths.end(),
+    [](const std::vector<JoinedLine>& a, const std::vector<JoinedLine>& b) {
+      return a.front().Line < b.front().Line;
+    });
+  return paths;
+}
+
+} // namespace silsmooth

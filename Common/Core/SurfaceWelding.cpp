@@ -149,6 +149,10 @@ NearCopies nearCopyEdges(
     return found; // no finite point
   }
   const double limit = relative * glm::length(high - low);
+  if (!std::isfinite(limit))
+  {
+    return found; // a size past the doubles' range: no edge is small against it
+  }
   for (std::size_t e = 0; e < table.edgeCount(); ++e)
   {
     const Edge& edge = table.edge(static_cast<Id>(e));

@@ -78,7 +78,8 @@ struct NearCopies
 };
 
 /// The near copies joined by an edge of `table` (built over `points`'
-/// ids). Non-finite points are left out. O(points + edges).
+/// ids). Non-finite points are left out; a mesh whose size overflows has
+/// none (everything would be near against it). O(points + edges).
 NearCopies nearCopyEdges(
   const std::vector<glm::dvec3>& points, const EdgeTable& table, double relative = 1e-5);
 

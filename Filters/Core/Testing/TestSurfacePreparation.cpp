@@ -189,6 +189,12 @@ TEST(SurfaceWelding, NearCopiesAreEdgesBelowAHundredThousandthOfTheDiagonal)
     p *= 1e6;
   }
   EXPECT_EQ(nearCopyEdges(large, table).EdgeCount, 1u);
+  // A mesh whose size overflows (corners at -1e308 and 1e308) has none: the
+  // weld would take every edge for a rounding copy and join all points.
+  std::vector<glm::dvec3> huge = square(0.5);
+  huge[0] = glm::dvec3(-1e308, 0, 0);
+  huge[1] = glm::dvec3(1e308, 0, 0);
+  EXPECT_EQ(nearCopyEdges(huge, table, 1e-9).EdgeCount, 0u);
 }
 
 TEST(SurfaceWelding, NormalSeamsOfASplitCubeAreItsTwelveEdges)

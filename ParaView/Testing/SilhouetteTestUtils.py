@@ -209,15 +209,19 @@ def write_pieces(mesh, pieces, output_dir, name, ghosts=False):
         cell_data = ("    <PCellData>\n"
                      "      <PDataArray type=\"UInt8\" Name=\"%s\" NumberOfComponents=\"1\"/>\n"
                      "    </PCellData>\n" % vtkDataSetAttributes.GhostArrayName())
+    normals = mesh.GetPointData().GetNormals()
+    point_data = ""
+    if normals is not None:
+        point_data = ("    <PPointData Normals=\"Normals\">\n"
+                      "      <PDataArray type=\"%s\" Name=\"Normals\" NumberOfComponents=\"3\"/>\n"
+                      "    </PPointData>\n" % xml_types[normals.GetDataTypeAsString()])
     parallel_file = os.path.join(output_dir, "%s_pieces.pvtp" % name)
     with open(parallel_file, "w") as pvtp:
         pvtp.write(
             "<?xml version=\"1.0\"?>\n"
             "<VTKFile type=\"PPolyData\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
             "  <PPolyData GhostLevel=\"%d\">\n"
-            "    <PPointData Normals=\"Normals\">\n"
-            "      <PDataArray type=\"%s\" Name=\"Normals\" NumberOfComponents=\"3\"/>\n"
-            "    </PPointData>\n"
+            "%s"
             "%s"
             "    <PPoints>\n"
             "      <PDataArray type=\"%s\" NumberOfComponents=\"3\"/>\n"
@@ -225,8 +229,8 @@ def write_pieces(mesh, pieces, output_dir, name, ghosts=False):
             "%s"
             "  </PPolyData>\n"
             "</VTKFile>\n"
-            % (1 if ghosts else 0, xml_types[mesh.GetPointData().GetNormals().GetDataTypeAsString()],
-               cell_data, xml_types[mesh.GetPoints().GetData().GetDataTypeAsString()],
+            % (1 if ghosts else 0, point_data, cell_data,
+               xml_types[mesh.GetPoints().GetData().GetDataTypeAsString()],
                "".join("    <Piece Source=\"%s\"/>\n" % file for file in piece_files)))
     return parallel_file, whole_file
 

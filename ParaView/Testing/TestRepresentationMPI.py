@@ -14,7 +14,7 @@ the smooth outline from the chord outline (the pieces with smoothing off)."""
 import os
 
 from paraview import servermanager, simple
-from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes
+from vtkmodules.vtkCommonDataModel import vtkDataSetAttributes, vtkPolyData
 
 from SilhouetteTestUtils import (bunny_render_view, cell_point_ids, finish, halves_at_median_x, image_error,
                                  load_representation_plugin, read_with_point_normals, setting, two_ranks, write_pieces)
@@ -44,6 +44,11 @@ for piece, owned in enumerate(halves_at_median_x(mesh, cell_points)):
     print("piece %d: %d cells and %d ghost cells" % (piece, len(owned), len(ghosts)))
 output_dir = setting("SILHOUETTE_OUTPUT_DIR")
 parallel_file, whole_file = write_pieces(mesh, pieces, output_dir, "TestRepresentationMPI", ghosts=True)
+# The same pieces without point normals (below).
+bare_mesh = vtkPolyData()
+bare_mesh.DeepCopy(mesh)
+bare_mesh.GetPointData().SetNormals(None)
+bare_file, _ = write_pieces(bare_mesh, pieces, output_dir, "TestRepresentationMPI_bare", ghosts=True)
 
 size = [640, 480]
 view = bunny_render_view(size)
@@ -126,5 +131,22 @@ for pose in range(2):
     if chord_error <= limit:
         failures.append("pose %d: the limit does not tell the smooth outline from the chord outline (%.3f)"
             % (pose, chord_error))
+
+# Data without point normals on two ranks: each rank computes the normals of
+# its piece alone, and the seam shows as a line (a user's trial measured 27
+# against one rank). The representation says so, on the information
+# property SilhouetteNormalsPerPiece and in a warning; with normals it does not.
+bare = simple.Show(simple.XMLPartitionedPolydataReader(FileName=[bare_file]), view)
+bare.Representation = "Smooth Silhouette Surface"
+for display, expected in ((bare, 1), (split, 0)):
+    for shown in (split, whole, bare):
+        shown.Visibility = 1 if shown is display else 0
+    simple.Render(view)
+    display.SMProxy.UpdatePropertyInformation()
+    said = display.GetPropertyValue("SilhouetteNormalsPerPiece")
+    print("%s: SilhouetteNormalsPerPiece %d" % ("without normals" if display is bare else "with normals", said))
+    if said != expected:
+        failures.append("pieces %s point normals: SilhouetteNormalsPerPiece %d, expected %d"
+            % ("without" if display is bare else "with", said, expected))
 
 finish(failures)

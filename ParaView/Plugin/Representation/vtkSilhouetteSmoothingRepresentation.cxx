@@ -1,11 +1,18 @@
 #include "vtkSilhouetteSmoothingRepresentation.h"
 
 #include "vtkCompositeDataDisplayAttributes.h"
+#include "vtkCompositeDataIterator.h"
+#include "vtkCompositeDataSet.h"
+#include "vtkDataSet.h"
+#include "vtkInformationVector.h"
+#include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVLODActor.h"
+#include "vtkPointData.h"
 #include "vtkSelection.h"
 #include "vtkSilhouetteCompositeMapper.h"
 #include "vtkSilhouetteSmoothingFilter.h"
+#include "vtkSmartPointer.h"
 
 vtkStandardNewMacro(vtkSilhouetteSmoothingRepresentation);
 
@@ -169,6 +176,57 @@ int vtkSilhouetteSmoothingRepresentation::GetSilhouetteSkippedGhostCells()
 {
   auto m = this->FullMapper();
   return m ? static_cast<int>(m->GetSkippedGhostCellCount()) : 0;
+}
+
+int vtkSilhouetteSmoothingRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  const int done = this->Superclass::RequestData(request, inputVector, outputVector);
+  this->CheckNormalsPerPiece(vtkDataObject::GetData(inputVector[0], 0));
+  return done;
+}
+
+void vtkSilhouetteSmoothingRepresentation::CheckNormalsPerPiece(vtkDataObject* input)
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  const int processes = controller ? controller->GetNumberOfProcesses() : 1;
+  if (!input || processes < 2)
+  {
+    this->NormalsPerPiece = false;
+    return;
+  }
+  if (input->GetMTime() == this->NormalsCheckedTime)
+  {
+    return; // checked, and warned, for this data
+  }
+  this->NormalsCheckedTime = input->GetMTime();
+  bool without = false;
+  const auto check = [&without](vtkDataObject* data) {
+    vtkDataSet* set = vtkDataSet::SafeDownCast(data);
+    without = without || (set && set->GetNumberOfCells() > 0 && !set->GetPointData()->GetNormals());
+  };
+  if (vtkCompositeDataSet* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      check(it->GetCurrentDataObject());
+    }
+  }
+  else
+  {
+    check(input);
+  }
+  this->NormalsPerPiece = without;
+  if (without && this->SilhouetteSmoothing)
+  {
+    vtkWarningMacro("Smooth Silhouette Surface on "
+      << processes
+      << " processes: this piece of the data has no point normals, so the smoothing computes "
+         "them for the piece alone, and where the data is split across processes the seams "
+         "show as lines. Apply Generate Surface Normals (or give the data normals) first.");
+  }
 }
 
 void vtkSilhouetteSmoothingRepresentation::PrintSelf(ostream& os, vtkIndent indent)

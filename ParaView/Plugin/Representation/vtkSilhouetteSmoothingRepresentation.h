@@ -83,9 +83,22 @@ public:
   int GetSilhouetteSkippedGhostCells();
   ///@}
 
+  /**
+   * 1 when this process runs among several and its piece of the data has
+   * cells but no point normals: the smoothing computes normals for the piece
+   * alone, so where the data is split across processes the seams show as
+   * lines (ParaView's geometry filter drops ghost cells before any mapper
+   * sees them). A warning says so once per change of the data; Generate
+   * Surface Normals before the representation avoids it.
+   */
+  int GetSilhouetteNormalsPerPiece() { return this->NormalsPerPiece ? 1 : 0; }
+
 protected:
   vtkSilhouetteSmoothingRepresentation();
   ~vtkSilhouetteSmoothingRepresentation() override;
+
+  /// The superclass's, then the check of point normals on several processes.
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   bool SilhouetteSmoothing = true;
   bool SmoothLOD = true;
@@ -98,6 +111,10 @@ private:
   template<typename F>
   void ForEachMapper(F&& f);
   void UpdateSmoothingSwitches();
+  void CheckNormalsPerPiece(vtkDataObject* input);
+
+  bool NormalsPerPiece = false;
+  vtkMTimeType NormalsCheckedTime = 0;
 };
 
 #endif

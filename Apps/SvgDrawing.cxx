@@ -150,7 +150,7 @@ void AppendNumber(std::string& out, double value)
 {
   char text[32];
   std::snprintf(text, sizeof text, "%.2f", value);
-  out += text;
+  out += std::string(text) == "-0.00" ? "0.00" : text;
 }
 
 void AppendPoint(std::string& out, char command, const std::array<double, 2>& p)
@@ -188,9 +188,13 @@ DrawnLine AsWritten(const DrawnLine& line)
 }
 
 // The outline of a line whose width varies along it: the left side forward,
-// the right side back. Each point is offset along the bisector of its two
-// segments' normals, lengthened to keep the width across a turn (at most
-// twice, so a sharp turn does not shoot a spike).
+// a round end, the right side back, a round start. Each point is offset
+// along the bisector of its two segments' normals, lengthened to keep the
+// width across a turn (at most twice, so a sharp turn does not shoot a
+// spike). The round ends are a stroke's round caps: where lines that run
+// over each other were drawn once, a line stops up to one and a half widths
+// from the line it meets, and square ends left white breaks there (a user's
+// trial).
 std::string OutlinePath(const DrawnLine& line, const std::vector<double>& halfWidths)
 {
   const std::size_t n = line.Points.size();
@@ -222,15 +226,32 @@ std::string OutlinePath(const DrawnLine& line, const std::vector<double>& halfWi
     left[i] = { line.Points[i][0] + scale * m[0], line.Points[i][1] + scale * m[1] };
     right[i] = { line.Points[i][0] - scale * m[0], line.Points[i][1] - scale * m[1] };
   }
+  // Half a circle about an end, from its left side to its right, bulging
+  // along `forward`.
+  const auto cap = [&](std::size_t i, double sign, std::string& d) {
+    const std::array<double, 2> normal = sign > 0.0 ? normalOf(n - 2, n - 1) : normalOf(0, 1);
+    const std::array<double, 2> forward{ sign * normal[1], -sign * normal[0] };
+    const double r = halfWidths[i];
+    for (const double degrees : { 60.0, 30.0, 0.0, -30.0, -60.0 })
+    {
+      const double a = degrees * vtkMath::Pi() / 180.0;
+      const double side = sign * std::sin(a); // left at +90 degrees on the way out
+      AppendPoint(d, 'L',
+        { line.Points[i][0] + r * (side * normal[0] + std::cos(a) * forward[0]),
+          line.Points[i][1] + r * (side * normal[1] + std::cos(a) * forward[1]) });
+    }
+  };
   std::string d;
   for (std::size_t i = 0; i < n; ++i)
   {
     AppendPoint(d, i == 0 ? 'M' : 'L', left[i]);
   }
+  cap(n - 1, 1.0, d);
   for (std::size_t i = n; i-- > 0;)
   {
     AppendPoint(d, 'L', right[i]);
   }
+  cap(0, -1.0, d);
   d += 'Z';
   return d;
 }

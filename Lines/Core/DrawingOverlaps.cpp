@@ -172,6 +172,57 @@ void keepShortCoveredStretches(std::vector<Sample>& samples, double shortestGap)
   }
 }
 
+double lengthOf(const std::vector<glm::dvec2>& points)
+{
+  double length = 0.0;
+  for (std::size_t k = 0; k + 1 < points.size(); ++k)
+  {
+    length += glm::distance(points[k], points[k + 1]);
+  }
+  return length;
+}
+
+// The specks checked again, against every longer span kept: a speck taken
+// early (a silhouette's, before the creases) had no ink to lie on yet.
+std::vector<PolylineSpan> withoutSpecks(const std::vector<std::vector<glm::dvec2>>& lines,
+  std::vector<PolylineSpan> spans, const DrawingOverlapParameters& parameters)
+{
+  std::vector<std::vector<glm::dvec2>> points(spans.size());
+  std::vector<unsigned char> speck(spans.size(), 0);
+  KeptLines longer(parameters);
+  for (std::size_t s = 0; s < spans.size(); ++s)
+  {
+    points[s] = valuesAlong(lines[spans[s].Line], spans[s].First, spans[s].Last);
+    speck[s] = lengthOf(points[s]) <= parameters.LongestSpeck ? 1 : 0;
+    for (std::size_t k = 0; k + 1 < points[s].size() && !speck[s]; ++k)
+    {
+      longer.add(points[s][k], points[s][k + 1]);
+    }
+  }
+  std::vector<PolylineSpan> kept;
+  for (std::size_t s = 0; s < spans.size(); ++s)
+  {
+    bool onInk = speck[s] != 0;
+    for (std::size_t k = 0; k + 1 < points[s].size() && onInk; ++k)
+    {
+      // Every quarter of Width along the segment, both ends included.
+      const double step = std::max(0.25 * parameters.Width, 0.01);
+      const int count =
+        std::max(1, int(std::ceil(glm::distance(points[s][k], points[s][k + 1]) / step)));
+      for (int i = 0; i <= count && onInk; ++i)
+      {
+        const glm::dvec2 p = points[s][k] + (points[s][k + 1] - points[s][k]) * (double(i) / count);
+        onInk = longer.covers(p, glm::dvec2(0.0), true);
+      }
+    }
+    if (!onInk)
+    {
+      kept.push_back(spans[s]);
+    }
+  }
+  return kept;
+}
+
 } // namespace
 
 std::vector<PolylineSpan> spansInside(
@@ -271,7 +322,7 @@ std::vector<PolylineSpan> spansNotOverlapping(const std::vector<std::vector<glm:
       }
     }
   }
-  return spans;
+  return withoutSpecks(lines, std::move(spans), parameters);
 }
 
 } // namespace silsmooth

@@ -21,7 +21,8 @@
 // both sides). And a speck, a span no longer than LongestSpeck that lies
 // within Width of kept lines all along, whatever their direction (a stub
 // at a corner, a sliver's edge), is left out: a plotter would lower its pen
-// on ink already there.
+// on ink already there. Specks are checked again at the end against every
+// longer span kept, so one taken before the line it lies on goes too.
 //
 // Invariants: every kept span lies on its line; no point of a kept span,
 // apart from its two ends and the short covered stretches kept, lies

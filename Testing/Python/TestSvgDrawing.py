@@ -382,6 +382,12 @@ if code == 0:
           "--width-by-depth draws filled outlines")
     check(len(drawn) == 9 and all(p.get("d").endswith("Z") for p in drawn),
           "one closed outline per visible edge")
+    # Each with round ends, five points about each end of its line besides
+    # its two sides' (an edge of two points: 14). With square ends (4 points)
+    # a line stopped where another covers it left a white break (a user's
+    # trial, 2026-12-06).
+    counts = [len(re.findall(r"[ML]", p.get("d"))) for p in drawn]
+    check(all(count >= 14 for count in counts), "the outlines have round ends: %s" % counts)
 
 # --- The progressive sketch ----------------------------------------------------
 bunny = os.path.join(data, "bunny.ply")

@@ -238,6 +238,12 @@ TEST(DrawingOverlaps, ASpeckOnInkAlreadyThereIsLeftOutAndOneOnItsOwnIsKept)
   ASSERT_EQ(spans.size(), 2u);
   EXPECT_EQ(spans[0].Line, 0u);
   EXPECT_TRUE(isWhole(spans[1], 2, alone));
+  // A speck taken before the line it lies on is left out too.
+  const std::vector<PolylineSpan> speckFirst =
+    spansNotOverlapping({ a, onInk, alone }, { 1, 2, 0 }, DrawingOverlapParameters());
+  ASSERT_EQ(speckFirst.size(), 2u);
+  EXPECT_TRUE(isWhole(speckFirst[0], 2, alone));
+  EXPECT_TRUE(isWhole(speckFirst[1], 0, a));
   // Longer than LongestSpeck, the stub is a line of its own.
   DrawingOverlapParameters parameters;
   parameters.LongestSpeck = 1.0;

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <map>
 #include <numeric>
@@ -59,7 +60,13 @@ std::vector<Id> weldWithin(const std::vector<glm::dvec3>& points, double toleran
   {
     std::size_t operator()(const CellKey& k) const
     {
-      return static_cast<std::size_t>(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
+      // Unsigned: the cells of a small tolerance number 1e14 and more, and a
+      // signed product would overflow.
+      const auto u = [](long long v) {
+        return static_cast<std::uint64_t>(v);
+      };
+      return static_cast<std::size_t>(
+        u(k.x) * 73856093ULL ^ u(k.y) * 19349663ULL ^ u(k.z) * 83492791ULL);
     }
   };
   auto cellOf = [&](const glm::dvec3& p, CellKey& key) {

@@ -269,10 +269,11 @@ std::string PolylinePath(const DrawnLine& line)
 // The lines in the order a pen plotter draws them with little travel
 // (Lines/Core/PenOrder.h): from the image's top-left corner, where a
 // plotter's pen rests, each next line is the one with an end nearest the
-// pen, turned round when its last point is the nearer. In the order the
-// pieces came, the pen travelled 3 to 11 times as far (a user's trial,
-// 2026-12-05).
-std::vector<DrawnLine> InPenOrder(std::vector<DrawnLine> lines)
+// pen, turned round when its last point is the nearer; after an
+// `outlines` line (a filled outline) the pen is back at the end it entered
+// by. In the order the pieces came, the pen travelled 3 to 11 times as far
+// (a user's trial, 2026-12-05).
+std::vector<DrawnLine> InPenOrder(std::vector<DrawnLine> lines, bool outlines)
 {
   std::vector<std::array<glm::dvec2, 2>> ends(lines.size());
   for (std::size_t i = 0; i < lines.size(); ++i)
@@ -283,7 +284,7 @@ std::vector<DrawnLine> InPenOrder(std::vector<DrawnLine> lines)
   }
   std::vector<DrawnLine> ordered;
   ordered.reserve(lines.size());
-  for (const silsmooth::PenStep& step : silsmooth::penOrder(ends, glm::dvec2(0.0)))
+  for (const silsmooth::PenStep& step : silsmooth::penOrder(ends, glm::dvec2(0.0), outlines))
   {
     DrawnLine next = std::move(lines[step.Line]);
     if (step.Reversed)
@@ -578,7 +579,7 @@ std::string SvgDocument(
   {
     (line.Hidden ? hidden : visible).push_back(std::move(line));
   }
-  for (const DrawnLine& line : InPenOrder(std::move(hidden)))
+  for (const DrawnLine& line : InPenOrder(std::move(hidden), false))
   {
     svg += "<path class=\"hidden " + line.Kind + "\" d=\"" + PolylinePath(line) + "\"/>\n";
   }
@@ -590,7 +591,9 @@ std::string SvgDocument(
   svg += style.WidthByDepth ? "<g id=\"visible\" fill=\"black\" stroke=\"none\">\n"
                             : "<g id=\"visible\" fill=\"none\" stroke=\"black\" stroke-width=\"" +
       width + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
-  for (const DrawnLine& line : InPenOrder(std::move(visible)))
+  // A filled outline (WidthByDepth) goes round its line and closes where it
+  // began, so the pen is back at the end it entered by.
+  for (const DrawnLine& line : InPenOrder(std::move(visible), style.WidthByDepth))
   {
     std::string d;
     if (style.WidthByDepth)

@@ -130,7 +130,7 @@ private:
 } // namespace
 
 std::vector<PenStep> penOrder(
-  const std::vector<std::array<glm::dvec2, 2>>& ends, const glm::dvec2& start)
+  const std::vector<std::array<glm::dvec2, 2>>& ends, const glm::dvec2& start, bool backToEntry)
 {
   std::vector<PenStep> order;
   if (ends.empty())
@@ -146,7 +146,7 @@ std::vector<PenStep> penOrder(
     const End next = grid.nearest(pen, used);
     used[next.Line] = 1;
     order.push_back({ next.Line, next.Last });
-    pen = ends[next.Line][next.Last ? 0 : 1];
+    pen = ends[next.Line][next.Last != backToEntry ? 0 : 1];
   }
   return order;
 }

@@ -31,8 +31,10 @@ struct PenStep
 };
 
 /// The order to draw lines whose ends (first point, last point) are given,
-/// from `start`.
-std::vector<PenStep> penOrder(
-  const std::vector<std::array<glm::dvec2, 2>>& ends, const glm::dvec2& start);
+/// from `start`. With `backToEntry`, drawing a line brings the pen back to
+/// the end it entered by (a filled outline goes round its line and closes
+/// there), so the next line is looked for from that end.
+std::vector<PenStep> penOrder(const std::vector<std::array<glm::dvec2, 2>>& ends,
+  const glm::dvec2& start, bool backToEntry = false);
 
 } // namespace silsmooth

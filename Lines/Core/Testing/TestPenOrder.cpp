@@ -17,7 +17,7 @@ namespace
 using Ends = std::vector<std::array<glm::dvec2, 2>>;
 
 // Each step scans every line left: the rule itself, quadratic.
-std::vector<PenStep> scannedOrder(const Ends& ends, glm::dvec2 pen)
+std::vector<PenStep> scannedOrder(const Ends& ends, glm::dvec2 pen, bool backToEntry = false)
 {
   std::vector<PenStep> order;
   std::vector<bool> used(ends.size(), false);
@@ -34,7 +34,7 @@ std::vector<PenStep> scannedOrder(const Ends& ends, glm::dvec2 pen)
     const auto [distance, line, last] = best;
     used[line] = true;
     order.push_back({ line, last });
-    pen = ends[line][last ? 0 : 1];
+    pen = backToEntry ? ends[line][last ? 1 : 0] : ends[line][last ? 0 : 1];
   }
   return order;
 }
@@ -76,6 +76,30 @@ TEST(PenOrder, TakesTheNearestEndEachStepAsAScanOfEveryLineDoes)
         << ends.size() << " lines from " << start.x << ", " << start.y;
     }
   }
+}
+
+TEST(PenOrder, AnOutlineBringsThePenBackToTheEndItEnteredBy)
+{
+  // Outlines of lines from x to x + 100: the pen comes back where it went
+  // in, so it takes the lines in the order of their left ends' distance
+  // chain, each entered at its left end.
+  const Ends ends{ { glm::dvec2(300, 0), glm::dvec2(400, 0) },
+    { glm::dvec2(0, 10), glm::dvec2(100, 10) }, { glm::dvec2(20, 30), glm::dvec2(120, 30) } };
+  const std::vector<PenStep> loops = penOrder(ends, glm::dvec2(0.0), true);
+  EXPECT_TRUE(sameOrder(loops, scannedOrder(ends, glm::dvec2(0.0), true)));
+  ASSERT_EQ(loops.size(), 3u);
+  EXPECT_EQ(loops[0].Line, 1u);
+  EXPECT_EQ(loops[1].Line, 2u);
+  EXPECT_FALSE(loops[1].Reversed);
+  // Drawn as strokes, the pen leaves line 1 at x = 100, nearer line 2's
+  // right end.
+  const std::vector<PenStep> strokes = penOrder(ends, glm::dvec2(0.0));
+  EXPECT_EQ(strokes[1].Line, 2u);
+  EXPECT_TRUE(strokes[1].Reversed);
+  // And on many lines, step for step as the scan.
+  const Ends many = randomLines(2000, 800, 600, 40, 5);
+  EXPECT_TRUE(
+    sameOrder(penOrder(many, glm::dvec2(0.0), true), scannedOrder(many, glm::dvec2(0.0), true)));
 }
 
 TEST(PenOrder, TiesGoToTheLowerLineAndToItsFirstPoint)

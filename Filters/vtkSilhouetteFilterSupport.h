@@ -8,9 +8,10 @@
 #ifndef vtkSilhouetteFilterSupport_h
 #define vtkSilhouetteFilterSupport_h
 
-#include "vtkSilhouetteCheckedSetting.h"
-#include "vtkSilhouetteFittingArrays.h" // FittingArrays, part of this support // the checked setter macro, for the filters
-#include "vtkSilhouetteViewTracker.h" // ViewTracker, part of this support
+#include "vtkSilhouetteAttributeSources.h" // PointSource, part of this support
+#include "vtkSilhouetteCheckedSetting.h"   // the checked setter macro, for the filters
+#include "vtkSilhouetteFittingArrays.h"    // FittingArrays, part of this support
+#include "vtkSilhouetteViewTracker.h"      // ViewTracker, part of this support
 #include "vtkSmartPointer.h"
 #include "vtkTimeStamp.h"
 #include "vtkType.h"
@@ -136,13 +137,6 @@ struct PassedCells
   vtkIdType Dropped = 0;
 };
 PassedCells PassVertsAndLines(vtkPolyData* input);
-
-/// An added point as a weighted sum of input points (weights sum to one).
-struct PointSource
-{
-  std::array<vtkIdType, 3> Ids{ { 0, 0, 0 } };
-  std::array<double, 3> Weights{ { 1.0, 0.0, 0.0 } };
-};
 
 /// Writes a triangle mesh: the input's points (ids kept) followed by the added
 /// points, their point data (input arrays interpolated for added points), the

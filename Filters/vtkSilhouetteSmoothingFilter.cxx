@@ -21,6 +21,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "vtkSilhouetteAttributeSources.h"
 #include "vtkSilhouetteFilterSupport.h"
 #include "vtkSilhouetteSmoothingOutput.h"
 
@@ -99,44 +100,75 @@ void SMPFor(std::size_t count, const std::function<void(std::size_t, std::size_t
   });
 }
 
+// Fingerprints of bytes, in four independent lanes (the multiplications of
+// one would wait on each other).
+struct Fingerprint
+{
+  std::uint64_t Lanes[4] = { 1, 2, 3, 4 };
+
+  static std::uint64_t Mix(std::uint64_t h, std::uint64_t word)
+  {
+    h = (h ^ word) * 0xff51afd7ed558ccdULL;
+    return h ^ (h >> 32);
+  }
+  void Add(const void* data, std::size_t size)
+  {
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    std::size_t i = 0;
+    for (; i + 32 <= size; i += 32)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        std::uint64_t word;
+        std::memcpy(&word, bytes + i + 8 * k, 8);
+        this->Lanes[k] = Mix(this->Lanes[k], word);
+      }
+    }
+    for (; i < size; ++i)
+    {
+      this->Lanes[0] = Mix(this->Lanes[0], bytes[i]);
+    }
+    this->Lanes[1] = Mix(this->Lanes[1], size);
+  }
+  std::uint64_t Value() const
+  {
+    return Mix(Mix(Mix(this->Lanes[0], this->Lanes[1]), this->Lanes[2]), this->Lanes[3]);
+  }
+};
+
 // A fingerprint of the bytes of a cell array's offsets and connectivity.
 // VTK 9.1 leaves a cell array's MTime alone when its cells are edited in
 // place (ReplaceCellAtId, or values written into its arrays), so the
 // objects and their times cannot tell a deforming mesh from a re-wired one.
-// Four independent lanes (the multiplications of one would wait on each
-// other): about 7 ms at 1.3M triangles, paid only when the input changed.
+// About 7 ms at 1.3M triangles, paid only when the input changed.
 std::uint64_t CellContent(vtkCellArray* cells)
 {
-  auto mix = [](std::uint64_t h, std::uint64_t word) {
-    h = (h ^ word) * 0xff51afd7ed558ccdULL;
-    return h ^ (h >> 32);
-  };
-  std::uint64_t lanes[4] = { 1, 2, 3, 4 };
+  Fingerprint print;
   if (cells)
   {
     for (vtkDataArray* array : { cells->GetOffsetsArray(), cells->GetConnectivityArray() })
     {
-      const auto* bytes = static_cast<const unsigned char*>(array->GetVoidPointer(0));
-      const std::size_t size = static_cast<std::size_t>(array->GetNumberOfValues()) *
-        static_cast<std::size_t>(array->GetDataTypeSize());
-      std::size_t i = 0;
-      for (; i + 32 <= size; i += 32)
-      {
-        for (int k = 0; k < 4; ++k)
-        {
-          std::uint64_t word;
-          std::memcpy(&word, bytes + i + 8 * k, 8);
-          lanes[k] = mix(lanes[k], word);
-        }
-      }
-      for (; i < size; ++i)
-      {
-        lanes[0] = mix(lanes[0], bytes[i]);
-      }
-      lanes[1] = mix(lanes[1], size);
+      print.Add(array->GetVoidPointer(0),
+        static_cast<std::size_t>(array->GetNumberOfValues()) *
+          static_cast<std::size_t>(array->GetDataTypeSize()));
     }
   }
-  return mix(mix(mix(lanes[0], lanes[1]), lanes[2]), lanes[3]);
+  return print.Value();
+}
+
+// A fingerprint of the points and normals smoothing read (and the normals'
+// name, which the output's normals take): when it stays, so does every
+// position and normal the smoothing computes, whatever else of the input
+// changed.
+std::uint64_t GeometryContent(const vtkSilhouetteFilterSupport::Triangles& mesh, vtkPolyData* input)
+{
+  Fingerprint print;
+  print.Add(mesh.Points.data(), mesh.Points.size() * sizeof(glm::dvec3));
+  print.Add(mesh.Normals.data(), mesh.Normals.size() * sizeof(glm::dvec3));
+  vtkDataArray* normals = input->GetPointData()->GetNormals();
+  const char* name = normals && normals->GetName() ? normals->GetName() : "";
+  print.Add(name, std::strlen(name));
+  return print.Value();
 }
 
 // The input's cell arrays (which objects, their times and their contents)
@@ -184,6 +216,13 @@ struct vtkSilhouetteSmoothingFilter::Internals
   std::size_t Builds = 0;
   vtkPolyData* LastBase = nullptr;
   std::size_t LastBaseBuild = 0;
+  // The geometry smoothing reads (points, normals, cells, ghost flags): a
+  // fingerprint of the points and normals read, and the time any of it last
+  // changed. An input whose other arrays alone changed keeps it, and what
+  // BuildChanges made since then still holds for it.
+  std::uint64_t GeometryPrint = 0;
+  vtkTimeStamp GeometryTime;
+  vtkMTimeType LastBaseGeometry = 0; // GeometryTime when the base mesh was filled
   // Per triangle: a ghost cell (duplicate or hidden), never re-meshed; empty
   // when the input has no ghost array. Read again whenever the input changed.
   std::vector<unsigned char> Frozen;
@@ -228,6 +267,8 @@ std::string vtkSilhouetteSmoothingFilter::Internals::Rebuild(
   {
     return std::string(); // reported by the caller, on every request
   }
+  this->GeometryPrint = GeometryContent(mesh, input);
+  this->GeometryTime.Modified();
   this->Surface = std::make_unique<silsmooth::WeldedSurface>(std::move(mesh.Points),
     std::move(mesh.Cells), mesh.Normals, MarkedFeatures(input, useLines), options, SMPFor);
   this->CachedInput = input;
@@ -252,11 +293,19 @@ bool vtkSilhouetteSmoothingFilter::Internals::MovePoints(
   {
     return false;
   }
-  if (!this->Surface->movePoints(
-        std::move(mesh.Points), mesh.Normals, MarkedFeatures(input, useLines), options, SMPFor))
+  const std::uint64_t print = GeometryContent(mesh, input);
+  if (print != this->GeometryPrint &&
+    !this->Surface->movePoints(
+      std::move(mesh.Points), mesh.Normals, MarkedFeatures(input, useLines), options, SMPFor))
   {
     return false;
   }
+  if (print != this->GeometryPrint)
+  {
+    this->GeometryPrint = print;
+    this->GeometryTime.Modified();
+  }
+  // Else only the input's other arrays changed: the surface stands as it is.
   this->CachedInputTime = input->GetMTime();
   return true;
 }
@@ -303,18 +352,23 @@ bool vtkSilhouetteSmoothingFilter::Internals::Prepare(
   {
     // Ghost cells (a piece's copies of its neighbours' cells) count for the
     // normals and the adjacency but are the other piece's to re-mesh.
-    this->Frozen.clear();
+    std::vector<unsigned char> frozen;
     vtkUnsignedCharArray* ghosts = vtkArrayDownCast<vtkUnsignedCharArray>(
       input->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
     if (ghosts && ghosts->GetNumberOfValues() == input->GetNumberOfCells())
     {
       const unsigned char skip =
         vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL;
-      this->Frozen.resize(this->TriangleCell.size());
+      frozen.resize(this->TriangleCell.size());
       for (std::size_t t = 0; t < this->TriangleCell.size(); ++t)
       {
-        this->Frozen[t] = (ghosts->GetValue(this->TriangleCell[t]) & skip) != 0 ? 1 : 0;
+        frozen[t] = (ghosts->GetValue(this->TriangleCell[t]) & skip) != 0 ? 1 : 0;
       }
+    }
+    if (frozen != this->Frozen)
+    {
+      this->Frozen = std::move(frozen);
+      this->GeometryTime.Modified();
     }
     this->FrozenTime = input->GetMTime();
   }
@@ -615,9 +669,13 @@ int vtkSilhouetteSmoothingFilter::BuildBaseMeshUnguarded(vtkPolyData* input, vtk
   const silsmooth::SmoothingResult nothing;
   // The same build of the surface as `base` holds (only points moved
   // since): the same cells, so `base` keeps its cell arrays, and a renderer
-  // its index buffers; the points and every attribute are new.
+  // its index buffers; the points and every attribute are new. With the
+  // same geometry too (the input's other arrays alone changed), `base` also
+  // keeps its points and normals, and a renderer their buffers.
   const bool sameCells = base == internal.LastBase && internal.LastBaseBuild == internal.Builds &&
     base->GetNumberOfPoints() == static_cast<vtkIdType>(internal.Surface->outputPointCount());
+  const bool sameGeometry = sameCells && base->GetPoints() && base->GetPointData()->GetNormals() &&
+    internal.LastBaseGeometry == internal.GeometryTime.GetMTime();
   vtkNew<vtkPolyData> fresh;
   // A frame that re-meshes nothing adds and moves no point: only BuildCells'
   // triangles, which the same cells need not build again, are in it.
@@ -632,14 +690,29 @@ int vtkSilhouetteSmoothingFilter::BuildBaseMeshUnguarded(vtkPolyData* input, vtk
     frame =
       BuildCells(input, fresh, internal.TriangleCell, *internal.Surface, nothing, droppedCells);
   }
-  fresh->SetPoints(BuildPoints(
-    input, OutputPointType(input, this->OutputPointsPrecision), *internal.Surface, nothing, frame));
-  BuildPointData(input->GetPointData(), fresh->GetPointData(), input->GetNumberOfPoints(),
-    *internal.Surface, nothing, frame);
+  if (sameGeometry)
+  {
+    const vtkIdType numPoints = std::min(input->GetNumberOfPoints(), base->GetNumberOfPoints());
+    vtkSilhouetteFilterSupport::FillPointData(input->GetPointData(), fresh->GetPointData(),
+      numPoints,
+      PointSourcesOf(*internal.Surface, nothing, frame, numPoints, base->GetNumberOfPoints()));
+    fresh->GetPointData()->SetNormals(base->GetPointData()->GetNormals());
+  }
+  else
+  {
+    fresh->SetPoints(BuildPoints(input, OutputPointType(input, this->OutputPointsPrecision),
+      *internal.Surface, nothing, frame));
+    BuildPointData(input->GetPointData(), fresh->GetPointData(), input->GetNumberOfPoints(),
+      *internal.Surface, nothing, frame);
+  }
   fresh->GetFieldData()->PassData(input->GetFieldData());
+  internal.LastBaseGeometry = internal.GeometryTime.GetMTime();
   if (sameCells)
   {
-    base->SetPoints(fresh->GetPoints());
+    if (!sameGeometry)
+    {
+      base->SetPoints(fresh->GetPoints());
+    }
     base->GetPointData()->ShallowCopy(fresh->GetPointData());
     base->GetCellData()->ShallowCopy(fresh->GetCellData());
     base->GetFieldData()->ShallowCopy(fresh->GetFieldData());
@@ -655,6 +728,14 @@ int vtkSilhouetteSmoothingFilter::BuildChanges(vtkPolyData* input, vtkCamera* ca
   const double modelMatrix[16], int width, int height, vtkPolyData* changes,
   vtkIdTypeArray* replacedTriangles)
 {
+  return this->BuildChanges(
+    input, camera, modelMatrix, width, height, changes, replacedTriangles, nullptr);
+}
+
+int vtkSilhouetteSmoothingFilter::BuildChanges(vtkPolyData* input, vtkCamera* camera,
+  const double modelMatrix[16], int width, int height, vtkPolyData* changes,
+  vtkIdTypeArray* replacedTriangles, vtkSilhouetteFilterSupport::AttributeSources* sources)
+{
   if (!input || !camera || !changes || !replacedTriangles)
   {
     vtkErrorMacro("BuildChanges needs an input, a camera, a mesh and an array to fill.");
@@ -662,13 +743,18 @@ int vtkSilhouetteSmoothingFilter::BuildChanges(vtkPolyData* input, vtkCamera* ca
   }
   return GuardedBuild(this, input, [&] {
     return this->BuildChangesUnguarded(
-      input, camera, modelMatrix, width, height, changes, replacedTriangles);
+      input, camera, modelMatrix, width, height, changes, replacedTriangles, sources);
   });
+}
+
+vtkMTimeType vtkSilhouetteSmoothingFilter::GetGeometryTime() const
+{
+  return this->Internal->GeometryTime.GetMTime();
 }
 
 int vtkSilhouetteSmoothingFilter::BuildChangesUnguarded(vtkPolyData* input, vtkCamera* camera,
   const double modelMatrix[16], int width, int height, vtkPolyData* changes,
-  vtkIdTypeArray* replacedTriangles)
+  vtkIdTypeArray* replacedTriangles, vtkSilhouetteFilterSupport::AttributeSources* sources)
 {
   if (this->MinimumSamples > this->MaximumSamples)
   {
@@ -695,11 +781,21 @@ int vtkSilhouetteSmoothingFilter::BuildChangesUnguarded(vtkPolyData* input, vtkC
   const silsmooth::SurfaceFrame frame = internal.Surface->assembleChanges(result);
   const UsedPoints used(frame.Triangles, internal.Surface->outputPointCount() + frame.Added.size());
   changes->Initialize();
-  BuildChangedCells(input, changes, internal.TriangleCell, frame, used);
+  std::vector<vtkIdType> cellSources =
+    BuildChangedCells(input, changes, internal.TriangleCell, frame, used);
   changes->SetPoints(BuildPoints(input, OutputPointType(input, this->OutputPointsPrecision),
     *internal.Surface, result, frame, &used.ids()));
-  BuildPointData(input->GetPointData(), changes->GetPointData(), input->GetNumberOfPoints(),
-    *internal.Surface, result, frame, &used.ids());
+  std::vector<vtkSilhouetteFilterSupport::PointSource> pointSources = PointSourcesOf(
+    *internal.Surface, result, frame, 0, static_cast<vtkIdType>(used.ids().size()), &used.ids());
+  vtkSilhouetteFilterSupport::FillPointData(
+    input->GetPointData(), changes->GetPointData(), 0, pointSources);
+  changes->GetPointData()->SetNormals(
+    ShadingNormals(input->GetPointData(), *internal.Surface, result, frame, &used.ids()));
+  if (sources)
+  {
+    sources->Points = std::move(pointSources);
+    sources->Cells = std::move(cellSources);
+  }
   replacedTriangles->SetNumberOfComponents(1);
   replacedTriangles->SetNumberOfValues(static_cast<vtkIdType>(frame.ReplacedTriangles.size()));
   std::copy(frame.ReplacedTriangles.begin(), frame.ReplacedTriangles.end(),
@@ -742,9 +838,9 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
             : "?")
      << "\n";
   os << indent << "OutputPointsPrecision: "
-     << (this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION
-            ? "Single"
-            : this->OutputPointsPrecision == vtkAlgorithm::DOUBLE_PRECISION ? "Double" : "Default")
+     << (this->OutputPointsPrecision == vtkAlgorithm::SINGLE_PRECISION      ? "Single"
+            : this->OutputPointsPrecision == vtkAlgorithm::DOUBLE_PRECISION ? "Double"
+                                                                            : "Default")
      << "\n";
   os << indent << "VisibilityMethod: "
      << (this->VisibilityMethod == HIERARCHICAL ? "Hierarchical" : "PerVertex") << "\n";

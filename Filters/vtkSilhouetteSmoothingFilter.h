@@ -99,6 +99,11 @@
 
 class vtkCamera;
 class vtkIdTypeArray;
+class vtkSilhouetteSmoothingMapper;
+namespace vtkSilhouetteFilterSupport
+{
+struct AttributeSources;
+}
 
 class SILHOUETTESMOOTHINGFILTERSSILHOUETTE_EXPORT vtkSilhouetteSmoothingFilter
   : public vtkSilhouetteViewAlgorithm
@@ -436,9 +441,28 @@ protected:
   vtkSilhouetteSmoothingFilter();
   ~vtkSilhouetteSmoothingFilter() override;
 
+  ///@{
+  /**
+   * For vtkSilhouetteSmoothingMapper. BuildChanges, and where the changes'
+   * points and cells take their attributes from in `input`
+   * (vtkSilhouetteFilterSupport::RefillAttributes fills them again from new
+   * arrays). GetGeometryTime: the time the geometry smoothing reads (points,
+   * normals, cells, ghost flags) last changed, as of the last BuildBaseMesh or
+   * BuildChanges; what BuildChanges made since then still holds for the
+   * input, whatever else of it changed (its other arrays). BuildBaseMesh
+   * keeps the base mesh's points and normals while it stays.
+   */
+  friend class vtkSilhouetteSmoothingMapper;
+  int BuildChanges(vtkPolyData* input, vtkCamera* camera, const double modelMatrix[16], int width,
+    int height, vtkPolyData* changes, vtkIdTypeArray* replacedTriangles,
+    vtkSilhouetteFilterSupport::AttributeSources* sources);
+  vtkMTimeType GetGeometryTime() const;
+  ///@}
+
   int BuildBaseMeshUnguarded(vtkPolyData* input, vtkPolyData* base);
   int BuildChangesUnguarded(vtkPolyData* input, vtkCamera* camera, const double modelMatrix[16],
-    int width, int height, vtkPolyData* changes, vtkIdTypeArray* replacedTriangles);
+    int width, int height, vtkPolyData* changes, vtkIdTypeArray* replacedTriangles,
+    vtkSilhouetteFilterSupport::AttributeSources* sources);
 
   int RequestViewData(vtkInformation*, vtkInformationVector**, vtkInformationVector*,
     const vtkSilhouetteFilterSupport::View& view) override;

@@ -24,6 +24,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "vtkSilhouetteAttributeSources.h"
 #include "vtkSilhouetteFilterSupport.h"
 
 #include "ShadingNormals.h"
@@ -44,81 +45,6 @@
 
 namespace
 {
-
-// The source with the largest weight: the value an added point takes of an
-// array that cannot be interpolated (ids, labels, strings).
-vtkIdType NearestSource(
-  const silsmooth::SurfaceFrame::AddedPoint& added, const silsmooth::SmoothingResult& result)
-{
-  const std::array<double, 3>& w = result.NewPoints[added.NewPoint].Weights;
-  const std::size_t k = w[0] >= w[1] && w[0] >= w[2] ? 0 : (w[1] >= w[2] ? 1 : 2);
-  return static_cast<vtkIdType>(added.Sources[k]);
-}
-
-// Copies of every input array that VTK's attribute rules left out (vtkIdType
-// and string arrays, global and pedigree ids): from[i] is the input tuple of
-// output tuple i. They come out as plain arrays under their own names: ids
-// repeated on copies are no longer unique.
-void AddUncopiedArrays(vtkDataSetAttributes* in, vtkDataSetAttributes* out,
-  const std::vector<vtkIdType>& from, const char* skip)
-{
-  for (int a = 0; a < in->GetNumberOfArrays(); ++a)
-  {
-    vtkAbstractArray* array = in->GetAbstractArray(a);
-    if (!array->GetName() || out->GetAbstractArray(array->GetName()) ||
-      (skip && std::strcmp(array->GetName(), skip) == 0))
-    {
-      continue;
-    }
-    vtkSmartPointer<vtkAbstractArray> copy = vtk::TakeSmartPointer(array->NewInstance());
-    copy->SetName(array->GetName());
-    copy->SetNumberOfComponents(array->GetNumberOfComponents());
-    copy->SetNumberOfTuples(static_cast<vtkIdType>(from.size()));
-    for (std::size_t i = 0; i < from.size(); ++i)
-    {
-      copy->SetTuple(static_cast<vtkIdType>(i), from[i], array);
-    }
-    out->AddArray(copy);
-  }
-}
-
-// Output cell c takes the data of input cell origin[c] (the arrays VTK's
-// rules leave out as plain copies), with NewGeometry and `OriginalCellId`
-// (origin composed with an input array of that name).
-void CellDataFrom(vtkCellData* in, vtkCellData* out, const std::vector<vtkIdType>& origin,
-  vtkUnsignedCharArray* newGeometry)
-{
-  const vtkIdType count = static_cast<vtkIdType>(origin.size());
-  if (in->GetNumberOfArrays() > 0)
-  {
-    vtkNew<vtkIdList> source;
-    source->SetNumberOfIds(count);
-    std::copy(origin.begin(), origin.end(), source->begin());
-    vtkNew<vtkIdList> destination;
-    destination->SetNumberOfIds(count);
-    std::iota(destination->begin(), destination->end(), vtkIdType{ 0 });
-    out->CopyAllOn();
-    out->CopyAllocate(in, count);
-    out->CopyData(in, source, destination);
-    AddUncopiedArrays(in, out, origin, "OriginalCellId");
-  }
-  vtkDataArray* inOriginal = in->GetArray("OriginalCellId");
-  vtkNew<vtkIdTypeArray> originalCellId;
-  originalCellId->SetName("OriginalCellId");
-  originalCellId->SetNumberOfValues(count);
-  vtkIdType* originalIds = originalCellId->GetPointer(0);
-  for (vtkIdType c = 0; c < count; ++c)
-  {
-    const vtkIdType from = origin[static_cast<std::size_t>(c)];
-    originalIds[c] = inOriginal ? static_cast<vtkIdType>(inOriginal->GetTuple1(from)) : from;
-  }
-  if (out->GetAbstractArray("OriginalCellId"))
-  {
-    out->RemoveArray("OriginalCellId");
-  }
-  out->AddArray(newGeometry);
-  out->AddArray(originalCellId);
-}
 
 // The number of zero bits below the lowest set bit of bits (not 0).
 std::size_t countTrailingZeros(std::uint64_t bits)
@@ -219,6 +145,36 @@ vtkSmartPointer<vtkPoints> BuildPoints(vtkPolyData* input, int pointType,
   return points;
 }
 
+std::vector<vtkSilhouetteFilterSupport::PointSource> PointSourcesOf(
+  const silsmooth::WeldedSurface& surface, const silsmooth::SmoothingResult& result,
+  const silsmooth::SurfaceFrame& frame, vtkIdType first, vtkIdType end,
+  const std::vector<vtkIdType>* only)
+{
+  using vtkSilhouetteFilterSupport::PointSource;
+  const vtkIdType base = static_cast<vtkIdType>(surface.outputPointCount());
+  std::vector<PointSource> sources;
+  sources.reserve(static_cast<std::size_t>(end - first));
+  for (vtkIdType i = first; i < end; ++i)
+  {
+    const vtkIdType o = only ? (*only)[static_cast<std::size_t>(i)] : i;
+    if (o < base)
+    {
+      sources.push_back(PointSource::Copy(surface.outputSource(o)));
+      continue;
+    }
+    const silsmooth::SurfaceFrame::AddedPoint& added =
+      frame.Added[static_cast<std::size_t>(o - base)];
+    PointSource source;
+    for (std::size_t k = 0; k < 3; ++k)
+    {
+      source.Ids[k] = static_cast<vtkIdType>(added.Sources[k]);
+    }
+    source.Weights = result.NewPoints[added.NewPoint].Weights;
+    sources.push_back(source);
+  }
+  return sources;
+}
+
 void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
   const silsmooth::WeldedSurface& surface, const silsmooth::SmoothingResult& result,
   const silsmooth::SurfaceFrame& frame, const std::vector<vtkIdType>* only)
@@ -226,96 +182,30 @@ void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
   const vtkIdType base = static_cast<vtkIdType>(surface.outputPointCount());
   const vtkIdType total =
     only ? static_cast<vtkIdType>(only->size()) : base + static_cast<vtkIdType>(frame.Added.size());
-  auto outputOf = [only](vtkIdType i) {
-    return only ? (*only)[static_cast<std::size_t>(i)] : i;
-  };
+  // Input points keep their ids in the whole output: copied as one block.
+  const vtkIdType leading = only ? 0 : std::min(numPoints, total);
+  vtkSilhouetteFilterSupport::FillPointData(
+    in, out, leading, PointSourcesOf(surface, result, frame, leading, total, only));
+  out->SetNormals(ShadingNormals(in, surface, result, frame, only));
+}
+
+vtkSmartPointer<vtkFloatArray> ShadingNormals(vtkPointData* in,
+  const silsmooth::WeldedSurface& surface, const silsmooth::SmoothingResult& result,
+  const silsmooth::SurfaceFrame& frame, const std::vector<vtkIdType>* only)
+{
+  const vtkIdType base = static_cast<vtkIdType>(surface.outputPointCount());
+  const vtkIdType total =
+    only ? static_cast<vtkIdType>(only->size()) : base + static_cast<vtkIdType>(frame.Added.size());
   vtkDataArray* inNormals = in->GetNormals();
-  vtkDataArray* inOriginal = in->GetArray("OriginalPointId");
-  out->CopyAllOn();
-  out->CopyNormalsOff();
-  out->InterpolateAllocate(in, total);
-  vtkNew<vtkIdList> sources;
-  sources->SetNumberOfIds(3);
-  auto interpolate = [&](const silsmooth::SurfaceFrame::AddedPoint& added, vtkIdType id) {
-    for (int k = 0; k < 3; ++k)
-    {
-      sources->SetId(k, added.Sources[static_cast<std::size_t>(k)]);
-    }
-    const std::array<double, 3>& w = result.NewPoints[added.NewPoint].Weights;
-    double weights[3] = { w[0], w[1], w[2] };
-    out->InterpolatePoint(in, id, sources, weights);
-  };
-  if (only)
-  {
-    for (vtkIdType i = 0; i < total; ++i)
-    {
-      const vtkIdType o = outputOf(i);
-      if (o < base)
-      {
-        out->CopyData(in, surface.outputSource(o), i);
-      }
-      else
-      {
-        interpolate(frame.Added[static_cast<std::size_t>(o - base)], i);
-      }
-    }
-  }
-  else
-  {
-    if (numPoints > 0)
-    {
-      out->CopyData(in, 0, numPoints, 0);
-    }
-    for (vtkIdType id = numPoints; id < base; ++id)
-    {
-      out->CopyData(in, surface.outputSource(id), id);
-    }
-    vtkIdType id = base;
-    for (const silsmooth::SurfaceFrame::AddedPoint& added : frame.Added)
-    {
-      interpolate(added, id++);
-    }
-  }
-  if (inNormals && inNormals->GetName() && out->GetArray(inNormals->GetName()))
-  {
-    out->RemoveArray(inNormals->GetName());
-  }
-
-  std::vector<vtkIdType> from(static_cast<std::size_t>(total));
-  for (vtkIdType i = 0; i < total; ++i)
-  {
-    const vtkIdType o = outputOf(i);
-    from[static_cast<std::size_t>(i)] = o < base
-      ? surface.outputSource(o)
-      : NearestSource(frame.Added[static_cast<std::size_t>(o - base)], result);
-  }
-  AddUncopiedArrays(in, out, from, inNormals ? inNormals->GetName() : nullptr);
-
-  vtkNew<vtkIdTypeArray> original;
-  original->SetName("OriginalPointId");
-  original->SetNumberOfValues(total);
-  for (vtkIdType i = 0; i < total; ++i)
-  {
-    const vtkIdType o = outputOf(i);
-    const vtkIdType source = o < base ? surface.outputSource(o) : -1;
-    original->SetValue(i,
-      source >= 0 && inOriginal ? static_cast<vtkIdType>(inOriginal->GetTuple1(source)) : source);
-  }
-  if (out->GetAbstractArray("OriginalPointId"))
-  {
-    out->RemoveArray("OriginalPointId");
-  }
-  out->AddArray(original);
-
   const silsmooth::PreparedMesh& mesh = surface.prepared();
-  vtkNew<vtkFloatArray> normals;
+  auto normals = vtkSmartPointer<vtkFloatArray>::New();
   normals->SetName(inNormals && inNormals->GetName() ? inNormals->GetName() : "Normals");
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(total);
   float* n = normals->GetPointer(0);
   for (vtkIdType i = 0; i < total; ++i)
   {
-    const vtkIdType o = outputOf(i);
+    const vtkIdType o = only ? (*only)[static_cast<std::size_t>(i)] : i;
     const glm::dvec3& oriented = o < base
       ? mesh.normals()[static_cast<std::size_t>(surface.outputPrepared(o))]
       : result.NewPoints[frame.Added[static_cast<std::size_t>(o - base)].NewPoint].Normal;
@@ -327,7 +217,7 @@ void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
     *n++ = static_cast<float>(normal.y);
     *n++ = static_cast<float>(normal.z);
   }
-  out->SetNormals(normals);
+  return normals;
 }
 
 silsmooth::SurfaceFrame BuildCells(vtkPolyData* input, vtkPolyData* output,
@@ -370,7 +260,8 @@ silsmooth::SurfaceFrame BuildCells(vtkPolyData* input, vtkPolyData* output,
   polys->SetData(offsets, connectivity);
   output->SetPolys(polys);
 
-  CellDataFrom(input->GetCellData(), output->GetCellData(), origin, newGeometry);
+  vtkSilhouetteFilterSupport::FillCellData(
+    input->GetCellData(), output->GetCellData(), origin, newGeometry);
   return frame;
 }
 
@@ -383,7 +274,7 @@ void BuildBaseCellData(
   newGeometry->SetName("NewGeometry");
   newGeometry->SetNumberOfValues(static_cast<vtkIdType>(origin.size()));
   newGeometry->FillValue(0);
-  CellDataFrom(input->GetCellData(), output, origin, newGeometry);
+  vtkSilhouetteFilterSupport::FillCellData(input->GetCellData(), output, origin, newGeometry);
 }
 
 UsedPoints::UsedPoints(const std::vector<silsmooth::Triangle>& triangles, std::size_t pointCount)
@@ -417,7 +308,7 @@ vtkIdType UsedPoints::indexOf(silsmooth::Id id) const
   return this->Before[i / 64] + static_cast<vtkIdType>(std::bitset<64>(below).count());
 }
 
-void BuildChangedCells(vtkPolyData* input, vtkPolyData* changes,
+std::vector<vtkIdType> BuildChangedCells(vtkPolyData* input, vtkPolyData* changes,
   const std::vector<vtkIdType>& triangleCell, const silsmooth::SurfaceFrame& frame,
   const UsedPoints& used)
 {
@@ -452,7 +343,9 @@ void BuildChangedCells(vtkPolyData* input, vtkPolyData* changes,
       triangleCell[static_cast<std::size_t>(frame.SourceTriangle[static_cast<std::size_t>(c)])];
     newGeometry->SetValue(c, frame.Kind[static_cast<std::size_t>(c)]);
   }
-  CellDataFrom(input->GetCellData(), changes->GetCellData(), origin, newGeometry);
+  vtkSilhouetteFilterSupport::FillCellData(
+    input->GetCellData(), changes->GetCellData(), origin, newGeometry);
+  return origin;
 }
 
 void BuildSilhouetteLines(

@@ -7,6 +7,8 @@
 #ifndef vtkSilhouetteSmoothingOutput_h
 #define vtkSilhouetteSmoothingOutput_h
 
+#include "vtkFloatArray.h"
+#include "vtkSilhouetteAttributeSources.h"
 #include "vtkSmartPointer.h"
 #include "vtkType.h"
 
@@ -48,6 +50,19 @@ void BuildPointData(vtkPointData* in, vtkPointData* out, vtkIdType numPoints,
   const silsmooth::WeldedSurface& surface, const silsmooth::SmoothingResult& result,
   const silsmooth::SurfaceFrame& frame, const std::vector<vtkIdType>* only = nullptr);
 
+// Where output points first..end-1 (with `only`, points only[first] ..
+// only[end - 1]) take their attributes from: BuildPointData's sources.
+std::vector<vtkSilhouetteFilterSupport::PointSource> PointSourcesOf(
+  const silsmooth::WeldedSurface& surface, const silsmooth::SmoothingResult& result,
+  const silsmooth::SurfaceFrame& frame, vtkIdType first, vtkIdType end,
+  const std::vector<vtkIdType>* only = nullptr);
+
+// BuildPointData's shading normals (as the input's own winding faces),
+// named as the input's normals, else "Normals".
+vtkSmartPointer<vtkFloatArray> ShadingNormals(vtkPointData* in,
+  const silsmooth::WeldedSurface& surface, const silsmooth::SmoothingResult& result,
+  const silsmooth::SurfaceFrame& frame, const std::vector<vtkIdType>* only = nullptr);
+
 // Verts and lines pass through (PassVertsAndLines: `droppedCells` counts the
 // ones left out); polygons and strips become the frame's triangles, written
 // by the surface straight into the cell arrays. `OriginalCellId` is composed
@@ -86,8 +101,8 @@ private:
 // A frame's changes (WeldedSurface::assembleChanges) as a mesh of their own:
 // the triangles over the output points they use (`used`), each with its
 // input cell's data, NewGeometry and OriginalCellId as the whole output
-// gives them.
-void BuildChangedCells(vtkPolyData* input, vtkPolyData* changes,
+// gives them. Returns the input cell of each changed cell.
+std::vector<vtkIdType> BuildChangedCells(vtkPolyData* input, vtkPolyData* changes,
   const std::vector<vtkIdType>& triangleCell, const silsmooth::SurfaceFrame& frame,
   const UsedPoints& used);
 

@@ -17,6 +17,7 @@
 #include "vtkPolyData.h"
 #include "vtkProperty.h"
 #include "vtkRenderer.h"
+#include "vtkSilhouetteAttributeSources.h"
 #include "vtkSilhouetteFittingArrays.h"
 #include "vtkSilhouettePatchedMapper.h"
 #include "vtkSilhouetteSmoothingFilter.h"
@@ -111,6 +112,12 @@ struct ViewPatch
   bool DrawsChanges = false;
   std::vector<vtkIdType> Hidden;
   std::vector<vtkIdType> PointSources;
+  // Where the patch's points and cells take their attributes from in the
+  // input, and the smoothing's geometry time when it was made: while that
+  // stays, an input whose other arrays change (new scalars on a still mesh)
+  // refills the patch's arrays instead of smoothing again.
+  vtkSilhouetteFilterSupport::AttributeSources Sources;
+  vtkMTimeType GeometryTime = 0;
   // The figures the mapper reports for this view.
   vtkIdType ReplacedTriangles = 0;
   vtkIdType PatchTriangles = 0;
@@ -197,6 +204,10 @@ struct vtkSilhouetteSmoothingMapper::Internals
     {
       return this->Usable;
     }
+    // The same input object with the same settings may keep its patches
+    // (RefreshPatches).
+    const bool mayKeepPatches =
+      input == this->BaseInput && settings == this->BaseSettingsTime && this->BaseReady;
     this->BaseInput = input;
     this->BaseInputTime = input->GetMTime();
     this->BaseSettingsTime = settings;
@@ -217,7 +228,6 @@ struct vtkSilhouetteSmoothingMapper::Internals
     this->Base->Modified(); // refilled in place: the buffers are built again
     // Selection reports the input's cell ids for the base mesh's cells.
     this->Drawn->SetCellIdArrayName(this->BaseReady ? "OriginalCellId" : nullptr);
-    this->Forget();
     this->Ghosts.clear();
     vtkPolyData* drawn = this->BaseReady ? this->Base.Get() : input;
     vtkUnsignedCharArray* ghosts = vtkArrayDownCast<vtkUnsignedCharArray>(
@@ -235,7 +245,33 @@ struct vtkSilhouetteSmoothingMapper::Internals
         }
       }
     }
+    if (mayKeepPatches && this->BaseReady)
+    {
+      this->RefreshPatches(self, input);
+    }
+    else
+    {
+      this->Forget();
+    }
     return input;
+  }
+
+  // After a change of the input's arrays alone, the patches of the same
+  // geometry take the new arrays; the others are forgotten. The patch drawn
+  // is handed to the drawing mapper again.
+  void RefreshPatches(vtkSilhouetteSmoothingMapper* self, vtkPolyData* input)
+  {
+    const vtkMTimeType geometry = this->Smoother->GetGeometryTime();
+    for (ViewPatch& patch : this->Patches)
+    {
+      patch.Valid = patch.Valid && patch.GeometryTime == geometry &&
+        (!patch.DrawsChanges ||
+          vtkSilhouetteFilterSupport::RefillAttributes(input, patch.Sources, patch.Changes));
+    }
+    if (this->Patches[this->Current].Valid)
+    {
+      this->Show(self, this->Patches[this->Current]);
+    }
   }
 
   // Hands `patch` to the drawing mapper and its figures to `self`.
@@ -268,12 +304,14 @@ struct vtkSilhouetteSmoothingMapper::Internals
     patch.ReplacedTriangles = patch.PatchTriangles = patch.CulledTriangles = 0;
     patch.SilhouetteTriangles = patch.NewTriangles = 0;
     ++self->SmoothingRunCount;
+    patch.GeometryTime = this->Smoother->GetGeometryTime();
     if (!smooth || width <= 0 || height <= 0 ||
       !this->Smoother->BuildChanges(
-        input, camera, model, width, height, patch.Changes, patch.Replaced))
+        input, camera, model, width, height, patch.Changes, patch.Replaced, &patch.Sources))
     {
       return;
     }
+    patch.GeometryTime = this->Smoother->GetGeometryTime();
     const vtkIdType* replaced = patch.Replaced->GetPointer(0);
     patch.Hidden.clear();
     std::set_union(replaced, replaced + patch.Replaced->GetNumberOfValues(), this->Ghosts.begin(),

@@ -21,7 +21,10 @@
  * changed since the last frame) and draws the replacements from a small
  * buffer of their own. The image is the filter's output drawn by a
  * vtkPolyDataMapper, but for rasterisation order (module test
- * TestSmoothingMapper).
+ * TestSmoothingMapper). A change of the input's arrays alone (new scalars
+ * on a still mesh) smooths nothing again: the mesh keeps its points and
+ * normals, and each view's replacements take the new values as the
+ * smoothing would have given them (module test TestSmoothingMapperUpdates).
  *
  * It colours as vtkPolyDataMapper does (scalar visibility and mode, lookup
  * table, colour mode, point and cell scalars, texture coordinates; the

@@ -29,13 +29,20 @@
 // rendered but not counted (one-off work: the kept buffers' first fill, the
 // fold guard's grid).
 //
+// Then new point values every frame on the still mesh (a time series of
+// values): the plain mapper colouring by them, the mapper (whose patches
+// take the new values without smoothing again) and the mapper made to build
+// everything anew, with the same columns.
+//
 // Usage: mapper_benchmark [--frames N] [--levels L1,L2,...] [--size WxH]
 //                         [--deform-step S]
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
+#include "vtkFloatArray.h"
 #include "vtkIcosphereSource.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
@@ -47,6 +54,7 @@
 #include "BenchmarkTiming.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -254,11 +262,10 @@ struct Deforming : Scene
   {
   }
 
-  // Stretches the copy along x by `scale` and renders it; with Rebuild, the
-  // cells count as changed too.
+  // Stretches the copy along x by `scale` and renders it.
   double Frame(double scale)
   {
-    const double ms = benchmark_timing::Milliseconds([&]() {
+    return this->Render([&]() {
       vtkPoints* points = this->Mesh->GetPoints();
       for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
       {
@@ -267,6 +274,32 @@ struct Deforming : Scene
         points->SetPoint(p, x[0] * scale, x[1], x[2]);
       }
       points->Modified();
+    });
+  }
+
+  // Writes new point values (a wave along x, shifted by `frame`) and renders
+  // the mesh.
+  double Recolour(int frame)
+  {
+    return this->Render([&]() {
+      vtkDataArray* values = this->Mesh->GetPointData()->GetScalars();
+      for (vtkIdType p = 0; p < values->GetNumberOfTuples(); ++p)
+      {
+        double x[3];
+        this->Mesh->GetPoint(p, x);
+        values->SetTuple1(p, std::sin(8.0 * x[0] + 0.3 * frame));
+      }
+      values->Modified();
+    });
+  }
+
+  // The frame's time: `change`, then the render; with Rebuild, the cells
+  // count as changed too.
+  template<typename ChangeMesh>
+  double Render(ChangeMesh change)
+  {
+    const double ms = benchmark_timing::Milliseconds([&]() {
+      change();
       if (this->Rebuild)
       {
         this->Mesh->GetPolys()->Modified();
@@ -282,37 +315,56 @@ struct Deforming : Scene
   }
 };
 
-void MeasureDeforming(vtkPolyData* mesh, const Options& options)
+// What changes each frame of the still camera's measures.
+enum class Change
+{
+  Points, // the mesh deforms
+  Values  // new point values on the still mesh
+};
+
+// Plain, mapper and anew under `change`, frame by frame in turn.
+void MeasureChanges(vtkPolyData* mesh, const Options& options, Change change)
 {
   Deforming still("plain", false);
-  Deforming moving("mapper", false);
+  Deforming smoothing("mapper", false);
   Deforming anew("anew", true);
-  Deforming* deforming[3] = { &still, &moving, &anew };
+  Deforming* variants[3] = { &still, &smoothing, &anew };
   vtkNew<vtkPolyDataMapper> stillMapper;
-  vtkNew<vtkSilhouetteSmoothingMapper> movingMapper;
+  vtkNew<vtkSilhouetteSmoothingMapper> smoothingMapper;
   vtkNew<vtkSilhouetteSmoothingMapper> anewMapper;
-  vtkPolyDataMapper* mappers[3] = { stillMapper, movingMapper, anewMapper };
+  vtkPolyDataMapper* mappers[3] = { stillMapper, smoothingMapper, anewMapper };
   for (int k = 0; k < 3; ++k)
   {
-    Deforming* d = deforming[k];
+    Deforming* d = variants[k];
     d->Mesh->DeepCopy(mesh);
     mappers[k]->SetInputData(d->Mesh);
     mappers[k]->ScalarVisibilityOff();
+    if (change == Change::Values)
+    {
+      vtkNew<vtkFloatArray> values;
+      values->SetName("Values");
+      values->SetNumberOfValues(mesh->GetNumberOfPoints());
+      values->FillValue(0.0f);
+      d->Mesh->GetPointData()->SetScalars(values);
+      mappers[k]->ScalarVisibilityOn();
+      mappers[k]->SetScalarModeToUsePointData();
+      mappers[k]->SetScalarRange(-1.0, 1.0);
+    }
     d->Smoothing = vtkSilhouetteSmoothingMapper::SafeDownCast(mappers[k]);
     d->Actor->SetMapper(mappers[k]);
     d->SetUp(mesh, options);
   }
-  // The first moves do one-off work (the kept buffers' first fill, the fold
-  // guard's grid on the second frame): rendered, not counted, so the medians
-  // are the steady frames a time series pays.
+  // The first changes do one-off work (the kept buffers' first fill, the
+  // fold guard's grid on the second frame): rendered, not counted, so the
+  // medians are the steady frames a time series pays.
   const int warmUpFrames = 3;
-  const int deformFrames = std::max(5, options.Frames / 2);
-  for (int f = 0; f < warmUpFrames + deformFrames; ++f)
+  const int changeFrames = std::max(5, options.Frames / 2);
+  for (int f = 0; f < warmUpFrames + changeFrames; ++f)
   {
     const double scale = f % 2 == 0 ? 1.0 + options.DeformStep : 1.0 / (1.0 + options.DeformStep);
-    for (Deforming* d : deforming)
+    for (Deforming* d : variants)
     {
-      const double ms = d->Frame(scale);
+      const double ms = change == Change::Points ? d->Frame(scale) : d->Recolour(f);
       if (f < warmUpFrames)
       {
         d->PrepareMs.clear();
@@ -324,21 +376,21 @@ void MeasureDeforming(vtkPolyData* mesh, const Options& options)
   const double anewMs = benchmark_timing::Median(anew.FrameMs);
   const double stillMs = benchmark_timing::Median(still.FrameMs);
   const double anewPrepareMs = benchmark_timing::Median(anew.PrepareMs);
-  for (Deforming* d : deforming)
+  for (Deforming* d : variants)
   {
     const double ms = benchmark_timing::Median(d->FrameMs);
-    char smoothing[32] = "-";
+    char work[32] = "-";
     char preparation[48] = "";
     if (d->Smoothing)
     {
       const double prepareMs = benchmark_timing::Median(d->PrepareMs);
-      std::snprintf(smoothing, sizeof(smoothing), "%.2f", prepareMs);
+      std::snprintf(work, sizeof(work), "%.2f", prepareMs);
       std::snprintf(
         preparation, sizeof(preparation), "; smoothing / anew's %.2f", prepareMs / anewPrepareMs);
     }
-    std::printf("%10lld  %-7s %10.1f %10.2f %12s   deforming; / anew %.2f%s\n",
-      static_cast<long long>(mesh->GetNumberOfPolys()), d->Name, ms, ms / stillMs, smoothing,
-      ms / anewMs, preparation);
+    std::printf("%10lld  %-7s %10.1f %10.2f %12s   %s; / anew %.2f%s\n",
+      static_cast<long long>(mesh->GetNumberOfPolys()), d->Name, ms, ms / stillMs, work,
+      change == Change::Points ? "deforming" : "new values", ms / anewMs, preparation);
   }
   std::fflush(stdout);
 }
@@ -360,7 +412,8 @@ int main(int argc, char* argv[])
     sphere->SetSubdivisionLevel(level);
     sphere->Update();
     MeasureOrbit(sphere->GetOutput(), options);
-    MeasureDeforming(sphere->GetOutput(), options);
+    MeasureChanges(sphere->GetOutput(), options, Change::Points);
+    MeasureChanges(sphere->GetOutput(), options, Change::Values);
   }
   return 0;
 }

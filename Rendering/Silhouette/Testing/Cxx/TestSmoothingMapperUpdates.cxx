@@ -2,8 +2,9 @@
 // points, the same cells) keeps the base mesh's cells and draws what the
 // filter's output draws, frame after frame; and one mapper drawn in two
 // views in turn keeps both views' patches (TestSmoothingMapper has the
-// cases of one view). Besides: the input's own lines, whose points get no
-// normal, are lit as facing the viewer, not drawn black.
+// cases of one view); new values on a still mesh do not smooth again.
+// Besides: the input's own lines, whose points get no normal, are lit as
+// facing the viewer, not drawn black.
 
 #include "MapperTestScene.h"
 #include "SilhouetteTestSupport.h"
@@ -595,6 +596,130 @@ bool CheckMissingPointsAreNotDrawn(vtkPolyData* bunny)
   return true;
 }
 
+// A change of the input's arrays alone (new scalars on a still mesh, each
+// frame of a time series of values) does not smooth again: the patch takes
+// the new values (vtkSilhouetteFilterSupport::RefillAttributes), and the
+// image equals a fresh mapper's. Points written in place with only the
+// mesh marked modified, and new ghost flags, are geometry: they smooth
+// again. Until 2026-12-06 every such change smoothed again (a user's
+// trial: a frame 1.6 to 2 times a plain mapper's); the wrong variants are a
+// patch kept with its old values (the image differs along the outline) and
+// a change told by the points' modification time (step 4 keeps the old
+// outline).
+bool CheckArraysAloneDoNotSmoothAgain(vtkPolyData* bunny)
+{
+  vtkNew<vtkPolyData> still;
+  still->DeepCopy(bunny);
+  vtkNew<vtkFloatArray> wave;
+  wave->SetName("Wave");
+  wave->SetNumberOfValues(still->GetNumberOfPoints());
+  vtkNew<vtkFloatArray> band;
+  band->SetName("Band");
+  band->SetNumberOfValues(still->GetNumberOfCells());
+  auto paint = [&](int step) {
+    for (vtkIdType p = 0; p < still->GetNumberOfPoints(); ++p)
+    {
+      double x[3];
+      still->GetPoint(p, x);
+      wave->SetValue(p, static_cast<float>(std::sin(20.0 * x[0] + 2.0 * step)));
+    }
+    for (vtkIdType c = 0; c < still->GetNumberOfCells(); ++c)
+    {
+      band->SetValue(c, static_cast<float>((c + 3 * step) % 7));
+    }
+    wave->Modified();
+    band->Modified();
+  };
+  paint(0);
+  still->GetPointData()->SetScalars(wave);
+  still->GetCellData()->SetScalars(band);
+
+  Scene viaMapper;
+  vtkNew<vtkSilhouetteSmoothingMapper> mapper;
+  mapper->SetInputData(still);
+  viaMapper.Actor->SetMapper(mapper);
+  Scene fresh;
+  viaMapper.Look(still, 1);
+  fresh.Look(still, 1);
+  auto colour = [](vtkMapper* m, bool cells) {
+    m->ScalarVisibilityOn();
+    if (cells)
+    {
+      m->SetScalarModeToUseCellData();
+      m->SetScalarRange(0.0, 6.0);
+    }
+    else
+    {
+      m->SetScalarModeToUsePointData();
+      m->SetScalarRange(-1.0, 1.0);
+    }
+  };
+  // Each step: what changes, whether it smooths again, and the pixels that
+  // differ from a fresh mapper's.
+  struct Step
+  {
+    const char* What;
+    bool Smooths;
+  };
+  const Step steps[] = { { "new point values", false }, { "new cell values", false },
+    { "points written in place, the mesh alone marked modified", true },
+    { "a triangle flagged as a hidden ghost", true } };
+  colour(mapper, false);
+  viaMapper.Pixels();
+  bool ok = true;
+  for (int k = 0; k < 4; ++k)
+  {
+    const bool cells = k == 1;
+    if (k < 2)
+    {
+      paint(k + 1);
+    }
+    else if (k == 2)
+    {
+      vtkDataArray* xyz = still->GetPoints()->GetData();
+      for (vtkIdType p = 0; p < xyz->GetNumberOfTuples(); ++p)
+      {
+        xyz->SetComponent(p, 0, 1.05 * xyz->GetComponent(p, 0)); // no Modified() of the points
+      }
+      still->Modified();
+    }
+    else
+    {
+      vtkNew<vtkUnsignedCharArray> ghosts;
+      ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+      ghosts->SetNumberOfValues(still->GetNumberOfCells());
+      ghosts->FillValue(0);
+      // A triangle the view's silhouette crosses: flagged, it is neither
+      // re-meshed nor drawn.
+      for (vtkIdType c = 0; c < still->GetNumberOfCells(); c += 97)
+      {
+        ghosts->SetValue(c, vtkDataSetAttributes::HIDDENCELL);
+      }
+      still->GetCellData()->AddArray(ghosts);
+    }
+    colour(mapper, cells);
+    const vtkIdType runsBefore = mapper->GetSmoothingRunCount();
+    const std::vector<unsigned char> pixels = viaMapper.Pixels();
+    const vtkIdType runs = mapper->GetSmoothingRunCount() - runsBefore;
+    vtkNew<vtkPolyData> snapshot;
+    snapshot->DeepCopy(still);
+    vtkNew<vtkSilhouetteSmoothingMapper> freshMapper;
+    freshMapper->SetInputData(snapshot);
+    colour(freshMapper, cells);
+    fresh.Actor->SetMapper(freshMapper);
+    const long differing = Differing(pixels, fresh.Pixels());
+    std::printf("arrays alone: %s: smoothed %lld times (%s expected), %ld pixels differ from a "
+                "fresh mapper's\n",
+      steps[k].What, static_cast<long long>(runs), steps[k].Smooths ? "1 or more" : "0", differing);
+    if ((runs > 0) != steps[k].Smooths || differing > MaximumDifferingPixels)
+    {
+      std::printf("FAIL: arrays alone: %s\n", steps[k].What);
+      ok = false;
+    }
+  }
+  return ok;
+}
+
 int TestSmoothingMapperUpdates(int argc, char* argv[])
 {
   const vtkSmartPointer<vtkRenderWindow> keeper = KeepTheDisplayOpen();
@@ -615,5 +740,6 @@ int TestSmoothingMapperUpdates(int argc, char* argv[])
   ok = CheckShortArraysAreLeftOut(meshes.Bunny) && ok;
   ok = CheckSharedMapperSelection(meshes.Bunny) && ok;
   ok = CheckMissingPointsAreNotDrawn(meshes.Bunny) && ok;
+  ok = CheckArraysAloneDoNotSmoothAgain(meshes.Bunny) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -192,11 +192,12 @@ Options:
                           then a filled outline, not a stroke (a pen
                           plotter traces its two sides) (default: 2 pixels
                           everywhere, stroked)
-  --join-lines            in an SVG drawing, lines of one kind that meet end
-                          to end are one path (where more meet, the two
-                          that continue each other most straightly), so a
-                          pen plotter lifts its pen, and inks the corner,
-                          once there (default: one path per visible piece)
+  --join-lines            in an SVG drawing, lines that meet end to end are
+                          one path, whatever their kinds (where more meet,
+                          the two that continue each other most straightly),
+                          so a pen plotter lifts its pen, and inks the
+                          corner, once there (default: one path per visible
+                          piece)
   --lod                   refine INPUT for the view first (view-dependent
                           level of detail, vtkViewDependentLevelOfDetail): a
                           hierarchy of its edge collapses is built once, and

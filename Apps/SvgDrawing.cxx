@@ -407,9 +407,27 @@ std::vector<DrawnLine> OnceEach(const std::vector<DrawnLine>& lines, const SvgSt
   return once;
 }
 
-// The lines of one kind (visible or hidden) that meet end to end, at one
-// written point, joined into one line each (Lines/Core/PathJoining.h). A
-// brush's strokes stay as they are.
+// Whether a class attribute's space-separated names include `kind`.
+bool NamesKind(const std::string& classes, const std::string& kind)
+{
+  std::istringstream names(classes);
+  std::string name;
+  while (names >> name)
+  {
+    if (name == kind)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+// The lines that meet end to end, at one written point, joined into one
+// line each (Lines/Core/PathJoining.h): the visible with the visible, the
+// hidden with the hidden, whatever their kinds (a silhouette that ends on a
+// crease goes on along it), since every kind is drawn alike. A joined line
+// names each of its kinds in its class, in the order drawn. A brush's
+// strokes stay as they are.
 std::vector<DrawnLine> Joined(const std::vector<DrawnLine>& lines)
 {
   std::vector<std::vector<glm::dvec2>> points(lines.size());
@@ -421,9 +439,9 @@ std::vector<DrawnLine> Joined(const std::vector<DrawnLine>& lines)
     {
       points[i].emplace_back(p[0], p[1]);
     }
-    const std::string group = lines[i].Kind == "stroke"
-      ? "stroke " + std::to_string(i)
-      : (lines[i].Hidden ? "hidden " : "visible ") + lines[i].Kind;
+    const std::string group = lines[i].Kind == "stroke" ? "stroke " + std::to_string(i)
+      : lines[i].Hidden                                 ? "hidden"
+                                                        : "visible";
     groups[i] = groupOf.emplace(group, static_cast<int>(groupOf.size())).first->second;
   }
   const auto written = +[](const glm::dvec2& p) {
@@ -435,11 +453,18 @@ std::vector<DrawnLine> Joined(const std::vector<DrawnLine>& lines)
     silsmooth::joinedPaths(points, groups, written))
   {
     DrawnLine line;
-    line.Kind = lines[path.front().Line].Kind;
     line.Hidden = lines[path.front().Line].Hidden;
     for (const silsmooth::JoinedLine& piece : path)
     {
       DrawnLine next = lines[piece.Line];
+      if (line.Kind.empty())
+      {
+        line.Kind = next.Kind;
+      }
+      else if (!NamesKind(line.Kind, next.Kind))
+      {
+        line.Kind += " " + next.Kind;
+      }
       if (piece.Reversed)
       {
         std::reverse(next.Points.begin(), next.Points.end());

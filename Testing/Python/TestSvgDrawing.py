@@ -345,7 +345,7 @@ if code == 0:
     check(xy and not outside, "every point lies on the page: %s" % outside[:3])
 
 # --- Joined paths ---------------------------------------------------------------
-# --join-lines: lines of one kind that meet end to end are one path, so a
+# --join-lines: lines that meet end to end are one path, so a
 # plotter lifts its pen once at a corner (the cube's 9 edges meet at its 7
 # visible corners). The same ink: the same segments, in fewer paths.
 def segments(svg_file):
@@ -368,6 +368,25 @@ if code == 0:
     check(len(joined) <= 3 and all(p.get("class") == "crease" for p in joined),
           "the cube's 9 edges make 3 paths or fewer")
     check(segments(joined_svg) == segments(cube_svg), "joined, the cube draws the same segments")
+# Every kind is drawn alike, so lines of different kinds join too: on the
+# Wuson a border ends where an intersection curve begins (until 2026-12-06
+# only lines of one kind were joined, the wrong variant: no path names two
+# kinds).
+wuson_drawing = os.path.join(work, "wuson.svg")
+if os.path.exists(wuson_drawing):
+    wuson_joined = os.path.join(work, "wuson_joined.svg")
+    code, _, err = run("render", "/usr/share/assimp/models/OBJ/WusonOBJ.obj", "--style", "lines",
+                       "-o", wuson_joined, "--join-lines")
+    check(code == 0, "render the Wuson --join-lines (%s)" % err.strip())
+    if code == 0:
+        joined = paths(wuson_joined)[1]
+        mixed = [p.get("class") for p in joined if len(p.get("class").split()) > 1
+                 and not p.get("class").startswith("hidden")]
+        print("Wuson: %d paths joined, from %d; joining kinds: %s"
+              % (len(joined), len(paths(wuson_drawing)[1]), mixed))
+        check(mixed, "the Wuson's joined paths join lines of different kinds")
+        check(segments(wuson_joined) == segments(wuson_drawing),
+              "joined, the Wuson draws the same segments")
 code, _, err = run("render", cube_file, *cube_view, "-o", os.path.join(work, "joined.png"), "--join-lines")
 check(code == 2 and "--join-lines needs an .svg output" in err, "--join-lines with a PNG is refused")
 

@@ -171,22 +171,16 @@ std::uint64_t GeometryContent(const vtkSilhouetteFilterSupport::Triangles& mesh,
   return print.Value();
 }
 
-// The input's cell arrays (which objects, their times and their contents)
-// and its point count: what must stay for a change to be one of the points
-// only.
-std::array<vtkMTimeType, 13> CellsOf(vtkPolyData* input)
+// The contents of the input's cell arrays and its point count: what must
+// stay for a change to be one of the points (or of other arrays) only. The
+// arrays' objects and times do not count: a pipeline that makes its output
+// anew each update (a reader's time steps) gives new arrays of the same
+// cells.
+std::array<std::uint64_t, 5> CellsOf(vtkPolyData* input)
 {
-  vtkCellArray* cells[4] = { input->GetVerts(), input->GetLines(), input->GetPolys(),
-    input->GetStrips() };
-  std::array<vtkMTimeType, 13> key{};
-  for (int k = 0; k < 4; ++k)
-  {
-    key[3 * k] = static_cast<vtkMTimeType>(reinterpret_cast<std::uintptr_t>(cells[k]));
-    key[3 * k + 1] = cells[k] ? cells[k]->GetMTime() : 0;
-    key[3 * k + 2] = static_cast<vtkMTimeType>(CellContent(cells[k]));
-  }
-  key[12] = static_cast<vtkMTimeType>(input->GetNumberOfPoints());
-  return key;
+  return { { CellContent(input->GetVerts()), CellContent(input->GetLines()),
+    CellContent(input->GetPolys()), CellContent(input->GetStrips()),
+    static_cast<std::uint64_t>(input->GetNumberOfPoints()) } };
 }
 
 } // namespace
@@ -194,7 +188,8 @@ std::array<vtkMTimeType, 13> CellsOf(vtkPolyData* input)
 struct vtkSilhouetteSmoothingFilter::Internals
 {
   // The view-independent cache, keyed on the input object, its MTime and the
-  // settings that shape it.
+  // settings that shape it; another object, or a later time, with the same
+  // cells moves its points (MovePoints).
   std::unique_ptr<silsmooth::WeldedSurface> Surface;
   std::vector<vtkIdType> TriangleCell; // input cell id of each triangle
   vtkIdType NonFinitePoints = 0;
@@ -206,10 +201,11 @@ struct vtkSilhouetteSmoothingFilter::Internals
   vtkMTimeType CachedInputTime = 0;
   std::array<double, 10> CachedSettings{};
   bool HaveSettings = false;
-  // The input's cells (the objects and their times) and point count when
-  // the cache was built: when only the points change, the surface moves
-  // them (WeldedSurface::movePoints) instead of being built anew.
-  std::array<vtkMTimeType, 13> CachedCells{};
+  // The input's cells and point count when the cache was built: while they
+  // stay, in this input object or another, only the points may have
+  // changed, and the surface moves them (WeldedSurface::movePoints) instead
+  // of being built anew.
+  std::array<std::uint64_t, 5> CachedCells{};
   // Counts the builds of the surface (not its moves), and the build the
   // base mesh BuildBaseMesh filled last was made for: while it is the same
   // build, the base mesh keeps its cell arrays and takes the new points.
@@ -281,7 +277,7 @@ std::string vtkSilhouetteSmoothingFilter::Internals::Rebuild(
 bool vtkSilhouetteSmoothingFilter::Internals::MovePoints(
   vtkPolyData* input, bool useLines, const silsmooth::SurfaceOptions& options)
 {
-  if (!this->Surface || this->CachedInput != input || this->CachedCells != CellsOf(input))
+  if (!this->Surface || this->CachedCells != CellsOf(input))
   {
     return false;
   }
@@ -306,6 +302,7 @@ bool vtkSilhouetteSmoothingFilter::Internals::MovePoints(
     this->GeometryTime.Modified();
   }
   // Else only the input's other arrays changed: the surface stands as it is.
+  this->CachedInput = input;
   this->CachedInputTime = input->GetMTime();
   return true;
 }

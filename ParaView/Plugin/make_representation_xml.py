@@ -57,6 +57,7 @@ infos = [
   ("SilhouetteRenderedBlocks", "The blocks (leaves) the last render drew."),
   ("SilhouetteDrawnCells", "The cells of those blocks the last render drew."),
   ("SilhouetteSkippedGhostCells", "Their ghost cells (vtkGhostType: duplicate or hidden) the last render left out."),
+  ("SilhouetteSmoothingRuns", "How many times the blocks were smoothed for a view, over the representation's life: new values on a still mesh (a time series of them) smooth nothing again."),
   ("SilhouetteNormalsPerPiece", "1 when the data runs on several processes without point normals: each piece's normals are its own, and the pieces' seams show as lines (apply Generate Surface Normals first)."),
 ]
 

@@ -204,10 +204,10 @@ struct vtkSilhouetteSmoothingMapper::Internals
     {
       return this->Usable;
     }
-    // The same input object with the same settings may keep its patches
-    // (RefreshPatches).
-    const bool mayKeepPatches =
-      input == this->BaseInput && settings == this->BaseSettingsTime && this->BaseReady;
+    // With the same settings the patches may be kept (RefreshPatches), also
+    // for another input object: a pipeline that makes its output anew each
+    // update (a reader's time steps) gives new objects of the same geometry.
+    const bool mayKeepPatches = settings == this->BaseSettingsTime && this->BaseReady;
     this->BaseInput = input;
     this->BaseInputTime = input->GetMTime();
     this->BaseSettingsTime = settings;

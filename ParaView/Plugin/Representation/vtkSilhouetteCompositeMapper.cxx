@@ -120,6 +120,7 @@ void vtkSilhouetteCompositeMapper::Render(vtkRenderer* ren, vtkActor* act)
   this->RenderedLeaves = 0;
   this->DrawnCells = 0;
   this->SkippedGhostCells = 0;
+  this->SmoothingRunCount = 0;
   if (ren->GetRenderWindow()->CheckAbortStatus() || !this->GetInputAlgorithm())
   {
     return;
@@ -161,6 +162,7 @@ void vtkSilhouetteCompositeMapper::Render(vtkRenderer* ren, vtkActor* act)
     ++this->RenderedLeaves;
     this->DrawnCells += leaf.DrawnCells;
     this->SkippedGhostCells += leaf.GhostCells;
+    this->SmoothingRunCount += leaf.Mapper->GetSmoothingRunCount();
   }
 }
 

@@ -83,6 +83,14 @@ public:
   vtkIdType GetSkippedGhostCellCount() const { return this->SkippedGhostCells; }
   ///@}
 
+  /**
+   * How many times the leaves' mappers smoothed a view, since each was made
+   * (summed over the leaves drawn last): unchanged while neither the view nor
+   * the geometry changes (new values on a still mesh, a time series of
+   * them, smooth nothing again).
+   */
+  vtkIdType GetSmoothingRunCount() const { return this->SmoothingRunCount; }
+
   void Render(vtkRenderer* ren, vtkActor* act) override;
   void ReleaseGraphicsResources(vtkWindow* win) override;
 
@@ -96,6 +104,7 @@ protected:
   int RenderedLeaves = 0;
   vtkIdType DrawnCells = 0;
   vtkIdType SkippedGhostCells = 0;
+  vtkIdType SmoothingRunCount = 0;
 
 private:
   vtkSilhouetteCompositeMapper(const vtkSilhouetteCompositeMapper&) = delete;

@@ -172,6 +172,12 @@ int vtkSilhouetteSmoothingRepresentation::GetSilhouetteDrawnCells()
   return m ? static_cast<int>(m->GetDrawnCellCount()) : 0;
 }
 
+int vtkSilhouetteSmoothingRepresentation::GetSilhouetteSmoothingRuns()
+{
+  auto m = this->FullMapper();
+  return m ? static_cast<int>(m->GetSmoothingRunCount()) : 0;
+}
+
 int vtkSilhouetteSmoothingRepresentation::GetSilhouetteSkippedGhostCells()
 {
   auto m = this->FullMapper();

@@ -84,6 +84,13 @@ public:
   ///@}
 
   /**
+   * How many times this process's blocks were smoothed for a view, counted
+   * over their mappers' lives (vtkSilhouetteCompositeMapper's
+   * GetSmoothingRunCount).
+   */
+  int GetSilhouetteSmoothingRuns();
+
+  /**
    * 1 when this process runs among several and its piece of the data has
    * cells but no point normals: the smoothing computes normals for the piece
    * alone, so where the data is split across processes the seams show as

@@ -601,7 +601,8 @@ bool CheckMissingPointsAreNotDrawn(vtkPolyData* bunny)
 // the new values (vtkSilhouetteFilterSupport::RefillAttributes), and the
 // image equals a fresh mapper's. Points written in place with only the
 // mesh marked modified, and new ghost flags, are geometry: they smooth
-// again. Until 2026-12-06 every such change smoothed again (a user's
+// again. So does a new mesh object (a reader's next time step) with the same
+// cells only when its points moved. Until 2026-12-06 every such change smoothed again (a user's
 // trial: a frame 1.6 to 2 times a plain mapper's); the wrong variants are a
 // patch kept with its old values (the image differs along the outline) and
 // a change told by the points' modification time (step 4 keeps the old
@@ -663,14 +664,17 @@ bool CheckArraysAloneDoNotSmoothAgain(vtkPolyData* bunny)
   };
   const Step steps[] = { { "new point values", false }, { "new cell values", false },
     { "points written in place, the mesh alone marked modified", true },
-    { "a triangle flagged as a hidden ghost", true } };
+    { "triangles flagged as hidden ghosts", true },
+    { "a new mesh object with the same cells and points, new values", false },
+    { "a new mesh object with the same cells, points moved", true } };
   colour(mapper, false);
   viaMapper.Pixels();
   bool ok = true;
-  for (int k = 0; k < 4; ++k)
+  vtkSmartPointer<vtkPolyData> input = still.Get();
+  for (int k = 0; k < 6; ++k)
   {
     const bool cells = k == 1;
-    if (k < 2)
+    if (k < 2 || k == 4)
     {
       paint(k + 1);
     }
@@ -683,13 +687,13 @@ bool CheckArraysAloneDoNotSmoothAgain(vtkPolyData* bunny)
       }
       still->Modified();
     }
-    else
+    else if (k == 3)
     {
       vtkNew<vtkUnsignedCharArray> ghosts;
       ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
       ghosts->SetNumberOfValues(still->GetNumberOfCells());
       ghosts->FillValue(0);
-      // A triangle the view's silhouette crosses: flagged, it is neither
+      // Every 97th triangle, some of them on the silhouette: neither
       // re-meshed nor drawn.
       for (vtkIdType c = 0; c < still->GetNumberOfCells(); c += 97)
       {
@@ -697,12 +701,30 @@ bool CheckArraysAloneDoNotSmoothAgain(vtkPolyData* bunny)
       }
       still->GetCellData()->AddArray(ghosts);
     }
+    if (k >= 4)
+    {
+      // A reader's next time step: a new object, new cell arrays of the
+      // same cells.
+      input = vtkSmartPointer<vtkPolyData>::New();
+      input->DeepCopy(still);
+      if (k == 5)
+      {
+        vtkPoints* points = input->GetPoints();
+        for (vtkIdType p = 0; p < points->GetNumberOfPoints(); ++p)
+        {
+          double x[3];
+          points->GetPoint(p, x);
+          points->SetPoint(p, x[0], 1.04 * x[1], x[2]);
+        }
+      }
+      mapper->SetInputData(input);
+    }
     colour(mapper, cells);
     const vtkIdType runsBefore = mapper->GetSmoothingRunCount();
     const std::vector<unsigned char> pixels = viaMapper.Pixels();
     const vtkIdType runs = mapper->GetSmoothingRunCount() - runsBefore;
     vtkNew<vtkPolyData> snapshot;
-    snapshot->DeepCopy(still);
+    snapshot->DeepCopy(input);
     vtkNew<vtkSilhouetteSmoothingMapper> freshMapper;
     freshMapper->SetInputData(snapshot);
     colour(freshMapper, cells);
@@ -716,6 +738,30 @@ bool CheckArraysAloneDoNotSmoothAgain(vtkPolyData* bunny)
       std::printf("FAIL: arrays alone: %s\n", steps[k].What);
       ok = false;
     }
+  }
+  // The filter's side of a new object with the same cells: the surface built
+  // for the last one moves its points, and the base mesh keeps its cell
+  // arrays (a renderer, its index buffers), and its points too where none
+  // moved. (Until 2026-12-06 a new object built everything anew, the wrong
+  // variant.)
+  vtkNew<vtkSilhouetteSmoothingFilter> builder;
+  vtkNew<vtkPolyData> base;
+  builder->BuildBaseMesh(still, base);
+  vtkCellArray* polys = base->GetPolys();
+  vtkPoints* points = base->GetPoints();
+  vtkNew<vtkPolyData> same;
+  same->DeepCopy(still);
+  builder->BuildBaseMesh(same, base);
+  const bool keptAll = base->GetPolys() == polys && base->GetPoints() == points;
+  builder->BuildBaseMesh(input, base); // the points moved
+  const bool keptCells = base->GetPolys() == polys && base->GetPoints() != points;
+  std::printf("arrays alone: the base mesh of a new object %s its cells and points, and of one "
+              "with moved points %s its cells\n",
+    keptAll ? "kept" : "did not keep", keptCells ? "kept" : "did not keep");
+  if (!keptAll || !keptCells)
+  {
+    std::printf("FAIL: arrays alone: the base mesh of a new object of the same cells\n");
+    ok = false;
   }
   return ok;
 }

@@ -266,6 +266,27 @@ std::string PolylinePath(const DrawnLine& line)
   return d;
 }
 
+// Each line's points as the drawing's geometry takes them.
+std::vector<std::vector<glm::dvec2>> PointsOf(const std::vector<DrawnLine>& lines)
+{
+  std::vector<std::vector<glm::dvec2>> points(lines.size());
+  for (std::size_t i = 0; i < lines.size(); ++i)
+  {
+    for (const std::array<double, 2>& p : lines[i].Points)
+    {
+      points[i].emplace_back(p[0], p[1]);
+    }
+  }
+  return points;
+}
+
+// The line drawn from its last point to its first.
+void Reverse(DrawnLine& line)
+{
+  std::reverse(line.Points.begin(), line.Points.end());
+  std::reverse(line.Depths.begin(), line.Depths.end());
+}
+
 // The lines in the order a pen plotter draws them with little travel
 // (Lines/Core/PenOrder.h): from the image's top-left corner, where a
 // plotter's pen rests, each next line is the one with an end nearest the
@@ -289,8 +310,7 @@ std::vector<DrawnLine> InPenOrder(std::vector<DrawnLine> lines, bool outlines)
     DrawnLine next = std::move(lines[step.Line]);
     if (step.Reversed)
     {
-      std::reverse(next.Points.begin(), next.Points.end());
-      std::reverse(next.Depths.begin(), next.Depths.end());
+      Reverse(next);
     }
     ordered.push_back(std::move(next));
   }
@@ -311,16 +331,6 @@ int KindRank(const std::string& kind)
     }
   }
   return 5;
-}
-
-double LengthOf(const std::vector<glm::dvec2>& points)
-{
-  double length = 0.0;
-  for (std::size_t i = 1; i < points.size(); ++i)
-  {
-    length += glm::distance(points[i - 1], points[i]);
-  }
-  return length;
 }
 
 // The part of `line` between two positions (Lines/Core/DrawingOverlaps.h).
@@ -349,14 +359,7 @@ std::vector<DrawnLine> OnceEach(const std::vector<DrawnLine>& lines, const SvgSt
 {
   std::vector<DrawnLine> inside;
   {
-    std::vector<std::vector<glm::dvec2>> points(lines.size());
-    for (std::size_t i = 0; i < lines.size(); ++i)
-    {
-      for (const std::array<double, 2>& p : lines[i].Points)
-      {
-        points[i].emplace_back(p[0], p[1]);
-      }
-    }
+    const std::vector<std::vector<glm::dvec2>> points = PointsOf(lines);
     for (const silsmooth::PolylineSpan& span :
       silsmooth::spansInside(points, glm::dvec2(0.0), glm::dvec2(style.Width, style.Height)))
     {
@@ -373,16 +376,12 @@ std::vector<DrawnLine> OnceEach(const std::vector<DrawnLine>& lines, const SvgSt
   {
     (line.Kind == "stroke" ? once : written).push_back(std::move(line));
   }
-  std::vector<std::vector<glm::dvec2>> points(written.size());
+  const std::vector<std::vector<glm::dvec2>> points = PointsOf(written);
   std::vector<double> lengths(written.size());
   std::vector<std::size_t> order(written.size());
   for (std::size_t i = 0; i < written.size(); ++i)
   {
-    for (const std::array<double, 2>& p : written[i].Points)
-    {
-      points[i].emplace_back(p[0], p[1]);
-    }
-    lengths[i] = LengthOf(points[i]);
+    lengths[i] = silsmooth::polylineLength(points[i]);
     order[i] = i;
   }
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
@@ -430,15 +429,11 @@ bool NamesKind(const std::string& classes, const std::string& kind)
 // strokes stay as they are.
 std::vector<DrawnLine> Joined(const std::vector<DrawnLine>& lines)
 {
-  std::vector<std::vector<glm::dvec2>> points(lines.size());
+  const std::vector<std::vector<glm::dvec2>> points = PointsOf(lines);
   std::vector<int> groups(lines.size());
   std::map<std::string, int> groupOf;
   for (std::size_t i = 0; i < lines.size(); ++i)
   {
-    for (const std::array<double, 2>& p : lines[i].Points)
-    {
-      points[i].emplace_back(p[0], p[1]);
-    }
     const std::string group = lines[i].Kind == "stroke" ? "stroke " + std::to_string(i)
       : lines[i].Hidden                                 ? "hidden"
                                                         : "visible";
@@ -467,8 +462,7 @@ std::vector<DrawnLine> Joined(const std::vector<DrawnLine>& lines)
       }
       if (piece.Reversed)
       {
-        std::reverse(next.Points.begin(), next.Points.end());
-        std::reverse(next.Depths.begin(), next.Depths.end());
+        Reverse(next);
       }
       // The first point repeats the last one's written point.
       const std::size_t from = line.Points.empty() ? 0 : 1;

@@ -112,11 +112,16 @@ struct Sample
   bool Covered;
 };
 
-std::vector<Sample> samplesOf(const std::vector<glm::dvec2>& line, const KeptLines& kept,
-  const DrawingOverlapParameters& parameters)
+// Calls visit(position, point, direction, arc) along `line` every quarter
+// of Width (at least 0.01 px): from each segment's start, then at the last
+// point. `position` is the point's place as PolylineSpan counts (segment
+// index plus fraction), `arc` its distance along the line, `direction` its
+// segment's (the last one of length, (1, 0) before any).
+template<typename Visit>
+void forEachSample(
+  const std::vector<glm::dvec2>& line, const DrawingOverlapParameters& parameters, Visit visit)
 {
   const double step = std::max(0.25 * parameters.Width, 0.01);
-  std::vector<Sample> samples;
   double arc = 0.0;
   glm::dvec2 direction(1.0, 0.0);
   for (std::size_t i = 0; i + 1 < line.size(); ++i)
@@ -130,16 +135,24 @@ std::vector<Sample> samplesOf(const std::vector<glm::dvec2>& line, const KeptLin
     for (int k = 0; k < count; ++k)
     {
       const double t = double(k) / count;
-      const glm::dvec2 p = line[i] + (line[i + 1] - line[i]) * t;
-      samples.push_back({ double(i) + t, p, arc + length * t, kept.covers(p, direction) });
+      visit(double(i) + t, line[i] + (line[i + 1] - line[i]) * t, direction, arc + length * t);
     }
     arc += length;
   }
   if (!line.empty())
   {
-    const glm::dvec2& p = line.back();
-    samples.push_back({ double(line.size() - 1), p, arc, kept.covers(p, direction) });
+    visit(double(line.size() - 1), line.back(), direction, arc);
   }
+}
+
+std::vector<Sample> samplesOf(const std::vector<glm::dvec2>& line, const KeptLines& kept,
+  const DrawingOverlapParameters& parameters)
+{
+  std::vector<Sample> samples;
+  forEachSample(line, parameters,
+    [&](double position, const glm::dvec2& p, const glm::dvec2& direction, double arc) {
+      samples.push_back({ position, p, arc, kept.covers(p, direction) });
+    });
   return samples;
 }
 
@@ -172,16 +185,6 @@ void keepShortCoveredStretches(std::vector<Sample>& samples, double shortestGap)
   }
 }
 
-double lengthOf(const std::vector<glm::dvec2>& points)
-{
-  double length = 0.0;
-  for (std::size_t k = 0; k + 1 < points.size(); ++k)
-  {
-    length += glm::distance(points[k], points[k + 1]);
-  }
-  return length;
-}
-
 // The specks checked again, against every longer span kept: a speck taken
 // early (a silhouette's, before the creases) had no ink to lie on yet.
 std::vector<PolylineSpan> withoutSpecks(const std::vector<std::vector<glm::dvec2>>& lines,
@@ -193,7 +196,7 @@ std::vector<PolylineSpan> withoutSpecks(const std::vector<std::vector<glm::dvec2
   for (std::size_t s = 0; s < spans.size(); ++s)
   {
     points[s] = valuesAlong(lines[spans[s].Line], spans[s].First, spans[s].Last);
-    speck[s] = lengthOf(points[s]) <= parameters.LongestSpeck ? 1 : 0;
+    speck[s] = polylineLength(points[s]) <= parameters.LongestSpeck ? 1 : 0;
     for (std::size_t k = 0; k + 1 < points[s].size() && !speck[s]; ++k)
     {
       longer.add(points[s][k], points[s][k + 1]);
@@ -203,17 +206,12 @@ std::vector<PolylineSpan> withoutSpecks(const std::vector<std::vector<glm::dvec2
   for (std::size_t s = 0; s < spans.size(); ++s)
   {
     bool onInk = speck[s] != 0;
-    for (std::size_t k = 0; k + 1 < points[s].size() && onInk; ++k)
+    if (onInk)
     {
-      // Every quarter of Width along the segment, both ends included.
-      const double step = std::max(0.25 * parameters.Width, 0.01);
-      const int count =
-        std::max(1, int(std::ceil(glm::distance(points[s][k], points[s][k + 1]) / step)));
-      for (int i = 0; i <= count && onInk; ++i)
-      {
-        const glm::dvec2 p = points[s][k] + (points[s][k + 1] - points[s][k]) * (double(i) / count);
-        onInk = longer.covers(p, glm::dvec2(0.0), true);
-      }
+      forEachSample(
+        points[s], parameters, [&](double, const glm::dvec2& p, const glm::dvec2&, double) {
+          onInk = onInk && longer.covers(p, glm::dvec2(0.0), true);
+        });
     }
     if (!onInk)
     {
@@ -224,6 +222,16 @@ std::vector<PolylineSpan> withoutSpecks(const std::vector<std::vector<glm::dvec2
 }
 
 } // namespace
+
+double polylineLength(const std::vector<glm::dvec2>& points)
+{
+  double length = 0.0;
+  for (std::size_t k = 0; k + 1 < points.size(); ++k)
+  {
+    length += glm::distance(points[k], points[k + 1]);
+  }
+  return length;
+}
 
 std::vector<PolylineSpan> spansInside(
   const std::vector<std::vector<glm::dvec2>>& lines, const glm::dvec2& low, const glm::dvec2& high)

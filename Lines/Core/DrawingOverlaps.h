@@ -78,6 +78,9 @@ std::vector<PolylineSpan> spansNotOverlapping(const std::vector<std::vector<glm:
 std::vector<PolylineSpan> spansInside(
   const std::vector<std::vector<glm::dvec2>>& lines, const glm::dvec2& low, const glm::dvec2& high);
 
+/// The length of a polyline (the sum of its segments').
+double polylineLength(const std::vector<glm::dvec2>& points);
+
 /// The values along `values` (one per point of a polyline) between two
 /// positions of a span, interpolated linearly at its two ends: the points
 /// of the span, or any value per point (depths).

@@ -287,30 +287,59 @@ void Reverse(DrawnLine& line)
   std::reverse(line.Depths.begin(), line.Depths.end());
 }
 
+// A closed line (its last point its first) drawn round from its point
+// `entry` back to it.
+void StartAt(DrawnLine& line, std::size_t entry)
+{
+  line.Points.pop_back();
+  std::rotate(line.Points.begin(), line.Points.begin() + entry, line.Points.end());
+  line.Points.push_back(line.Points.front());
+  if (line.Depths.size() == line.Points.size())
+  {
+    line.Depths.pop_back();
+    std::rotate(line.Depths.begin(), line.Depths.begin() + entry, line.Depths.end());
+    line.Depths.push_back(line.Depths.front());
+  }
+}
+
 // The lines in the order a pen plotter draws them with little travel
 // (Lines/Core/PenOrder.h): from the image's top-left corner, where a
 // plotter's pen rests, each next line is the one with an end nearest the
 // pen, turned round when its last point is the nearer; after an
 // `outlines` line (a filled outline) the pen is back at the end it entered
-// by. In the order the pieces came, the pen travelled 3 to 11 times as far
-// (a user's trial, 2026-12-05).
+// by. A closed line (its last point its first, as written) is entered at
+// its point nearest the pen, and the pen is back there after it. In the
+// order the pieces came, the pen travelled 3 to 11 times as far (a user's
+// trial, 2026-12-05).
 std::vector<DrawnLine> InPenOrder(std::vector<DrawnLine> lines, bool outlines)
 {
   std::vector<std::array<glm::dvec2, 2>> ends(lines.size());
+  std::vector<std::vector<glm::dvec2>> loops(lines.size());
   for (std::size_t i = 0; i < lines.size(); ++i)
   {
     const std::array<double, 2>& first = lines[i].Points.front();
     const std::array<double, 2>& last = lines[i].Points.back();
     ends[i] = { glm::dvec2(first[0], first[1]), glm::dvec2(last[0], last[1]) };
+    if (lines[i].Points.size() >= 4 && first == last)
+    {
+      for (std::size_t k = 0; k + 1 < lines[i].Points.size(); ++k)
+      {
+        loops[i].emplace_back(lines[i].Points[k][0], lines[i].Points[k][1]);
+      }
+    }
   }
   std::vector<DrawnLine> ordered;
   ordered.reserve(lines.size());
-  for (const silsmooth::PenStep& step : silsmooth::penOrder(ends, glm::dvec2(0.0), outlines))
+  for (const silsmooth::PenStep& step : silsmooth::penOrder(ends, glm::dvec2(0.0), outlines, loops))
   {
     DrawnLine next = std::move(lines[step.Line]);
     if (step.Reversed)
     {
       Reverse(next);
+    }
+    if (step.Entry > 0)
+    {
+      StartAt(next, step.Entry);
     }
     ordered.push_back(std::move(next));
   }

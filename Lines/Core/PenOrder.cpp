@@ -13,43 +13,76 @@ namespace silsmooth
 namespace
 {
 
-// An end of a line: which line, and whether it is its last point.
+// An end of a line: which line, and which of its points (0 its first, 1
+// its last; a loop's index among its points).
 struct End
 {
   std::size_t Line;
-  bool Last;
+  std::size_t Point;
+};
+
+// Where each end is: a line's first and last points, or every point of a
+// loop.
+class LineEnds
+{
+public:
+  LineEnds(const std::vector<std::array<glm::dvec2, 2>>& ends,
+    const std::vector<std::vector<glm::dvec2>>& loops)
+    : Ends(ends)
+    , Loops(loops)
+  {
+  }
+  bool isLoop(std::size_t line) const
+  {
+    return line < this->Loops.size() && !this->Loops[line].empty();
+  }
+  std::size_t count(std::size_t line) const
+  {
+    return this->isLoop(line) ? this->Loops[line].size() : 2;
+  }
+  const glm::dvec2& at(const End& end) const
+  {
+    return this->isLoop(end.Line) ? this->Loops[end.Line][end.Point]
+                                  : this->Ends[end.Line][end.Point];
+  }
+
+private:
+  const std::vector<std::array<glm::dvec2, 2>>& Ends;
+  const std::vector<std::vector<glm::dvec2>>& Loops;
 };
 
 class EndGrid
 {
 public:
-  EndGrid(const std::vector<std::array<glm::dvec2, 2>>& ends)
+  EndGrid(const LineEnds& ends, std::size_t lines)
     : Ends(ends)
   {
     Low = glm::dvec2(std::numeric_limits<double>::infinity());
     glm::dvec2 high(-std::numeric_limits<double>::infinity());
-    for (const auto& line : ends)
+    std::size_t total = 0;
+    for (std::size_t i = 0; i < lines; ++i)
     {
-      for (const glm::dvec2& p : line)
+      for (std::size_t k = 0; k < ends.count(i); ++k)
       {
-        Low = glm::min(Low, p);
-        high = glm::max(high, p);
+        Low = glm::min(Low, ends.at({ i, k }));
+        high = glm::max(high, ends.at({ i, k }));
+        ++total;
       }
     }
     const glm::dvec2 size = high - Low;
     // About two ends a cell, and no more cells than ends on a side.
-    const double count = std::max(1.0, double(ends.size()));
+    const double count = std::max(1.0, double(total) / 2.0);
     Cell = std::sqrt(std::max(size.x * size.y, 1e-300) / count);
     Cell = std::max({ Cell, size.x / count, size.y / count, 1e-300 });
     Columns = std::max<std::int64_t>(1, std::int64_t(size.x / Cell) + 1);
     Rows = std::max<std::int64_t>(1, std::int64_t(size.y / Cell) + 1);
     Cells.resize(std::size_t(Columns * Rows));
-    for (std::size_t i = 0; i < ends.size(); ++i)
+    for (std::size_t i = 0; i < lines; ++i)
     {
-      for (int k = 0; k < 2; ++k)
+      for (std::size_t k = 0; k < ends.count(i); ++k)
       {
-        const auto [x, y] = cellOf(ends[i][k]);
-        Cells[std::size_t(y * Columns + x)].push_back({ i, k == 1 });
+        const auto [x, y] = cellOf(ends.at({ i, k }));
+        Cells[std::size_t(y * Columns + x)].push_back({ i, k });
       }
     }
   }
@@ -61,7 +94,8 @@ public:
     // an end in ring r + 1 or beyond lies at least r cells from that point,
     // and the pen is no nearer to it than that point is.
     const auto [cx, cy] = cellOf(pen);
-    auto best = std::make_tuple(std::numeric_limits<double>::infinity(), std::size_t(0), false);
+    auto best =
+      std::make_tuple(std::numeric_limits<double>::infinity(), std::size_t(0), std::size_t(0));
     const std::int64_t rings = std::max(Columns, Rows);
     for (std::int64_t r = 0; r <= rings; ++r)
     {
@@ -102,7 +136,7 @@ private:
   }
 
   void visit(std::vector<End>& cell, const glm::dvec2& pen, const std::vector<unsigned char>& used,
-    std::tuple<double, std::size_t, bool>& best) const
+    std::tuple<double, std::size_t, std::size_t>& best) const
   {
     std::size_t kept = 0;
     for (const End& end : cell)
@@ -112,14 +146,12 @@ private:
         continue; // dropped from the cell
       }
       cell[kept++] = end;
-      const auto candidate =
-        std::make_tuple(glm::distance(pen, Ends[end.Line][end.Last ? 1 : 0]), end.Line, end.Last);
-      best = std::min(best, candidate);
+      best = std::min(best, std::make_tuple(glm::distance(pen, Ends.at(end)), end.Line, end.Point));
     }
     cell.resize(kept);
   }
 
-  const std::vector<std::array<glm::dvec2, 2>>& Ends;
+  const LineEnds& Ends;
   glm::dvec2 Low{ 0.0 };
   double Cell = 1.0;
   std::int64_t Columns = 1;
@@ -129,8 +161,8 @@ private:
 
 } // namespace
 
-std::vector<PenStep> penOrder(
-  const std::vector<std::array<glm::dvec2, 2>>& ends, const glm::dvec2& start, bool backToEntry)
+std::vector<PenStep> penOrder(const std::vector<std::array<glm::dvec2, 2>>& ends,
+  const glm::dvec2& start, bool backToEntry, const std::vector<std::vector<glm::dvec2>>& loops)
 {
   std::vector<PenStep> order;
   if (ends.empty())
@@ -138,15 +170,23 @@ std::vector<PenStep> penOrder(
     return order;
   }
   order.reserve(ends.size());
-  EndGrid grid(ends);
+  const LineEnds lineEnds(ends, loops);
+  EndGrid grid(lineEnds, ends.size());
   std::vector<unsigned char> used(ends.size(), 0);
   glm::dvec2 pen = start;
   for (std::size_t k = 0; k < ends.size(); ++k)
   {
     const End next = grid.nearest(pen, used);
     used[next.Line] = 1;
-    order.push_back({ next.Line, next.Last });
-    pen = ends[next.Line][next.Last != backToEntry ? 0 : 1];
+    if (lineEnds.isLoop(next.Line))
+    {
+      order.push_back({ next.Line, false, next.Point });
+      pen = lineEnds.at(next); // round the loop, back where it began
+      continue;
+    }
+    const bool last = next.Point == 1;
+    order.push_back({ next.Line, last, 0 });
+    pen = ends[next.Line][last != backToEntry ? 0 : 1];
   }
   return order;
 }

@@ -10,6 +10,9 @@
 // drawing of n lines orders in about n log n where the lines are spread
 // over the page (the n-squared scan it replaces stopped at 4,000 lines).
 //
+// A loop (a closed line) may be entered at any of its points, and the pen
+// is back there when it has gone round: its points are all ends.
+//
 // Invariant: every line appears once; each step's line has, of the lines
 // left, an end at the least distance from the pen (the greedy choice made
 // exactly, not approximately).
@@ -28,13 +31,20 @@ struct PenStep
 {
   std::size_t Line = 0;
   bool Reversed = false; ///< drawn from its last point to its first
+  /// For a loop, the point it is entered at (its index among the loop's
+  /// points; never Reversed); 0 otherwise.
+  std::size_t Entry = 0;
 };
 
 /// The order to draw lines whose ends (first point, last point) are given,
 /// from `start`. With `backToEntry`, drawing a line brings the pen back to
 /// the end it entered by (a filled outline goes round its line and closes
-/// there), so the next line is looked for from that end.
+/// there), so the next line is looked for from that end. Where `loops` is
+/// given and loops[i] is not empty, line i is a loop through those points
+/// (its ends are not used). Ties go to the lower line, then the lower
+/// point (a line's first before its last).
 std::vector<PenStep> penOrder(const std::vector<std::array<glm::dvec2, 2>>& ends,
-  const glm::dvec2& start, bool backToEntry = false);
+  const glm::dvec2& start, bool backToEntry = false,
+  const std::vector<std::vector<glm::dvec2>>& loops = {});
 
 } // namespace silsmooth

@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
 #include <random>
 #include <tuple>
@@ -16,24 +17,39 @@ namespace
 
 using Ends = std::vector<std::array<glm::dvec2, 2>>;
 
-// Each step scans every line left: the rule itself, quadratic.
-std::vector<PenStep> scannedOrder(const Ends& ends, glm::dvec2 pen, bool backToEntry = false)
+// Each step scans every line left: the rule itself, quadratic. A line with
+// points in `loops` is a loop entered at any of them.
+std::vector<PenStep> scannedOrder(const Ends& ends, glm::dvec2 pen, bool backToEntry = false,
+  const std::vector<std::vector<glm::dvec2>>& loops = {})
 {
+  const auto isLoop = [&](std::size_t i) {
+    return i < loops.size() && !loops[i].empty();
+  };
   std::vector<PenStep> order;
   std::vector<bool> used(ends.size(), false);
   for (std::size_t k = 0; k < ends.size(); ++k)
   {
-    auto best = std::make_tuple(std::numeric_limits<double>::infinity(), std::size_t(0), false);
+    auto best =
+      std::make_tuple(std::numeric_limits<double>::infinity(), std::size_t(0), std::size_t(0));
     for (std::size_t i = 0; i < ends.size(); ++i)
     {
-      for (int e = 0; e < 2 && !used[i]; ++e)
+      const std::size_t count = isLoop(i) ? loops[i].size() : 2;
+      for (std::size_t e = 0; e < count && !used[i]; ++e)
       {
-        best = std::min(best, std::make_tuple(glm::distance(pen, ends[i][e]), i, e == 1));
+        const glm::dvec2& end = isLoop(i) ? loops[i][e] : ends[i][e];
+        best = std::min(best, std::make_tuple(glm::distance(pen, end), i, e));
       }
     }
-    const auto [distance, line, last] = best;
+    const auto [distance, line, point] = best;
     used[line] = true;
-    order.push_back({ line, last });
+    if (isLoop(line))
+    {
+      order.push_back({ line, false, point });
+      pen = loops[line][point];
+      continue;
+    }
+    const bool last = point == 1;
+    order.push_back({ line, last, 0 });
     pen = backToEntry ? ends[line][last ? 1 : 0] : ends[line][last ? 0 : 1];
   }
   return order;
@@ -43,7 +59,7 @@ bool sameOrder(const std::vector<PenStep>& a, const std::vector<PenStep>& b)
 {
   return a.size() == b.size() &&
     std::equal(a.begin(), a.end(), b.begin(), [](const PenStep& x, const PenStep& y) {
-      return x.Line == y.Line && x.Reversed == y.Reversed;
+      return x.Line == y.Line && x.Reversed == y.Reversed && x.Entry == y.Entry;
     });
 }
 
@@ -132,4 +148,51 @@ TEST(PenOrder, OrdersFiftyThousandLinesAndAllAtOnePoint)
   EXPECT_TRUE(
     sameOrder(penOrder(onePoint, glm::dvec2(0.0)), scannedOrder(onePoint, glm::dvec2(0.0))));
   EXPECT_TRUE(penOrder({}, glm::dvec2(0.0)).empty());
+}
+
+TEST(PenOrder, ALoopIsEnteredAtItsPointNearestThePenAndLeftThere)
+{
+  // A square loop through (110, 10), (210, 10), (210, 110), (110, 110).
+  // From the origin the pen draws the stroke to (120, 0); there the loop's
+  // point (110, 10) is the nearest end (14.1, against 20.6 for the last
+  // stroke's (100, 5)), so the loop is entered at it, and the pen, back
+  // there after going round, takes the stroke from (100, 5) next.
+  const Ends ends{ { glm::dvec2(0, 0), glm::dvec2(120, 0) },
+    { glm::dvec2(110, 10), glm::dvec2(110, 10) }, { glm::dvec2(215, 10), glm::dvec2(300, 10) },
+    { glm::dvec2(100, 5), glm::dvec2(60, 5) } };
+  const std::vector<std::vector<glm::dvec2>> loops{ {},
+    { glm::dvec2(110, 10), glm::dvec2(210, 10), glm::dvec2(210, 110), glm::dvec2(110, 110) }, {},
+    {} };
+  const std::vector<PenStep> order = penOrder(ends, glm::dvec2(0.0), false, loops);
+  EXPECT_TRUE(sameOrder(order, scannedOrder(ends, glm::dvec2(0.0), false, loops)));
+  ASSERT_EQ(order.size(), 4u);
+  EXPECT_EQ(order[0].Line, 0u); // the stroke from the origin, to (120, 0)
+  EXPECT_EQ(order[1].Line, 1u); // the loop, entered at (110, 10)
+  EXPECT_EQ(order[1].Entry, 0u);
+  EXPECT_FALSE(order[1].Reversed);
+  EXPECT_EQ(order[2].Line, 3u); // from (110, 10), the nearest end is (100, 5)
+  EXPECT_FALSE(order[2].Reversed);
+  EXPECT_EQ(order[3].Line, 2u);
+  // From another start the loop is entered elsewhere: from (215, 120) its
+  // nearest point is (210, 110).
+  const std::vector<PenStep> fromRight = penOrder(ends, glm::dvec2(215, 120), false, loops);
+  EXPECT_TRUE(sameOrder(fromRight, scannedOrder(ends, glm::dvec2(215, 120), false, loops)));
+  EXPECT_EQ(fromRight[0].Line, 1u);
+  EXPECT_EQ(fromRight[0].Entry, 2u);
+  // And many loops and strokes, step for step as the scan.
+  Ends many = randomLines(1500, 800, 600, 30, 6);
+  std::vector<std::vector<glm::dvec2>> manyLoops(many.size());
+  for (std::size_t i = 0; i < many.size(); i += 3)
+  {
+    const glm::dvec2 c = many[i][0];
+    for (int k = 0; k < 6; ++k)
+    {
+      manyLoops[i].push_back(c + 8.0 * glm::dvec2(std::cos(k), std::sin(k)));
+    }
+  }
+  for (const bool back : { false, true })
+  {
+    EXPECT_TRUE(sameOrder(penOrder(many, glm::dvec2(0.0), back, manyLoops),
+      scannedOrder(many, glm::dvec2(0.0), back, manyLoops)));
+  }
 }

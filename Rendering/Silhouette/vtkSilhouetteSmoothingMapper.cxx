@@ -303,11 +303,14 @@ struct vtkSilhouetteSmoothingMapper::Internals
     patch.DrawsChanges = false;
     patch.ReplacedTriangles = patch.PatchTriangles = patch.CulledTriangles = 0;
     patch.SilhouetteTriangles = patch.NewTriangles = 0;
-    ++self->SmoothingRunCount;
     patch.GeometryTime = this->Smoother->GetGeometryTime();
-    if (!smooth || width <= 0 || height <= 0 ||
-      !this->Smoother->BuildChanges(
-        input, camera, model, width, height, patch.Changes, patch.Replaced, &patch.Sources))
+    if (!smooth || width <= 0 || height <= 0)
+    {
+      return;
+    }
+    ++self->SmoothingRunCount;
+    if (!this->Smoother->BuildChanges(
+          input, camera, model, width, height, patch.Changes, patch.Replaced, &patch.Sources))
     {
       return;
     }

@@ -121,7 +121,10 @@ public:
    * (stereo's two eyes, a shadow map's light and the camera, renderers
    * showing one actor, or actors sharing this mapper), so rendering any of
    * them again adds nothing; a fifth view replaces the one drawn longest
-   * ago. A change of the input or of the filter's settings forgets them.
+   * ago. A change of the input's geometry or of the filter's settings
+   * forgets them; new values on the same geometry do not (the patches take
+   * them). A render with smoothing off, or of a representation other than
+   * surface, smooths nothing and counts nothing.
    */
   vtkIdType GetSmoothingRunCount() const { return this->SmoothingRunCount; }
 

@@ -417,20 +417,28 @@ bool CheckWireframeIsNotSmoothed(vtkPolyData* bunny)
   plain.Look(bunny, 0);
   const long differing = Differing(smoothing.Pixels(), plain.Pixels());
   const vtkIdType wireframeNew = mapper->GetNewTriangleCount();
+  // Neither the wireframe nor smoothing off counts as a smoothing run (a
+  // user's trial, 2026-12-06: both counted one, though nothing was smoothed).
+  const vtkIdType wireframeRuns = mapper->GetSmoothingRunCount();
+  const vtkIdType offRuns = plainMapper->GetSmoothingRunCount();
   smoothing.Actor->GetProperty()->SetRepresentationToSurface();
   smoothing.Pixels();
   const vtkIdType surfaceNew = mapper->GetNewTriangleCount();
-  std::printf("wireframe: %lld new triangles, %ld pixels differ from the unsmoothed mapper's; "
-              "surface: %lld new triangles\n",
-    static_cast<long long>(wireframeNew), differing, static_cast<long long>(surfaceNew));
-  if (wireframeNew != 0 || differing != 0)
+  const vtkIdType surfaceRuns = mapper->GetSmoothingRunCount();
+  std::printf("wireframe: %lld new triangles in %lld runs, %ld pixels differ from the unsmoothed "
+              "mapper's (its runs: %lld); surface: %lld new triangles, %lld runs\n",
+    static_cast<long long>(wireframeNew), static_cast<long long>(wireframeRuns), differing,
+    static_cast<long long>(offRuns), static_cast<long long>(surfaceNew),
+    static_cast<long long>(surfaceRuns));
+  if (wireframeNew != 0 || differing != 0 || wireframeRuns != 0 || offRuns != 0)
   {
-    std::printf("FAIL: the wireframe was smoothed, or drawn otherwise than as it is\n");
+    std::printf("FAIL: the wireframe was smoothed, counted a run, or was drawn otherwise than as "
+                "it is\n");
     ok = false;
   }
-  if (surfaceNew == 0)
+  if (surfaceNew == 0 || surfaceRuns != 1)
   {
-    std::printf("FAIL: the surface was not smoothed, so the check cannot fail\n");
+    std::printf("FAIL: the surface was not smoothed once, so the check cannot fail\n");
     ok = false;
   }
   return ok;

@@ -183,6 +183,15 @@ std::array<std::uint64_t, 5> CellsOf(vtkPolyData* input)
     static_cast<std::uint64_t>(input->GetNumberOfPoints()) } };
 }
 
+// Whether two views are one, value for value (a NaN never equals itself:
+// such a view is smoothed again).
+bool SameViewGeometry(const silsmooth::ViewGeometry& a, const silsmooth::ViewGeometry& b)
+{
+  return a.Parallel == b.Parallel && a.Eye == b.Eye && a.TowardViewer == b.TowardViewer &&
+    a.ModelToClip == b.ModelToClip && a.ViewportWidth == b.ViewportWidth &&
+    a.ViewportHeight == b.ViewportHeight;
+}
+
 } // namespace
 
 struct vtkSilhouetteSmoothingFilter::Internals
@@ -219,6 +228,19 @@ struct vtkSilhouetteSmoothingFilter::Internals
   std::uint64_t GeometryPrint = 0;
   vtkTimeStamp GeometryTime;
   vtkMTimeType LastBaseGeometry = 0; // GeometryTime when the base mesh was filled
+  // The last request's smoothing and what it was made for: a request for
+  // the same view, settings, seam rule and geometry (the input's other
+  // arrays changed: a time series of values) takes it again.
+  struct LastSmoothing
+  {
+    silsmooth::SmoothingResult Result;
+    silsmooth::ViewGeometry View;
+    vtkMTimeType Settings = 0;
+    vtkMTimeType Geometry = 0;
+    bool Seam = false;
+    bool Valid = false;
+  };
+  LastSmoothing Last;
   // Per triangle: a ghost cell (duplicate or hidden), never re-meshed; empty
   // when the input has no ghost array. Read again whenever the input changed.
   std::vector<unsigned char> Frozen;
@@ -534,8 +556,21 @@ int vtkSilhouetteSmoothingFilter::RequestViewData(vtkInformation*,
   const bool boundaryMayBeSeam =
     outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) &&
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1;
-  const silsmooth::SmoothingResult result =
-    internal.Smooth(this, input, view.Geometry, boundaryMayBeSeam);
+  Internals::LastSmoothing& last = internal.Last;
+  const vtkMTimeType settings = this->vtkObject::GetMTime();
+  if (!(last.Valid && last.Settings == settings &&
+        last.Geometry == internal.GeometryTime.GetMTime() && last.Seam == boundaryMayBeSeam &&
+        SameViewGeometry(last.View, view.Geometry)))
+  {
+    last.Valid = false;
+    last.Result = internal.Smooth(this, input, view.Geometry, boundaryMayBeSeam);
+    last.View = view.Geometry;
+    last.Settings = settings;
+    last.Geometry = internal.GeometryTime.GetMTime();
+    last.Seam = boundaryMayBeSeam;
+    last.Valid = true;
+  }
+  const silsmooth::SmoothingResult& result = last.Result;
   const silsmooth::PreparedMesh& mesh = internal.Surface->prepared();
   const silsmooth::SurfaceStatistics& statistics = internal.Surface->statistics();
   if (!vtkSilhouetteFilterSupport::ReportProgress(this, 0.6))

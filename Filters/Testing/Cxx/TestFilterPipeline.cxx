@@ -657,6 +657,90 @@ bool CellsEditedInPlace()
   return true;
 }
 
+// A request for the same view, settings and geometry takes the last
+// smoothing again (the input's other arrays changed: a time series of
+// values), and only then: after each change below the output equals a fresh
+// filter's on a copy of the input, points, polygons and values. Wrong
+// variants (the last smoothing taken whatever changed in the view, the
+// settings or the points) give the old outline at the step that changes
+// them.
+bool SmoothingTakenAgainOnlyWhileItHolds()
+{
+  vtkNew<vtkIcosphereSource> sphere;
+  sphere->SetSubdivisionLevel(2);
+  sphere->Update();
+  vtkNew<vtkPolyData> mesh;
+  mesh->DeepCopy(sphere->GetOutput());
+  vtkNew<vtkFloatArray> values;
+  values->SetName("Values");
+  values->SetNumberOfValues(mesh->GetNumberOfPoints());
+  mesh->GetPointData()->AddArray(values);
+  auto paint = [&](float shift) {
+    for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+    {
+      values->SetValue(p, static_cast<float>(mesh->GetPoint(p)[0]) + shift);
+    }
+    values->Modified();
+  };
+  paint(0.0f);
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(1.0, 2.0, 4.0);
+  vtkNew<vtkSilhouetteSmoothingFilter> smoother;
+  smoother->SetInputData(mesh);
+  smoother->SetCamera(camera);
+  smoother->Update();
+  const char* steps[] = { "new values", "the camera moved", "a finer tolerance",
+    "points moved in place", "new values again" };
+  for (int k = 0; k < 5; ++k)
+  {
+    vtkNew<vtkPolyData> before;
+    before->DeepCopy(smoother->GetOutput());
+    if (k == 0 || k == 4)
+    {
+      paint(1.0f + static_cast<float>(k));
+    }
+    else if (k == 1)
+    {
+      camera->Azimuth(10.0);
+    }
+    else if (k == 2)
+    {
+      smoother->SetTolerance(0.1);
+    }
+    else
+    {
+      vtkDataArray* xyz = mesh->GetPoints()->GetData();
+      for (vtkIdType p = 0; p < xyz->GetNumberOfTuples(); ++p)
+      {
+        xyz->SetComponent(p, 1, 1.2 * xyz->GetComponent(p, 1)); // no Modified() of the points
+      }
+      mesh->Modified();
+    }
+    smoother->Update();
+    vtkNew<vtkPolyData> copy;
+    copy->DeepCopy(mesh);
+    vtkNew<vtkSilhouetteSmoothingFilter> fresh;
+    fresh->SetInputData(copy);
+    fresh->SetCamera(camera);
+    fresh->SetTolerance(smoother->GetTolerance());
+    fresh->Update();
+    vtkDataArray* mine = smoother->GetOutput()->GetPointData()->GetArray("Values");
+    vtkDataArray* theirs = fresh->GetOutput()->GetPointData()->GetArray("Values");
+    bool sameValues = mine && theirs && mine->GetNumberOfTuples() == theirs->GetNumberOfTuples();
+    for (vtkIdType t = 0; sameValues && t < mine->GetNumberOfTuples(); ++t)
+    {
+      sameValues = mine->GetTuple1(t) == theirs->GetTuple1(t);
+    }
+    const bool same = SameMesh(smoother->GetOutput(), fresh->GetOutput()) && sameValues;
+    const bool geometryChanged = !SameMesh(before, smoother->GetOutput());
+    std::printf("smoothing taken again: %s: the output %s a fresh filter's; its geometry %s\n",
+      steps[k], same ? "equals" : "differs from", geometryChanged ? "changed" : "stayed");
+    CHECK(same, "the output equals a fresh filter's");
+    CHECK(geometryChanged == (k >= 1 && k <= 3), "only view, settings and points change the mesh");
+  }
+  return true;
+}
+
 int TestFilterPipeline(int, char*[])
 {
   bool ok = ReExecutesOnlyWhenTheViewChanges();
@@ -668,5 +752,6 @@ int TestFilterPipeline(int, char*[])
   ok = IndependentOfThreadCount() && ok;
   ok = ParallelProjection() && ok;
   ok = CellsEditedInPlace() && ok;
+  ok = SmoothingTakenAgainOnlyWhileItHolds() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -29,7 +29,10 @@
  * fed by this filter re-runs it when the view moves, and not when a renderer only resets the
  * clipping range. Before a renderer has created its camera, the input passes through unchanged (the
  * renderer asks for bounds to create it). The view-independent work (triangles, edge table, shading
- * normals) is cached and rebuilt only when the input changes.
+ * normals) is cached: rebuilt when the input's cells or the settings change, updated when only its
+ * points move (a deforming mesh), kept when only its other arrays change (a time series of values),
+ * in this input object or another with the same cells (a reader's next time step). An update for
+ * the same view, settings and geometry takes the last smoothing again and writes the new values.
  *
  * Output port 0: the re-meshed mesh. All input points come first with their ids
  * unchanged (positions too, but for the perturbation below), then the copies made
@@ -410,7 +413,9 @@ public:
    * Render-time smoothing (vtkSilhouetteSmoothingMapper): the output split
    * into what changes with the input only and what changes with the view,
    * outside the pipeline, with this filter's settings. Both prepare `input`
-   * as RequestData does (once per input or settings change) and return 0
+   * as RequestData does (the surface is built once per settings change and
+   * per new cells, in this input object or another; new points move it; new
+   * values alone leave it as it is) and return 0
    * after reporting an error: arrays of the wrong length are refused (the
    * pipeline leaves them out before RequestData; vtkSilhouetteSmoothingMapper
    * leaves them out before it calls these) and an exception inside becomes

@@ -17,8 +17,9 @@
 // Then a deforming mesh (new points every frame, the same cells, as a time
 // series gives), with the camera still: the plain mapper; the mapper, which
 // keeps the topology (WeldedSurface::movePoints) and its index buffers; and
-// the mapper made to build everything anew every frame (its cells touched
-// too), which is what every such frame cost before. Each frame stretches
+// the mapper made to build everything anew every frame (its cells changed
+// too: one triangle's corners turned round), which is what every such frame
+// cost before. Each frame stretches
 // the mesh along x by 1 + S and back, S = --deform-step (0.01 unless given):
 // a small step lets the fold guard keep its grid of the triangles' boxes
 // from frame to frame (PreparedMesh::adoptTriangleGrid), a large one does
@@ -32,7 +33,9 @@
 // Then new point values every frame on the still mesh (a time series of
 // values): the plain mapper colouring by them, the mapper (whose patches
 // take the new values without smoothing again) and the mapper made to build
-// everything anew, with the same columns.
+// everything anew, with the same columns. Both still-camera sections also
+// run filter + vtkPolyDataMapper ("filter"; its smoothing column is the
+// filter's update).
 //
 // Usage: mapper_benchmark [--frames N] [--levels L1,L2,...] [--size WxH]
 //                         [--deform-step S]
@@ -253,6 +256,7 @@ struct Deforming : Scene
   bool Rebuild;
   vtkNew<vtkPolyData> Mesh;
   vtkSilhouetteSmoothingMapper* Smoothing = nullptr; // null for the plain mapper
+  vtkSilhouetteSmoothingFilter* Filter = nullptr;    // for filter + plain mapper
   std::vector<double> FrameMs;
   std::vector<double> PrepareMs;
 
@@ -294,15 +298,29 @@ struct Deforming : Scene
   }
 
   // The frame's time: `change`, then the render; with Rebuild, the cells
-  // count as changed too.
+  // change too (the same triangles, so the same image).
   template<typename ChangeMesh>
   double Render(ChangeMesh change)
   {
+    double filterMs = 0.0;
     const double ms = benchmark_timing::Milliseconds([&]() {
       change();
       if (this->Rebuild)
       {
-        this->Mesh->GetPolys()->Modified();
+        // New cells: the first triangle's corners turned round (the same
+        // triangle, other bytes), since the cells count by their contents.
+        vtkCellArray* polys = this->Mesh->GetPolys();
+        vtkIdType size = 0;
+        const vtkIdType* ids = nullptr;
+        polys->GetCellAtId(0, size, ids);
+        std::vector<vtkIdType> turned(ids, ids + size);
+        std::rotate(turned.begin(), turned.begin() + 1, turned.end());
+        polys->ReplaceCellAtId(0, size, turned.data());
+        polys->Modified();
+      }
+      if (this->Filter)
+      {
+        filterMs = benchmark_timing::Milliseconds([&]() { this->Filter->Update(); });
       }
       this->Window->Render();
       this->Window->WaitForCompletion();
@@ -310,6 +328,10 @@ struct Deforming : Scene
     if (this->Smoothing)
     {
       this->PrepareMs.push_back(1000.0 * this->Smoothing->GetLastPrepareSeconds());
+    }
+    if (this->Filter)
+    {
+      this->PrepareMs.push_back(filterMs);
     }
     return ms;
   }
@@ -327,17 +349,31 @@ void MeasureChanges(vtkPolyData* mesh, const Options& options, Change change)
 {
   Deforming still("plain", false);
   Deforming smoothing("mapper", false);
+  Deforming filtered("filter", false);
   Deforming anew("anew", true);
-  Deforming* variants[3] = { &still, &smoothing, &anew };
+  Deforming* variants[4] = { &still, &smoothing, &filtered, &anew };
   vtkNew<vtkPolyDataMapper> stillMapper;
   vtkNew<vtkSilhouetteSmoothingMapper> smoothingMapper;
+  vtkNew<vtkPolyDataMapper> filterMapper;
   vtkNew<vtkSilhouetteSmoothingMapper> anewMapper;
-  vtkPolyDataMapper* mappers[3] = { stillMapper, smoothingMapper, anewMapper };
-  for (int k = 0; k < 3; ++k)
+  vtkPolyDataMapper* mappers[4] = { stillMapper, smoothingMapper, filterMapper, anewMapper };
+  vtkNew<vtkSilhouetteSmoothingFilter> filter;
+  for (int k = 0; k < 4; ++k)
   {
     Deforming* d = variants[k];
     d->Mesh->DeepCopy(mesh);
-    mappers[k]->SetInputData(d->Mesh);
+    if (d == &filtered)
+    {
+      filter->SetInputData(d->Mesh);
+      filter->SetRenderer(d->Renderer);
+      filter->SetProp3D(d->Actor);
+      filterMapper->SetInputConnection(filter->GetOutputPort());
+      d->Filter = filter;
+    }
+    else
+    {
+      mappers[k]->SetInputData(d->Mesh);
+    }
     mappers[k]->ScalarVisibilityOff();
     if (change == Change::Values)
     {
@@ -381,12 +417,15 @@ void MeasureChanges(vtkPolyData* mesh, const Options& options, Change change)
     const double ms = benchmark_timing::Median(d->FrameMs);
     char work[32] = "-";
     char preparation[48] = "";
-    if (d->Smoothing)
+    if (d->Smoothing || d->Filter)
     {
       const double prepareMs = benchmark_timing::Median(d->PrepareMs);
       std::snprintf(work, sizeof(work), "%.2f", prepareMs);
-      std::snprintf(
-        preparation, sizeof(preparation), "; smoothing / anew's %.2f", prepareMs / anewPrepareMs);
+    }
+    if (d->Smoothing)
+    {
+      std::snprintf(preparation, sizeof(preparation), "; smoothing / anew's %.2f",
+        benchmark_timing::Median(d->PrepareMs) / anewPrepareMs);
     }
     std::printf("%10lld  %-7s %10.1f %10.2f %12s   %s; / anew %.2f%s\n",
       static_cast<long long>(mesh->GetNumberOfPolys()), d->Name, ms, ms / stillMs, work,

@@ -470,6 +470,7 @@ silsmooth::SmoothingResult vtkSilhouetteSmoothingFilter::Internals::Smooth(
   parameters.PreventFolds = self->FoldPrevention;
   parameters.KeepApexesPointed = self->KeepApexesPointed;
   parameters.CullOutsideFrustum = self->FrustumCulling;
+  parameters.SkipSubpixelSmoothing = self->SkipSubpixelSmoothing;
   parameters.FrozenTriangles = this->Frozen.empty() ? nullptr : &this->Frozen;
   parameters.BoundaryMayBeSeam = boundaryMayBeSeam;
   parameters.Visibility = self->VisibilityMethod == HIERARCHICAL
@@ -637,6 +638,7 @@ int vtkSilhouetteSmoothingFilter::RequestViewData(vtkInformation*,
   AddCount(fd, "FoldGuardRoundCount", static_cast<vtkIdType>(result.FoldGuardRounds));
   AddCount(fd, "SampleBudgetMaximum", static_cast<vtkIdType>(result.SampleBudgetMaximum));
   AddCount(fd, "CulledTriangleCount", static_cast<vtkIdType>(result.CulledTriangles));
+  AddCount(fd, "SubpixelTriangleCount", static_cast<vtkIdType>(result.SubpixelTriangles));
   AddCount(fd, "InputTriangleCount", inputTriangles);
   AddCount(fd, "OutputTriangleCount", inputTriangles - remeshedTriangles + newTriangles);
 
@@ -837,6 +839,7 @@ int vtkSilhouetteSmoothingFilter::BuildChangesUnguarded(vtkPolyData* input, vtkC
   AddCount(fd, "ChordFallbackCount", static_cast<vtkIdType>(result.ChordFallbackTriangles));
   AddCount(fd, "UnresolvedFoldCount", static_cast<vtkIdType>(result.UnresolvedFolds));
   AddCount(fd, "CulledTriangleCount", static_cast<vtkIdType>(result.CulledTriangles));
+  AddCount(fd, "SubpixelTriangleCount", static_cast<vtkIdType>(result.SubpixelTriangles));
   return 1;
 }
 
@@ -851,6 +854,7 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FoldPrevention: " << (this->FoldPrevention ? "On" : "Off") << "\n";
   os << indent << "KeepApexesPointed: " << (this->KeepApexesPointed ? "On" : "Off") << "\n";
   os << indent << "FrustumCulling: " << (this->FrustumCulling ? "On" : "Off") << "\n";
+  os << indent << "SkipSubpixelSmoothing: " << (this->SkipSubpixelSmoothing ? "On" : "Off") << "\n";
   os << indent << "FeatureLines: " << (this->FeatureLines ? "On" : "Off") << "\n";
   os << indent << "FeatureEdgeDetection: " << (this->FeatureEdgeDetection ? "On" : "Off") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";

@@ -232,6 +232,26 @@ public:
 
   ///@{
   /**
+   * Leave as they are the silhouette triangles whose smoothing would move no
+   * point of the image by more than Tolerance pixels (field data
+   * `SubpixelTriangleCount`), when the whole strip of silhouette triangles
+   * they belong to (joined through the edges the silhouette crosses) is
+   * such: a bound on how far the re-meshing could move any point of the
+   * triangle, projected with the view's pixels. On a mesh fine for the view
+   * (tens of thousands of triangles across the image) that is the whole
+   * silhouette, and a frame costs little more than finding it. Their
+   * silhouette is the chord between points on their edges. Default off: a
+   * mesh written out does not know the pixels it will be seen at.
+   * vtkSilhouetteSmoothingMapper turns it on. Not on a piece with ghost
+   * cells.
+   */
+  vtkSetMacro(SkipSubpixelSmoothing, bool);
+  vtkGetMacro(SkipSubpixelSmoothing, bool);
+  vtkBooleanMacro(SkipSubpixelSmoothing, bool);
+  ///@}
+
+  ///@{
+  /**
    * Feature edges (creases) marked on the input: every segment of a line
    * cell that is an edge of the triangles. Default on (line cells that run
    * along the surface's edges are taken as a deliberate mark, as
@@ -481,6 +501,7 @@ protected:
   bool FoldPrevention = true;
   bool KeepApexesPointed = true;
   bool FrustumCulling = false;
+  bool SkipSubpixelSmoothing = false;
   bool FeatureLines = true;
   bool FeatureEdgeDetection = false;
   double FeatureAngle = 30.0;

@@ -63,4 +63,10 @@ double chordDeviationBound(const HermiteCurve& curve)
   return 0.25 * std::max(across(curve.T0), across(curve.T1));
 }
 
+double parametricDeviationBound(const HermiteCurve& curve)
+{
+  const glm::dvec3 chord = curve.P1 - curve.P0;
+  return 0.25 * std::max(glm::length(curve.T0 - chord), glm::length(curve.T1 - chord));
+}
+
 } // namespace silsmooth

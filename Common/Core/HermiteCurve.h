@@ -49,4 +49,13 @@ HermiteCurve makeCircleApproximatingCurve(
 /// above allows: a quarter of the larger end tangent's part across the chord.
 double chordDeviationBound(const HermiteCurve& curve);
 
+/// The largest distance between C(u) and the point at the same parameter on
+/// the chord, P0 + u (P1 - P0), for u in [0, 1]: a quarter of the larger of
+/// |T0 - c| and |T1 - c|, c = P1 - P0. (C(u) minus that point is
+/// h10(u) (T0 - c) + h11(u) (T1 - c), and |h10(u)| + |h11(u)| = u (1 - u).)
+/// Unlike chordDeviationBound it also bounds the slide along the chord: a
+/// re-meshing that puts C(u) where the flat triangle has the chord's point
+/// moves that point by at most this much.
+double parametricDeviationBound(const HermiteCurve& curve);
+
 } // namespace silsmooth

@@ -42,6 +42,15 @@ struct ViewGeometry
   /// Projects a model point to viewport pixels. Returns false when the point
   /// is on or behind the eye plane (no finite pixel position).
   bool toPixels(const glm::dvec3& point, glm::dvec2& pixel) const;
+
+  /// An upper bound, in pixels, on how far the image of a point moves when
+  /// the point moves by `distance` or less, for any point that stays within
+  /// `distance` of the triangle (a, b, c) as it moves. It bounds the
+  /// projection's derivative over that region (its w and its x and y in
+  /// clip space from the corners'), so it holds in perspective and
+  /// parallel alike. Infinite when the region may reach the eye plane.
+  double pixelShiftBound(
+    const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, double distance) const;
 };
 
 } // namespace silsmooth

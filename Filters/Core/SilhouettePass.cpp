@@ -27,6 +27,8 @@ SmoothingResult SilhouettePass::run()
 {
   this->findSilhouetteTriangles();
   this->straightenAtApexes();
+  this->skipSubpixelSmoothing();
+  this->PresetStraightEdges = this->StraightEdges.size();
   // Each round re-meshes the whole frame with the fallbacks decided so far;
   // a round that finds no fold, or no fallback left to take, is the last.
   // Rounds are bounded: every round but the last takes a fallback, and
@@ -85,7 +87,7 @@ SmoothingResult SilhouettePass::run()
   }
   this->Result.PinnedPoints = this->Pinned.size();
   this->Result.CulledTriangles = this->Culled;
-  this->Result.StraightSilhouettePoints = this->StraightEdges.size() - this->ApexStraightEdges;
+  this->Result.StraightSilhouettePoints = this->StraightEdges.size() - this->PresetStraightEdges;
   this->Result.StraightFeatureSegments = this->StraightFeatures.size();
   for (const auto& level : this->Levels)
   {
@@ -130,7 +132,6 @@ void SilhouettePass::straightenAtApexes()
   std::sort(this->StraightEdges.begin(), this->StraightEdges.end());
   this->StraightEdges.erase(
     std::unique(this->StraightEdges.begin(), this->StraightEdges.end()), this->StraightEdges.end());
-  this->ApexStraightEdges = this->StraightEdges.size();
 }
 
 void SilhouettePass::remeshFrame()
@@ -163,6 +164,11 @@ void SilhouettePass::remeshFrame()
     {
       continue; // a frozen feature triangle (frozen silhouette ones are not listed)
     }
+    if (silhouette && !feature && this->isSubpixel(t))
+    {
+      this->addSubpixelSegment(t, segments);
+      continue;
+    }
     this->Result.RemeshedTriangles.push_back(t);
     if (feature)
     {
@@ -176,7 +182,8 @@ void SilhouettePass::remeshFrame()
     }
     this->Result.ReplacementOffsets.push_back(this->Result.Replacements.size());
   }
-  this->Result.SilhouetteTriangleCount = this->Silhouette.size();
+  this->Result.SilhouetteTriangleCount = this->Silhouette.size() - this->Subpixel.size();
+  this->Result.SubpixelTriangles = this->Subpixel.size();
   this->Result.SampleBudgetMaximum = this->SampleCapBit ? this->SampleCap : 0;
   this->Result.Polylines = chainSegments(segments);
   this->Result.ConcaveSegmentCount = this->Concave.size();

@@ -20,6 +20,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <atomic>
 #include <unordered_map>
 #include <utility>
@@ -77,6 +78,23 @@ private:
   // runs from an apex (apexSides: such edges' silhouette triangles,
   // sorted); -1 for any other edge.
   Id apexEdgeCrossing(Id e, const std::vector<std::pair<Id, Id>>& apexSides) const;
+  // SmoothingParameters::SkipSubpixelSmoothing: fills Subpixel, and puts
+  // their silhouette points on the straight edges.
+  void skipSubpixelSmoothing();
+  // How far, in pixels, re-meshing silhouette triangle t would move a point
+  // of it at most; infinite for one that is not a candidate (a feature or
+  // seam side, an apex, a repeated corner).
+  double smoothingShiftPixels(Id t) const;
+  bool isSubpixel(Id t) const
+  {
+    return std::binary_search(this->Subpixel.begin(), this->Subpixel.end(), t);
+  }
+  // The silhouette point's parameter on mixed edge `edge`, from end a to
+  // end b: a is the end with the smaller position (x, then y, then z; the
+  // id only for coincident ends), not the smaller id, so that the point
+  // comes out bit for bit the same in every piece of a partitioned mesh
+  // (the ids differ between pieces), and pieces meet without a crack.
+  double crossingParameter(const Edge& edge, std::size_t& a, std::size_t& b) const;
   void remeshFrame();
 
   FoldFindings findFrameFolds(
@@ -250,6 +268,9 @@ private:
     Id t, int lone, const std::array<Id, 3>& corners) const;
 
   void remeshTriangle(Id t, std::vector<std::vector<Id>>& segments);
+  // A Subpixel triangle, kept as it is: only its silhouette segment, the
+  // chord between its silhouette points on its straight edges.
+  void addSubpixelSegment(Id t, std::vector<std::vector<Id>>& segments) const;
 
   // The points inside the feature segment on edge e, made once per frame and
   // shared by the edge's triangles, as (parameter along the segment, point id):
@@ -307,7 +328,11 @@ private:
   // points the perturbation leaves in place (both ascending).
   std::unordered_map<Id, unsigned char> Levels;
   std::vector<Id> StraightEdges;
-  std::size_t ApexStraightEdges = 0; // the first of them, straight at apexes
+  // How many of them were straight before the first round (at apexes and
+  // Subpixel triangles): not fallbacks.
+  std::size_t PresetStraightEdges = 0;
+  // Silhouette triangles kept as they are (skipSubpixelSmoothing), ascending.
+  std::vector<Id> Subpixel;
   std::size_t ApexTriangles = 0;
   std::size_t CrowdedTriangles = 0; // sent straight untested (FoldGuard.h)
   std::vector<Id> StraightFeatures;

@@ -122,6 +122,18 @@ void SilhouettePass::remeshTriangle(Id t, std::vector<std::vector<Id>>& segments
   }
 }
 
+void SilhouettePass::addSubpixelSegment(Id t, std::vector<std::vector<Id>>& segments) const
+{
+  const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
+  const int lone = this->loneCorner(tri);
+  const std::array<Id, 3> corners{ { tri[lone], tri[(lone + 1) % 3], tri[(lone + 2) % 3] } };
+  const auto [p, q] = this->silhouettePointsOf(t, lone, corners);
+  if (p.Point != q.Point)
+  {
+    segments.push_back({ p.Point, q.Point });
+  }
+}
+
 // The points inside the feature segment on edge e, made once per frame and
 // shared by the edge's triangles, as (parameter along the segment, point id):
 // its samples, and the silhouette points that the other sides of the crease

@@ -1,5 +1,6 @@
 #include "SilhouettePass.h"
 
+#include "DisjointSets.h"
 #include "FoldGuard.h"
 #include "HermiteCurve.h"
 #include "LocalRemesher.h"
@@ -202,22 +203,10 @@ void SilhouettePass::computeSilhouettePoints()
   for (const Id e : mixedEdges)
   {
     const Edge& edge = edges.edge(e);
-    const std::size_t lo = static_cast<std::size_t>(edge.low);
-    const std::size_t hi = static_cast<std::size_t>(edge.high);
-    // Walked from the end with the smaller position (x, then y, then z; the
-    // id only for coincident ends), not the smaller id: then the point comes
-    // out bit for bit the same in every piece of a partitioned mesh (the
-    // ids differ between pieces), and pieces meet without a crack.
-    const bool lowFirst = std::make_tuple(points[lo].x, points[lo].y, points[lo].z, lo) <
-      std::make_tuple(points[hi].x, points[hi].y, points[hi].z, hi);
-    const std::size_t a = lowFirst ? lo : hi;
-    const std::size_t b = lowFirst ? hi : lo;
-    const VisibilityQuadratic h = visibilityAlongEdge(normals[a],
-      this->View.towardViewerFrom(points[a]), normals[b], this->View.towardViewerFrom(points[b]));
-    // G holds only signs for hierarchically decided vertices: the values here.
-    double t = std::clamp(silhouetteParameter(h, this->View.visibility(points[a], normals[a]),
-                            this->View.visibility(points[b], normals[b])),
-      EdgeParameterMargin, 1.0 - EdgeParameterMargin);
+    std::size_t a = 0;
+    std::size_t b = 0;
+    double t = this->crossingParameter(edge, a, b);
+    const bool lowFirst = a == static_cast<std::size_t>(edge.low);
     NewPoint p;
     const Id feature = this->Mesh.edgeFeature(e);
     const Id crossing =
@@ -264,6 +253,153 @@ void SilhouettePass::computeSilhouettePoints()
     [](const FeatureSilhouettePoint& x, const FeatureSilhouettePoint& y) {
       return x.Feature != y.Feature ? x.Feature < y.Feature : x.Edge < y.Edge;
     });
+}
+
+double SilhouettePass::crossingParameter(const Edge& edge, std::size_t& a, std::size_t& b) const
+{
+  const auto& points = this->Mesh.points();
+  const auto& normals = this->Mesh.normals();
+  const std::size_t lo = static_cast<std::size_t>(edge.low);
+  const std::size_t hi = static_cast<std::size_t>(edge.high);
+  const bool lowFirst = std::make_tuple(points[lo].x, points[lo].y, points[lo].z, lo) <
+    std::make_tuple(points[hi].x, points[hi].y, points[hi].z, hi);
+  a = lowFirst ? lo : hi;
+  b = lowFirst ? hi : lo;
+  const VisibilityQuadratic h = visibilityAlongEdge(normals[a],
+    this->View.towardViewerFrom(points[a]), normals[b], this->View.towardViewerFrom(points[b]));
+  // G holds only signs for hierarchically decided vertices: the values here.
+  return std::clamp(silhouetteParameter(h, this->View.visibility(points[a], normals[a]),
+                      this->View.visibility(points[b], normals[b])),
+    EdgeParameterMargin, 1.0 - EdgeParameterMargin);
+}
+
+// A triangle is a candidate when it is smoothed like any other (no feature
+// or seam side, not at an apex: those keep their own rules) and its
+// smoothing stays within the tolerance. A re-meshed silhouette triangle
+// splits both its mixed sides at its silhouette points, so the triangles
+// across must be re-meshed too, or the output has a T-junction there:
+// candidates stay whole only where every silhouette triangle joined to them
+// through mixed sides (their strip of the silhouette, usually one loop of
+// the outline) is a candidate, and then all their silhouette points sit on
+// the straight edges (for the silhouette's polylines). A strip with one
+// triangle beyond the tolerance is smoothed whole, as without the option.
+void SilhouettePass::skipSubpixelSmoothing()
+{
+  this->Subpixel.clear();
+  if (!this->Parameters.SkipSubpixelSmoothing || this->Parameters.FrozenTriangles ||
+    this->Silhouette.empty())
+  {
+    return;
+  }
+  const double tolerance = this->Sampling.TolerancePixels;
+  const std::size_t count = this->Silhouette.size();
+  std::vector<unsigned char> candidate(count, 0);
+  this->For(count, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      candidate[i] = this->smoothingShiftPixels(this->Silhouette[i]) <= tolerance ? 1 : 0;
+    }
+  });
+  // The strips: silhouette triangles joined through the mixed sides they share.
+  const EdgeTable& edges = this->Mesh.edges();
+  std::vector<std::pair<Id, std::size_t>> sides; // (mixed edge, entry of Silhouette)
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Id e = edges.sideEdge(this->Silhouette[i], k);
+      if (this->isMixed(edges.edge(e)))
+      {
+        sides.emplace_back(e, i);
+      }
+    }
+  }
+  std::sort(sides.begin(), sides.end());
+  DisjointSets strips(count);
+  for (std::size_t s = 1; s < sides.size(); ++s)
+  {
+    if (sides[s].first == sides[s - 1].first)
+    {
+      strips.unite(sides[s].second, sides[s - 1].second);
+    }
+  }
+  std::vector<unsigned char> stripOfCandidates(count, 1); // by root
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    stripOfCandidates[strips.find(i)] &= candidate[i];
+  }
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    if (stripOfCandidates[strips.find(i)])
+    {
+      this->Subpixel.push_back(this->Silhouette[i]); // ascending, as Silhouette is
+    }
+  }
+  if (this->Subpixel.empty())
+  {
+    return;
+  }
+  std::vector<Id> straight = this->StraightEdges;
+  for (const auto& side : sides)
+  {
+    if (stripOfCandidates[strips.find(side.second)])
+    {
+      straight.push_back(side.first);
+    }
+  }
+  std::sort(straight.begin(), straight.end());
+  straight.erase(std::unique(straight.begin(), straight.end()), straight.end());
+  this->StraightEdges = std::move(straight);
+}
+
+double SilhouettePass::smoothingShiftPixels(Id t) const
+{
+  constexpr double never = HUGE_VAL;
+  const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
+  if (hasRepeatedCorner(tri) || this->levelOf(t) != 0)
+  {
+    return never; // an apex's (straight already), or no interior
+  }
+  const EdgeTable& edges = this->Mesh.edges();
+  for (int k = 0; k < 3; ++k)
+  {
+    const Id e = edges.sideEdge(t, k);
+    if (this->Mesh.edgeFeature(e) >= 0 || this->mayBeSeam(e))
+    {
+      return never;
+    }
+  }
+  const auto& points = this->Mesh.points();
+  const auto& normals = this->Mesh.normals();
+  const int lone = this->loneCorner(tri);
+  // Each silhouette point as computeSilhouettePoints makes it on a curved
+  // bridge, and how far that is from its place on the straight edge.
+  glm::dvec3 at[2];
+  glm::dvec3 normal[2];
+  double moved = 0.0;
+  const int sides[2] = { lone, (lone + 2) % 3 }; // the two sides at the lone corner
+  for (int s = 0; s < 2; ++s)
+  {
+    std::size_t a = 0;
+    std::size_t b = 0;
+    const double u = this->crossingParameter(edges.edge(edges.sideEdge(t, sides[s])), a, b);
+    const HermiteCurve bridge =
+      makeCircleApproximatingCurve(points[a], normals[a], points[b], normals[b]);
+    at[s] = bridge.evaluate(u);
+    moved = std::max(moved, glm::length(at[s] - ((1.0 - u) * points[a] + u * points[b])));
+    normal[s] = safeNormalize((1.0 - u) * normals[a] + u * normals[b]);
+    if (normal[s] == glm::dvec3(0.0))
+    {
+      normal[s] = u < 0.5 ? normals[a] : normals[b];
+    }
+  }
+  // The segment's samples sit on the chord between the flat points: each
+  // moves by its slide off the chord between the lifted points plus the
+  // lifted points' own moves, interpolated.
+  moved +=
+    parametricDeviationBound(makeCircleApproximatingCurve(at[0], normal[0], at[1], normal[1]));
+  return this->View.pixelShiftBound(points[static_cast<std::size_t>(tri[0])],
+    points[static_cast<std::size_t>(tri[1])], points[static_cast<std::size_t>(tri[2])], moved);
 }
 
 // The triangles re-meshed for their feature sides in this frame: those

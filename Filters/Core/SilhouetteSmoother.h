@@ -102,6 +102,22 @@ struct SmoothingParameters
   /// that plane too. For renderers (vtkSilhouetteSmoothingMapper); a mesh
   /// written to a file wants every silhouette smoothed.
   bool CullOutsideFrustum = false;
+  /// Leave as they are the silhouette triangles whose smoothing would move
+  /// no point of the image by more than Sampling.TolerancePixels, when their
+  /// whole strip of the silhouette (the silhouette triangles joined to them
+  /// through mixed edges) is such: a strip with one triangle beyond it is
+  /// smoothed whole (SilhouettePass::skipSubpixelSmoothing). The bound:
+  /// the re-meshing moves a point of the triangle no farther than its
+  /// silhouette points move off their edges plus the silhouette segment's
+  /// parametricDeviationBound (HermiteCurve.h), and ViewGeometry's
+  /// pixelShiftBound turns that into pixels. Their silhouette points sit on
+  /// the straight edges, and their silhouette is the chord between them. On a mesh fine for its
+  /// view (a 1.3M-triangle sphere at 1024x768 moves by thousandths of a pixel) the whole silhouette
+  /// is such, and the pass costs little more than finding it. For renderers
+  /// (vtkSilhouetteSmoothingMapper): a mesh written to a file has no pixels.
+  /// Not on a piece with frozen triangles (the piece that owns them cannot
+  /// know of it).
+  bool SkipSubpixelSmoothing = false;
   /// One entry per prepared triangle, or empty: a non-zero entry is a
   /// triangle that is never re-meshed (a ghost cell of a partitioned
   /// mesh's piece, which its own piece re-meshes). It still counts for the
@@ -142,6 +158,10 @@ struct SmoothingResult
   /// Silhouette triangles left out as outside the view frustum
   /// (SmoothingParameters::CullOutsideFrustum).
   std::size_t CulledTriangles = 0;
+  /// Silhouette triangles left as they are, their smoothing below a pixel
+  /// tolerance (SmoothingParameters::SkipSubpixelSmoothing); not in
+  /// SilhouetteTriangleCount.
+  std::size_t SubpixelTriangles = 0;
   /// The triangles replacing RemeshedTriangles[i] are
   /// Replacements[ReplacementOffsets[i] .. ReplacementOffsets[i + 1]).
   std::vector<std::size_t> ReplacementOffsets{ 0 };

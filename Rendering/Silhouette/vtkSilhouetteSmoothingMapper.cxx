@@ -122,6 +122,7 @@ struct ViewPatch
   vtkIdType ReplacedTriangles = 0;
   vtkIdType PatchTriangles = 0;
   vtkIdType CulledTriangles = 0;
+  vtkIdType SubpixelTriangles = 0;
   vtkIdType SilhouetteTriangles = 0;
   vtkIdType NewTriangles = 0;
 };
@@ -290,6 +291,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
     self->ReplacedTriangleCount = patch.ReplacedTriangles;
     self->PatchTriangleCount = patch.PatchTriangles;
     self->CulledTriangleCount = patch.CulledTriangles;
+    self->SubpixelTriangleCount = patch.SubpixelTriangles;
     self->SilhouetteTriangleCount = patch.SilhouetteTriangles;
     self->NewTriangleCount = patch.NewTriangles;
   }
@@ -302,6 +304,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
     patch.Smoothed = smooth;
     patch.DrawsChanges = false;
     patch.ReplacedTriangles = patch.PatchTriangles = patch.CulledTriangles = 0;
+    patch.SubpixelTriangles = 0;
     patch.SilhouetteTriangles = patch.NewTriangles = 0;
     patch.GeometryTime = this->Smoother->GetGeometryTime();
     if (!smooth || width <= 0 || height <= 0)
@@ -327,6 +330,10 @@ struct vtkSilhouetteSmoothingMapper::Internals
     if (vtkDataArray* culled = figures->GetArray("CulledTriangleCount"))
     {
       patch.CulledTriangles = static_cast<vtkIdType>(culled->GetTuple1(0));
+    }
+    if (vtkDataArray* subpixel = figures->GetArray("SubpixelTriangleCount"))
+    {
+      patch.SubpixelTriangles = static_cast<vtkIdType>(subpixel->GetTuple1(0));
     }
     if (vtkDataArray* silhouette = figures->GetArray("SilhouetteTriangleCount"))
     {
@@ -395,8 +402,10 @@ struct vtkSilhouetteSmoothingMapper::Internals
 vtkSilhouetteSmoothingMapper::vtkSilhouetteSmoothingMapper()
   : Internal(new Internals)
 {
-  // What the view cannot show is not smoothed.
+  // What the view cannot show is not smoothed, nor what it would show
+  // moved by less than the tolerance.
   this->Internal->Smoother->FrustumCullingOn();
+  this->Internal->Smoother->SkipSubpixelSmoothingOn();
 }
 
 vtkSilhouetteSmoothingMapper::~vtkSilhouetteSmoothingMapper() = default;
@@ -533,6 +542,7 @@ void vtkSilhouetteSmoothingMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ReplacedTriangleCount: " << this->ReplacedTriangleCount << "\n";
   os << indent << "PatchTriangleCount: " << this->PatchTriangleCount << "\n";
   os << indent << "CulledTriangleCount: " << this->CulledTriangleCount << "\n";
+  os << indent << "SubpixelTriangleCount: " << this->SubpixelTriangleCount << "\n";
   os << indent << "SmoothingRunCount: " << this->SmoothingRunCount << "\n";
   os << indent << "SmoothingFilter:\n";
   this->Internal->Smoother->PrintSelf(os, indent.GetNextIndent());

@@ -9,7 +9,10 @@
  * with vtkSilhouetteSmoothingFilter's method and settings
  * (GetSmoothingFilter(): Tolerance, PerturbVertices, FoldPrevention, ...;
  * FrustumCulling is on here, so silhouettes the view cannot show are not
- * smoothed). No SetRenderer or SetProp3D wiring is needed.
+ * smoothed, and so is SkipSubpixelSmoothing, so silhouettes whose smoothing
+ * the view would show moved by less than Tolerance pixels are not: on a
+ * mesh fine for the view a frame costs little more than finding the
+ * silhouette). No SetRenderer or SetProp3D wiring is needed.
  *
  * What a frame costs is the silhouette, not the mesh. The mesh as the
  * smoothing sees it (the filter's BuildBaseMesh: the input's points and the
@@ -85,12 +88,15 @@ public:
   ///@{
   /**
    * Of the last rendered frame: the input triangles re-meshed or moved, the
-   * triangles drawn in their place, and the silhouette triangles left as
-   * they are because the view cannot show them (FrustumCulling).
+   * triangles drawn in their place, the silhouette triangles left as they
+   * are because the view cannot show them (FrustumCulling), and those left
+   * because their smoothing would move the image by less than the
+   * tolerance (SkipSubpixelSmoothing).
    */
   vtkIdType GetReplacedTriangleCount() const { return this->ReplacedTriangleCount; }
   vtkIdType GetPatchTriangleCount() const { return this->PatchTriangleCount; }
   vtkIdType GetCulledTriangleCount() const { return this->CulledTriangleCount; }
+  vtkIdType GetSubpixelTriangleCount() const { return this->SubpixelTriangleCount; }
   /// The silhouette triangles re-meshed, and the triangles the re-meshing
   /// made (the patch without the kept triangles the perturbation moved):
   /// the filter's SilhouetteTriangleCount and NewTriangleCount.
@@ -167,6 +173,7 @@ protected:
   vtkIdType ReplacedTriangleCount = 0;
   vtkIdType PatchTriangleCount = 0;
   vtkIdType CulledTriangleCount = 0;
+  vtkIdType SubpixelTriangleCount = 0;
   vtkIdType SilhouetteTriangleCount = 0;
   vtkIdType NewTriangleCount = 0;
   double LastPrepareSeconds = 0.0;

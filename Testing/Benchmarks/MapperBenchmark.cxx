@@ -1,8 +1,11 @@
 // Render-time smoothing against the alternatives (issue 15), measured side
-// by side in one run: over an orbit, each frame is rendered by three
+// by side in one run: over an orbit, each frame is rendered by four
 // windows in turn, with
 //   plain   the mesh drawn by vtkPolyDataMapper (no smoothing),
-//   mapper  vtkSilhouetteSmoothingMapper,
+//   mapper  vtkSilhouetteSmoothingMapper (which leaves out the silhouette
+//           triangles whose smoothing would move the image by less than the
+//           tolerance, SkipSubpixelSmoothing: on these spheres, all of them),
+//   mapall  the mapper smoothing every silhouette triangle (that option off),
 //   filter  vtkSilhouetteSmoothingFilter + vtkPolyDataMapper,
 // on icospheres of about 80k, 330k and 1.3M triangles, offscreen, without
 // multisampling. For each it prints the median whole frame (camera move,
@@ -169,7 +172,7 @@ struct Variant : Scene
   }
 };
 
-// The orbit: plain, mapper and filter + mapper, frame by frame in turn.
+// The orbit: plain, mapper, mapall and filter + mapper, frame by frame in turn.
 void MeasureOrbit(vtkPolyData* mesh, const Options& options)
 {
   Variant plain("plain");
@@ -183,6 +186,12 @@ void MeasureOrbit(vtkPolyData* mesh, const Options& options)
   smoothingMapper->SetInputData(mesh);
   smoothingMapper->ScalarVisibilityOff();
   mapper.Actor->SetMapper(smoothingMapper);
+  Variant every("mapall");
+  vtkNew<vtkSilhouetteSmoothingMapper> everyMapper;
+  everyMapper->SetInputData(mesh);
+  everyMapper->ScalarVisibilityOff();
+  everyMapper->GetSmoothingFilter()->SkipSubpixelSmoothingOff();
+  every.Actor->SetMapper(everyMapper);
   vtkNew<vtkSilhouetteSmoothingFilter> filter;
   filter->SetInputData(mesh);
   filter->SetRenderer(filtered.Renderer);
@@ -191,7 +200,7 @@ void MeasureOrbit(vtkPolyData* mesh, const Options& options)
   filterMapper->SetInputConnection(filter->GetOutputPort());
   filterMapper->ScalarVisibilityOff();
   filtered.Actor->SetMapper(filterMapper);
-  Variant* variants[3] = { &plain, &mapper, &filtered };
+  Variant* variants[4] = { &plain, &mapper, &every, &filtered };
   for (Variant* v : variants)
   {
     v->SetUp(mesh, options);
@@ -210,9 +219,10 @@ void MeasureOrbit(vtkPolyData* mesh, const Options& options)
         v->Window->Render();
         v->Window->WaitForCompletion();
       });
-      if (v == &mapper)
+      if (v == &mapper || v == &every)
       {
-        prepare = 1000.0 * smoothingMapper->GetLastPrepareSeconds();
+        prepare = 1000.0 *
+          (v == &mapper ? smoothingMapper.Get() : everyMapper.Get())->GetLastPrepareSeconds();
       }
       v->FrameMs.push_back(frame);
       v->PrepareMs.push_back(prepare);
@@ -230,15 +240,20 @@ void MeasureOrbit(vtkPolyData* mesh, const Options& options)
     std::printf("%10lld  %-7s %10.1f %10.2f %12s\n",
       static_cast<long long>(mesh->GetNumberOfPolys()), v->Name, ms, ms / plainMs, smoothing);
   }
-  std::printf("%10s  mapper: %lld triangles replaced by %lld in the last frame\n", "",
-    static_cast<long long>(smoothingMapper->GetReplacedTriangleCount()),
-    static_cast<long long>(smoothingMapper->GetPatchTriangleCount()));
+  std::printf("%10s  mapper: %lld triangles replaced by %lld in the last frame, %lld silhouette"
+              " triangles left as they are (sub-pixel); mapall: %lld replaced by %lld\n",
+    "", static_cast<long long>(smoothingMapper->GetReplacedTriangleCount()),
+    static_cast<long long>(smoothingMapper->GetPatchTriangleCount()),
+    static_cast<long long>(smoothingMapper->GetSubpixelTriangleCount()),
+    static_cast<long long>(everyMapper->GetReplacedTriangleCount()),
+    static_cast<long long>(everyMapper->GetPatchTriangleCount()));
   // The orbit's first frame is the mesh's second view, where the
   // silhouette triangle tree's build starts (on a thread of its own, so no
   // frame should stand out).
-  std::printf("%10s  slowest frame: plain %.1f, mapper %.1f, filter %.1f\n", "",
+  std::printf("%10s  slowest frame: plain %.1f, mapper %.1f, mapall %.1f, filter %.1f\n", "",
     *std::max_element(plain.FrameMs.begin(), plain.FrameMs.end()),
     *std::max_element(mapper.FrameMs.begin(), mapper.FrameMs.end()),
+    *std::max_element(every.FrameMs.begin(), every.FrameMs.end()),
     *std::max_element(filtered.FrameMs.begin(), filtered.FrameMs.end()));
   std::printf("%10s  mapper's first frames (smoothing):", "");
   for (std::size_t f = 0; f < mapper.FrameMs.size() && f < 4; ++f)

@@ -192,3 +192,34 @@ TEST(HermiteCurve, OtherTangentsBreakTheBulgeInvariant)
   reversed.T1 = -reversed.T1;
   EXPECT_TRUE(measureChordDeviation(reversed).PastAnEnd);
 }
+
+TEST(HermiteCurve, ParametricDeviationBoundHoldsAndIsReached)
+{
+  // parametricDeviationBound bounds |C(u) - (P0 + u c)|, the move of a point
+  // that a re-meshing puts on the curve instead of the chord, and is reached:
+  // a bound a tenth lower fails.
+  std::mt19937 random(2026);
+  std::uniform_real_distribution<double> scale(1e-3, 1e3);
+  double tightest = 0.0; // largest measured / bound
+  for (int i = 0; i < 20000; ++i)
+  {
+    const glm::dvec3 p0 = scale(random) * randomUnitVector(random);
+    const glm::dvec3 p1 = p0 + scale(random) * randomUnitVector(random);
+    const HermiteCurve curve =
+      makeCircleApproximatingCurve(p0, randomUnitVector(random), p1, randomUnitVector(random));
+    const double bound = silsmooth::parametricDeviationBound(curve);
+    const double slack = 1e-14 *
+      (glm::length(curve.P0) + glm::length(curve.T0) + glm::length(curve.T1) +
+        glm::length(p1 - p0));
+    double largest = 0.0;
+    for (int k = 0; k <= 200; ++k)
+    {
+      const double u = k / 200.0;
+      largest =
+        std::max(largest, glm::length(curve.evaluate(u) - (curve.P0 + u * (curve.P1 - curve.P0))));
+    }
+    ASSERT_LE(largest, bound + slack) << "curve " << i;
+    tightest = std::max(tightest, largest / std::max(bound, 1e-300));
+  }
+  EXPECT_GT(tightest, 0.9) << "the bound is reached (equal end tangents, u = 1/2)";
+}

@@ -13,6 +13,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <iterator>
 #include <limits>
@@ -795,4 +796,157 @@ TEST(SilhouetteSmoother, AConesApexIsNoOutlineWhereItsSidesAllFaceTheViewer)
   ASSERT_GT(r.NewPoints.size(), 0u);
   EXPECT_GT(nearestNewPoint(r, points[0]), 0.5 * std::hypot(1.0, height))
     << "a crossing at the apex";
+}
+
+namespace
+{
+
+ViewGeometry realPerspective(const glm::dvec3& eye, int width, int height)
+{
+  ViewGeometry view;
+  view.Eye = eye;
+  view.ViewportWidth = width;
+  view.ViewportHeight = height;
+  view.ModelToClip = glm::perspective(glm::radians(30.0), double(width) / height, 0.1, 10.0) *
+    glm::lookAt(view.Eye, glm::dvec3(0.0), glm::dvec3(0.0, 1.0, 0.0));
+  return view;
+}
+
+// How far, in pixels, the pass moved its added points off their places in
+// the flat input triangles (the weights of their sources).
+double largestPixelMove(
+  const PreparedMesh& mesh, const SmoothingResult& r, const ViewGeometry& view)
+{
+  double largest = 0.0;
+  for (const NewPoint& p : r.NewPoints)
+  {
+    glm::dvec3 flat(0.0);
+    for (int k = 0; k < 3; ++k)
+    {
+      flat += p.Weights[k] * mesh.points()[static_cast<std::size_t>(p.Sources[k])];
+    }
+    glm::dvec2 a;
+    glm::dvec2 b;
+    if (view.toPixels(p.Position, a) && view.toPixels(flat, b))
+    {
+      largest = std::max(largest, glm::length(a - b));
+    }
+  }
+  return largest;
+}
+
+} // namespace
+
+// SmoothingParameters::SkipSubpixelSmoothing. On a sphere fine for its view
+// the smoothing moves nothing by a pixel: the whole outline is left as it is,
+// its silhouette the chords between points on the straight edges. Never when
+// a smoothed point moves by more than the tolerance; on a coarse sphere
+// nothing changes; and beside a smoothed strip the output stays closed.
+TEST(SilhouetteSmoother, SubpixelSmoothingIsLeftOutWhereItMovesNothingByTheTolerance)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::unitSphere(96, 192, points, triangles);
+  const PreparedMesh fine(points, triangles, points);
+  const ViewGeometry view = realPerspective(glm::dvec3(0.3, 0.5, 3.0), 320, 240);
+  SmoothingParameters parameters;
+  const SmoothingResult smoothed = smoothSilhouettes(fine, view, parameters);
+  const double moved = largestPixelMove(fine, smoothed, view);
+  ASSERT_GT(moved, 0.0);
+  std::printf("largest move %g px\n", moved);
+  ASSERT_LT(moved, 0.1); // a fifth of the tolerance's 0.5
+  parameters.SkipSubpixelSmoothing = true;
+  const SmoothingResult skipped = smoothSilhouettes(fine, view, parameters);
+  EXPECT_EQ(skipped.SubpixelTriangles, smoothed.SilhouetteTriangleCount);
+  EXPECT_EQ(skipped.SilhouetteTriangleCount, 0u);
+  EXPECT_TRUE(skipped.RemeshedTriangles.empty());
+  EXPECT_EQ(skipped.Polylines.size(), smoothed.Polylines.size()) << "the outline is still drawn";
+  EXPECT_LT(largestPixelMove(fine, skipped, view), 1e-9) << "its points on the straight edges";
+
+  // A tolerance below the largest move the smoothing makes must not leave
+  // that triangle's strip out: the bound is an upper bound.
+  parameters.Sampling.TolerancePixels = 0.99 * moved;
+  const SmoothingResult below = smoothSilhouettes(fine, view, parameters);
+  EXPECT_LT(below.SubpixelTriangles, smoothed.SilhouetteTriangleCount);
+  // How loose the bound is: the largest tolerance at which a triangle is
+  // not left out, in steps of 1.25 from the move.
+  double tolerance = moved;
+  SmoothingResult r;
+  do
+  {
+    tolerance *= 1.25;
+    parameters.Sampling.TolerancePixels = tolerance;
+    r = smoothSilhouettes(fine, view, parameters);
+  } while (r.SubpixelTriangles < smoothed.SilhouetteTriangleCount && tolerance < 100.0 * moved);
+  std::printf("every strip left out at %g px\n", tolerance);
+  EXPECT_LT(tolerance, 8.0 * moved) << "the bound is within 8 times the largest move";
+
+  // A fine sphere beside a coarse one: two strips, one left out, the other
+  // smoothed, and the output is closed, with no T-junction.
+  std::vector<glm::dvec3> both = points;
+  std::vector<Triangle> bothTriangles = triangles;
+  {
+    std::vector<glm::dvec3> coarsePoints;
+    std::vector<Triangle> coarseTriangles;
+    coretest::unitSphere(8, 16, coarsePoints, coarseTriangles);
+    const Id offset = static_cast<Id>(both.size());
+    for (const glm::dvec3& p : coarsePoints)
+    {
+      both.push_back(0.5 * p + glm::dvec3(1.6, 0.0, 0.0));
+    }
+    for (const Triangle& t : coarseTriangles)
+    {
+      bothTriangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+    }
+  }
+  std::vector<glm::dvec3> bothNormals = points;
+  for (std::size_t i = points.size(); i < both.size(); ++i)
+  {
+    bothNormals.push_back(glm::normalize(both[i] - glm::dvec3(1.6, 0.0, 0.0)));
+  }
+  const PreparedMesh pair(both, bothTriangles, bothNormals);
+  parameters.Sampling.TolerancePixels = 0.5;
+  const SmoothingResult mixed = smoothSilhouettes(pair, view, parameters);
+  EXPECT_EQ(mixed.SubpixelTriangles, skipped.SubpixelTriangles) << "the fine sphere's strip";
+  EXPECT_GT(mixed.SilhouetteTriangleCount, 0u) << "the coarse sphere's";
+  const Check closed = check(pair, mixed);
+  EXPECT_EQ(closed.Unpaired, 0);
+  EXPECT_EQ(closed.Repeated, 0);
+  // The deliberately wrong variant: within one strip, every other
+  // silhouette triangle kept whole. Its re-meshed neighbours split the
+  // sides they share with it, which the check finds.
+  SmoothingResult wrong = smoothed;
+  wrong.RemeshedTriangles.clear();
+  wrong.RemeshKinds.clear();
+  wrong.Replacements.clear();
+  wrong.ReplacementOffsets = { 0 };
+  for (std::size_t i = 0; i < smoothed.RemeshedTriangles.size(); i += 2)
+  {
+    wrong.RemeshedTriangles.push_back(smoothed.RemeshedTriangles[i]);
+    wrong.RemeshKinds.push_back(smoothed.RemeshKinds[i]);
+    wrong.Replacements.insert(wrong.Replacements.end(),
+      smoothed.Replacements.begin() + smoothed.ReplacementOffsets[i],
+      smoothed.Replacements.begin() + smoothed.ReplacementOffsets[i + 1]);
+    wrong.ReplacementOffsets.push_back(wrong.Replacements.size());
+  }
+  EXPECT_EQ(check(fine, smoothed).Unpaired, 0);
+  EXPECT_GT(check(fine, wrong).Unpaired, 0);
+
+  // A coarse sphere moves by many pixels: nothing is left out, and the
+  // output is the same as without the option.
+  coretest::unitSphere(8, 16, points, triangles);
+  const PreparedMesh coarse(points, triangles, points);
+  const ViewGeometry large = realPerspective(glm::dvec3(0.3, 0.5, 3.0), 1024, 768);
+  SmoothingParameters plain;
+  SmoothingParameters skipping;
+  skipping.SkipSubpixelSmoothing = true;
+  const SmoothingResult a = smoothSilhouettes(coarse, large, plain);
+  const SmoothingResult b = smoothSilhouettes(coarse, large, skipping);
+  EXPECT_EQ(b.SubpixelTriangles, 0u);
+  EXPECT_EQ(a.Replacements, b.Replacements);
+  ASSERT_EQ(a.NewPoints.size(), b.NewPoints.size());
+  for (std::size_t i = 0; i < a.NewPoints.size(); ++i)
+  {
+    EXPECT_EQ(a.NewPoints[i].Position, b.NewPoints[i].Position);
+  }
 }

@@ -10,7 +10,9 @@
 // input cell as the filter's output does (through its OriginalCellId).
 // Zoomed in, part of the silhouette is outside the view: the mapper leaves
 // it as it is (FrustumCulling, on in the mapper, off in the filter), and
-// the images are still the same. So they are with a clipping plane across
+// the images are still the same. (SkipSubpixelSmoothing, on in the mapper,
+// is turned on in the filter too: it changes the outline by up to the
+// tolerance, which pixels show.) So they are with a clipping plane across
 // the mesh, and with the actor translucent (each case also shows that the
 // mapper without the plane, or opaque, fails the check). Ghost cells (another piece's) are never
 // re-meshed by the filter and never drawn by the mapper: its image is the
@@ -112,6 +114,7 @@ bool CheckCase(const MapperCase& c, vtkTexture* filterTexture, vtkTexture* mappe
   filter->SetInputData(mesh);
   filter->SetRenderer(viaFilter.Renderer);
   filter->SetProp3D(viaFilter.Actor);
+  filter->SkipSubpixelSmoothingOn(); // as in the mapper
   vtkNew<vtkPolyDataMapper> plain;
   plain->SetInputConnection(filter->GetOutputPort());
   // Colouring::MultiTexture's second textures: one per window.

@@ -87,6 +87,7 @@ bool CheckMesh(const std::string& name, vtkPolyData* mesh, bool& leftInput)
   filter->SetInputData(mesh);
   filter->SetViewportSize(Size, Size);
   filter->FrustumCullingOn();
+  filter->SkipSubpixelSmoothingOn();
   double worst = 0.0; // how far the output reaches beyond the input's bounds
   int views = 0;
   bool ok = true;

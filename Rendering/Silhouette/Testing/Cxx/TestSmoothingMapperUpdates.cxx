@@ -122,6 +122,7 @@ bool CheckDeformingMesh(vtkPolyData* bunny, vtkTexture* filterTexture, vtkTextur
   filter->SetInputData(deforming);
   filter->SetRenderer(viaFilter.Renderer);
   filter->SetProp3D(viaFilter.Actor);
+  filter->SkipSubpixelSmoothingOn(); // as in the mapper
   vtkNew<vtkPolyDataMapper> plain;
   plain->SetInputConnection(filter->GetOutputPort());
   Configure(plain, viaFilter.Actor, Colouring::Plain, filterTexture);
@@ -357,6 +358,7 @@ bool CheckLinesAreLit(vtkPolyData* bunny)
       {
         filter->SetInputData(input);
         filter->SetRenderer(scene.Renderer);
+        filter->SkipSubpixelSmoothingOn(); // as in the mapper
         plain->SetInputConnection(filter->GetOutputPort());
         scene.Actor->SetMapper(plain);
       }

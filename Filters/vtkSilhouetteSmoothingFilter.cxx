@@ -258,8 +258,9 @@ struct vtkSilhouetteSmoothingFilter::Internals
   bool Prepare(vtkSilhouetteSmoothingFilter* self, vtkPolyData* input, bool& rebuilt);
   // The frame for the view, with the filter's settings; warns when the new
   // point budget lowered the sampling.
+  // `polylines`: whether the silhouette lines are wanted (not by BuildChanges).
   silsmooth::SmoothingResult Smooth(vtkSilhouetteSmoothingFilter* self, vtkPolyData* input,
-    const silsmooth::ViewGeometry& view, bool boundaryMayBeSeam);
+    const silsmooth::ViewGeometry& view, bool boundaryMayBeSeam, bool polylines = true);
 };
 
 std::string vtkSilhouetteSmoothingFilter::Internals::Rebuild(
@@ -463,9 +464,10 @@ bool vtkSilhouetteSmoothingFilter::Internals::Prepare(
 
 silsmooth::SmoothingResult vtkSilhouetteSmoothingFilter::Internals::Smooth(
   vtkSilhouetteSmoothingFilter* self, vtkPolyData* input, const silsmooth::ViewGeometry& view,
-  bool boundaryMayBeSeam)
+  bool boundaryMayBeSeam, bool polylines)
 {
   silsmooth::SmoothingParameters parameters;
+  parameters.SilhouettePolylines = polylines;
   parameters.PerturbConcaveSilhouettes = self->PerturbVertices;
   parameters.PreventFolds = self->FoldPrevention;
   parameters.KeepApexesPointed = self->KeepApexesPointed;
@@ -811,7 +813,7 @@ int vtkSilhouetteSmoothingFilter::BuildChangesUnguarded(vtkPolyData* input, vtkC
     return 0;
   }
   Internals& internal = *this->Internal;
-  const silsmooth::SmoothingResult result = internal.Smooth(this, input, view, false);
+  const silsmooth::SmoothingResult result = internal.Smooth(this, input, view, false, false);
   const silsmooth::SurfaceFrame frame = internal.Surface->assembleChanges(result);
   const UsedPoints used(frame.Triangles, internal.Surface->outputPointCount() + frame.Added.size());
   changes->Initialize();

@@ -164,9 +164,12 @@ void SilhouettePass::remeshFrame()
     {
       continue; // a frozen feature triangle (frozen silhouette ones are not listed)
     }
-    if (silhouette && !feature && this->isSubpixel(t))
+    if (silhouette && !feature && !this->Subpixel.empty() && this->isSubpixel(t))
     {
-      this->addSubpixelSegment(t, segments);
+      if (this->Parameters.SilhouettePolylines)
+      {
+        this->addSubpixelSegment(t, segments);
+      }
       continue;
     }
     this->Result.RemeshedTriangles.push_back(t);
@@ -185,7 +188,10 @@ void SilhouettePass::remeshFrame()
   this->Result.SilhouetteTriangleCount = this->Silhouette.size() - this->Subpixel.size();
   this->Result.SubpixelTriangles = this->Subpixel.size();
   this->Result.SampleBudgetMaximum = this->SampleCapBit ? this->SampleCap : 0;
-  this->Result.Polylines = chainSegments(segments);
+  if (this->Parameters.SilhouettePolylines)
+  {
+    this->Result.Polylines = chainSegments(segments);
+  }
   this->Result.ConcaveSegmentCount = this->Concave.size();
   if (this->Parameters.PerturbConcaveSilhouettes && !this->Concave.empty())
   {

@@ -81,10 +81,22 @@ private:
   // SmoothingParameters::SkipSubpixelSmoothing: fills Subpixel, and puts
   // their silhouette points on the straight edges.
   void skipSubpixelSmoothing();
+  // A mixed edge's silhouette point on its curved bridge, as
+  // computeSilhouettePoints makes it, and how far that is from its place on
+  // the straight edge.
+  struct CurvedCrossing
+  {
+    Id Edge;
+    glm::dvec3 Position;
+    glm::dvec3 Normal;
+    double Moved;
+  };
+  void curvedCrossing(CurvedCrossing& crossing) const;
   // How far, in pixels, re-meshing silhouette triangle t would move a point
-  // of it at most; infinite for one that is not a candidate (a feature or
-  // seam side, an apex, a repeated corner).
-  double smoothingShiftPixels(Id t) const;
+  // of it at most, from the crossings of its mixed edges (by edge);
+  // infinite for one that is not a candidate (a feature or seam side, an
+  // apex, a repeated corner).
+  double smoothingShiftPixels(Id t, const std::vector<CurvedCrossing>& crossings) const;
   bool isSubpixel(Id t) const
   {
     return std::binary_search(this->Subpixel.begin(), this->Subpixel.end(), t);

@@ -176,8 +176,13 @@ void SilhouettePass::computeSilhouettePoints()
   const bool apexes = this->Parameters.KeepApexesPointed && !this->Mesh.apexes().empty();
   std::vector<Id> mixedEdges;
   std::vector<std::pair<Id, Id>> apexSides; // (mixed edge from an apex, triangle)
+  const bool subpixelPoints = this->Parameters.SilhouettePolylines;
   for (const Id t : this->Silhouette)
   {
+    if (!subpixelPoints && !this->Subpixel.empty() && this->isSubpixel(t))
+    {
+      continue; // kept whole, and no polyline wants its points
+    }
     for (int k = 0; k < 3; ++k)
     {
       const Id e = edges.sideEdge(t, k);
@@ -291,17 +296,10 @@ void SilhouettePass::skipSubpixelSmoothing()
   {
     return;
   }
-  const double tolerance = this->Sampling.TolerancePixels;
-  const std::size_t count = this->Silhouette.size();
-  std::vector<unsigned char> candidate(count, 0);
-  this->For(count, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-    {
-      candidate[i] = this->smoothingShiftPixels(this->Silhouette[i]) <= tolerance ? 1 : 0;
-    }
-  });
-  // The strips: silhouette triangles joined through the mixed sides they share.
+  // The mixed sides, and each mixed edge's silhouette point (computed once
+  // for the two triangles of the edge).
   const EdgeTable& edges = this->Mesh.edges();
+  const std::size_t count = this->Silhouette.size();
   std::vector<std::pair<Id, std::size_t>> sides; // (mixed edge, entry of Silhouette)
   for (std::size_t i = 0; i < count; ++i)
   {
@@ -315,6 +313,30 @@ void SilhouettePass::skipSubpixelSmoothing()
     }
   }
   std::sort(sides.begin(), sides.end());
+  std::vector<CurvedCrossing> crossings;
+  for (const auto& side : sides)
+  {
+    if (crossings.empty() || crossings.back().Edge != side.first)
+    {
+      crossings.push_back({ side.first, {}, {}, 0.0 });
+    }
+  }
+  this->For(crossings.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t c = begin; c < end; ++c)
+    {
+      this->curvedCrossing(crossings[c]);
+    }
+  });
+  const double tolerance = this->Sampling.TolerancePixels;
+  std::vector<unsigned char> candidate(count, 0);
+  this->For(count, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      candidate[i] =
+        this->smoothingShiftPixels(this->Silhouette[i], crossings) <= tolerance ? 1 : 0;
+    }
+  });
+  // The strips: silhouette triangles joined through the mixed sides they share.
   DisjointSets strips(count);
   for (std::size_t s = 1; s < sides.size(); ++s)
   {
@@ -335,9 +357,9 @@ void SilhouettePass::skipSubpixelSmoothing()
       this->Subpixel.push_back(this->Silhouette[i]); // ascending, as Silhouette is
     }
   }
-  if (this->Subpixel.empty())
+  if (this->Subpixel.empty() || !this->Parameters.SilhouettePolylines)
   {
-    return;
+    return; // without polylines, their silhouette points are not made at all
   }
   std::vector<Id> straight = this->StraightEdges;
   for (const auto& side : sides)
@@ -352,7 +374,25 @@ void SilhouettePass::skipSubpixelSmoothing()
   this->StraightEdges = std::move(straight);
 }
 
-double SilhouettePass::smoothingShiftPixels(Id t) const
+void SilhouettePass::curvedCrossing(CurvedCrossing& crossing) const
+{
+  const auto& points = this->Mesh.points();
+  const auto& normals = this->Mesh.normals();
+  std::size_t a = 0;
+  std::size_t b = 0;
+  const double u = this->crossingParameter(this->Mesh.edges().edge(crossing.Edge), a, b);
+  crossing.Position =
+    makeCircleApproximatingCurve(points[a], normals[a], points[b], normals[b]).evaluate(u);
+  crossing.Moved = glm::length(crossing.Position - ((1.0 - u) * points[a] + u * points[b]));
+  crossing.Normal = safeNormalize((1.0 - u) * normals[a] + u * normals[b]);
+  if (crossing.Normal == glm::dvec3(0.0))
+  {
+    crossing.Normal = u < 0.5 ? normals[a] : normals[b];
+  }
+}
+
+double SilhouettePass::smoothingShiftPixels(
+  Id t, const std::vector<CurvedCrossing>& crossings) const
 {
   constexpr double never = HUGE_VAL;
   const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
@@ -361,6 +401,7 @@ double SilhouettePass::smoothingShiftPixels(Id t) const
     return never; // an apex's (straight already), or no interior
   }
   const EdgeTable& edges = this->Mesh.edges();
+  const CurvedCrossing* at[2] = { nullptr, nullptr };
   for (int k = 0; k < 3; ++k)
   {
     const Id e = edges.sideEdge(t, k);
@@ -368,36 +409,24 @@ double SilhouettePass::smoothingShiftPixels(Id t) const
     {
       return never;
     }
-  }
-  const auto& points = this->Mesh.points();
-  const auto& normals = this->Mesh.normals();
-  const int lone = this->loneCorner(tri);
-  // Each silhouette point as computeSilhouettePoints makes it on a curved
-  // bridge, and how far that is from its place on the straight edge.
-  glm::dvec3 at[2];
-  glm::dvec3 normal[2];
-  double moved = 0.0;
-  const int sides[2] = { lone, (lone + 2) % 3 }; // the two sides at the lone corner
-  for (int s = 0; s < 2; ++s)
-  {
-    std::size_t a = 0;
-    std::size_t b = 0;
-    const double u = this->crossingParameter(edges.edge(edges.sideEdge(t, sides[s])), a, b);
-    const HermiteCurve bridge =
-      makeCircleApproximatingCurve(points[a], normals[a], points[b], normals[b]);
-    at[s] = bridge.evaluate(u);
-    moved = std::max(moved, glm::length(at[s] - ((1.0 - u) * points[a] + u * points[b])));
-    normal[s] = safeNormalize((1.0 - u) * normals[a] + u * normals[b]);
-    if (normal[s] == glm::dvec3(0.0))
+    const auto found = std::lower_bound(crossings.begin(), crossings.end(), e,
+      [](const CurvedCrossing& c, Id edge) { return c.Edge < edge; });
+    if (found != crossings.end() && found->Edge == e)
     {
-      normal[s] = u < 0.5 ? normals[a] : normals[b];
+      at[at[0] ? 1 : 0] = &*found;
     }
+  }
+  if (!at[0] || !at[1])
+  {
+    return never;
   }
   // The segment's samples sit on the chord between the flat points: each
   // moves by its slide off the chord between the lifted points plus the
   // lifted points' own moves, interpolated.
-  moved +=
-    parametricDeviationBound(makeCircleApproximatingCurve(at[0], normal[0], at[1], normal[1]));
+  const double moved = std::max(at[0]->Moved, at[1]->Moved) +
+    parametricDeviationBound(
+      makeCircleApproximatingCurve(at[0]->Position, at[0]->Normal, at[1]->Position, at[1]->Normal));
+  const auto& points = this->Mesh.points();
   return this->View.pixelShiftBound(points[static_cast<std::size_t>(tri[0])],
     points[static_cast<std::size_t>(tri[1])], points[static_cast<std::size_t>(tri[2])], moved);
 }

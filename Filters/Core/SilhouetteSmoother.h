@@ -118,6 +118,11 @@ struct SmoothingParameters
   /// Not on a piece with frozen triangles (the piece that owns them cannot
   /// know of it).
   bool SkipSubpixelSmoothing = false;
+  /// Chain the silhouette into SmoothingResult::Polylines. Off when only the
+  /// surface is wanted (the mapper): the triangles SkipSubpixelSmoothing
+  /// leaves out then cost nothing past their test (their silhouette points,
+  /// wanted only by the polylines, are not made).
+  bool SilhouettePolylines = true;
   /// One entry per prepared triangle, or empty: a non-zero entry is a
   /// triangle that is never re-meshed (a ghost cell of a partitioned
   /// mesh's piece, which its own piece re-meshes). It still counts for the

@@ -21,6 +21,7 @@
 #include <glm/vec3.hpp>
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <unordered_map>
 #include <utility>
@@ -92,11 +93,18 @@ private:
     double Moved;
   };
   void curvedCrossing(CurvedCrossing& crossing) const;
+  // A silhouette triangle's sides (sideEdge order), and which are mixed.
+  struct TriangleSides
+  {
+    std::array<Id, 3> Edges;
+    std::array<bool, 3> Mixed;
+  };
   // How far, in pixels, re-meshing silhouette triangle t would move a point
   // of it at most, from the crossings of its mixed edges (by edge);
   // infinite for one that is not a candidate (a feature or seam side, an
   // apex, a repeated corner).
-  double smoothingShiftPixels(Id t, const std::vector<CurvedCrossing>& crossings) const;
+  double smoothingShiftPixels(
+    Id t, const TriangleSides& sides, const std::vector<CurvedCrossing>& crossings) const;
   bool isSubpixel(Id t) const
   {
     return std::binary_search(this->Subpixel.begin(), this->Subpixel.end(), t);

@@ -297,18 +297,30 @@ void SilhouettePass::skipSubpixelSmoothing()
     return;
   }
   // The mixed sides, and each mixed edge's silhouette point (computed once
-  // for the two triangles of the edge).
+  // for the two triangles of the edge). Reading a triangle's sides and their
+  // ends' visibility is a cache miss each on a large mesh: on threads.
   const EdgeTable& edges = this->Mesh.edges();
   const std::size_t count = this->Silhouette.size();
+  std::vector<TriangleSides> ownSides(count);
+  this->For(count, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const Id e = edges.sideEdge(this->Silhouette[i], k);
+        ownSides[i].Edges[k] = e;
+        ownSides[i].Mixed[k] = this->isMixed(edges.edge(e));
+      }
+    }
+  });
   std::vector<std::pair<Id, std::size_t>> sides; // (mixed edge, entry of Silhouette)
   for (std::size_t i = 0; i < count; ++i)
   {
     for (int k = 0; k < 3; ++k)
     {
-      const Id e = edges.sideEdge(this->Silhouette[i], k);
-      if (this->isMixed(edges.edge(e)))
+      if (ownSides[i].Mixed[k])
       {
-        sides.emplace_back(e, i);
+        sides.emplace_back(ownSides[i].Edges[k], i);
       }
     }
   }
@@ -333,7 +345,8 @@ void SilhouettePass::skipSubpixelSmoothing()
     for (std::size_t i = begin; i < end; ++i)
     {
       candidate[i] =
-        this->smoothingShiftPixels(this->Silhouette[i], crossings) <= tolerance ? 1 : 0;
+        this->smoothingShiftPixels(this->Silhouette[i], ownSides[i], crossings) <= tolerance ? 1
+                                                                                             : 0;
     }
   });
   // The strips: silhouette triangles joined through the mixed sides they share.
@@ -392,7 +405,7 @@ void SilhouettePass::curvedCrossing(CurvedCrossing& crossing) const
 }
 
 double SilhouettePass::smoothingShiftPixels(
-  Id t, const std::vector<CurvedCrossing>& crossings) const
+  Id t, const TriangleSides& sides, const std::vector<CurvedCrossing>& crossings) const
 {
   constexpr double never = HUGE_VAL;
   const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
@@ -400,20 +413,19 @@ double SilhouettePass::smoothingShiftPixels(
   {
     return never; // an apex's (straight already), or no interior
   }
-  const EdgeTable& edges = this->Mesh.edges();
   const CurvedCrossing* at[2] = { nullptr, nullptr };
   for (int k = 0; k < 3; ++k)
   {
-    const Id e = edges.sideEdge(t, k);
+    const Id e = sides.Edges[k];
     if (this->Mesh.edgeFeature(e) >= 0 || this->mayBeSeam(e))
     {
       return never;
     }
-    const auto found = std::lower_bound(crossings.begin(), crossings.end(), e,
-      [](const CurvedCrossing& c, Id edge) { return c.Edge < edge; });
-    if (found != crossings.end() && found->Edge == e)
+    if (sides.Mixed[k])
     {
-      at[at[0] ? 1 : 0] = &*found;
+      const auto found = std::lower_bound(crossings.begin(), crossings.end(), e,
+        [](const CurvedCrossing& c, Id edge) { return c.Edge < edge; });
+      at[at[0] ? 1 : 0] = &*found; // every mixed side's edge is there
     }
   }
   if (!at[0] || !at[1])

@@ -24,6 +24,8 @@ props = [
    "Never fold: silhouette triangles whose new triangles turn over or cut through others are re-meshed along the chord, then on their straight edges; lowered vertices that fold stay in place.", "", False),
   ("SilhouetteKeepApexesPointed", "bool", "1", "Keep Apexes Pointed",
    "Keep cones pointed: at a vertex where the surface comes to a point, the silhouette stays on the mesh's edges (its one normal would round the cone into a dome).", "", True),
+  ("SilhouetteSkipSubpixelSmoothing", "bool", "1", "Skip Sub-pixel Smoothing",
+   "Leave as they are the stretches of silhouette whose smoothing would move the image by less than the tolerance (a fine mesh's: a frame then costs little more than finding its silhouette).", "", True),
   ("SilhouetteFeatureLines", "bool", "1", "Feature Lines",
    "Line cells along triangle edges mark feature edges (creases).", "", True),
   ("SilhouetteFeatureEdgeDetection", "bool", "0", "Feature Edge Detection",

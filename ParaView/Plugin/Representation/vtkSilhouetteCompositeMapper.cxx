@@ -32,6 +32,7 @@ void CopySettings(vtkSilhouetteSmoothingFilter* from, vtkSilhouetteSmoothingFilt
   to->SetPerturbVertices(from->GetPerturbVertices());
   to->SetFoldPrevention(from->GetFoldPrevention());
   to->SetKeepApexesPointed(from->GetKeepApexesPointed());
+  to->SetSkipSubpixelSmoothing(from->GetSkipSubpixelSmoothing());
   to->SetFeatureLines(from->GetFeatureLines());
   to->SetFeatureEdgeDetection(from->GetFeatureEdgeDetection());
   to->SetFeatureAngle(from->GetFeatureAngle());

@@ -57,6 +57,7 @@ public:
   void SetSilhouettePerturbVertices(bool perturb);
   void SetSilhouetteFoldPrevention(bool prevent);
   void SetSilhouetteKeepApexesPointed(bool keep);
+  void SetSilhouetteSkipSubpixelSmoothing(bool skip);
   void SetSilhouetteFeatureLines(bool use);
   void SetSilhouetteFeatureEdgeDetection(bool detect);
   void SetSilhouetteFeatureAngle(double degrees);

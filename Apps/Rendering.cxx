@@ -582,10 +582,13 @@ bool RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
     drawnBy = mapper;
     // Smoothed while it renders, with the same settings (the filter's run
     // gives the figures): the image is the filter's output's, pixel for
-    // pixel (module.TestSmoothingMapper).
+    // pixel (module.TestSmoothingMapper). So the mapper smooths sub-pixel
+    // silhouettes too, as the filter does; a still image has no frame rate
+    // to keep.
     mapper->SetInputData(input);
     mapper->ScalarVisibilityOff();
     ApplySmoothingOptions(mapper->GetSmoothingFilter(), options.Camera);
+    mapper->GetSmoothingFilter()->SkipSubpixelSmoothingOff();
     errors.Watch(mapper->GetSmoothingFilter());
   }
   AddStyleActors(view.Renderer, filter, input, options.Style, !options.NoSmoothing,

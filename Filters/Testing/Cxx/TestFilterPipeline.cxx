@@ -27,6 +27,7 @@
 #include "vtkRenderer.h"
 #include "vtkSMPTools.h"
 #include "vtkSilhouetteSmoothingFilter.h"
+#include "vtkSmartPointer.h"
 #include "vtkStripper.h"
 #include "vtkTorusSurfaceSource.h"
 #include "vtkTransform.h"
@@ -580,13 +581,35 @@ bool SameMesh(vtkPolyData* a, vtkPolyData* b)
 // points (a deforming mesh keeps its topology): its output equals a fresh
 // filter's on a copy of the edited mesh, and differs from the output before
 // the edit.
-bool CellsEditedInPlace()
+// A level-2 icosphere of its own, for a test to edit.
+vtkSmartPointer<vtkPolyData> EditableSphere()
 {
   vtkNew<vtkIcosphereSource> sphere;
   sphere->SetSubdivisionLevel(2);
   sphere->Update();
-  vtkNew<vtkPolyData> mesh;
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->DeepCopy(sphere->GetOutput());
+  return mesh;
+}
+
+// What a new filter with `settings`' tolerance makes of a copy of `mesh`
+// from `camera`: what an edited input must give.
+vtkSmartPointer<vtkPolyData> FreshOutput(
+  vtkPolyData* mesh, vtkCamera* camera, vtkSilhouetteSmoothingFilter* settings)
+{
+  vtkNew<vtkPolyData> copy;
+  copy->DeepCopy(mesh);
+  vtkNew<vtkSilhouetteSmoothingFilter> fresh;
+  fresh->SetInputData(copy);
+  fresh->SetCamera(camera);
+  fresh->SetTolerance(settings->GetTolerance());
+  fresh->Update();
+  return fresh->GetOutput();
+}
+
+bool CellsEditedInPlace()
+{
+  vtkSmartPointer<vtkPolyData> mesh = EditableSphere();
   vtkNew<vtkCamera> camera;
   camera->SetPosition(1.0, 2.0, 4.0);
   vtkNew<vtkSilhouetteSmoothingFilter> smoother;
@@ -642,18 +665,13 @@ bool CellsEditedInPlace()
   mesh->Modified(); // as a user would; the cell array's time stays
   smoother->Update();
 
-  vtkNew<vtkPolyData> copy;
-  copy->DeepCopy(mesh);
-  vtkNew<vtkSilhouetteSmoothingFilter> fresh;
-  fresh->SetInputData(copy);
-  fresh->SetCamera(camera);
-  fresh->Update();
+  vtkSmartPointer<vtkPolyData> fresh = FreshOutput(mesh, camera, smoother);
   std::printf("cells edited in place: %d edges flipped (the polygons' MTime %s)\n", flipped,
     polys->GetMTime() == polysTime ? "unchanged" : "changed");
   CHECK(flipped > 20, "the edit flips many edges");
-  CHECK(!SameMesh(before, fresh->GetOutput()), "the edit changes the output");
-  CHECK(SameMesh(smoother->GetOutput(), fresh->GetOutput()),
-    "cells edited in place give a fresh filter's output");
+  CHECK(!SameMesh(before, fresh), "the edit changes the output");
+  CHECK(
+    SameMesh(smoother->GetOutput(), fresh), "cells edited in place give a fresh filter's output");
   return true;
 }
 
@@ -666,11 +684,7 @@ bool CellsEditedInPlace()
 // them.
 bool SmoothingTakenAgainOnlyWhileItHolds()
 {
-  vtkNew<vtkIcosphereSource> sphere;
-  sphere->SetSubdivisionLevel(2);
-  sphere->Update();
-  vtkNew<vtkPolyData> mesh;
-  mesh->DeepCopy(sphere->GetOutput());
+  vtkSmartPointer<vtkPolyData> mesh = EditableSphere();
   vtkNew<vtkFloatArray> values;
   values->SetName("Values");
   values->SetNumberOfValues(mesh->GetNumberOfPoints());
@@ -717,21 +731,15 @@ bool SmoothingTakenAgainOnlyWhileItHolds()
       mesh->Modified();
     }
     smoother->Update();
-    vtkNew<vtkPolyData> copy;
-    copy->DeepCopy(mesh);
-    vtkNew<vtkSilhouetteSmoothingFilter> fresh;
-    fresh->SetInputData(copy);
-    fresh->SetCamera(camera);
-    fresh->SetTolerance(smoother->GetTolerance());
-    fresh->Update();
+    vtkSmartPointer<vtkPolyData> fresh = FreshOutput(mesh, camera, smoother);
     vtkDataArray* mine = smoother->GetOutput()->GetPointData()->GetArray("Values");
-    vtkDataArray* theirs = fresh->GetOutput()->GetPointData()->GetArray("Values");
+    vtkDataArray* theirs = fresh->GetPointData()->GetArray("Values");
     bool sameValues = mine && theirs && mine->GetNumberOfTuples() == theirs->GetNumberOfTuples();
     for (vtkIdType t = 0; sameValues && t < mine->GetNumberOfTuples(); ++t)
     {
       sameValues = mine->GetTuple1(t) == theirs->GetTuple1(t);
     }
-    const bool same = SameMesh(smoother->GetOutput(), fresh->GetOutput()) && sameValues;
+    const bool same = SameMesh(smoother->GetOutput(), fresh) && sameValues;
     const bool geometryChanged = !SameMesh(before, smoother->GetOutput());
     std::printf("smoothing taken again: %s: the output %s a fresh filter's; its geometry %s\n",
       steps[k], same ? "equals" : "differs from", geometryChanged ? "changed" : "stayed");

@@ -303,8 +303,9 @@ screenshot folder and prints where. VTK's other trackball keys (3 stereo,
 j/t joystick, u user, fly-to, pick) do nothing here.
 
 The overlay (top left) shows the mesh, the style, the triangles in and out,
-the silhouette triangles and new triangles of the last smoothing, the
-tolerance, and the times: frames per second from the wall time between the
+the silhouette triangles and new triangles of the last smoothing (and those
+left whole, their smoothing below the tolerance), the tolerance, and the
+times: frames per second from the wall time between the
 ends of the last 20 renders of the main view (a gap of over a second starts
 the count again, so idle time is not averaged in), the renderer's own time
 for the last render (vtkRenderer::GetLastRenderTimeInSeconds, which includes

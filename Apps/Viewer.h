@@ -61,6 +61,9 @@ struct ViewerFigures
   vtkIdType OutputTriangles = 0;     ///< the input's with smoothing off
   vtkIdType SilhouetteTriangles = 0; ///< 0 with smoothing off (the filter does not run)
   vtkIdType NewTriangles = 0;        ///< 0 with smoothing off
+  /// Silhouette triangles the mapper left as they are, their smoothing below
+  /// the tolerance (not in SilhouetteTriangles; 0 in the filter's styles).
+  vtkIdType SubpixelTriangles = 0;
   /// The filter's run for this frame (0 if it did not run); in the shaded
   /// style, the mapper's smoothing before it drew the frame.
   double FilterMilliseconds = 0.0;

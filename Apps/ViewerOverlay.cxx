@@ -181,6 +181,7 @@ ViewerFigures Viewer::CurrentFigures() const
       figures.InputTriangles - mapper->GetReplacedTriangleCount() + mapper->GetPatchTriangleCount();
     figures.SilhouetteTriangles = mapper->GetSilhouetteTriangleCount();
     figures.NewTriangles = mapper->GetNewTriangleCount();
+    figures.SubpixelTriangles = mapper->GetSubpixelTriangleCount();
     figures.FilterMilliseconds = 1000.0 * mapper->GetLastPrepareSeconds();
     figures.RenderMilliseconds = 1000.0 * this->MainRenderer->GetLastRenderTimeInSeconds();
     return figures;
@@ -224,7 +225,14 @@ std::string Viewer::StatusText() const
   if (this->Smoothing)
   {
     text << "silhouette " << Grouped(figures.SilhouetteTriangles) << ", new "
-         << Grouped(figures.NewTriangles) << "\n";
+         << Grouped(figures.NewTriangles);
+    if (figures.SubpixelTriangles > 0)
+    {
+      // A fine mesh's silhouette can be all of it: "silhouette 0" alone
+      // would read as none found.
+      text << "; " << Grouped(figures.SubpixelTriangles) << " below the tolerance, kept";
+    }
+    text << "\n";
   }
   else
   {

@@ -15,7 +15,7 @@ using silsmooth::ViewGeometry;
 namespace
 {
 
-glm::dvec3 randomUnitVector(std::mt19937& random)
+glm::dvec3 randomDirection(std::mt19937& random)
 {
   std::normal_distribution<double> gauss;
   return glm::normalize(glm::dvec3(gauss(random), gauss(random), gauss(random)));
@@ -49,10 +49,10 @@ Measured measure(const ViewGeometry& view, double size, double distance, std::mt
   Measured m;
   for (int i = 0; i < 2000; ++i)
   {
-    const glm::dvec3 centre = 1.2 * randomUnitVector(random);
-    const glm::dvec3 a = centre + size * randomUnitVector(random);
-    const glm::dvec3 b = centre + size * randomUnitVector(random);
-    const glm::dvec3 c = centre + size * randomUnitVector(random);
+    const glm::dvec3 centre = 1.2 * randomDirection(random);
+    const glm::dvec3 a = centre + size * randomDirection(random);
+    const glm::dvec3 b = centre + size * randomDirection(random);
+    const glm::dvec3 c = centre + size * randomDirection(random);
     const double bound = view.pixelShiftBound(a, b, c, distance);
     for (int k = 0; k < 20; ++k)
     {
@@ -64,7 +64,7 @@ Measured measure(const ViewGeometry& view, double size, double distance, std::mt
         v = 1.0 - v;
       }
       const glm::dvec3 from = a + u * (b - a) + v * (c - a);
-      const glm::dvec3 to = from + distance * randomUnitVector(random);
+      const glm::dvec3 to = from + distance * randomDirection(random);
       glm::dvec2 p;
       glm::dvec2 q;
       const bool projected = view.toPixels(from, p) && view.toPixels(to, q);

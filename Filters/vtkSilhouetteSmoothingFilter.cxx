@@ -241,6 +241,14 @@ struct vtkSilhouetteSmoothingFilter::Internals
     bool Valid = false;
   };
   LastSmoothing Last;
+  // The triangles BuildChanges' last smoothing left whole below the
+  // tolerance and those it re-meshed, and the geometry time it was made at:
+  // the next view of that geometry leaves a strip smoothed before whole only
+  // with a margin (SmoothingParameters::SubpixelBefore; the mapper's frames
+  // follow one another, a pipeline's requests need not).
+  std::vector<silsmooth::Id> ChangesSubpixel;
+  std::vector<silsmooth::Id> ChangesRemeshed;
+  vtkMTimeType ChangesSubpixelGeometry = 0;
   // Per triangle: a ghost cell (duplicate or hidden), never re-meshed; empty
   // when the input has no ghost array. Read again whenever the input changed.
   std::vector<unsigned char> Frozen;
@@ -258,9 +266,12 @@ struct vtkSilhouetteSmoothingFilter::Internals
   bool Prepare(vtkSilhouetteSmoothingFilter* self, vtkPolyData* input, bool& rebuilt);
   // The frame for the view, with the filter's settings; warns when the new
   // point budget lowered the sampling.
-  // `polylines`: whether the silhouette lines are wanted (not by BuildChanges).
+  // `polylines`: whether the silhouette lines are wanted (not by BuildChanges);
+  // `history`: whether BuildChanges' last frame is the frame before
+  // (SmoothingParameters::SubpixelBefore).
   silsmooth::SmoothingResult Smooth(vtkSilhouetteSmoothingFilter* self, vtkPolyData* input,
-    const silsmooth::ViewGeometry& view, bool boundaryMayBeSeam, bool polylines = true);
+    const silsmooth::ViewGeometry& view, bool boundaryMayBeSeam, bool polylines = true,
+    bool history = false);
 };
 
 std::string vtkSilhouetteSmoothingFilter::Internals::Rebuild(
@@ -464,10 +475,12 @@ bool vtkSilhouetteSmoothingFilter::Internals::Prepare(
 
 silsmooth::SmoothingResult vtkSilhouetteSmoothingFilter::Internals::Smooth(
   vtkSilhouetteSmoothingFilter* self, vtkPolyData* input, const silsmooth::ViewGeometry& view,
-  bool boundaryMayBeSeam, bool polylines)
+  bool boundaryMayBeSeam, bool polylines, bool history)
 {
   silsmooth::SmoothingParameters parameters;
   parameters.SilhouettePolylines = polylines;
+  parameters.SubpixelBefore = history ? &this->ChangesSubpixel : nullptr;
+  parameters.RemeshedBefore = history ? &this->ChangesRemeshed : nullptr;
   parameters.PerturbConcaveSilhouettes = self->PerturbVertices;
   parameters.PreventFolds = self->FoldPrevention;
   parameters.KeepApexesPointed = self->KeepApexesPointed;
@@ -813,7 +826,12 @@ int vtkSilhouetteSmoothingFilter::BuildChangesUnguarded(vtkPolyData* input, vtkC
     return 0;
   }
   Internals& internal = *this->Internal;
-  const silsmooth::SmoothingResult result = internal.Smooth(this, input, view, false, false);
+  const vtkMTimeType geometry = this->GetGeometryTime();
+  const silsmooth::SmoothingResult result =
+    internal.Smooth(this, input, view, false, false, internal.ChangesSubpixelGeometry == geometry);
+  internal.ChangesSubpixel = result.SubpixelTriangleIds;
+  internal.ChangesRemeshed = result.RemeshedTriangles;
+  internal.ChangesSubpixelGeometry = geometry;
   const silsmooth::SurfaceFrame frame = internal.Surface->assembleChanges(result);
   const UsedPoints used(frame.Triangles, internal.Surface->outputPointCount() + frame.Added.size());
   changes->Initialize();

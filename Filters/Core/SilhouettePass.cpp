@@ -187,6 +187,7 @@ void SilhouettePass::remeshFrame()
   }
   this->Result.SilhouetteTriangleCount = this->Silhouette.size() - this->Subpixel.size();
   this->Result.SubpixelTriangles = this->Subpixel.size();
+  this->Result.SubpixelTriangleIds = this->Subpixel;
   this->Result.SampleBudgetMaximum = this->SampleCapBit ? this->SampleCap : 0;
   if (this->Parameters.SilhouettePolylines)
   {

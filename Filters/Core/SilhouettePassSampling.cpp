@@ -288,6 +288,9 @@ double SilhouettePass::crossingParameter(const Edge& edge, std::size_t& a, std::
 // the outline) is a candidate, and then all their silhouette points sit on
 // the straight edges (for the silhouette's polylines). A strip with one
 // triangle beyond the tolerance is smoothed whole, as without the option.
+// A strip smoothed in the frame before (SmoothingParameters::SubpixelBefore)
+// must keep within SubpixelEntryFraction of the tolerance to be left whole:
+// without that margin an outline near the tolerance blinked between the two.
 void SilhouettePass::skipSubpixelSmoothing()
 {
   this->Subpixel.clear();
@@ -339,14 +342,16 @@ void SilhouettePass::skipSubpixelSmoothing()
       this->curvedCrossing(crossings[c]);
     }
   });
+  // 2: within SubpixelEntryFraction of the tolerance (a strip of them is
+  // left whole); 1: within the tolerance (left whole unless the strip was
+  // smoothed before); 0: neither.
   const double tolerance = this->Sampling.TolerancePixels;
   std::vector<unsigned char> candidate(count, 0);
   this->For(count, [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
     {
-      candidate[i] =
-        this->smoothingShiftPixels(this->Silhouette[i], ownSides[i], crossings) <= tolerance ? 1
-                                                                                             : 0;
+      const double shift = this->smoothingShiftPixels(this->Silhouette[i], ownSides[i], crossings);
+      candidate[i] = shift <= SubpixelEntryFraction * tolerance ? 2 : (shift <= tolerance ? 1 : 0);
     }
   });
   // The strips: silhouette triangles joined through the mixed sides they share.
@@ -358,10 +363,26 @@ void SilhouettePass::skipSubpixelSmoothing()
       strips.unite(sides[s].second, sides[s - 1].second);
     }
   }
-  std::vector<unsigned char> stripOfCandidates(count, 1); // by root
+  // By root: the least level of the strip's triangles, and whether one of
+  // them was left whole, or re-meshed, in the frame before.
+  std::vector<unsigned char> least(count, 2);
+  std::vector<unsigned char> wholeBefore(count, 0);
+  std::vector<unsigned char> smoothedBefore(count, 0);
+  const auto listed = [](const std::vector<Id>* ids, Id t) {
+    return ids && std::binary_search(ids->begin(), ids->end(), t);
+  };
   for (std::size_t i = 0; i < count; ++i)
   {
-    stripOfCandidates[strips.find(i)] &= candidate[i];
+    const std::size_t root = strips.find(i);
+    least[root] = std::min(least[root], candidate[i]);
+    wholeBefore[root] |= listed(this->Parameters.SubpixelBefore, this->Silhouette[i]) ? 1 : 0;
+    smoothedBefore[root] |= listed(this->Parameters.RemeshedBefore, this->Silhouette[i]) ? 1 : 0;
+  }
+  std::vector<unsigned char> stripOfCandidates(count, 0); // by root
+  for (std::size_t i = 0; i < count; ++i)
+  {
+    stripOfCandidates[i] =
+      least[i] == 2 || (least[i] == 1 && (wholeBefore[i] || !smoothedBefore[i])) ? 1 : 0;
   }
   for (std::size_t i = 0; i < count; ++i)
   {

@@ -103,13 +103,12 @@ struct SmoothingParameters
   /// written to a file wants every silhouette smoothed.
   bool CullOutsideFrustum = false;
   /// Leave as they are the silhouette triangles whose smoothing would move
-  /// no point of the image by more than Sampling.TolerancePixels, when their
-  /// whole strip of the silhouette (the silhouette triangles joined to them
-  /// through mixed edges) is such: a strip with one triangle beyond it is
-  /// smoothed whole (SilhouettePass::skipSubpixelSmoothing). The bound:
-  /// the re-meshing moves a point of the triangle no farther than its
-  /// silhouette points move off their edges plus the silhouette segment's
-  /// parametricDeviationBound (HermiteCurve.h), and ViewGeometry's
+  /// no point of the image by more than Sampling.TolerancePixels (a part of
+  /// it after being smoothed: SubpixelBefore), when their whole strip of the silhouette (the
+  /// silhouette triangles joined to them through mixed edges) is such: a strip with one triangle
+  /// beyond it is smoothed whole (SilhouettePass::skipSubpixelSmoothing). The bound: the re-meshing
+  /// moves a point of the triangle no farther than its silhouette points move off their edges plus
+  /// the silhouette segment's parametricDeviationBound (HermiteCurve.h), and ViewGeometry's
   /// pixelShiftBound turns that into pixels. Their silhouette points sit on
   /// the straight edges, and their silhouette is the chord between them. On a mesh fine for its
   /// view (a 1.3M-triangle sphere at 1024x768 moves by thousandths of a pixel) the whole silhouette
@@ -118,6 +117,16 @@ struct SmoothingParameters
   /// Not on a piece with frozen triangles (the piece that owns them cannot
   /// know of it).
   bool SkipSubpixelSmoothing = false;
+  /// The frame before, when the caller keeps it (the mapper): the triangles
+  /// SkipSubpixelSmoothing left whole (SmoothingResult::SubpixelTriangleIds)
+  /// and the triangles re-meshed (SmoothingResult::RemeshedTriangles), both
+  /// ascending. A strip with a triangle re-meshed before, and none left whole,
+  /// is left whole only within SubpixelEntryFraction of the tolerance; any
+  /// other within the tolerance. A strip whose largest move lies near the
+  /// tolerance then does not switch between smoothed and whole from frame to
+  /// frame. Without them every frame is a first one.
+  const std::vector<Id>* SubpixelBefore = nullptr;
+  const std::vector<Id>* RemeshedBefore = nullptr;
   /// Chain the silhouette into SmoothingResult::Polylines. Off when only the
   /// surface is wanted (the mapper): the triangles SkipSubpixelSmoothing
   /// leaves out then cost nothing past their test (their silhouette points,
@@ -167,6 +176,8 @@ struct SmoothingResult
   /// tolerance (SmoothingParameters::SkipSubpixelSmoothing); not in
   /// SilhouetteTriangleCount.
   std::size_t SubpixelTriangles = 0;
+  /// Those triangles, ascending (for SmoothingParameters::SubpixelBefore).
+  std::vector<Id> SubpixelTriangleIds;
   /// The triangles replacing RemeshedTriangles[i] are
   /// Replacements[ReplacementOffsets[i] .. ReplacementOffsets[i + 1]).
   std::vector<std::size_t> ReplacementOffsets{ 0 };
@@ -215,6 +226,12 @@ struct SmoothingResult
 /// eq. 7's quadratic may have its root far from the edge's end then. A known
 /// limitation of the paper's approximation; parallel projection is linear.)
 constexpr double EdgeParameterMargin = 0.01;
+
+/// SmoothingParameters::SubpixelBefore: the part of the tolerance a strip of
+/// the silhouette smoothed in the frame before must keep within to be left
+/// whole. A quarter of margin: an orbit's bounds change by a few percent a
+/// frame.
+constexpr double SubpixelEntryFraction = 0.75;
 
 SmoothingResult smoothSilhouettes(const PreparedMesh& mesh, const ViewGeometry& view,
   const SmoothingParameters& parameters, const ParallelFor& parallelFor = serialFor);

@@ -881,6 +881,41 @@ TEST(SilhouetteSmoother, SubpixelSmoothingIsLeftOutWhereItMovesNothingByTheToler
   std::printf("every strip left out at %g px\n", tolerance);
   EXPECT_LT(tolerance, 8.0 * moved) << "the bound is within 8 times the largest move";
 
+  // The margin against blinking: a strip re-meshed in the frame before is
+  // left whole within SubpixelEntryFraction of the tolerance, any other
+  // within the tolerance. Bisect the tolerance at which the strip is first
+  // left whole in a first frame: its largest bound.
+  double low = moved;
+  double high = tolerance;
+  for (int step = 0; step < 30; ++step)
+  {
+    parameters.Sampling.TolerancePixels = 0.5 * (low + high);
+    (smoothSilhouettes(fine, view, parameters).SubpixelTriangles > 0 ? high : low) =
+      parameters.Sampling.TolerancePixels;
+  }
+  const double bound = high; // the strip's largest bound, in pixels
+  std::printf("the strip's largest bound %g px (largest move %g px)\n", bound, moved);
+  const std::vector<Id> remeshedBefore = smoothed.RemeshedTriangles;
+  parameters.Sampling.TolerancePixels = 1.1 * bound;
+  const std::vector<Id> wholeBefore = smoothSilhouettes(fine, view, parameters).SubpixelTriangleIds;
+  ASSERT_EQ(wholeBefore.size(), smoothed.SilhouetteTriangleCount) << "a first frame";
+  parameters.RemeshedBefore = &remeshedBefore;
+  EXPECT_EQ(smoothSilhouettes(fine, view, parameters).SubpixelTriangles, 0u)
+    << "smoothed before, it needs the margin";
+  parameters.Sampling.TolerancePixels = 0.99 * SubpixelEntryFraction * bound;
+  EXPECT_EQ(smoothSilhouettes(fine, view, parameters).SubpixelTriangles, 0u);
+  parameters.Sampling.TolerancePixels = 1.01 * bound / SubpixelEntryFraction;
+  EXPECT_EQ(smoothSilhouettes(fine, view, parameters).SubpixelTriangles, wholeBefore.size())
+    << "and with the margin it is left whole";
+  parameters.RemeshedBefore = nullptr;
+  parameters.SubpixelBefore = &wholeBefore;
+  parameters.Sampling.TolerancePixels = 1.01 * bound;
+  EXPECT_EQ(smoothSilhouettes(fine, view, parameters).SubpixelTriangles, wholeBefore.size())
+    << "left whole before, it stays so within the tolerance";
+  parameters.Sampling.TolerancePixels = 0.99 * bound;
+  EXPECT_EQ(smoothSilhouettes(fine, view, parameters).SubpixelTriangles, 0u) << "but not beyond it";
+  parameters.SubpixelBefore = nullptr;
+
   // A fine sphere beside a coarse one: two strips, one left out, the other
   // smoothed, and the output is closed, with no T-junction.
   std::vector<glm::dvec3> both = points;

@@ -27,11 +27,7 @@ bool ViewGeometry::toPixels(const glm::dvec3& point, glm::dvec2& pixel) const
 double ViewGeometry::pixelShiftBound(
   const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, double distance) const
 {
-  const glm::dmat4& m = this->ModelToClip;
-  auto row = [&m](int i) {
-    return glm::dvec4(m[0][i], m[1][i], m[2][i], m[3][i]);
-  };
-  const glm::dvec4 rows[3] = { row(0), row(1), row(3) }; // x, y, w
+  const glm::dvec4 rows[3] = { this->clipRow(0), this->clipRow(1), this->clipRow(3) };
   double norm[3];
   double largest[3] = { 0.0, 0.0, HUGE_VAL }; // |x| and |y| at most, w at least
   for (int i = 0; i < 3; ++i)

@@ -7,6 +7,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 namespace silsmooth
 {
@@ -42,6 +43,14 @@ struct ViewGeometry
   /// Projects a model point to viewport pixels. Returns false when the point
   /// is on or behind the eye plane (no finite pixel position).
   bool toPixels(const glm::dvec3& point, glm::dvec2& pixel) const;
+
+  /// Row i of ModelToClip (0: x, 1: y, 2: z, 3: w): clip coordinate i of a
+  /// model point p is dot(row.xyz, p) + row.w.
+  glm::dvec4 clipRow(int i) const
+  {
+    const glm::dmat4& m = this->ModelToClip;
+    return glm::dvec4(m[0][i], m[1][i], m[2][i], m[3][i]);
+  }
 
   /// An upper bound, in pixels, on how far the image of a point moves when
   /// the point moves by `distance` or less, for any point that stays within

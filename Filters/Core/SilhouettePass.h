@@ -115,6 +115,9 @@ private:
   // comes out bit for bit the same in every piece of a partitioned mesh
   // (the ids differ between pieces), and pieces meet without a crack.
   double crossingParameter(const Edge& edge, std::size_t& a, std::size_t& b) const;
+  // The shading normal at parameter t from point a to point b of an edge:
+  // the ends' normals interpolated, or the nearer end's where they cancel.
+  glm::dvec3 edgeNormal(std::size_t a, std::size_t b, double t) const;
   void remeshFrame();
 
   FoldFindings findFrameFolds(

@@ -94,12 +94,10 @@ void SilhouettePass::scanForSilhouetteTriangles()
 // z), scaled so that they give distances in model units.
 void SilhouettePass::cullOutsideFrustum()
 {
-  const glm::dmat4& m = this->View.ModelToClip;
-  auto row = [&m](int i) {
-    return glm::dvec4(m[0][i], m[1][i], m[2][i], m[3][i]);
-  };
-  std::array<glm::dvec4, 6> planes{ { row(3) + row(0), row(3) - row(0), row(3) + row(1),
-    row(3) - row(1), row(3) + row(2), row(3) - row(2) } };
+  const ViewGeometry& v = this->View;
+  std::array<glm::dvec4, 6> planes{ { v.clipRow(3) + v.clipRow(0), v.clipRow(3) - v.clipRow(0),
+    v.clipRow(3) + v.clipRow(1), v.clipRow(3) - v.clipRow(1), v.clipRow(3) + v.clipRow(2),
+    v.clipRow(3) - v.clipRow(2) } };
   for (glm::dvec4& plane : planes)
   {
     const double length = glm::length(glm::dvec3(plane));
@@ -237,12 +235,7 @@ void SilhouettePass::computeSilhouettePoints()
       p.Position =
         makeCircleApproximatingCurve(points[a], normals[a], points[b], normals[b]).evaluate(t);
     }
-    p.Normal = safeNormalize((1.0 - t) * normals[a] + t * normals[b]);
-    if (p.Normal == glm::dvec3(0.0))
-    {
-      // Opposite normals at the ends: no interpolated direction exists.
-      p.Normal = t < 0.5 ? normals[a] : normals[b];
-    }
+    p.Normal = this->edgeNormal(a, b, t);
     const double u = lowFirst ? t : 1.0 - t; // from the low id to the high id
     p.Sources = { edge.low, edge.high, edge.high };
     p.Weights = { 1.0 - u, u, 0.0 };
@@ -418,11 +411,15 @@ void SilhouettePass::curvedCrossing(CurvedCrossing& crossing) const
   crossing.Position =
     makeCircleApproximatingCurve(points[a], normals[a], points[b], normals[b]).evaluate(u);
   crossing.Moved = glm::length(crossing.Position - ((1.0 - u) * points[a] + u * points[b]));
-  crossing.Normal = safeNormalize((1.0 - u) * normals[a] + u * normals[b]);
-  if (crossing.Normal == glm::dvec3(0.0))
-  {
-    crossing.Normal = u < 0.5 ? normals[a] : normals[b];
-  }
+  crossing.Normal = this->edgeNormal(a, b, u);
+}
+
+glm::dvec3 SilhouettePass::edgeNormal(std::size_t a, std::size_t b, double t) const
+{
+  const auto& normals = this->Mesh.normals();
+  const glm::dvec3 normal = safeNormalize((1.0 - t) * normals[a] + t * normals[b]);
+  // Opposite normals at the ends: no interpolated direction exists.
+  return normal != glm::dvec3(0.0) ? normal : (t < 0.5 ? normals[a] : normals[b]);
 }
 
 double SilhouettePass::smoothingShiftPixels(

@@ -248,6 +248,7 @@ struct vtkSilhouetteSmoothingFilter::Internals
   // follow one another, a pipeline's requests need not).
   std::vector<silsmooth::Id> ChangesSubpixel;
   std::vector<silsmooth::Id> ChangesRemeshed;
+  std::vector<silsmooth::Id> ChangesSubpixelFeatures;
   vtkMTimeType ChangesSubpixelGeometry = 0;
   // Per triangle: a ghost cell (duplicate or hidden), never re-meshed; empty
   // when the input has no ghost array. Read again whenever the input changed.
@@ -481,6 +482,7 @@ silsmooth::SmoothingResult vtkSilhouetteSmoothingFilter::Internals::Smooth(
   parameters.SilhouettePolylines = polylines;
   parameters.SubpixelBefore = history ? &this->ChangesSubpixel : nullptr;
   parameters.RemeshedBefore = history ? &this->ChangesRemeshed : nullptr;
+  parameters.SubpixelFeaturesBefore = history ? &this->ChangesSubpixelFeatures : nullptr;
   parameters.PerturbConcaveSilhouettes = self->PerturbVertices;
   parameters.PreventFolds = self->FoldPrevention;
   parameters.KeepApexesPointed = self->KeepApexesPointed;
@@ -654,6 +656,8 @@ int vtkSilhouetteSmoothingFilter::RequestViewData(vtkInformation*,
   AddCount(fd, "SampleBudgetMaximum", static_cast<vtkIdType>(result.SampleBudgetMaximum));
   AddCount(fd, "CulledTriangleCount", static_cast<vtkIdType>(result.CulledTriangles));
   AddCount(fd, "SubpixelTriangleCount", static_cast<vtkIdType>(result.SubpixelTriangles));
+  AddCount(
+    fd, "SubpixelFeatureSegmentCount", static_cast<vtkIdType>(result.SubpixelFeatureIds.size()));
   AddCount(fd, "InputTriangleCount", inputTriangles);
   AddCount(fd, "OutputTriangleCount", inputTriangles - remeshedTriangles + newTriangles);
 
@@ -831,6 +835,7 @@ int vtkSilhouetteSmoothingFilter::BuildChangesUnguarded(vtkPolyData* input, vtkC
     internal.Smooth(this, input, view, false, false, internal.ChangesSubpixelGeometry == geometry);
   internal.ChangesSubpixel = result.SubpixelTriangleIds;
   internal.ChangesRemeshed = result.RemeshedTriangles;
+  internal.ChangesSubpixelFeatures = result.SubpixelFeatureIds;
   internal.ChangesSubpixelGeometry = geometry;
   const silsmooth::SurfaceFrame frame = internal.Surface->assembleChanges(result);
   const UsedPoints used(frame.Triangles, internal.Surface->outputPointCount() + frame.Added.size());
@@ -860,6 +865,8 @@ int vtkSilhouetteSmoothingFilter::BuildChangesUnguarded(vtkPolyData* input, vtkC
   AddCount(fd, "UnresolvedFoldCount", static_cast<vtkIdType>(result.UnresolvedFolds));
   AddCount(fd, "CulledTriangleCount", static_cast<vtkIdType>(result.CulledTriangles));
   AddCount(fd, "SubpixelTriangleCount", static_cast<vtkIdType>(result.SubpixelTriangles));
+  AddCount(
+    fd, "SubpixelFeatureSegmentCount", static_cast<vtkIdType>(result.SubpixelFeatureIds.size()));
   return 1;
 }
 

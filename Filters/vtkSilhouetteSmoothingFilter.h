@@ -240,9 +240,13 @@ public:
    * triangle, projected with the view's pixels. On a mesh fine for the view
    * (tens of thousands of triangles across the image) that is the whole
    * silhouette, and a frame costs little more than finding it. Their
-   * silhouette is the chord between points on their edges. In BuildChanges
+   * silhouette is the chord between points on their edges. Likewise a
+   * smoothed feature segment (a crease's curve) whose curve would move no
+   * point of its triangles by more than Tolerance pixels is drawn straight,
+   * its triangles not re-meshed for it (field data
+   * `SubpixelFeatureSegmentCount`): a finely divided CAD part's rims. In BuildChanges
    * (the mapper's frames) a strip its last call smoothed is left whole only
-   * within three quarters of Tolerance, so an outline near it does not blink
+   * within three quarters of Tolerance (a segment, likewise), so an outline near it does not blink
    * between smoothed and not from frame to frame. Default off: a
    * mesh written out does not know the pixels it will be seen at.
    * vtkSilhouetteSmoothingMapper turns it on. Not on a piece with ghost

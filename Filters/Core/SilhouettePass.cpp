@@ -28,6 +28,7 @@ SmoothingResult SilhouettePass::run()
   this->findSilhouetteTriangles();
   this->straightenAtApexes();
   this->skipSubpixelSmoothing();
+  this->skipSubpixelFeatures();
   this->PresetStraightEdges = this->StraightEdges.size();
   // Each round re-meshes the whole frame with the fallbacks decided so far;
   // a round that finds no fold, or no fallback left to take, is the last.
@@ -188,6 +189,7 @@ void SilhouettePass::remeshFrame()
   this->Result.SilhouetteTriangleCount = this->Silhouette.size() - this->Subpixel.size();
   this->Result.SubpixelTriangles = this->Subpixel.size();
   this->Result.SubpixelTriangleIds = this->Subpixel;
+  this->Result.SubpixelFeatureIds = this->SubpixelFeatures;
   this->Result.SampleBudgetMaximum = this->SampleCapBit ? this->SampleCap : 0;
   if (this->Parameters.SilhouettePolylines)
   {

@@ -93,6 +93,9 @@ private:
     double Moved;
   };
   void curvedCrossing(CurvedCrossing& crossing) const;
+  // SmoothingParameters::SkipSubpixelSmoothing for feature segments: fills
+  // SubpixelFeatures and CurvedFeatureTriangles.
+  void skipSubpixelFeatures();
   // A silhouette triangle's sides (sideEdge order), and which are mixed.
   struct TriangleSides
   {
@@ -151,10 +154,18 @@ private:
     return this->Parameters.BoundaryMayBeSeam && this->Mesh.isBoundaryEdge(e);
   }
 
+  // Drawn by its chord in this frame: by the fold guard's fallback, or as
+  // a SubpixelFeatures segment.
   bool isStraightened(Id feature) const
   {
     return std::binary_search(
-      this->StraightFeatures.begin(), this->StraightFeatures.end(), feature);
+             this->StraightFeatures.begin(), this->StraightFeatures.end(), feature) ||
+      this->isSubpixelFeature(feature);
+  }
+  bool isSubpixelFeature(Id feature) const
+  {
+    return !this->SubpixelFeatures.empty() &&
+      std::binary_search(this->SubpixelFeatures.begin(), this->SubpixelFeatures.end(), feature);
   }
 
   // The point at parameter `along` of a feature segment: on its curve, or on
@@ -205,7 +216,8 @@ private:
   void computeSilhouettePoints();
 
   // The triangles re-meshed for their feature sides in this frame: those
-  // with a smoothed (curved) feature side, every frame, and those with a side
+  // with a smoothed (curved) feature side, every frame, unless each such
+  // side is a SubpixelFeatures segment, and those with a side
   // on a straight feature edge that the silhouette crosses, from any side of
   // the crease: each side has its own normals, so the silhouette may cross
   // the crease on one side only, and the others must still split the edge at
@@ -356,6 +368,13 @@ private:
   std::size_t PresetStraightEdges = 0;
   // Silhouette triangles kept as they are (skipSubpixelSmoothing), ascending.
   std::vector<Id> Subpixel;
+  // Curved feature segments drawn by their chords in this frame, their
+  // curves within the tolerance of them in the image (skipSubpixelFeatures),
+  // ascending; and, when there are any, the triangles with a side on one of
+  // the other curved segments (PreparedMesh::featureTriangles without
+  // those that only SubpixelFeatures put there), ascending.
+  std::vector<Id> SubpixelFeatures;
+  std::vector<Id> CurvedFeatureTriangles;
   std::size_t ApexTriangles = 0;
   std::size_t CrowdedTriangles = 0; // sent straight untested (FoldGuard.h)
   std::vector<Id> StraightFeatures;

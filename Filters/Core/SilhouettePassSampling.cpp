@@ -401,6 +401,86 @@ void SilhouettePass::skipSubpixelSmoothing()
   this->StraightEdges = std::move(straight);
 }
 
+// A curved feature segment is drawn by its chord in this frame when its
+// curve moves no point of its sides' triangles by more than the tolerance
+// in the image: re-meshing puts the samples at C(u) where the flat side has
+// the chord's point at u, so no point of a side triangle moves farther than
+// the curve's parametricDeviationBound (HermiteCurve.h). The decision is
+// the segment's, so every side of the crease makes it alike (their shared
+// edge stays whole or is split at the same samples). A segment on a
+// boundary that may be a seam is always smoothed: the other piece sees
+// other triangles. A segment drawn curved in the frame before
+// (SmoothingParameters::SubpixelFeaturesBefore) needs SubpixelEntryFraction
+// of the tolerance, as a strip of the silhouette does.
+void SilhouettePass::skipSubpixelFeatures()
+{
+  this->SubpixelFeatures.clear();
+  this->CurvedFeatureTriangles.clear();
+  if (!this->Parameters.SkipSubpixelSmoothing || this->Parameters.FrozenTriangles ||
+    this->Mesh.featureTriangles().empty())
+  {
+    return;
+  }
+  const FeatureCurves& features = this->Mesh.features();
+  const auto& sides = this->Mesh.featureSideTriangles();
+  const auto& points = this->Mesh.points();
+  const EdgeTable& edges = this->Mesh.edges();
+  const std::vector<Id>* before = this->Parameters.SubpixelFeaturesBefore;
+  const double tolerance = this->Sampling.TolerancePixels;
+  std::vector<unsigned char> straight(features.edges().size(), 0);
+  this->For(straight.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+    {
+      const Id f = static_cast<Id>(i);
+      if (!features.isCurved(f))
+      {
+        continue;
+      }
+      const double moved = parametricDeviationBound(features.curve(f));
+      const bool wasStraight = !before || std::binary_search(before->begin(), before->end(), f);
+      const double limit = wasStraight ? tolerance : SubpixelEntryFraction * tolerance;
+      bool within = true;
+      for (auto it = std::lower_bound(sides.begin(), sides.end(), std::make_pair(f, Id{ 0 }));
+           within && it != sides.end() && it->first == f; ++it)
+      {
+        const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(it->second)];
+        for (int k = 0; k < 3 && within; ++k)
+        {
+          const Id e = edges.sideEdge(it->second, k);
+          within = !(this->Mesh.edgeFeature(e) == f && this->mayBeSeam(e));
+        }
+        within = within &&
+          this->View.pixelShiftBound(points[static_cast<std::size_t>(tri[0])],
+            points[static_cast<std::size_t>(tri[1])], points[static_cast<std::size_t>(tri[2])],
+            moved) <= limit;
+      }
+      straight[i] = within ? 1 : 0;
+    }
+  });
+  for (std::size_t f = 0; f < straight.size(); ++f)
+  {
+    if (straight[f])
+    {
+      this->SubpixelFeatures.push_back(static_cast<Id>(f));
+    }
+  }
+  if (this->SubpixelFeatures.empty())
+  {
+    return;
+  }
+  for (const auto& side : sides)
+  {
+    if (features.isCurved(side.first) && !straight[static_cast<std::size_t>(side.first)])
+    {
+      this->CurvedFeatureTriangles.push_back(side.second);
+    }
+  }
+  std::sort(this->CurvedFeatureTriangles.begin(), this->CurvedFeatureTriangles.end());
+  this->CurvedFeatureTriangles.erase(
+    std::unique(this->CurvedFeatureTriangles.begin(), this->CurvedFeatureTriangles.end()),
+    this->CurvedFeatureTriangles.end());
+}
+
 void SilhouettePass::curvedCrossing(CurvedCrossing& crossing) const
 {
   const auto& points = this->Mesh.points();
@@ -469,10 +549,12 @@ double SilhouettePass::smoothingShiftPixels(
 // that point (or the output has a T-junction there).
 const std::vector<Id>& SilhouettePass::featureTrianglesOfFrame()
 {
+  const std::vector<Id>& curved =
+    this->SubpixelFeatures.empty() ? this->Mesh.featureTriangles() : this->CurvedFeatureTriangles;
   std::vector<Id> straight;
   for (const FeatureSilhouettePoint& point : this->FeatureSilhouettePoints)
   {
-    if (this->Mesh.features().isCurved(point.Feature))
+    if (this->Mesh.features().isCurved(point.Feature) && !this->isSubpixelFeature(point.Feature))
     {
       continue;
     }
@@ -485,12 +567,12 @@ const std::vector<Id>& SilhouettePass::featureTrianglesOfFrame()
   }
   if (straight.empty())
   {
-    return this->Mesh.featureTriangles();
+    return curved;
   }
   std::sort(straight.begin(), straight.end());
   this->FrameFeatureTriangles.clear();
-  std::set_union(this->Mesh.featureTriangles().begin(), this->Mesh.featureTriangles().end(),
-    straight.begin(), straight.end(), std::back_inserter(this->FrameFeatureTriangles));
+  std::set_union(curved.begin(), curved.end(), straight.begin(), straight.end(),
+    std::back_inserter(this->FrameFeatureTriangles));
   this->FrameFeatureTriangles.erase(
     std::unique(this->FrameFeatureTriangles.begin(), this->FrameFeatureTriangles.end()),
     this->FrameFeatureTriangles.end());

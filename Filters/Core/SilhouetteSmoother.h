@@ -114,7 +114,11 @@ struct SmoothingParameters
   /// view (a 1.3M-triangle sphere at 1024x768 moves by thousandths of a pixel) the whole silhouette
   /// is such, and the pass costs little more than finding it. For renderers
   /// (vtkSilhouetteSmoothingMapper): a mesh written to a file has no pixels.
-  /// Not on a piece with frozen triangles (the piece that owns them cannot
+  /// Likewise a curved feature segment whose curve moves no point of its
+  /// sides' triangles by more than the tolerance (its parametricDeviationBound) is drawn by its
+  /// chord, and its sides are not re-meshed for it (a CAD part's finely divided rims: a
+  /// 21,600-triangle part re-meshed 21,588 feature triangles every frame for nothing the image
+  /// shows). Not on a piece with frozen triangles (the piece that owns them cannot
   /// know of it).
   bool SkipSubpixelSmoothing = false;
   /// The frame before, when the caller keeps it (the mapper): the triangles
@@ -127,6 +131,11 @@ struct SmoothingParameters
   /// frame. Without them every frame is a first one.
   const std::vector<Id>* SubpixelBefore = nullptr;
   const std::vector<Id>* RemeshedBefore = nullptr;
+  /// The same for curved feature segments: those drawn by their chords in
+  /// the frame before (SmoothingResult::SubpixelFeatureIds), ascending. A
+  /// segment not among them is drawn by its chord only within
+  /// SubpixelEntryFraction of the tolerance. Null: every frame a first one.
+  const std::vector<Id>* SubpixelFeaturesBefore = nullptr;
   /// Chain the silhouette into SmoothingResult::Polylines. Off when only the
   /// surface is wanted (the mapper): the triangles SkipSubpixelSmoothing
   /// leaves out then cost nothing past their test (their silhouette points,
@@ -178,6 +187,10 @@ struct SmoothingResult
   std::size_t SubpixelTriangles = 0;
   /// Those triangles, ascending (for SmoothingParameters::SubpixelBefore).
   std::vector<Id> SubpixelTriangleIds;
+  /// Curved feature segments (PreparedMesh::features) drawn by their
+  /// chords, their curves within the tolerance in the image
+  /// (SmoothingParameters::SkipSubpixelSmoothing), ascending.
+  std::vector<Id> SubpixelFeatureIds;
   /// The triangles replacing RemeshedTriangles[i] are
   /// Replacements[ReplacementOffsets[i] .. ReplacementOffsets[i + 1]).
   std::vector<std::size_t> ReplacementOffsets{ 0 };

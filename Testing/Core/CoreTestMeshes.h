@@ -96,6 +96,38 @@ inline void torus(int u, int v, double r, std::vector<glm::dvec3>& points,
   }
 }
 
+/// A capped cylinder of `sides` sides (axis z, unit radius, z in [-1, 1]),
+/// outward: side quads split in two, each cap a fan about its centre.
+inline void cappedCylinder(
+  int sides, std::vector<glm::dvec3>& points, std::vector<silsmooth::Triangle>& triangles)
+{
+  using silsmooth::Id;
+  const double pi = 3.14159265358979323846;
+  const Id n = sides;
+  points.clear();
+  triangles.clear();
+  for (const double z : { -1.0, 1.0 })
+  {
+    for (int i = 0; i < sides; ++i)
+    {
+      const double a = 2.0 * pi * i / sides;
+      points.emplace_back(std::cos(a), std::sin(a), z);
+    }
+  }
+  points.emplace_back(0, 0, -1);
+  points.emplace_back(0, 0, 1);
+  const Id bottom = 2 * n;
+  const Id top = 2 * n + 1;
+  for (Id i = 0; i < n; ++i)
+  {
+    const Id j = (i + 1) % n;
+    triangles.push_back({ i, j, n + j });
+    triangles.push_back({ i, n + j, n + i });
+    triangles.push_back({ top, n + i, n + j });
+    triangles.push_back({ bottom, j, i });
+  }
+}
+
 /// Directed-edge bookkeeping: a closed, consistently oriented 2-manifold has
 /// every directed edge once and its reverse once.
 struct ManifoldCheck

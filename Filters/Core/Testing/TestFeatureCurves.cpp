@@ -1,7 +1,9 @@
 // Feature edges, feature segments and the splitting of feature points
 // (FeatureCurves.h), with answers known in closed form.
+#include "CoreTestMeshes.h"
 #include "FeatureCurves.h"
 #include "SilhouetteSmoother.h"
+#include "SmoothingResultCheck.h"
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -290,67 +292,7 @@ namespace
 // A capped cylinder (12 sides, axis z, unit radius, z in [-1, 1]).
 void cylinder(std::vector<glm::dvec3>& points, std::vector<Triangle>& triangles)
 {
-  const int n = 12;
-  points = circlePoints(n, 1.0);
-  for (auto& p : points)
-  {
-    p.z = -1.0;
-  }
-  for (const glm::dvec3& p : circlePoints(n, 1.0))
-  {
-    points.emplace_back(p.x, p.y, 1.0);
-  }
-  points.emplace_back(0, 0, -1);
-  points.emplace_back(0, 0, 1);
-  const Id bottom = 2 * n;
-  const Id top = 2 * n + 1;
-  triangles.clear();
-  for (Id i = 0; i < n; ++i)
-  {
-    const Id j = (i + 1) % n;
-    triangles.push_back({ i, j, n + j });
-    triangles.push_back({ i, n + j, n + i });
-    triangles.push_back({ top, n + i, n + j });
-    triangles.push_back({ bottom, j, i });
-  }
-}
-
-// Closed after merging coincident points, consistently oriented.
-bool closedOnceWelded(const PreparedMesh& mesh, const SmoothingResult& result)
-{
-  std::vector<Triangle> triangles;
-  std::vector<Id> source;
-  std::vector<unsigned char> isNew;
-  assembleTriangles(mesh, result, triangles, source, isNew);
-  auto position = [&](Id id) {
-    const std::size_t n = mesh.points().size();
-    return static_cast<std::size_t>(id) < n
-      ? mesh.points()[static_cast<std::size_t>(id)]
-      : result.NewPoints[static_cast<std::size_t>(id) - n].Position;
-  };
-  std::map<std::array<double, 3>, Id> weld;
-  auto welded = [&](Id id) {
-    const glm::dvec3 p = position(id);
-    return weld.emplace(std::array<double, 3>{ { p.x, p.y, p.z } }, static_cast<Id>(weld.size()))
-      .first->second;
-  };
-  std::map<std::pair<Id, Id>, int> directed;
-  for (const Triangle& t : triangles)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      ++directed[{ welded(t[k]), welded(t[(k + 1) % 3]) }];
-    }
-  }
-  for (const auto& [edge, count] : directed)
-  {
-    const auto reverse = directed.find({ edge.second, edge.first });
-    if (count != 1 || reverse == directed.end() || reverse->second != 1)
-    {
-      return false;
-    }
-  }
-  return true;
+  coretest::cappedCylinder(12, points, triangles);
 }
 
 } // namespace
@@ -386,7 +328,7 @@ TEST(FeatureCurves, CylinderRimsAreSmoothAndTheMeshStaysClosed)
     view.ModelToClip = glm::dmat4(0.5);
     view.ModelToClip[3][3] = 1.0;
     const SmoothingResult result = smoothSilhouettes(mesh, view, SmoothingParameters{});
-    ASSERT_TRUE(closedOnceWelded(mesh, result)) << "view " << v;
+    ASSERT_TRUE(coretest::closedOnceWelded(mesh, result)) << "view " << v;
     std::size_t featureKinds = 0;
     for (const RemeshKind kind : result.RemeshKinds)
     {

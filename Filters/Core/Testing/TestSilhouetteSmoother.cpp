@@ -1,9 +1,11 @@
 // The whole per-frame pass on small exact meshes: the crack-free and
 // closed-manifold invariants (docs/methods.md, "How the open choices were closed").
 #include "CoreTestMeshes.h"
+#include "FeatureCurves.h"
 #include "FoldGuard.h"
 #include "HeldBackgroundBuilds.h"
 #include "SilhouetteSmoother.h"
+#include "SmoothingResultCheck.h"
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -984,4 +986,170 @@ TEST(SilhouetteSmoother, SubpixelSmoothingIsLeftOutWhereItMovesNothingByTheToler
   {
     EXPECT_EQ(a.NewPoints[i].Position, b.NewPoints[i].Position);
   }
+}
+
+namespace
+{
+
+// How far, in pixels, the pass moved its added points that lie between two
+// feature points of one rim (feature samples, and silhouette points on rim
+// edges) off their places on the straight edges.
+double largestRimPixelMove(
+  const PreparedMesh& mesh, const SmoothingResult& r, const ViewGeometry& view)
+{
+  double largest = 0.0;
+  for (const NewPoint& p : r.NewPoints)
+  {
+    const glm::dvec3& a = mesh.points()[static_cast<std::size_t>(p.Sources[0])];
+    const glm::dvec3& b = mesh.points()[static_cast<std::size_t>(p.Sources[1])];
+    if (p.Weights[2] != 0.0 || !mesh.onFeature(p.Sources[0]) || !mesh.onFeature(p.Sources[1]) ||
+      a.z != b.z)
+    {
+      continue;
+    }
+    glm::dvec2 moved;
+    glm::dvec2 flat;
+    if (view.toPixels(p.Position, moved) &&
+      view.toPixels(p.Weights[0] * a + p.Weights[1] * b, flat))
+    {
+      largest = std::max(largest, glm::length(moved - flat));
+    }
+  }
+  return largest;
+}
+
+std::size_t featureRemeshings(const SmoothingResult& r)
+{
+  return static_cast<std::size_t>(
+    std::count(r.RemeshKinds.begin(), r.RemeshKinds.end(), RemeshKind::Feature));
+}
+
+} // namespace
+
+// SkipSubpixelSmoothing on feature segments. A capped cylinder of 96 sides
+// has its rims' curves within hundredths of a pixel of their chords: drawn
+// by the chords, its 384 feature triangles are not re-meshed but where the
+// silhouette crosses a rim. Never when a rim point moves by more than the
+// tolerance; the margin against blinking as for the silhouette; the output
+// closed wherever the near rim is smoothed and the far one not; the same
+// on threads.
+TEST(SilhouetteSmoother, SubpixelFeatureSegmentsAreDrawnByTheirChords)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::cappedCylinder(96, points, triangles);
+  const PreparedMesh mesh(points, triangles, {}, featureEdgesByAngle(points, triangles, 60.0));
+  const std::size_t curved = mesh.features().curvedCount();
+  ASSERT_EQ(curved, 192u);
+  ASSERT_EQ(mesh.featureTriangles().size(), 384u);
+  const ViewGeometry view = realPerspective(glm::dvec3(4.0, 1.5, 3.0), 320, 240);
+  SmoothingParameters parameters;
+  const SmoothingResult smoothed = smoothSilhouettes(mesh, view, parameters);
+  EXPECT_EQ(featureRemeshings(smoothed), 384u);
+  EXPECT_TRUE(smoothed.SubpixelFeatureIds.empty()) << "not without the option";
+  const double moved = largestRimPixelMove(mesh, smoothed, view);
+  std::printf("largest rim move %g px\n", moved);
+  ASSERT_GT(moved, 0.0);
+  ASSERT_LT(moved, 0.1);
+
+  parameters.SkipSubpixelSmoothing = true;
+  const SmoothingResult skipped = smoothSilhouettes(mesh, view, parameters);
+  EXPECT_EQ(skipped.SubpixelFeatureIds.size(), curved);
+  const std::size_t crossed = featureRemeshings(skipped);
+  std::printf("feature triangles re-meshed: %zu of 384\n", crossed);
+  EXPECT_GT(crossed, 0u) << "the sides of the rim edges the silhouette crosses";
+  EXPECT_LE(crossed, 16u);
+  EXPECT_EQ(largestRimPixelMove(mesh, skipped, view), 0.0) << "the rims on their chords";
+  EXPECT_TRUE(coretest::closedOnceWelded(mesh, skipped));
+  EXPECT_EQ(skipped.StraightFeatureSegments, smoothed.StraightFeatureSegments)
+    << "not counted as the fold guard's";
+
+  // A tolerance below the largest move leaves that segment curved: the
+  // bound is an upper bound. And how loose it is.
+  parameters.Sampling.TolerancePixels = 0.99 * moved;
+  EXPECT_LT(smoothSilhouettes(mesh, view, parameters).SubpixelFeatureIds.size(), curved);
+  double low = moved;
+  double high = 100.0 * moved;
+  for (int step = 0; step < 30; ++step)
+  {
+    parameters.Sampling.TolerancePixels = 0.5 * (low + high);
+    (smoothSilhouettes(mesh, view, parameters).SubpixelFeatureIds.size() == curved ? high : low) =
+      parameters.Sampling.TolerancePixels;
+  }
+  const double bound = high; // the largest segment's bound, in pixels
+  std::printf("every segment straight from %g px (largest move %g px)\n", bound, moved);
+  EXPECT_LT(bound, 8.0 * moved) << "the bound is within 8 times the largest move";
+
+  // The margin: a segment drawn curved in the frame before (not listed)
+  // needs SubpixelEntryFraction of the tolerance; one drawn straight, the
+  // tolerance.
+  const std::vector<Id> noneBefore;
+  const std::vector<Id> allBefore = skipped.SubpixelFeatureIds;
+  parameters.SubpixelFeaturesBefore = &noneBefore;
+  parameters.Sampling.TolerancePixels = 1.01 * bound;
+  EXPECT_LT(smoothSilhouettes(mesh, view, parameters).SubpixelFeatureIds.size(), curved)
+    << "curved before, it needs the margin";
+  parameters.Sampling.TolerancePixels = 1.01 * bound / SubpixelEntryFraction;
+  EXPECT_EQ(smoothSilhouettes(mesh, view, parameters).SubpixelFeatureIds.size(), curved)
+    << "and with the margin it is straight";
+  parameters.SubpixelFeaturesBefore = &allBefore;
+  parameters.Sampling.TolerancePixels = 1.01 * bound;
+  EXPECT_EQ(smoothSilhouettes(mesh, view, parameters).SubpixelFeatureIds.size(), curved)
+    << "straight before, it stays so within the tolerance";
+  parameters.Sampling.TolerancePixels = 0.99 * bound;
+  EXPECT_LT(smoothSilhouettes(mesh, view, parameters).SubpixelFeatureIds.size(), curved)
+    << "but not beyond it";
+  parameters.SubpixelFeaturesBefore = nullptr;
+
+  // Close up, the near rim's curves exceed the tolerance and the far rim's
+  // do not: segment by segment, every side of a crease alike, so the output
+  // stays closed from every side. The deliberately wrong variant, the cap
+  // triangles of curved segments left flat, opens it.
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> angle(0.0, 2.0 * 3.14159265358979323846);
+  std::size_t mixedViews = 0;
+  parameters.Sampling.TolerancePixels = 0.5;
+  for (int v = 0; v < 24; ++v)
+  {
+    const double a = angle(random);
+    const ViewGeometry near =
+      realPerspective(glm::dvec3(3.0 * std::cos(a), 3.0 * std::sin(a), 2.5), 1024, 768);
+    const SmoothingResult r = smoothSilhouettes(mesh, near, parameters);
+    const std::size_t straight = r.SubpixelFeatureIds.size();
+    mixedViews += straight > 0 && straight < curved ? 1 : 0;
+    ASSERT_TRUE(coretest::closedOnceWelded(mesh, r)) << "view " << v;
+    EXPECT_EQ(r.SubpixelFeatureIds,
+      smoothSilhouettes(mesh, near, parameters, threadedFor(3)).SubpixelFeatureIds);
+    if (v == 0)
+    {
+      ASSERT_GT(straight, 0u);
+      ASSERT_LT(straight, curved);
+      SmoothingResult wrong = r;
+      wrong.RemeshedTriangles.clear();
+      wrong.RemeshKinds.clear();
+      wrong.Replacements.clear();
+      wrong.ReplacementOffsets = { 0 };
+      for (std::size_t i = 0; i < r.RemeshedTriangles.size(); ++i)
+      {
+        const Triangle& t = mesh.triangles()[static_cast<std::size_t>(r.RemeshedTriangles[i])];
+        const bool cap = mesh.points()[static_cast<std::size_t>(t[0])].z ==
+            mesh.points()[static_cast<std::size_t>(t[1])].z &&
+          mesh.points()[static_cast<std::size_t>(t[1])].z ==
+            mesh.points()[static_cast<std::size_t>(t[2])].z;
+        if (cap && r.RemeshKinds[i] == RemeshKind::Feature)
+        {
+          continue;
+        }
+        wrong.RemeshedTriangles.push_back(r.RemeshedTriangles[i]);
+        wrong.RemeshKinds.push_back(r.RemeshKinds[i]);
+        wrong.Replacements.insert(wrong.Replacements.end(),
+          r.Replacements.begin() + r.ReplacementOffsets[i],
+          r.Replacements.begin() + r.ReplacementOffsets[i + 1]);
+        wrong.ReplacementOffsets.push_back(wrong.Replacements.size());
+      }
+      EXPECT_FALSE(coretest::closedOnceWelded(mesh, wrong));
+    }
+  }
+  std::printf("views with both rims' kinds: %zu of 24\n", mixedViews);
+  EXPECT_EQ(mixedViews, 24u);
 }

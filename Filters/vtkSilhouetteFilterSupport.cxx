@@ -93,6 +93,27 @@ bool AllFinite(const double* values, int count)
   return true;
 }
 
+// The homogeneous point that `projection` takes to clip x = y = w = 0 (the
+// centre of projection; w = 0 for a parallel one): the generalised cross
+// product of its rows x, y and w, each entry a signed 3 x 3 minor. Without
+// shear those rows have zeros where the minors come out exactly (0, 0, 0, w)
+// or (0, 0, z, 0), so an unsheared camera's view is the same to the bit as
+// the model-view matrix alone gives.
+void CentreOfProjection(vtkMatrix4x4* projection, double centre[4])
+{
+  const double* r0 = projection->Element[0];
+  const double* r1 = projection->Element[1];
+  const double* r3 = projection->Element[3];
+  auto minor = [&](int a, int b, int c) {
+    return r0[a] * (r1[b] * r3[c] - r1[c] * r3[b]) - r0[b] * (r1[a] * r3[c] - r1[c] * r3[a]) +
+      r0[c] * (r1[a] * r3[b] - r1[b] * r3[a]);
+  };
+  centre[0] = minor(1, 2, 3);
+  centre[1] = -minor(0, 2, 3);
+  centre[2] = minor(0, 1, 3);
+  centre[3] = -minor(0, 1, 2);
+}
+
 } // namespace
 
 std::string MakeViewGeometry(vtkCamera* camera, const double model[16], std::array<int, 2> viewport,
@@ -136,18 +157,55 @@ std::string MakeViewGeometry(vtkCamera* camera, const double model[16], std::arr
   view.Parallel = camera->GetParallelProjection() != 0;
   view.ViewportWidth = viewport[0];
   view.ViewportHeight = viewport[1];
-  double eye[4] = { 0, 0, 0, 1 };
-  vtkMatrix4x4::MultiplyPoint(inverse, eye, eye);
-  view.Eye = glm::dvec3(eye[0], eye[1], eye[2]) / eye[3];
-  double toward[4] = { 0, 0, 1, 0 };
-  vtkMatrix4x4::MultiplyPoint(inverse, toward, toward);
-  view.TowardViewer = silsmooth::safeNormalize(glm::dvec3(toward[0], toward[1], toward[2]));
+  const double aspect = static_cast<double>(viewport[0]) / viewport[1];
+  // The centre of projection in eye coordinates: the origin, or +z at
+  // infinity, unless the projection is sheared (SetViewShear, oblique
+  // parallel views, and the eyes of VTK's stereo), which moves it off the
+  // view axis; the silhouette is where the surface turns from that point.
+  double eye[4];
+  CentreOfProjection(camera->GetProjectionTransformMatrix(aspect, -1.0, 1.0), eye);
+  if (view.Parallel)
+  {
+    eye[3] = 0.0;
+    const double length = std::sqrt(eye[0] * eye[0] + eye[1] * eye[1] + eye[2] * eye[2]);
+    for (int i = 0; i < 3; ++i)
+    {
+      eye[i] = eye[2] < 0.0 ? -eye[i] / length : eye[i] / length; // towards the viewer: +z
+    }
+  }
+  else
+  {
+    for (int i = 0; i < 3; ++i)
+    {
+      eye[i] /= eye[3];
+    }
+    eye[3] = 1.0;
+  }
+  if (!AllFinite(eye, 4))
+  {
+    return "The view is degenerate: the camera's projection has no centre.";
+  }
+  double model4[4];
+  vtkMatrix4x4::MultiplyPoint(inverse, eye, model4);
+  if (view.Parallel)
+  {
+    view.TowardViewer = silsmooth::safeNormalize(glm::dvec3(model4[0], model4[1], model4[2]));
+    double origin[4] = { 0, 0, 0, 1 };
+    vtkMatrix4x4::MultiplyPoint(inverse, origin, origin);
+    view.Eye = glm::dvec3(origin[0], origin[1], origin[2]) / origin[3];
+  }
+  else
+  {
+    view.Eye = glm::dvec3(model4[0], model4[1], model4[2]) / model4[3];
+    double toward[4] = { 0, 0, 1, 0 };
+    vtkMatrix4x4::MultiplyPoint(inverse, toward, toward);
+    view.TowardViewer = silsmooth::safeNormalize(glm::dvec3(toward[0], toward[1], toward[2]));
+  }
 
   // Model -> clip = (projection * view) * model, into glm's column-major form.
   double composite[16];
-  vtkMatrix4x4::DeepCopy(composite,
-    camera->GetCompositeProjectionTransformMatrix(
-      static_cast<double>(viewport[0]) / viewport[1], -1.0, 1.0));
+  vtkMatrix4x4::DeepCopy(
+    composite, camera->GetCompositeProjectionTransformMatrix(aspect, -1.0, 1.0));
   double clip[16];
   vtkMatrix4x4::Multiply4x4(composite, model, clip);
   for (int row = 0; row < 4; ++row)

@@ -50,7 +50,9 @@ ViewTracker::Key ViewTracker::KeyOf(
   p[11] = camera->GetUseOffAxisProjection();
   p[12] = camera->GetEyeSeparation();
   camera->GetScreenBottomLeft(p + 13);
-  p[16] = camera->GetLeftEye();
+  // Which eye draws, while a stereo render draws one (its projection is
+  // sheared for it); 0 otherwise.
+  p[16] = camera->GetStereo() ? (camera->GetLeftEye() ? 1.0 : 2.0) : 0.0;
   std::copy(model, model + 16, v + 49);
   // The user transform's matrix, by value: it can change without the camera.
   if (vtkHomogeneousTransform* user = camera->GetUserTransform())

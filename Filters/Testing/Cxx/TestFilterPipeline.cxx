@@ -749,6 +749,122 @@ bool SmoothingTakenAgainOnlyWhileItHolds()
   return true;
 }
 
+namespace
+{
+
+// The point a camera's projection sees from, found apart from the filter:
+// the solution of clip x = y = w = 0 (a 3 x 3 system), or for a parallel
+// projection the direction along which x and y stay (x = y = w = 0 with
+// z = 1). In model coordinates (the model matrix is the identity here).
+void TrueCentre(vtkCamera* camera, double aspect, double centre[4])
+{
+  vtkMatrix4x4* m = camera->GetCompositeProjectionTransformMatrix(aspect, -1.0, 1.0);
+  const int rows[3] = { 0, 1, 3 };
+  double a[3][3];
+  double b[3];
+  const bool parallel = camera->GetParallelProjection() != 0;
+  for (int i = 0; i < 3; ++i)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      a[i][j] = parallel && j == 2 ? m->GetElement(rows[i], 3) : m->GetElement(rows[i], j);
+    }
+    b[i] = -m->GetElement(rows[i], parallel ? 2 : 3);
+  }
+  double* matrix[3] = { a[0], a[1], a[2] };
+  vtkMath::SolveLinearSystem(matrix, b, 3);
+  if (parallel)
+  {
+    double d[3] = { b[0], b[1], 1.0 };
+    double projection[3];
+    camera->GetDirectionOfProjection(projection);
+    const double sign = vtkMath::Dot(d, projection) > 0.0 ? -1.0 : 1.0; // towards the viewer
+    vtkMath::Normalize(d);
+    for (int k = 0; k < 3; ++k)
+    {
+      centre[k] = sign * d[k];
+    }
+    centre[3] = 0.0;
+  }
+  else
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      centre[k] = b[k];
+    }
+    centre[3] = 1.0;
+  }
+}
+
+// The largest |n . v| over the silhouette points, v the unit direction from
+// the point towards `centre` (a point, or a direction when w = 0).
+double WorstContourCosine(vtkPolyData* lines, const double centre[4])
+{
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < lines->GetNumberOfPoints(); ++i)
+  {
+    double n[3];
+    double p[3];
+    lines->GetPointData()->GetNormals()->GetTuple(i, n);
+    lines->GetPoint(i, p);
+    double v[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      v[k] = centre[3] == 0.0 ? centre[k] : centre[k] - p[k];
+    }
+    vtkMath::Normalize(v);
+    worst = std::max(worst, std::abs(vtkMath::Dot(n, v)));
+  }
+  return worst;
+}
+
+bool ShearedProjections()
+{
+  // A sheared projection (SetViewShear, an oblique parallel view, a stereo
+  // eye) sees from a point off the camera's axis: the silhouette must turn
+  // away from that point, not from the camera's position. The filter's
+  // silhouette normals are within a few degrees of perpendicular to the
+  // true line of sight, and far from it for the camera's position and axis
+  // (the deliberately wrong view, which the filter used until 2026-12-06).
+  vtkNew<vtkIcosphereSource> sphere;
+  sphere->SetSubdivisionLevel(3);
+  for (const bool parallel : { false, true })
+  {
+    vtkNew<vtkCamera> camera;
+    camera->SetPosition(0.4, 0.3, 5.0);
+    camera->SetClippingRange(0.5, 20.0);
+    camera->SetParallelProjection(parallel);
+    camera->SetParallelScale(1.5);
+    camera->SetViewShear(0.5, 0.3, 1.0);
+    vtkNew<vtkSilhouetteSmoothingFilter> smoother;
+    smoother->SetInputConnection(sphere->GetOutputPort());
+    smoother->SetCamera(camera);
+    smoother->SetViewportSize(640, 480);
+    smoother->Update();
+    double centre[4];
+    TrueCentre(camera, 640.0 / 480.0, centre);
+    double unsheared[4] = { 0.4, 0.3, 5.0, 1.0 };
+    if (parallel)
+    {
+      camera->GetDirectionOfProjection(unsheared);
+      vtkMath::MultiplyScalar(unsheared, -1.0);
+      unsheared[3] = 0.0;
+    }
+    vtkPolyData* lines = smoother->GetSilhouetteOutput();
+    CHECK(lines->GetNumberOfPoints() > 0, "a silhouette");
+    const double right = WorstContourCosine(lines, centre);
+    const double wrong = WorstContourCosine(lines, unsheared);
+    std::printf("%s, sheared: silhouette normals at most %.4f (cosine) off square to the true "
+                "line of sight, %.4f to the camera's\n",
+      parallel ? "parallel" : "perspective", right, wrong);
+    CHECK(right < 0.03, "the silhouette turns away from the sheared projection's centre");
+    CHECK(wrong > 0.2, "the view is sheared enough to tell the two apart");
+  }
+  return true;
+}
+
+} // namespace
+
 int TestFilterPipeline(int, char*[])
 {
   bool ok = ReExecutesOnlyWhenTheViewChanges();
@@ -759,6 +875,7 @@ int TestFilterPipeline(int, char*[])
   ok = CellTypes() && ok;
   ok = IndependentOfThreadCount() && ok;
   ok = ParallelProjection() && ok;
+  ok = ShearedProjections() && ok;
   ok = CellsEditedInPlace() && ok;
   ok = SmoothingTakenAgainOnlyWhileItHolds() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;

@@ -242,14 +242,16 @@ struct vtkSilhouetteSmoothingFilter::Internals
   };
   LastSmoothing Last;
   // The triangles BuildChanges' last smoothing left whole below the
-  // tolerance and those it re-meshed, and the geometry time it was made at:
-  // the next view of that geometry leaves a strip smoothed before whole only
-  // with a margin (SmoothingParameters::SubpixelBefore; the mapper's frames
-  // follow one another, a pipeline's requests need not).
+  // tolerance and those it re-meshed, its feature segments drawn straight,
+  // and the build of the surface they are of (Builds): the next view of that
+  // surface, its points moved or not (a deforming mesh keeps its triangles),
+  // leaves what was smoothed before whole only with a margin
+  // (SmoothingParameters::SubpixelBefore; the mapper's frames follow one
+  // another, a pipeline's requests need not).
   std::vector<silsmooth::Id> ChangesSubpixel;
   std::vector<silsmooth::Id> ChangesRemeshed;
   std::vector<silsmooth::Id> ChangesSubpixelFeatures;
-  vtkMTimeType ChangesSubpixelGeometry = 0;
+  std::size_t ChangesBuild = 0;
   // Per triangle: a ghost cell (duplicate or hidden), never re-meshed; empty
   // when the input has no ghost array. Read again whenever the input changed.
   std::vector<unsigned char> Frozen;
@@ -830,13 +832,12 @@ int vtkSilhouetteSmoothingFilter::BuildChangesUnguarded(vtkPolyData* input, vtkC
     return 0;
   }
   Internals& internal = *this->Internal;
-  const vtkMTimeType geometry = this->GetGeometryTime();
   const silsmooth::SmoothingResult result =
-    internal.Smooth(this, input, view, false, false, internal.ChangesSubpixelGeometry == geometry);
+    internal.Smooth(this, input, view, false, false, internal.ChangesBuild == internal.Builds);
   internal.ChangesSubpixel = result.SubpixelTriangleIds;
   internal.ChangesRemeshed = result.RemeshedTriangles;
   internal.ChangesSubpixelFeatures = result.SubpixelFeatureIds;
-  internal.ChangesSubpixelGeometry = geometry;
+  internal.ChangesBuild = internal.Builds;
   const silsmooth::SurfaceFrame frame = internal.Surface->assembleChanges(result);
   const UsedPoints used(frame.Triangles, internal.Surface->outputPointCount() + frame.Added.size());
   changes->Initialize();
@@ -868,6 +869,35 @@ int vtkSilhouetteSmoothingFilter::BuildChangesUnguarded(vtkPolyData* input, vtkC
   AddCount(
     fd, "SubpixelFeatureSegmentCount", static_cast<vtkIdType>(result.SubpixelFeatureIds.size()));
   return 1;
+}
+
+void vtkSilhouetteSmoothingFilter::CopySmoothingSettings(vtkSilhouetteSmoothingFilter* other)
+{
+  if (!other || other == this)
+  {
+    return;
+  }
+  this->SetTolerance(other->GetTolerance());
+  this->SetMinimumSamples(other->GetMinimumSamples());
+  this->SetMaximumSamples(other->GetMaximumSamples());
+  this->SetNewPointBudget(other->GetNewPointBudget());
+  this->SetSamplingRule(other->GetSamplingRule());
+  this->SetPerturbVertices(other->GetPerturbVertices());
+  this->SetFoldPrevention(other->GetFoldPrevention());
+  this->SetKeepApexesPointed(other->GetKeepApexesPointed());
+  this->SetFrustumCulling(other->GetFrustumCulling());
+  this->SetSkipSubpixelSmoothing(other->GetSkipSubpixelSmoothing());
+  this->SetFeatureLines(other->GetFeatureLines());
+  this->SetFeatureEdgeDetection(other->GetFeatureEdgeDetection());
+  this->SetFeatureAngle(other->GetFeatureAngle());
+  this->SetFlatCreaseDetection(other->GetFlatCreaseDetection());
+  this->SetFlatCreaseAngle(other->GetFlatCreaseAngle());
+  this->SetNormalSeamFeatures(other->GetNormalSeamFeatures());
+  this->SetWeldCoincidentPoints(other->GetWeldCoincidentPoints());
+  this->SetWeldTolerance(other->GetWeldTolerance());
+  this->SetConsistentOrientation(other->GetConsistentOrientation());
+  this->SetNormalEstimation(other->GetNormalEstimation());
+  this->SetVisibilityMethod(other->GetVisibilityMethod());
 }
 
 void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)

@@ -116,6 +116,17 @@ public:
   vtkTypeMacro(vtkSilhouetteSmoothingFilter, vtkSilhouetteViewAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * Takes every setting of the smoothing from `other` (tolerance, sampling,
+   * perturbation, fold guard, apexes, culling, sub-pixel skip, feature
+   * curves, welding, orientation, normals, visibility method), not its view
+   * (camera, renderer, prop, viewport) nor its output's point precision: what
+   * a mapper that smooths with this filter copies (vtkSilhouetteSmoothingMapper's
+   * ShallowCopy, ParaView's composite mapper). A setting already equal
+   * leaves the MTime alone. Null is ignored.
+   */
+  void CopySmoothingSettings(vtkSilhouetteSmoothingFilter* other);
+
   ///@{
   /**
    * Largest distance, in pixels, allowed between a sampled silhouette segment
@@ -249,8 +260,9 @@ public:
    * within three quarters of Tolerance (a segment, likewise), so an outline near it does not blink
    * between smoothed and not from frame to frame. Default off: a
    * mesh written out does not know the pixels it will be seen at.
-   * vtkSilhouetteSmoothingMapper turns it on. Not on a piece with ghost
-   * cells.
+   * vtkSilhouetteSmoothingMapper turns it on. On a piece with ghost cells,
+   * a strip or segment that reaches them is always smoothed (the piece that
+   * owns them does so too), and the rest as on a whole mesh.
    */
   vtkSetMacro(SkipSubpixelSmoothing, bool);
   vtkGetMacro(SkipSubpixelSmoothing, bool);

@@ -375,6 +375,9 @@ private:
   // those that only SubpixelFeatures put there), ascending.
   std::vector<Id> SubpixelFeatures;
   std::vector<Id> CurvedFeatureTriangles;
+  // Mixed sides of frozen silhouette triangles, ascending (only with
+  // SkipSubpixelSmoothing): a strip through one is always smoothed.
+  std::vector<Id> FrozenMixedEdges;
   std::size_t ApexTriangles = 0;
   std::size_t CrowdedTriangles = 0; // sent straight untested (FoldGuard.h)
   std::vector<Id> StraightFeatures;

@@ -41,6 +41,25 @@ void SilhouettePass::findSilhouetteTriangles()
   }
   if (this->Parameters.FrozenTriangles)
   {
+    // SkipSubpixelSmoothing never leaves whole a strip that runs on into
+    // another piece's triangles (that piece decides its part by its own
+    // strip): the mixed sides of the frozen silhouette triangles mark it.
+    if (this->Parameters.SkipSubpixelSmoothing)
+    {
+      const EdgeTable& edges = this->Mesh.edges();
+      for (const Id t : this->Silhouette)
+      {
+        for (int k = 0; k < 3 && this->isFrozen(t); ++k)
+        {
+          const Id e = edges.sideEdge(t, k);
+          if (this->isMixed(edges.edge(e)))
+          {
+            this->FrozenMixedEdges.push_back(e);
+          }
+        }
+      }
+      std::sort(this->FrozenMixedEdges.begin(), this->FrozenMixedEdges.end());
+    }
     this->Silhouette.erase(std::remove_if(this->Silhouette.begin(), this->Silhouette.end(),
                              [this](Id t) { return this->isFrozen(t); }),
       this->Silhouette.end());
@@ -287,8 +306,7 @@ double SilhouettePass::crossingParameter(const Edge& edge, std::size_t& a, std::
 void SilhouettePass::skipSubpixelSmoothing()
 {
   this->Subpixel.clear();
-  if (!this->Parameters.SkipSubpixelSmoothing || this->Parameters.FrozenTriangles ||
-    this->Silhouette.empty())
+  if (!this->Parameters.SkipSubpixelSmoothing || this->Silhouette.empty())
   {
     return;
   }
@@ -408,16 +426,15 @@ void SilhouettePass::skipSubpixelSmoothing()
 // the curve's parametricDeviationBound (HermiteCurve.h). The decision is
 // the segment's, so every side of the crease makes it alike (their shared
 // edge stays whole or is split at the same samples). A segment on a
-// boundary that may be a seam is always smoothed: the other piece sees
-// other triangles. A segment drawn curved in the frame before
+// boundary that may be a seam, or with a side in another piece (frozen), is
+// always smoothed: the other piece sees other triangles. A segment drawn curved in the frame before
 // (SmoothingParameters::SubpixelFeaturesBefore) needs SubpixelEntryFraction
 // of the tolerance, as a strip of the silhouette does.
 void SilhouettePass::skipSubpixelFeatures()
 {
   this->SubpixelFeatures.clear();
   this->CurvedFeatureTriangles.clear();
-  if (!this->Parameters.SkipSubpixelSmoothing || this->Parameters.FrozenTriangles ||
-    this->Mesh.featureTriangles().empty())
+  if (!this->Parameters.SkipSubpixelSmoothing || this->Mesh.featureTriangles().empty())
   {
     return;
   }
@@ -444,6 +461,7 @@ void SilhouettePass::skipSubpixelFeatures()
            within && it != sides.end() && it->first == f; ++it)
       {
         const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(it->second)];
+        within = !this->isFrozen(it->second); // the other piece's side decides there
         for (int k = 0; k < 3 && within; ++k)
         {
           const Id e = edges.sideEdge(it->second, k);
@@ -515,7 +533,9 @@ double SilhouettePass::smoothingShiftPixels(
   for (int k = 0; k < 3; ++k)
   {
     const Id e = sides.Edges[k];
-    if (this->Mesh.edgeFeature(e) >= 0 || this->mayBeSeam(e))
+    if (this->Mesh.edgeFeature(e) >= 0 || this->mayBeSeam(e) ||
+      (!this->FrozenMixedEdges.empty() &&
+        std::binary_search(this->FrozenMixedEdges.begin(), this->FrozenMixedEdges.end(), e)))
     {
       return never;
     }
@@ -591,8 +611,10 @@ void SilhouettePass::applySampleBudget()
   {
     return;
   }
-  const std::size_t segments =
-    std::max<std::size_t>(1, this->Silhouette.size() + this->Mesh.features().edges().size());
+  // What SkipSubpixelSmoothing leaves out samples nothing.
+  const std::size_t segments = std::max<std::size_t>(1,
+    this->Silhouette.size() - this->Subpixel.size() + this->Mesh.features().edges().size() -
+      this->SubpixelFeatures.size());
   const std::size_t perSegment = 2 + budget / segments;
   if (perSegment < static_cast<std::size_t>(this->Parameters.Sampling.MaximumSamples))
   {

@@ -118,8 +118,9 @@ struct SmoothingParameters
   /// sides' triangles by more than the tolerance (its parametricDeviationBound) is drawn by its
   /// chord, and its sides are not re-meshed for it (a CAD part's finely divided rims: a
   /// 21,600-triangle part re-meshed 21,588 feature triangles every frame for nothing the image
-  /// shows). Not on a piece with frozen triangles (the piece that owns them cannot
-  /// know of it).
+  /// shows). On a piece of a partitioned mesh, a strip with a side that may be a seam
+  /// (BoundaryMayBeSeam) or that runs on into frozen triangles, and a segment with such a
+  /// side, are always smoothed: the piece across decides its part alike.
   bool SkipSubpixelSmoothing = false;
   /// The frame before, when the caller keeps it (the mapper): the triangles
   /// SkipSubpixelSmoothing left whole (SmoothingResult::SubpixelTriangleIds)

@@ -579,8 +579,7 @@ void vtkSilhouettePatchedMapper::ProcessSelectorPixelBuffers(
     current = { this->PatchCellIds, this->PatchPointSources, this->PatchCellOffset,
       this->PatchPointOffset, this->PatchDrawnThisPass };
   }
-  const DrawnPatch& drawn =
-    recorded != this->SelectionPatches.end() ? recorded->second : current;
+  const DrawnPatch& drawn = recorded != this->SelectionPatches.end() ? recorded->second : current;
   if (!this->PopulateSelectionSettings || !poly || !drawn.Drawn)
   {
     this->Superclass::ProcessSelectorPixelBuffers(sel, pixeloffsets, prop);

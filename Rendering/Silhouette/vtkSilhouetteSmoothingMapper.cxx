@@ -431,10 +431,18 @@ double* vtkSilhouetteSmoothingMapper::GetBounds()
   }
   if (in && !this->Internal->CellsDrawable(this, in))
   {
+    this->ClearFrameCounts();
     vtkMath::UninitializeBounds(this->Bounds);
     return this->Bounds;
   }
   double* bounds = this->Superclass::GetBounds(); // the input's
+  if (!bounds || !vtkMath::AreBoundsInitialized(bounds))
+  {
+    // The renderer draws no prop without bounds, so RenderPiece never sees
+    // this frame: the figures of the last one would stay.
+    this->ClearFrameCounts();
+    return bounds;
+  }
   const Internals& internal = *this->Internal;
   vtkPolyData* input = this->GetInput();
   // The patch counts while smoothing is on and it was made for this input as
@@ -462,11 +470,13 @@ void vtkSilhouetteSmoothingMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   vtkPolyData* input = this->GetInput();
   if (!input || input->GetNumberOfPoints() == 0 || !ren || !act)
   {
+    this->ClearFrameCounts(); // nothing drawn, nothing smoothed
     return;
   }
   Internals& internal = *this->Internal;
   if (!internal.CellsDrawable(this, input))
   {
+    this->ClearFrameCounts();
     return; // neither smoothed nor drawn as it is
   }
   const auto start = std::chrono::steady_clock::now();
@@ -492,6 +502,22 @@ void vtkSilhouetteSmoothingMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
   }
   internal.Drawn->RenderPiece(ren, act);
   this->TimeToDraw = internal.Drawn->GetTimeToDraw(); // what vtkLODActor weighs
+}
+
+void vtkSilhouetteSmoothingMapper::ShallowCopy(vtkAbstractMapper* other)
+{
+  this->Superclass::ShallowCopy(other);
+  if (auto* smoothing = vtkSilhouetteSmoothingMapper::SafeDownCast(other))
+  {
+    this->SetSmoothing(smoothing->GetSmoothing());
+    this->Internal->Smoother->CopySmoothingSettings(smoothing->GetSmoothingFilter());
+  }
+}
+
+void vtkSilhouetteSmoothingMapper::ClearFrameCounts()
+{
+  this->ReplacedTriangleCount = this->PatchTriangleCount = this->CulledTriangleCount = 0;
+  this->SubpixelTriangleCount = this->SilhouetteTriangleCount = this->NewTriangleCount = 0;
 }
 
 void vtkSilhouetteSmoothingMapper::MapDataArrayToVertexAttribute(

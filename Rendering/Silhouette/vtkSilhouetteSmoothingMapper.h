@@ -149,6 +149,13 @@ public:
   void RemoveAllVertexAttributeMappings() override;
   ///@}
 
+  /**
+   * vtkPolyDataMapper's settings, and from another smoothing mapper its
+   * Smoothing and its filter's smoothing settings
+   * (vtkSilhouetteSmoothingFilter::CopySmoothingSettings).
+   */
+  void ShallowCopy(vtkAbstractMapper* other) override;
+
   void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
   void ReleaseGraphicsResources(vtkWindow* win) override;
   bool GetSupportsSelection() override { return true; }
@@ -181,6 +188,9 @@ protected:
   vtkIdType SmoothingRunCount = 0;
 
 private:
+  // The figures of a frame that draws nothing.
+  void ClearFrameCounts();
+
   vtkSilhouetteSmoothingMapper(const vtkSilhouetteSmoothingMapper&) = delete;
   void operator=(const vtkSilhouetteSmoothingMapper&) = delete;
 

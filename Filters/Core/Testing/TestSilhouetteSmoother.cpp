@@ -23,6 +23,7 @@
 #include <memory>
 #include <random>
 #include <thread>
+#include <tuple>
 #include <utility>
 
 using namespace silsmooth;
@@ -272,8 +273,13 @@ void torus(int ring, int tube, std::vector<glm::dvec3>& points, std::vector<glm:
   }
 }
 
+// `parameters` smooth the whole mesh, and the pieces with BoundaryMayBeSeam.
+// The pieces make as many triangles as the whole unless `sameCount` is
+// false (with SkipSubpixelSmoothing a strip the seam cuts is smoothed in the
+// pieces, while the whole may leave it as it is).
 void checkPiecesMeet(const std::vector<glm::dvec3>& points, const std::vector<glm::dvec3>& normals,
-  const std::vector<Triangle>& triangles, std::size_t& perturbed)
+  const std::vector<Triangle>& triangles, std::size_t& perturbed,
+  const SmoothingParameters& parameters = {}, bool sameCount = true, int views = 200)
 {
   const PreparedMesh whole(points, triangles, normals);
 
@@ -324,14 +330,16 @@ void checkPiecesMeet(const std::vector<glm::dvec3>& points, const std::vector<gl
 
   std::mt19937_64 rng(5);
   std::normal_distribution<double> gauss;
-  for (int i = 0; i < 200; ++i)
+  for (int i = 0; i < views; ++i)
   {
     const glm::dvec3 direction = glm::normalize(glm::dvec3(gauss(rng), gauss(rng), gauss(rng)));
     const ViewGeometry view = coretest::perspectiveFrom(direction * (1.5 + i % 4));
     std::size_t wholeCount = 0;
     std::map<std::pair<std::array<double, 3>, std::array<double, 3>>, int> directed;
     auto add = [&](const PreparedMesh& mesh, bool count) {
-      const SmoothingResult result = smoothSilhouettes(mesh, view, SmoothingParameters{});
+      SmoothingParameters used = parameters;
+      used.BoundaryMayBeSeam = !count;
+      const SmoothingResult result = smoothSilhouettes(mesh, view, used);
       perturbed += result.MovedPoints.size();
       std::vector<Triangle> out;
       std::vector<Id> source;
@@ -360,7 +368,10 @@ void checkPiecesMeet(const std::vector<glm::dvec3>& points, const std::vector<gl
     };
     add(whole, true);
     const std::size_t pieceCount = add(pieces[0], false) + add(pieces[1], false);
-    ASSERT_EQ(pieceCount, wholeCount) << "view " << i;
+    if (sameCount)
+    {
+      ASSERT_EQ(pieceCount, wholeCount) << "view " << i;
+    }
     for (const auto& [edge, uses] : directed)
     {
       ASSERT_EQ(uses, 1);
@@ -384,6 +395,24 @@ TEST(SilhouetteSmoother, PiecesMeetWithoutCracks)
   perturbed = 0;
   checkPiecesMeet(points, normals, triangles, perturbed);
   EXPECT_GT(perturbed, 0u);
+}
+
+// SkipSubpixelSmoothing on pieces: a strip of the silhouette that the seam
+// cuts is smoothed in both pieces (a triangle with a side that may be a seam
+// is never left whole), so where one piece smooths its part the other does
+// too. Without that rule the 60- and 120-ring spheres crack.
+TEST(SilhouetteSmoother, PiecesMeetWithoutCracksWhenSubpixelSmoothingIsLeftOut)
+{
+  SmoothingParameters parameters;
+  parameters.SkipSubpixelSmoothing = true;
+  for (const int rings : { 60, 120 })
+  {
+    std::vector<glm::dvec3> points;
+    std::vector<Triangle> triangles;
+    uvSphere(rings, 2 * rings, points, triangles);
+    std::size_t perturbed = 0;
+    checkPiecesMeet(points, points, triangles, perturbed, parameters, false, 12);
+  }
 }
 
 namespace
@@ -904,8 +933,9 @@ TEST(SilhouetteSmoother, SubpixelSmoothingIsLeftOutWhereItMovesNothingByTheToler
   parameters.RemeshedBefore = &remeshedBefore;
   EXPECT_EQ(smoothSilhouettes(fine, view, parameters).SubpixelTriangles, 0u)
     << "smoothed before, it needs the margin";
-  parameters.Sampling.TolerancePixels = 0.99 * SubpixelEntryFraction * bound;
-  EXPECT_EQ(smoothSilhouettes(fine, view, parameters).SubpixelTriangles, 0u);
+  parameters.Sampling.TolerancePixels = 0.99 * bound / SubpixelEntryFraction;
+  EXPECT_EQ(smoothSilhouettes(fine, view, parameters).SubpixelTriangles, 0u)
+    << "just short of the margin";
   parameters.Sampling.TolerancePixels = 1.01 * bound / SubpixelEntryFraction;
   EXPECT_EQ(smoothSilhouettes(fine, view, parameters).SubpixelTriangles, wholeBefore.size())
     << "and with the margin it is left whole";
@@ -916,6 +946,14 @@ TEST(SilhouetteSmoother, SubpixelSmoothingIsLeftOutWhereItMovesNothingByTheToler
     << "left whole before, it stays so within the tolerance";
   parameters.Sampling.TolerancePixels = 0.99 * bound;
   EXPECT_EQ(smoothSilhouettes(fine, view, parameters).SubpixelTriangles, 0u) << "but not beyond it";
+  // Both lists, as the mapper passes them: a strip with a triangle left
+  // whole before stays whole within the tolerance even where others of it
+  // were re-meshed before (strips join and part as the view turns).
+  parameters.RemeshedBefore = &remeshedBefore;
+  parameters.Sampling.TolerancePixels = 1.01 * bound;
+  EXPECT_EQ(smoothSilhouettes(fine, view, parameters).SubpixelTriangles, wholeBefore.size())
+    << "whole before counts over re-meshed before";
+  parameters.RemeshedBefore = nullptr;
   parameters.SubpixelBefore = nullptr;
 
   // A fine sphere beside a coarse one: two strips, one left out, the other
@@ -1152,4 +1190,130 @@ TEST(SilhouetteSmoother, SubpixelFeatureSegmentsAreDrawnByTheirChords)
   }
   std::printf("views with both rims' kinds: %zu of 24\n", mixedViews);
   EXPECT_EQ(mixedViews, 24u);
+}
+
+// SkipSubpixelSmoothing on pieces with ghost cells (FrozenTriangles: the
+// other piece's triangles, kept for the normals and the adjacency): a strip
+// of the silhouette that runs on into ghost triangles is smoothed in both
+// pieces, so the pieces' own triangles meet without a crack whatever each
+// piece's part of the strip would decide alone; the rest of the silhouette
+// is left whole as on the whole mesh. A fine sphere cut in two by the
+// pieces' seam, with a coarse and a small fine one beside it, over 40
+// tolerances around the fine strips' bounds. Without the rule (the frozen
+// triangles' mixed sides not marked) the pieces crack at 0.32 px (checked
+// by hand, 2026-12-06).
+TEST(SilhouetteSmoother, PiecesWithGhostCellsMeetWhenSubpixelSmoothingIsLeftOut)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::unitSphere(48, 96, points, triangles);
+  std::vector<glm::dvec3> normals = points;
+  // A coarse sphere, smoothed at every tolerance, and a fine one that the
+  // cut does not reach, left whole at the larger ones.
+  for (const auto& [rings, radius, centre] : { std::make_tuple(8, 0.5, glm::dvec3(1.6, 0.0, 0.0)),
+         std::make_tuple(48, 0.4, glm::dvec3(-1.2, 0.8, 0.0)) })
+  {
+    std::vector<glm::dvec3> more;
+    std::vector<Triangle> moreTriangles;
+    coretest::unitSphere(rings, 2 * rings, more, moreTriangles);
+    const Id offset = static_cast<Id>(points.size());
+    for (const glm::dvec3& p : more)
+    {
+      points.push_back(radius * p + centre);
+      normals.push_back(p);
+    }
+    for (const Triangle& t : moreTriangles)
+    {
+      triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+    }
+  }
+  // Piece k: its own triangles (the centroid's side of x + 0.3 y = 0.8, a
+  // plane through the first sphere) and, frozen, the other side's triangles
+  // that share a point with them.
+  struct Piece
+  {
+    std::unique_ptr<PreparedMesh> Mesh;
+    std::vector<unsigned char> Frozen;
+  };
+  std::vector<Piece> pieces(2);
+  for (int k = 0; k < 2; ++k)
+  {
+    auto side = [&](const Triangle& t) {
+      const glm::dvec3 c = points[t[0]] + points[t[1]] + points[t[2]];
+      return (c.x + 0.3 * c.y > 3.0 * 0.8) == (k == 0);
+    };
+    std::vector<unsigned char> ownPoint(points.size(), 0);
+    for (const Triangle& t : triangles)
+    {
+      for (const Id v : t)
+      {
+        ownPoint[v] |= side(t) ? 1 : 0;
+      }
+    }
+    std::vector<Triangle> kept;
+    for (const Triangle& t : triangles)
+    {
+      const bool ghost = !side(t) && (ownPoint[t[0]] || ownPoint[t[1]] || ownPoint[t[2]]);
+      if (side(t) || ghost)
+      {
+        kept.push_back(t);
+        pieces[k].Frozen.push_back(ghost ? 1 : 0);
+      }
+    }
+    pieces[k].Mesh = std::make_unique<PreparedMesh>(points, kept, normals);
+  }
+  const ViewGeometry view = realPerspective(glm::dvec3(0.8, 0.5, 3.2), 320, 240);
+  SmoothingParameters parameters;
+  parameters.SkipSubpixelSmoothing = true;
+  std::size_t left = 0;
+  std::size_t smoothed = 0;
+  std::size_t mixed = 0; // tolerances at which the pieces differ in what they leave whole
+  for (int step = 0; step < 40; ++step)
+  {
+    parameters.Sampling.TolerancePixels = 0.02 * std::pow(1.08, step);
+    std::size_t whole[2] = { 0, 0 };
+    std::map<std::pair<std::array<double, 3>, std::array<double, 3>>, int> directed;
+    for (Piece& piece : pieces)
+    {
+      parameters.FrozenTriangles = &piece.Frozen;
+      const SmoothingResult r = smoothSilhouettes(*piece.Mesh, view, parameters);
+      whole[&piece - pieces.data()] = r.SubpixelTriangles;
+      left += r.SubpixelTriangles;
+      smoothed += r.SilhouetteTriangleCount;
+      std::vector<Triangle> out;
+      std::vector<Id> source;
+      std::vector<unsigned char> isNew;
+      assembleTriangles(*piece.Mesh, r, out, source, isNew);
+      const std::size_t n = piece.Mesh->points().size();
+      auto at = [&](Id id) {
+        const glm::dvec3 p = static_cast<std::size_t>(id) < n
+          ? piece.Mesh->points()[static_cast<std::size_t>(id)]
+          : r.NewPoints[static_cast<std::size_t>(id) - n].Position;
+        return std::array<double, 3>{ { p.x, p.y, p.z } };
+      };
+      for (std::size_t i = 0; i < out.size(); ++i)
+      {
+        if (piece.Frozen[static_cast<std::size_t>(source[i])])
+        {
+          continue; // the other piece's to draw
+        }
+        for (int c = 0; c < 3; ++c)
+        {
+          ++directed[{ at(out[i][c]), at(out[i][(c + 1) % 3]) }];
+        }
+      }
+    }
+    mixed += (whole[0] > 0) != (whole[1] > 0) ? 1 : 0;
+    for (const auto& [edge, uses] : directed)
+    {
+      ASSERT_EQ(uses, 1) << "tolerance " << parameters.Sampling.TolerancePixels;
+      ASSERT_EQ(directed.count({ edge.second, edge.first }), 1u)
+        << "a crack at tolerance " << parameters.Sampling.TolerancePixels;
+    }
+  }
+  std::printf("silhouette triangles left whole %zu, smoothed %zu over 40 tolerances, %zu of "
+              "them with one piece leaving some whole and the other none\n",
+    left, smoothed, mixed);
+  EXPECT_GT(left, 0u) << "the option still leaves strips whole on pieces";
+  EXPECT_GT(smoothed, 0u);
 }

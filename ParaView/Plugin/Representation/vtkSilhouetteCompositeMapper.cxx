@@ -19,33 +19,6 @@ vtkStandardNewMacro(vtkSilhouetteCompositeMapper);
 namespace
 {
 
-// Every parameter of the smoothing (the filter's own, not the view's: the
-// mapper takes that from the renderer). Setters that get the value they hold
-// leave the MTime alone, so an unchanged parameter costs nothing.
-void CopySettings(vtkSilhouetteSmoothingFilter* from, vtkSilhouetteSmoothingFilter* to)
-{
-  to->SetTolerance(from->GetTolerance());
-  to->SetMinimumSamples(from->GetMinimumSamples());
-  to->SetMaximumSamples(from->GetMaximumSamples());
-  to->SetNewPointBudget(from->GetNewPointBudget());
-  to->SetSamplingRule(from->GetSamplingRule());
-  to->SetPerturbVertices(from->GetPerturbVertices());
-  to->SetFoldPrevention(from->GetFoldPrevention());
-  to->SetKeepApexesPointed(from->GetKeepApexesPointed());
-  to->SetSkipSubpixelSmoothing(from->GetSkipSubpixelSmoothing());
-  to->SetFeatureLines(from->GetFeatureLines());
-  to->SetFeatureEdgeDetection(from->GetFeatureEdgeDetection());
-  to->SetFeatureAngle(from->GetFeatureAngle());
-  to->SetFlatCreaseDetection(from->GetFlatCreaseDetection());
-  to->SetFlatCreaseAngle(from->GetFlatCreaseAngle());
-  to->SetNormalSeamFeatures(from->GetNormalSeamFeatures());
-  to->SetWeldCoincidentPoints(from->GetWeldCoincidentPoints());
-  to->SetWeldTolerance(from->GetWeldTolerance());
-  to->SetConsistentOrientation(from->GetConsistentOrientation());
-  to->SetNormalEstimation(from->GetNormalEstimation());
-  to->SetVisibilityMethod(from->GetVisibilityMethod());
-}
-
 // Cells flagged as ghosts not to be drawn: copies owned by another piece
 // (DUPLICATECELL) or hidden ones (HIDDENCELL).
 vtkIdType CountGhostCells(vtkPolyData* pd)
@@ -98,7 +71,13 @@ struct vtkSilhouetteCompositeMapper::Leaf
   }
 };
 
-vtkSilhouetteCompositeMapper::vtkSilhouetteCompositeMapper() = default;
+vtkSilhouetteCompositeMapper::vtkSilhouetteCompositeMapper()
+{
+  // The leaf mappers' own defaults: what the view cannot show, or would
+  // show moved by less than the tolerance, is not smoothed.
+  this->Settings->FrustumCullingOn();
+  this->Settings->SkipSubpixelSmoothingOn();
+}
 
 vtkSilhouetteCompositeMapper::~vtkSilhouetteCompositeMapper() = default;
 
@@ -240,7 +219,7 @@ void vtkSilhouetteCompositeMapper::RenderLeaf(vtkRenderer* ren, vtkActor* act, v
   const vtkMTimeType settingsTime = this->Settings->GetMTime();
   if (settingsTime != leaf->CopiedSettingsTime)
   {
-    CopySettings(this->Settings, mapper->GetSmoothingFilter());
+    mapper->GetSmoothingFilter()->CopySmoothingSettings(this->Settings);
     leaf->CopiedSettingsTime = settingsTime;
   }
   mapper->SetSmoothing(this->Smoothing);

@@ -776,6 +776,72 @@ bool CheckArraysAloneDoNotSmoothAgain(vtkPolyData* bunny)
   return ok;
 }
 
+// ShallowCopy takes the smoothing mapper's own settings, not only
+// vtkPolyDataMapper's; and a frame that draws nothing (empty input) leaves
+// the frame's figures at 0, not at the last smoothed frame's. Both found in
+// a user's trial (2026-12-06): the copy kept Smoothing on and the tolerance
+// at 0.5, and the figures read 22 silhouette triangles after the mesh went.
+bool CheckCopiesAndEmptyFrames(vtkPolyData* bunny)
+{
+  bool ok = true;
+  vtkNew<vtkSilhouetteSmoothingMapper> original;
+  original->SmoothingOff();
+  original->ScalarVisibilityOff();
+  original->GetSmoothingFilter()->SetTolerance(5.0);
+  original->GetSmoothingFilter()->SkipSubpixelSmoothingOff();
+  original->GetSmoothingFilter()->FrustumCullingOff();
+  original->GetSmoothingFilter()->SetFeatureAngle(30.0);
+  original->GetSmoothingFilter()->FoldPreventionOff();
+  auto same = [&](vtkSilhouetteSmoothingMapper* copy) {
+    vtkSilhouetteSmoothingFilter* a = original->GetSmoothingFilter();
+    vtkSilhouetteSmoothingFilter* b = copy->GetSmoothingFilter();
+    return copy->GetSmoothing() == original->GetSmoothing() &&
+      copy->GetScalarVisibility() == original->GetScalarVisibility() &&
+      b->GetTolerance() == a->GetTolerance() &&
+      b->GetSkipSubpixelSmoothing() == a->GetSkipSubpixelSmoothing() &&
+      b->GetFrustumCulling() == a->GetFrustumCulling() &&
+      b->GetFeatureAngle() == a->GetFeatureAngle() &&
+      b->GetFoldPrevention() == a->GetFoldPrevention();
+  };
+  vtkNew<vtkSilhouetteSmoothingMapper> copy;
+  copy->ShallowCopy(original);
+  // The deliberately wrong variant: vtkPolyDataMapper's copy alone.
+  vtkNew<vtkSilhouetteSmoothingMapper> partial;
+  partial->vtkPolyDataMapper::ShallowCopy(original);
+  std::printf("ShallowCopy: smoothing settings %s; vtkPolyDataMapper's copy alone: %s\n",
+    same(copy) ? "copied" : "NOT copied", same(partial) ? "copied" : "not copied");
+  if (!same(copy) || same(partial))
+  {
+    std::printf(
+      "FAIL: ShallowCopy does not copy the smoothing settings, or the check cannot fail\n");
+    ok = false;
+  }
+
+  Scene scene;
+  vtkNew<vtkSilhouetteSmoothingMapper> mapper;
+  mapper->SetInputData(bunny);
+  scene.Actor->SetMapper(mapper);
+  scene.Look(bunny, 0);
+  scene.Pixels();
+  const vtkIdType before = mapper->GetSilhouetteTriangleCount() + mapper->GetNewTriangleCount() +
+    mapper->GetReplacedTriangleCount() + mapper->GetPatchTriangleCount();
+  vtkNew<vtkPolyData> empty;
+  mapper->SetInputData(empty);
+  scene.Pixels();
+  const vtkIdType after = mapper->GetSilhouetteTriangleCount() + mapper->GetNewTriangleCount() +
+    mapper->GetReplacedTriangleCount() + mapper->GetPatchTriangleCount() +
+    mapper->GetCulledTriangleCount() + mapper->GetSubpixelTriangleCount();
+  std::printf("figures: %lld with the bunny, %lld after a frame of an empty input\n",
+    static_cast<long long>(before), static_cast<long long>(after));
+  if (before == 0 || after != 0)
+  {
+    std::printf("FAIL: a frame that draws nothing keeps the last frame's figures (or the bunny's "
+                "frame had none, and the check cannot fail)\n");
+    ok = false;
+  }
+  return ok;
+}
+
 int TestSmoothingMapperUpdates(int argc, char* argv[])
 {
   const vtkSmartPointer<vtkRenderWindow> keeper = KeepTheDisplayOpen();
@@ -797,5 +863,6 @@ int TestSmoothingMapperUpdates(int argc, char* argv[])
   ok = CheckSharedMapperSelection(meshes.Bunny) && ok;
   ok = CheckMissingPointsAreNotDrawn(meshes.Bunny) && ok;
   ok = CheckArraysAloneDoNotSmoothAgain(meshes.Bunny) && ok;
+  ok = CheckCopiesAndEmptyFrames(meshes.Bunny) && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

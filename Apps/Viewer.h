@@ -64,6 +64,8 @@ struct ViewerFigures
   /// Silhouette triangles the mapper left as they are, their smoothing below
   /// the tolerance (not in SilhouetteTriangles; 0 in the filter's styles).
   vtkIdType SubpixelTriangles = 0;
+  /// Crease segments the mapper drew by their chords, below the tolerance.
+  vtkIdType SubpixelFeatureSegments = 0;
   /// The filter's run for this frame (0 if it did not run); in the shaded
   /// style, the mapper's smoothing before it drew the frame.
   double FilterMilliseconds = 0.0;

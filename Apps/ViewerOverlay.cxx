@@ -182,6 +182,7 @@ ViewerFigures Viewer::CurrentFigures() const
     figures.SilhouetteTriangles = mapper->GetSilhouetteTriangleCount();
     figures.NewTriangles = mapper->GetNewTriangleCount();
     figures.SubpixelTriangles = mapper->GetSubpixelTriangleCount();
+    figures.SubpixelFeatureSegments = mapper->GetSubpixelFeatureSegmentCount();
     figures.FilterMilliseconds = 1000.0 * mapper->GetLastPrepareSeconds();
     figures.RenderMilliseconds = 1000.0 * this->MainRenderer->GetLastRenderTimeInSeconds();
     return figures;
@@ -231,6 +232,10 @@ std::string Viewer::StatusText() const
       // A fine mesh's silhouette can be all of it: "silhouette 0" alone
       // would read as none found.
       text << "; " << Grouped(figures.SubpixelTriangles) << " below the tolerance, kept";
+    }
+    if (figures.SubpixelFeatureSegments > 0)
+    {
+      text << "; " << Grouped(figures.SubpixelFeatureSegments) << " crease segments straight";
     }
     text << "\n";
   }

@@ -123,6 +123,7 @@ struct ViewPatch
   vtkIdType PatchTriangles = 0;
   vtkIdType CulledTriangles = 0;
   vtkIdType SubpixelTriangles = 0;
+  vtkIdType SubpixelFeatureSegments = 0;
   vtkIdType SilhouetteTriangles = 0;
   vtkIdType NewTriangles = 0;
 };
@@ -292,6 +293,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
     self->PatchTriangleCount = patch.PatchTriangles;
     self->CulledTriangleCount = patch.CulledTriangles;
     self->SubpixelTriangleCount = patch.SubpixelTriangles;
+    self->SubpixelFeatureSegmentCount = patch.SubpixelFeatureSegments;
     self->SilhouetteTriangleCount = patch.SilhouetteTriangles;
     self->NewTriangleCount = patch.NewTriangles;
   }
@@ -304,7 +306,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
     patch.Smoothed = smooth;
     patch.DrawsChanges = false;
     patch.ReplacedTriangles = patch.PatchTriangles = patch.CulledTriangles = 0;
-    patch.SubpixelTriangles = 0;
+    patch.SubpixelTriangles = patch.SubpixelFeatureSegments = 0;
     patch.SilhouetteTriangles = patch.NewTriangles = 0;
     patch.GeometryTime = this->Smoother->GetGeometryTime();
     if (!smooth || width <= 0 || height <= 0)
@@ -334,6 +336,10 @@ struct vtkSilhouetteSmoothingMapper::Internals
     if (vtkDataArray* subpixel = figures->GetArray("SubpixelTriangleCount"))
     {
       patch.SubpixelTriangles = static_cast<vtkIdType>(subpixel->GetTuple1(0));
+    }
+    if (vtkDataArray* straight = figures->GetArray("SubpixelFeatureSegmentCount"))
+    {
+      patch.SubpixelFeatureSegments = static_cast<vtkIdType>(straight->GetTuple1(0));
     }
     if (vtkDataArray* silhouette = figures->GetArray("SilhouetteTriangleCount"))
     {
@@ -518,6 +524,7 @@ void vtkSilhouetteSmoothingMapper::ClearFrameCounts()
 {
   this->ReplacedTriangleCount = this->PatchTriangleCount = this->CulledTriangleCount = 0;
   this->SubpixelTriangleCount = this->SilhouetteTriangleCount = this->NewTriangleCount = 0;
+  this->SubpixelFeatureSegmentCount = 0;
 }
 
 void vtkSilhouetteSmoothingMapper::MapDataArrayToVertexAttribute(
@@ -569,6 +576,7 @@ void vtkSilhouetteSmoothingMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "PatchTriangleCount: " << this->PatchTriangleCount << "\n";
   os << indent << "CulledTriangleCount: " << this->CulledTriangleCount << "\n";
   os << indent << "SubpixelTriangleCount: " << this->SubpixelTriangleCount << "\n";
+  os << indent << "SubpixelFeatureSegmentCount: " << this->SubpixelFeatureSegmentCount << "\n";
   os << indent << "SmoothingRunCount: " << this->SmoothingRunCount << "\n";
   os << indent << "SmoothingFilter:\n";
   this->Internal->Smoother->PrintSelf(os, indent.GetNextIndent());

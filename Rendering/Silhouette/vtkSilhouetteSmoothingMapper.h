@@ -97,6 +97,9 @@ public:
   vtkIdType GetPatchTriangleCount() const { return this->PatchTriangleCount; }
   vtkIdType GetCulledTriangleCount() const { return this->CulledTriangleCount; }
   vtkIdType GetSubpixelTriangleCount() const { return this->SubpixelTriangleCount; }
+  /// Curved feature segments (creases) drawn by their chords, their curves
+  /// within the tolerance (SkipSubpixelSmoothing).
+  vtkIdType GetSubpixelFeatureSegmentCount() const { return this->SubpixelFeatureSegmentCount; }
   /// The silhouette triangles re-meshed, and the triangles the re-meshing
   /// made (the patch without the kept triangles the perturbation moved):
   /// the filter's SilhouetteTriangleCount and NewTriangleCount.
@@ -181,6 +184,7 @@ protected:
   vtkIdType PatchTriangleCount = 0;
   vtkIdType CulledTriangleCount = 0;
   vtkIdType SubpixelTriangleCount = 0;
+  vtkIdType SubpixelFeatureSegmentCount = 0;
   vtkIdType SilhouetteTriangleCount = 0;
   vtkIdType NewTriangleCount = 0;
   double LastPrepareSeconds = 0.0;

@@ -830,13 +830,110 @@ bool CheckCopiesAndEmptyFrames(vtkPolyData* bunny)
   scene.Pixels();
   const vtkIdType after = mapper->GetSilhouetteTriangleCount() + mapper->GetNewTriangleCount() +
     mapper->GetReplacedTriangleCount() + mapper->GetPatchTriangleCount() +
-    mapper->GetCulledTriangleCount() + mapper->GetSubpixelTriangleCount();
+    mapper->GetCulledTriangleCount() + mapper->GetSubpixelTriangleCount() +
+    mapper->GetSubpixelFeatureSegmentCount();
   std::printf("figures: %lld with the bunny, %lld after a frame of an empty input\n",
     static_cast<long long>(before), static_cast<long long>(after));
   if (before == 0 || after != 0)
   {
     std::printf("FAIL: a frame that draws nothing keeps the last frame's figures (or the bunny's "
                 "frame had none, and the check cannot fail)\n");
+    ok = false;
+  }
+  return ok;
+}
+
+// A CAD-like part: a capped cylinder, its rims found as creases (flat
+// faces' outlines). Divided finely (192 sides), its rims' curves lie within
+// the tolerance of their chords at this size: the mapper draws them
+// straight and re-meshes only where the silhouette crosses a rim, not the
+// 768 triangles beside the rims, and the image differs from the mapper's
+// with the option off in a few pixels. Divided coarsely (16 sides), the
+// curves show and are smoothed as before: the same image. The check can
+// fail: the coarse part's rims drawn straight (a tolerance of 20 px) differ
+// in hundreds of pixels.
+vtkSmartPointer<vtkPolyData> CappedCylinder(int sides)
+{
+  vtkNew<vtkPoints> points;
+  for (const double z : { -1.0, 1.0 })
+  {
+    for (int i = 0; i < sides; ++i)
+    {
+      const double a = 2.0 * vtkMath::Pi() * i / sides;
+      points->InsertNextPoint(std::cos(a), std::sin(a), z);
+    }
+  }
+  const vtkIdType bottom = points->InsertNextPoint(0, 0, -1);
+  const vtkIdType top = points->InsertNextPoint(0, 0, 1);
+  vtkNew<vtkCellArray> polys;
+  for (vtkIdType i = 0; i < sides; ++i)
+  {
+    const vtkIdType j = (i + 1) % sides;
+    const vtkIdType n = sides;
+    const vtkIdType cells[4][3] = { { i, j, n + j }, { i, n + j, n + i }, { top, n + i, n + j },
+      { bottom, j, i } };
+    for (const auto& cell : cells)
+    {
+      polys->InsertNextCell(3, cell);
+    }
+  }
+  auto cylinder = vtkSmartPointer<vtkPolyData>::New();
+  cylinder->SetPoints(points);
+  cylinder->SetPolys(polys);
+  return cylinder;
+}
+
+bool CheckFineCreasesAreDrawnStraight()
+{
+  bool ok = true;
+  struct Frame
+  {
+    std::vector<unsigned char> Pixels;
+    vtkIdType Replaced = 0;
+    vtkIdType Straight = 0;
+  };
+  auto render = [](vtkPolyData* cylinder, bool skip, double tolerance) {
+    Scene scene;
+    scene.Zoom = 1.1;
+    vtkNew<vtkSilhouetteSmoothingMapper> mapper;
+    mapper->SetInputData(cylinder);
+    mapper->GetSmoothingFilter()->SetSkipSubpixelSmoothing(skip);
+    mapper->GetSmoothingFilter()->SetTolerance(tolerance);
+    scene.Actor->SetMapper(mapper);
+    scene.Look(cylinder, 1);
+    Frame frame;
+    frame.Pixels = scene.Pixels();
+    frame.Replaced = mapper->GetReplacedTriangleCount();
+    frame.Straight = mapper->GetSubpixelFeatureSegmentCount();
+    return frame;
+  };
+  const vtkSmartPointer<vtkPolyData> fine = CappedCylinder(192);
+  const Frame fineAll = render(fine, false, 0.5);
+  const Frame fineSkipped = render(fine, true, 0.5);
+  const vtkSmartPointer<vtkPolyData> coarse = CappedCylinder(16);
+  const Frame coarseAll = render(coarse, false, 0.5);
+  const Frame coarseSkipped = render(coarse, true, 0.5);
+  const Frame coarseStraight = render(coarse, true, 20.0);
+  const long fineDiffering = Differing(fineAll.Pixels, fineSkipped.Pixels);
+  const long coarseDiffering = Differing(coarseAll.Pixels, coarseSkipped.Pixels);
+  const long straightDiffering = Differing(coarseAll.Pixels, coarseStraight.Pixels);
+  std::printf("capped cylinder of 192 sides: %lld crease segments straight, %lld triangles "
+              "replaced (all smoothed: %lld), %ld pixels differ; of 16 sides: %lld straight, %ld "
+              "pixels differ (%lld straight at 20 px: %ld)\n",
+    static_cast<long long>(fineSkipped.Straight), static_cast<long long>(fineSkipped.Replaced),
+    static_cast<long long>(fineAll.Replaced), fineDiffering,
+    static_cast<long long>(coarseSkipped.Straight), coarseDiffering,
+    static_cast<long long>(coarseStraight.Straight), straightDiffering);
+  if (fineSkipped.Straight != 2 * 192 || fineAll.Straight != 0 ||
+    fineSkipped.Replaced * 10 > fineAll.Replaced || coarseSkipped.Straight != 0)
+  {
+    std::printf("FAIL: the fine rims' segments were not all drawn straight, their triangles were "
+                "still re-meshed, or the coarse rims were drawn straight\n");
+    ok = false;
+  }
+  if (fineDiffering > 40 || coarseDiffering != 0 || straightDiffering <= 200)
+  {
+    std::printf("FAIL: drawing the rims straight changed the image, or the check cannot fail\n");
     ok = false;
   }
   return ok;
@@ -864,5 +961,6 @@ int TestSmoothingMapperUpdates(int argc, char* argv[])
   ok = CheckMissingPointsAreNotDrawn(meshes.Bunny) && ok;
   ok = CheckArraysAloneDoNotSmoothAgain(meshes.Bunny) && ok;
   ok = CheckCopiesAndEmptyFrames(meshes.Bunny) && ok;
+  ok = CheckFineCreasesAreDrawnStraight() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -241,17 +241,44 @@ struct vtkSilhouetteSmoothingFilter::Internals
     bool Valid = false;
   };
   LastSmoothing Last;
-  // The triangles BuildChanges' last smoothing left whole below the
-  // tolerance and those it re-meshed, its feature segments drawn straight,
-  // and the build of the surface they are of (Builds): the next view of that
-  // surface, its points moved or not (a deforming mesh keeps its triangles),
-  // leaves what was smoothed before whole only with a margin
-  // (SmoothingParameters::SubpixelBefore; the mapper's frames follow one
-  // another, a pipeline's requests need not).
-  std::vector<silsmooth::Id> ChangesSubpixel;
-  std::vector<silsmooth::Id> ChangesRemeshed;
-  std::vector<silsmooth::Id> ChangesSubpixelFeatures;
-  std::size_t ChangesBuild = 0;
+  // What BuildChanges' last smoothing for one viewer (a renderer and a
+  // prop, as the mapper names them; none for the public BuildChanges) left
+  // whole below the tolerance and re-meshed, its feature segments drawn
+  // straight, and the build of the surface they are of (Builds): the next
+  // view of that surface for that viewer, its points moved or not (a
+  // deforming mesh keeps its triangles), leaves what was smoothed before
+  // whole only with a margin (SmoothingParameters::SubpixelBefore). Each
+  // viewer's frames follow one another; two renderers taking turns must not
+  // read each other's. The four viewers drawn last are kept.
+  struct ChangesHistory
+  {
+    std::array<const void*, 2> Viewer{ { nullptr, nullptr } };
+    std::size_t Build = 0; // 0: none yet
+    std::size_t LastUse = 0;
+    std::vector<silsmooth::Id> Subpixel;
+    std::vector<silsmooth::Id> Remeshed;
+    std::vector<silsmooth::Id> SubpixelFeatures;
+  };
+  std::array<ChangesHistory, 4> Histories;
+  std::size_t HistoryUses = 0;
+  // The history of `viewer`, or the one used longest ago, emptied for it.
+  ChangesHistory& HistoryOf(const std::array<const void*, 2>& viewer)
+  {
+    ChangesHistory* oldest = &this->Histories[0];
+    for (ChangesHistory& h : this->Histories)
+    {
+      if (h.Build != 0 && h.Viewer == viewer)
+      {
+        h.LastUse = ++this->HistoryUses;
+        return h;
+      }
+      oldest = h.LastUse < oldest->LastUse ? &h : oldest;
+    }
+    *oldest = ChangesHistory();
+    oldest->Viewer = viewer;
+    oldest->LastUse = ++this->HistoryUses;
+    return *oldest;
+  }
   // Per triangle: a ghost cell (duplicate or hidden), never re-meshed; empty
   // when the input has no ghost array. Read again whenever the input changed.
   std::vector<unsigned char> Frozen;
@@ -270,11 +297,10 @@ struct vtkSilhouetteSmoothingFilter::Internals
   // The frame for the view, with the filter's settings; warns when the new
   // point budget lowered the sampling.
   // `polylines`: whether the silhouette lines are wanted (not by BuildChanges);
-  // `history`: whether BuildChanges' last frame is the frame before
-  // (SmoothingParameters::SubpixelBefore).
+  // `history`: the frame before (SmoothingParameters::SubpixelBefore), or null.
   silsmooth::SmoothingResult Smooth(vtkSilhouetteSmoothingFilter* self, vtkPolyData* input,
     const silsmooth::ViewGeometry& view, bool boundaryMayBeSeam, bool polylines = true,
-    bool history = false);
+    const ChangesHistory* history = nullptr);
 };
 
 std::string vtkSilhouetteSmoothingFilter::Internals::Rebuild(
@@ -478,13 +504,13 @@ bool vtkSilhouetteSmoothingFilter::Internals::Prepare(
 
 silsmooth::SmoothingResult vtkSilhouetteSmoothingFilter::Internals::Smooth(
   vtkSilhouetteSmoothingFilter* self, vtkPolyData* input, const silsmooth::ViewGeometry& view,
-  bool boundaryMayBeSeam, bool polylines, bool history)
+  bool boundaryMayBeSeam, bool polylines, const ChangesHistory* history)
 {
   silsmooth::SmoothingParameters parameters;
   parameters.SilhouettePolylines = polylines;
-  parameters.SubpixelBefore = history ? &this->ChangesSubpixel : nullptr;
-  parameters.RemeshedBefore = history ? &this->ChangesRemeshed : nullptr;
-  parameters.SubpixelFeaturesBefore = history ? &this->ChangesSubpixelFeatures : nullptr;
+  parameters.SubpixelBefore = history ? &history->Subpixel : nullptr;
+  parameters.RemeshedBefore = history ? &history->Remeshed : nullptr;
+  parameters.SubpixelFeaturesBefore = history ? &history->SubpixelFeatures : nullptr;
   parameters.PerturbConcaveSilhouettes = self->PerturbVertices;
   parameters.PreventFolds = self->FoldPrevention;
   parameters.KeepApexesPointed = self->KeepApexesPointed;
@@ -784,12 +810,13 @@ int vtkSilhouetteSmoothingFilter::BuildChanges(vtkPolyData* input, vtkCamera* ca
   vtkIdTypeArray* replacedTriangles)
 {
   return this->BuildChanges(
-    input, camera, modelMatrix, width, height, changes, replacedTriangles, nullptr);
+    input, camera, modelMatrix, width, height, changes, replacedTriangles, nullptr, {});
 }
 
 int vtkSilhouetteSmoothingFilter::BuildChanges(vtkPolyData* input, vtkCamera* camera,
   const double modelMatrix[16], int width, int height, vtkPolyData* changes,
-  vtkIdTypeArray* replacedTriangles, vtkSilhouetteFilterSupport::AttributeSources* sources)
+  vtkIdTypeArray* replacedTriangles, vtkSilhouetteFilterSupport::AttributeSources* sources,
+  const std::array<const void*, 2>& viewer)
 {
   if (!input || !camera || !changes || !replacedTriangles)
   {
@@ -798,7 +825,7 @@ int vtkSilhouetteSmoothingFilter::BuildChanges(vtkPolyData* input, vtkCamera* ca
   }
   return GuardedBuild(this, input, [&] {
     return this->BuildChangesUnguarded(
-      input, camera, modelMatrix, width, height, changes, replacedTriangles, sources);
+      input, camera, modelMatrix, width, height, changes, replacedTriangles, sources, viewer);
   });
 }
 
@@ -809,7 +836,8 @@ vtkMTimeType vtkSilhouetteSmoothingFilter::GetGeometryTime() const
 
 int vtkSilhouetteSmoothingFilter::BuildChangesUnguarded(vtkPolyData* input, vtkCamera* camera,
   const double modelMatrix[16], int width, int height, vtkPolyData* changes,
-  vtkIdTypeArray* replacedTriangles, vtkSilhouetteFilterSupport::AttributeSources* sources)
+  vtkIdTypeArray* replacedTriangles, vtkSilhouetteFilterSupport::AttributeSources* sources,
+  const std::array<const void*, 2>& viewer)
 {
   if (this->MinimumSamples > this->MaximumSamples)
   {
@@ -832,12 +860,13 @@ int vtkSilhouetteSmoothingFilter::BuildChangesUnguarded(vtkPolyData* input, vtkC
     return 0;
   }
   Internals& internal = *this->Internal;
-  const silsmooth::SmoothingResult result =
-    internal.Smooth(this, input, view, false, false, internal.ChangesBuild == internal.Builds);
-  internal.ChangesSubpixel = result.SubpixelTriangleIds;
-  internal.ChangesRemeshed = result.RemeshedTriangles;
-  internal.ChangesSubpixelFeatures = result.SubpixelFeatureIds;
-  internal.ChangesBuild = internal.Builds;
+  Internals::ChangesHistory& history = internal.HistoryOf(viewer);
+  const silsmooth::SmoothingResult result = internal.Smooth(
+    this, input, view, false, false, history.Build == internal.Builds ? &history : nullptr);
+  history.Subpixel = result.SubpixelTriangleIds;
+  history.Remeshed = result.RemeshedTriangles;
+  history.SubpixelFeatures = result.SubpixelFeatureIds;
+  history.Build = internal.Builds;
   const silsmooth::SurfaceFrame frame = internal.Surface->assembleChanges(result);
   const UsedPoints used(frame.Triangles, internal.Surface->outputPointCount() + frame.Added.size());
   changes->Initialize();

@@ -98,6 +98,7 @@
 #include "SilhouetteSmoothingFiltersSilhouetteModule.h" // For export macro
 #include "vtkSilhouetteViewAlgorithm.h"
 
+#include <array>  // For the viewer of BuildChanges
 #include <memory> // For the cached core mesh
 
 class vtkCamera;
@@ -494,19 +495,24 @@ protected:
    * normals, cells, ghost flags) last changed, as of the last BuildBaseMesh or
    * BuildChanges; what BuildChanges made since then still holds for the
    * input, whatever else of it changed (its other arrays). BuildBaseMesh
-   * keeps the base mesh's points and normals while it stays.
+   * keeps the base mesh's points and normals while it stays. `viewer` names
+   * whose frames follow one another (the mapper's renderer and prop): what
+   * SkipSubpixelSmoothing left whole and smoothed in that viewer's last
+   * frame is its history (the public BuildChanges has one of its own).
    */
   friend class vtkSilhouetteSmoothingMapper;
   int BuildChanges(vtkPolyData* input, vtkCamera* camera, const double modelMatrix[16], int width,
     int height, vtkPolyData* changes, vtkIdTypeArray* replacedTriangles,
-    vtkSilhouetteFilterSupport::AttributeSources* sources);
+    vtkSilhouetteFilterSupport::AttributeSources* sources,
+    const std::array<const void*, 2>& viewer);
   vtkMTimeType GetGeometryTime() const;
   ///@}
 
   int BuildBaseMeshUnguarded(vtkPolyData* input, vtkPolyData* base);
   int BuildChangesUnguarded(vtkPolyData* input, vtkCamera* camera, const double modelMatrix[16],
     int width, int height, vtkPolyData* changes, vtkIdTypeArray* replacedTriangles,
-    vtkSilhouetteFilterSupport::AttributeSources* sources);
+    vtkSilhouetteFilterSupport::AttributeSources* sources,
+    const std::array<const void*, 2>& viewer);
 
   int RequestViewData(vtkInformation*, vtkInformationVector**, vtkInformationVector*,
     const vtkSilhouetteFilterSupport::View& view) override;

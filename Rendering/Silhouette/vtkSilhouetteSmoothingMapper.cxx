@@ -299,8 +299,9 @@ struct vtkSilhouetteSmoothingMapper::Internals
   }
 
   // Smooths `input` for the view into `patch`.
-  void Make(vtkSilhouetteSmoothingMapper* self, vtkPolyData* input, vtkCamera* camera,
-    const double model[16], int width, int height, bool smooth, ViewPatch& patch)
+  // `ren` and `prop` name the viewer whose frames follow one another.
+  void Make(vtkSilhouetteSmoothingMapper* self, vtkPolyData* input, vtkRenderer* ren, vtkProp* prop,
+    vtkCamera* camera, const double model[16], int width, int height, bool smooth, ViewPatch& patch)
   {
     patch.Valid = true;
     patch.Smoothed = smooth;
@@ -314,8 +315,10 @@ struct vtkSilhouetteSmoothingMapper::Internals
       return;
     }
     ++self->SmoothingRunCount;
-    if (!this->Smoother->BuildChanges(
-          input, camera, model, width, height, patch.Changes, patch.Replaced, &patch.Sources))
+    // The history of sub-pixel decisions is the renderer's and the prop's:
+    // two renderers taking turns must not read each other's frames.
+    if (!this->Smoother->BuildChanges(input, camera, model, width, height, patch.Changes,
+          patch.Replaced, &patch.Sources, { { ren, prop } }))
     {
       return;
     }
@@ -399,7 +402,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
     this->LastDrawn[oldest] = this->Updates;
     ViewPatch& patch = this->Patches[this->Current];
     patch.View = view;
-    this->Make(self, input, camera, model, width, height, smooth, patch);
+    this->Make(self, input, ren, act, camera, model, width, height, smooth, patch);
     this->Show(self, patch);
     return PatchUpdate::Made;
   }

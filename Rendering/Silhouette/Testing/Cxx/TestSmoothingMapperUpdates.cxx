@@ -939,6 +939,101 @@ bool CheckFineCreasesAreDrawnStraight()
   return ok;
 }
 
+// The sub-pixel skip's margin against blinking reads the frame before of
+// the same viewer. One actor in two renderers of one window: B, far away,
+// leaves the sphere's outline whole; A, close, smooths it. When the
+// tolerance then rises just past A's largest bound (but not past it over
+// three quarters), A, which smoothed the outline in its frame before, keeps
+// smoothing the strip with that bound (strips whose bounds lie within three
+// quarters go whole), although B, drawn just before A, left its own whole.
+// With one history for the mapper (the wrong variant, as before
+// 2026-12-06) A read B's and left the whole outline whole. A fresh mapper, with no frame
+// before, leaves it whole at that tolerance, so the check can tell.
+bool CheckEachRendererHasItsOwnHistory()
+{
+  const vtkSmartPointer<vtkPolyData> sphere = silhouette_test::Icosphere(4);
+  auto placeCameras = [](vtkRenderer* near, vtkRenderer* far) {
+    near->GetActiveCamera()->SetPosition(0.3, 0.4, 3.2);
+    near->GetActiveCamera()->SetFocalPoint(0, 0, 0);
+    near->ResetCameraClippingRange();
+    if (far)
+    {
+      far->GetActiveCamera()->SetPosition(0.3, 0.4, 60.0);
+      far->GetActiveCamera()->SetFocalPoint(0, 0, 0);
+      far->ResetCameraClippingRange();
+    }
+  };
+  // A's largest bound: the tolerance from which a first frame leaves the
+  // outline whole.
+  auto firstFrameLeavesWhole = [&](double tolerance) {
+    vtkNew<vtkRenderWindow> window;
+    window->SetSize(Width, Height);
+    window->SetMultiSamples(0);
+    window->SetOffScreenRendering(1);
+    vtkNew<vtkRenderer> near;
+    window->AddRenderer(near);
+    vtkNew<vtkActor> actor;
+    vtkNew<vtkSilhouetteSmoothingMapper> mapper;
+    mapper->SetInputData(sphere);
+    mapper->GetSmoothingFilter()->SetTolerance(tolerance);
+    actor->SetMapper(mapper);
+    near->AddActor(actor);
+    placeCameras(near, nullptr);
+    window->Render();
+    return mapper->GetSubpixelTriangleCount() > 0 && mapper->GetSilhouetteTriangleCount() == 0;
+  };
+  double low = 0.001;
+  double high = 5.0;
+  if (firstFrameLeavesWhole(low) || !firstFrameLeavesWhole(high))
+  {
+    std::printf("FAIL: the sphere's outline is not smoothed at %g px or not left whole at %g px\n",
+      low, high);
+    return false;
+  }
+  for (int step = 0; step < 24; ++step)
+  {
+    const double middle = std::sqrt(low * high);
+    (firstFrameLeavesWhole(middle) ? high : low) = middle;
+  }
+  const double bound = high;
+
+  vtkNew<vtkRenderWindow> window;
+  window->SetSize(2 * Width, Height);
+  window->SetMultiSamples(0);
+  window->SetOffScreenRendering(1);
+  vtkNew<vtkRenderer> far; // drawn first: the figures read after a render are A's
+  vtkNew<vtkRenderer> near;
+  far->SetViewport(0.5, 0.0, 1.0, 1.0);
+  near->SetViewport(0.0, 0.0, 0.5, 1.0);
+  window->AddRenderer(far);
+  window->AddRenderer(near);
+  vtkNew<vtkActor> actor;
+  vtkNew<vtkSilhouetteSmoothingMapper> mapper;
+  mapper->SetInputData(sphere);
+  actor->SetMapper(mapper);
+  far->AddActor(actor);
+  near->AddActor(actor);
+  placeCameras(near, far);
+  mapper->GetSmoothingFilter()->SetTolerance(0.9 * bound);
+  window->Render();
+  const vtkIdType smoothedBefore = mapper->GetSilhouetteTriangleCount();
+  mapper->GetSmoothingFilter()->SetTolerance(1.1 * bound);
+  window->Render();
+  const vtkIdType whole = mapper->GetSubpixelTriangleCount();
+  const vtkIdType smoothed = mapper->GetSilhouetteTriangleCount();
+  std::printf("own history: A's largest bound %.4f px; at 0.9 of it A smoothed %lld silhouette "
+              "triangles; at 1.1 of it, after B left its outline whole, A smoothed %lld and left "
+              "%lld whole (a first frame there leaves it whole: %s)\n",
+    bound, static_cast<long long>(smoothedBefore), static_cast<long long>(smoothed),
+    static_cast<long long>(whole), firstFrameLeavesWhole(1.1 * bound) ? "yes" : "no");
+  if (smoothedBefore == 0 || smoothed == 0 || !firstFrameLeavesWhole(1.1 * bound))
+  {
+    std::printf("FAIL: a renderer read another renderer's frame as its frame before\n");
+    return false;
+  }
+  return true;
+}
+
 int TestSmoothingMapperUpdates(int argc, char* argv[])
 {
   const vtkSmartPointer<vtkRenderWindow> keeper = KeepTheDisplayOpen();
@@ -962,5 +1057,6 @@ int TestSmoothingMapperUpdates(int argc, char* argv[])
   ok = CheckArraysAloneDoNotSmoothAgain(meshes.Bunny) && ok;
   ok = CheckCopiesAndEmptyFrames(meshes.Bunny) && ok;
   ok = CheckFineCreasesAreDrawnStraight() && ok;
+  ok = CheckEachRendererHasItsOwnHistory() && ok;
   return ok ? EXIT_SUCCESS : EXIT_FAILURE;
 }

@@ -261,6 +261,9 @@ struct vtkSilhouetteSmoothingFilter::Internals
   };
   std::array<ChangesHistory, 4> Histories;
   std::size_t HistoryUses = 0;
+  // Whether the last smoothing of this surface lowered its samples to keep
+  // within NewPointBudget (its warning is given once while that goes on).
+  bool BudgetBitBefore = false;
   // The history of `viewer`, or the one used longest ago, emptied for it.
   ChangesHistory& HistoryOf(const std::array<const void*, 2>& viewer)
   {
@@ -328,6 +331,7 @@ std::string vtkSilhouetteSmoothingFilter::Internals::Rebuild(
   }
   this->GeometryPrint = GeometryContent(mesh, input);
   this->GeometryTime.Modified();
+  this->BudgetBitBefore = false;
   this->Surface = std::make_unique<silsmooth::WeldedSurface>(std::move(mesh.Points),
     std::move(mesh.Cells), mesh.Normals, MarkedFeatures(input, useLines), options, SMPFor);
   this->CachedInput = input;
@@ -531,14 +535,20 @@ silsmooth::SmoothingResult vtkSilhouetteSmoothingFilter::Internals::Smooth(
                                                         : silsmooth::SamplingRule::SecondDifference;
   silsmooth::SmoothingResult result =
     silsmooth::smoothSilhouettes(this->Surface->prepared(), view, parameters, SMPFor);
-  if (result.SampleBudgetMaximum > 0)
+  // Once while the budget bites frame after frame (a mapper's orbit close
+  // to a finely divided part warned on most frames, a user's trial), and
+  // again after a frame within it or a new surface.
+  const bool budgetBit = result.SampleBudgetMaximum > 0;
+  const bool warnBudget = budgetBit && !this->BudgetBitBefore;
+  this->BudgetBitBefore = budgetBit;
+  if (warnBudget)
   {
     vtkWarningWithObjectMacro(self,
       "Sampled this frame's segments with at most "
         << result.SampleBudgetMaximum << " points each (MaximumSamples " << self->MaximumSamples
         << "), so that its " << result.SilhouetteTriangleCount
         << " silhouette triangles stay within NewPointBudget's " << parameters.MaximumSampledPoints
-        << " new points.");
+        << " new points (said once while it goes on).");
   }
   // Re-meshed straight, untested: the fold guard tests no more than a
   // bounded number of triangles near one triangle's new ones. A user's trial

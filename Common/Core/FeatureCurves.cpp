@@ -39,6 +39,16 @@ double cosineOfDegrees(double degrees)
   return std::cos(degrees * 3.14159265358979323846 / 180.0);
 }
 
+// The cosine below which an edge turns by more than `degrees`, less a
+// millionth of a degree: a turn equal to the limit up to rounding (a regular
+// 12-sided cylinder's 30 degrees at a limit of 30) is then not more than it
+// on every edge alike, where rounding made some such edges creases and not
+// others. No mesh means a turn that small.
+double cosineBeyondDegrees(double degrees)
+{
+  return cosineOfDegrees(degrees + 1e-6);
+}
+
 } // namespace
 
 EdgeSides edgeSidesOf(const std::vector<Triangle>& triangles, const EdgeTable& table)
@@ -148,7 +158,7 @@ std::vector<FeatureEdge> featureEdgesByAngle(const std::vector<glm::dvec3>& poin
 std::vector<FeatureEdge> featureEdgesByAngle(
   const std::vector<double>& cosines, const EdgeTable& table, double angleDegrees)
 {
-  const double cosLimit = cosineOfDegrees(angleDegrees);
+  const double cosLimit = cosineBeyondDegrees(angleDegrees);
   std::vector<FeatureEdge> result;
   for (std::size_t e = 0; e < table.edgeCount(); ++e)
   {
@@ -269,8 +279,8 @@ std::vector<FeatureEdge> flatSidedCreases(const std::vector<double>& cosines,
   const EdgeSides& sides, const EdgeTable& table, double angleDegrees,
   const ParallelFor& parallelFor)
 {
-  const double cosLimit = cosineOfDegrees(angleDegrees);
-  const double cosFlat = cosineOfDegrees(FlatNeighbourDegrees);
+  const double cosLimit = cosineBeyondDegrees(angleDegrees);
+  const double cosFlat = cosineBeyondDegrees(FlatNeighbourDegrees); // at most, up to rounding
   // Every edge found below, of either kind, is sharper than the angle: a
   // mesh with no such edge (a smooth or finely curved one) has none, and
   // skips the passes over the triangles (9 ms a frame at 1.3M triangles,

@@ -289,6 +289,12 @@ struct vtkSilhouetteSmoothingMapper::Internals
     {
       this->Drawn->SetPatch(this->Ghosts, nullptr, nullptr, {});
     }
+    this->ReportFigures(self, patch);
+  }
+
+  // The frame's figures, those of the patch drawn.
+  static void ReportFigures(vtkSilhouetteSmoothingMapper* self, const ViewPatch& patch)
+  {
     self->ReplacedTriangleCount = patch.ReplacedTriangles;
     self->PatchTriangleCount = patch.PatchTriangles;
     self->CulledTriangleCount = patch.CulledTriangles;
@@ -383,6 +389,9 @@ struct vtkSilhouetteSmoothingMapper::Internals
         this->LastDrawn[i] = this->Updates;
         if (i == this->Current)
         {
+          // The figures again: a frame that drew nothing (an empty input
+          // in between) cleared them.
+          ReportFigures(self, patch);
           return PatchUpdate::Kept;
         }
         this->Current = i;

@@ -427,3 +427,25 @@ TEST(FeatureCurves, DihedralAnglesAreTheSameOnAnySplit)
   EXPECT_EQ(flatSidedCreases(split, sides, table, 20.0, threaded), creases);
   EXPECT_FALSE(creases.empty()); // the flat cap's rim
 }
+
+// An angle equal to the limit, up to rounding, falls on one side for every
+// edge: a regular 12-sided cylinder's side edges turn by exactly 30 degrees,
+// and at a feature angle of 30 none of them is a crease (rounding made some
+// of them creases and not others: a user's OpenSCAD cylinder drew a stray
+// hard line down one side). Its rims (90 degrees) are, all 24; at 29.9
+// degrees the side edges are too, all 12.
+TEST(FeatureCurves, AnAngleEqualToTheLimitIsTheSameForEveryEdge)
+{
+  for (const double radius : { 1.0, 20.0, 0.37 })
+  {
+    std::vector<glm::dvec3> points;
+    std::vector<Triangle> triangles;
+    coretest::cappedCylinder(12, points, triangles);
+    for (glm::dvec3& p : points)
+    {
+      p = glm::dvec3(radius * p.x, radius * p.y, 15.0 * p.z);
+    }
+    EXPECT_EQ(featureEdgesByAngle(points, triangles, 30.0).size(), 24u) << "radius " << radius;
+    EXPECT_EQ(featureEdgesByAngle(points, triangles, 29.9).size(), 36u) << "radius " << radius;
+  }
+}

@@ -144,8 +144,10 @@ void SilhouettePass::remeshFrame()
   this->Concave.clear();
   this->Result = SmoothingResult();
   this->computeSilhouettePoints();
-  this->applySampleBudget();
+  this->SampleCap = 0; // the counts wanted first, then the budget's cap
+  this->SampleCapBit = false;
   this->countFeatureSamples();
+  this->applySampleBudget();
   std::vector<std::vector<Id>> segments;
   segments.reserve(this->Silhouette.size());
   // Silhouette triangles and feature triangles, merged in ascending order.

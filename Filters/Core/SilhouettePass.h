@@ -233,9 +233,9 @@ private:
       });
   }
 
-  // SmoothingParameters::MaximumSampledPoints, shared evenly by the frame's
-  // silhouette triangles and feature edges: the most samples a segment may
-  // have in this frame, 0 for no cap.
+  // SmoothingParameters::MaximumSampledPoints: the most samples a segment
+  // may have in this frame (SampleCap), 0 for no cap; the largest cap that
+  // keeps the samples the frame's segments want within the budget.
   void applySampleBudget();
 
   // silhouetteSampleCount, within the frame's cap; notes when the cap bites.

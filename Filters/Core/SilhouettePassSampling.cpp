@@ -599,26 +599,90 @@ const std::vector<Id>& SilhouettePass::featureTrianglesOfFrame()
   return this->FrameFeatureTriangles;
 }
 
-// SmoothingParameters::MaximumSampledPoints, shared evenly by the frame's
-// silhouette triangles and feature edges: the most samples a segment may
-// have in this frame, 0 for no cap.
+// SmoothingParameters::MaximumSampledPoints: when the samples the frame's
+// segments want (its re-meshed silhouette triangles' and its curved feature
+// segments', as FeatureSampleCounts holds them uncapped) would add more
+// interior points than the budget, the largest cap on a segment's samples
+// that keeps them within it (segments wanting fewer keep theirs, and leave
+// their share to the others); 0 for no cap. Feature counts are capped here,
+// silhouette segments as they are sampled (sampleCount).
 void SilhouettePass::applySampleBudget()
 {
-  this->SampleCap = 0;
-  this->SampleCapBit = false;
   const std::size_t budget = this->Parameters.MaximumSampledPoints;
   if (budget == 0)
   {
     return;
   }
-  // What SkipSubpixelSmoothing leaves out samples nothing.
-  const std::size_t segments = std::max<std::size_t>(1,
-    this->Silhouette.size() - this->Subpixel.size() + this->Mesh.features().edges().size() -
-      this->SubpixelFeatures.size());
-  const std::size_t perSegment = 2 + budget / segments;
-  if (perSegment < static_cast<std::size_t>(this->Parameters.Sampling.MaximumSamples))
+  // Quick way out: every segment at its most fits.
+  const std::size_t segments = this->Silhouette.size() - this->Subpixel.size() +
+    this->Mesh.features().curvedCount() -
+    std::min(this->SubpixelFeatures.size(), this->Mesh.features().curvedCount());
+  const std::size_t most =
+    static_cast<std::size_t>(std::max(this->Parameters.Sampling.MaximumSamples - 2, 0));
+  if (segments == 0 || segments <= budget / std::max<std::size_t>(most, 1))
   {
-    this->SampleCap = static_cast<int>(perSegment);
+    return;
+  }
+  std::vector<int> wanted; // samples per segment, both ends counted
+  wanted.reserve(segments);
+  for (const int count : this->FeatureSampleCounts)
+  {
+    if (count > 2)
+    {
+      wanted.push_back(count);
+    }
+  }
+  for (const Id t : this->Silhouette)
+  {
+    if ((!this->Subpixel.empty() && this->isSubpixel(t)) || this->levelOf(t) >= ChordLevel)
+    {
+      continue;
+    }
+    const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
+    const int lone = this->loneCorner(tri);
+    const std::array<Id, 3> corners{ { tri[lone], tri[(lone + 1) % 3], tri[(lone + 2) % 3] } };
+    const auto [p, q] = this->silhouettePointsOf(t, lone, corners);
+    if (p.Point == q.Point)
+    {
+      continue;
+    }
+    const glm::dvec3 nP = this->normalOf(p.Point);
+    const glm::dvec3 nQ = this->normalOf(q.Point);
+    const HermiteCurve segment =
+      makeCircleApproximatingCurve(this->positionOf(p.Point), nP, this->positionOf(q.Point), nQ);
+    wanted.push_back(silhouetteSampleCount(segment, nP, nQ, this->View, this->Sampling));
+  }
+  const auto interior = [&wanted](int cap) {
+    std::size_t sum = 0;
+    for (const int w : wanted)
+    {
+      sum += static_cast<std::size_t>(std::max(0, std::min(w, cap) - 2));
+    }
+    return sum;
+  };
+  int high = 2;
+  for (const int w : wanted)
+  {
+    high = std::max(high, w);
+  }
+  if (interior(high) <= budget)
+  {
+    return;
+  }
+  int low = 2; // fits: no interior samples
+  while (high - low > 1)
+  {
+    const int middle = low + (high - low) / 2;
+    (interior(middle) <= budget ? low : high) = middle;
+  }
+  this->SampleCap = low;
+  for (int& count : this->FeatureSampleCounts)
+  {
+    if (count > this->SampleCap)
+    {
+      count = this->SampleCap;
+      this->SampleCapBit = true;
+    }
   }
 }
 

@@ -83,15 +83,17 @@ struct SmoothingParameters
   /// those of checking everything every round (core.SilhouetteSmoother
   /// compares both), at a fraction of the cost. False checks everything.
   bool IncrementalFoldChecks = true;
-  /// The most points a frame's sampling may add, 0 for no bound. A frame
-  /// caps each segment's samples at 2 + MaximumSampledPoints / (silhouette
-  /// triangles + feature edges) when that is below MaximumSamples (the cap
-  /// wins over MinimumSamples). A silhouette triangle holds one silhouette
-  /// segment and a feature edge one feature segment, so the frame's samples
-  /// stay within about the budget however its segments share it; a segment
-  /// that wants fewer samples than the cap is sampled as without it. The cap
-  /// depends only on the frame's counts, so the output stays the same for
-  /// any thread count.
+  /// The most points a frame's sampling may add, 0 for no bound. When the
+  /// samples the frame's segments want (one silhouette segment per re-meshed
+  /// silhouette triangle, one feature segment per curved feature edge, each
+  /// counted once) would add more interior points than that, each segment's
+  /// samples are capped at the largest count that keeps them within it (the
+  /// cap wins over MinimumSamples): a segment that wants fewer is sampled as
+  /// without it, and leaves its share to the others. Until 2026-12-06 the
+  /// cap was an even share, 2 + budget / segments, so a few close segments
+  /// among thousands of far ones lowered every segment (a user's close-up of
+  /// a finely divided part). The cap depends only on the frame's counts, so
+  /// the output stays the same for any thread count.
   std::size_t MaximumSampledPoints = 0;
   /// Leave out the silhouette triangles the view cannot show: those whose
   /// three corners lie beyond one plane of the view frustum (ModelToClip's

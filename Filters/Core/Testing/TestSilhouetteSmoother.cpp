@@ -1428,3 +1428,64 @@ TEST(SilhouetteSmoother, NothingLeftWholeWouldMoveByMoreThanTheTolerance)
   EXPECT_GT(checked, 1000u) << "enough is left whole to tell";
   EXPECT_LE(worst, 1.0);
 }
+
+// SmoothingParameters::MaximumSampledPoints with uneven wants: a coarse
+// sphere's few segments want many samples, a fine sphere's many segments two
+// or three. A budget as large as the frame's new points changes nothing,
+// though an even share of it (the rule until 2026-12-06, the wrong variant
+// here) is below what the coarse segments want and changes the frame. Half
+// the frame's interior samples caps the coarse segments above that even
+// share, and holds.
+TEST(SilhouetteSmoother, SampleBudgetLeavesTheShareOfSegmentsThatWantFewToTheOthers)
+{
+  std::vector<glm::dvec3> points;
+  std::vector<Triangle> triangles;
+  coretest::unitSphere(48, 96, points, triangles);
+  std::vector<glm::dvec3> normals = points;
+  {
+    std::vector<glm::dvec3> coarsePoints;
+    std::vector<Triangle> coarseTriangles;
+    coretest::unitSphere(6, 12, coarsePoints, coarseTriangles);
+    const Id offset = static_cast<Id>(points.size());
+    for (const glm::dvec3& p : coarsePoints)
+    {
+      points.push_back(0.5 * p + glm::dvec3(1.6, 0.0, 0.0));
+      normals.push_back(p);
+    }
+    for (const Triangle& t : coarseTriangles)
+    {
+      triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+    }
+  }
+  const PreparedMesh pair(points, triangles, normals);
+  const ViewGeometry close = realPerspective(glm::dvec3(0.8, 0.5, 3.0), 1024, 768);
+  SmoothingParameters fine; // a tenth of a pixel: the coarse segments want dozens
+  fine.Sampling.TolerancePixels = 0.1;
+  const SmoothingResult free = smoothSilhouettes(pair, close, fine);
+  const std::size_t frame = free.NewPoints.size();
+  const std::size_t pairSegments = free.SilhouetteTriangleCount;
+  SmoothingParameters budgeted = fine;
+  budgeted.MaximumSampledPoints = frame;
+  const SmoothingResult fits = smoothSilhouettes(pair, close, budgeted);
+  EXPECT_EQ(fits.SampleBudgetMaximum, 0);
+  EXPECT_TRUE(sameResult(free, fits));
+  SmoothingParameters evenShare = fine;
+  evenShare.Sampling.MaximumSamples = static_cast<int>(2 + frame / pairSegments);
+  EXPECT_FALSE(sameResult(free, smoothSilhouettes(pair, close, evenShare)))
+    << "an even share lowers the coarse sphere's samples";
+  // Interior samples: new points inside a triangle (a silhouette point on
+  // an edge has no third source).
+  const auto interiorOf = [](const SmoothingResult& r) {
+    return static_cast<std::size_t>(std::count_if(r.NewPoints.begin(), r.NewPoints.end(),
+      [](const NewPoint& p) { return p.Weights[2] != 0.0; }));
+  };
+  const std::size_t interior = interiorOf(free);
+  budgeted.MaximumSampledPoints = interior / 2;
+  const SmoothingResult half = smoothSilhouettes(pair, close, budgeted);
+  std::printf("uneven wants: %zu new points, %zu of them inside triangles, over %zu segments; at "
+              "half of those the cap is %d (an even share %zu)\n",
+    frame, interior, pairSegments, half.SampleBudgetMaximum, 2 + interior / 2 / pairSegments);
+  EXPECT_GT(half.SampleBudgetMaximum, static_cast<int>(2 + interior / 2 / pairSegments));
+  EXPECT_LE(interiorOf(half), interior / 2);
+  EXPECT_GT(interiorOf(half), interior / 4) << "the budget is used, not wasted";
+}

@@ -233,9 +233,11 @@ public:
    * Leave the silhouette triangles the camera cannot show as they are:
    * those beyond a plane of the view frustum by more than their longest
    * side, so that no smoothed curve of theirs could reach into the view
-   * (field data `CulledTriangleCount`). Default off: a mesh written out
-   * wants every silhouette smoothed. vtkSilhouetteSmoothingMapper turns it
-   * on.
+   * (field data `CulledTriangleCount`); with SkipSubpixelSmoothing, a
+   * feature curve's segment whose triangles are all such is drawn by its
+   * chord (counted in `SubpixelFeatureSegmentCount`). Default off: a mesh
+   * written out wants every silhouette smoothed.
+   * vtkSilhouetteSmoothingMapper turns it on.
    */
   vtkSetMacro(FrustumCulling, bool);
   vtkGetMacro(FrustumCulling, bool);

@@ -19,6 +19,7 @@
 #include "VertexPerturbation.h"
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <algorithm>
 #include <array>
@@ -209,6 +210,11 @@ private:
   // from the rows of ModelToClip (w + x >= 0, w - x >= 0, and so for y and
   // z), scaled so that they give distances in model units.
   void cullOutsideFrustum();
+  // Whether triangle t lies beyond one of the frustum's planes by more than
+  // its longest side (its smoothed curves stay within half of it).
+  bool beyondFrustum(Id t) const;
+  mutable std::array<glm::dvec4, 6> FrustumPlanes;
+  mutable bool HaveFrustumPlanes = false;
 
   // One silhouette point per mixed edge, in ascending edge order, so both
   // triangles of an edge use the same point (the crack-free rule). On a feature edge

@@ -113,40 +113,45 @@ void SilhouettePass::scanForSilhouetteTriangles()
 // z), scaled so that they give distances in model units.
 void SilhouettePass::cullOutsideFrustum()
 {
-  const ViewGeometry& v = this->View;
-  std::array<glm::dvec4, 6> planes{ { v.clipRow(3) + v.clipRow(0), v.clipRow(3) - v.clipRow(0),
-    v.clipRow(3) + v.clipRow(1), v.clipRow(3) - v.clipRow(1), v.clipRow(3) + v.clipRow(2),
-    v.clipRow(3) - v.clipRow(2) } };
-  for (glm::dvec4& plane : planes)
-  {
-    const double length = glm::length(glm::dvec3(plane));
-    plane = length > 0.0 && std::isfinite(length) ? plane / length : glm::dvec4(0.0);
-  }
-  const std::vector<Triangle>& triangles = this->Mesh.triangles();
-  const std::vector<glm::dvec3>& points = this->Mesh.points();
   const std::size_t before = this->Silhouette.size();
   this->Silhouette.erase(std::remove_if(this->Silhouette.begin(), this->Silhouette.end(),
-                           [&](Id t) {
-                             const Triangle& tri = triangles[static_cast<std::size_t>(t)];
-                             const glm::dvec3& a = points[static_cast<std::size_t>(tri[0])];
-                             const glm::dvec3& b = points[static_cast<std::size_t>(tri[1])];
-                             const glm::dvec3& c = points[static_cast<std::size_t>(tri[2])];
-                             const double margin = std::max(
-                               { glm::length(b - a), glm::length(c - b), glm::length(a - c) });
-                             for (const glm::dvec4& plane : planes)
-                             {
-                               auto beyond = [&](const glm::dvec3& p) {
-                                 return glm::dot(glm::dvec3(plane), p) + plane.w < -margin;
-                               };
-                               if (beyond(a) && beyond(b) && beyond(c))
-                               {
-                                 return true;
-                               }
-                             }
-                             return false;
-                           }),
+                           [this](Id t) { return this->beyondFrustum(t); }),
     this->Silhouette.end());
   this->Culled = before - this->Silhouette.size();
+}
+
+bool SilhouettePass::beyondFrustum(Id t) const
+{
+  if (!this->HaveFrustumPlanes)
+  {
+    const ViewGeometry& v = this->View;
+    this->FrustumPlanes = { { v.clipRow(3) + v.clipRow(0), v.clipRow(3) - v.clipRow(0),
+      v.clipRow(3) + v.clipRow(1), v.clipRow(3) - v.clipRow(1), v.clipRow(3) + v.clipRow(2),
+      v.clipRow(3) - v.clipRow(2) } };
+    for (glm::dvec4& plane : this->FrustumPlanes)
+    {
+      const double length = glm::length(glm::dvec3(plane));
+      plane = length > 0.0 && std::isfinite(length) ? plane / length : glm::dvec4(0.0);
+    }
+    this->HaveFrustumPlanes = true;
+  }
+  const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
+  const std::vector<glm::dvec3>& points = this->Mesh.points();
+  const glm::dvec3& a = points[static_cast<std::size_t>(tri[0])];
+  const glm::dvec3& b = points[static_cast<std::size_t>(tri[1])];
+  const glm::dvec3& c = points[static_cast<std::size_t>(tri[2])];
+  const double margin = std::max({ glm::length(b - a), glm::length(c - b), glm::length(a - c) });
+  for (const glm::dvec4& plane : this->FrustumPlanes)
+  {
+    auto beyond = [&](const glm::dvec3& p) {
+      return glm::dot(glm::dvec3(plane), p) + plane.w < -margin;
+    };
+    if (beyond(a) && beyond(b) && beyond(c))
+    {
+      return true;
+    }
+  }
+  return false;
 }
 
 // On a cone the normal is constant along each line from the apex, so an
@@ -429,7 +434,11 @@ void SilhouettePass::skipSubpixelSmoothing()
 // boundary that may be a seam, or with a side in another piece (frozen), is
 // always smoothed: the other piece sees other triangles. A segment drawn curved in the frame before
 // (SmoothingParameters::SubpixelFeaturesBefore) needs SubpixelEntryFraction
-// of the tolerance, as a strip of the silhouette does.
+// of the tolerance, as a strip of the silhouette does. With
+// CullOutsideFrustum, a side that the view cannot show (beyondFrustum)
+// needs no bound: a segment whose every side lies outside the view is drawn
+// by its chord too (close to a finely divided part, segments passing by the
+// eye wanted hundreds of samples each).
 void SilhouettePass::skipSubpixelFeatures()
 {
   this->SubpixelFeatures.clear();
@@ -444,6 +453,11 @@ void SilhouettePass::skipSubpixelFeatures()
   const EdgeTable& edges = this->Mesh.edges();
   const std::vector<Id>* before = this->Parameters.SubpixelFeaturesBefore;
   const double tolerance = this->Sampling.TolerancePixels;
+  const bool culling = this->Parameters.CullOutsideFrustum;
+  if (culling)
+  {
+    this->beyondFrustum(0); // the planes, made before the threads read them
+  }
   std::vector<unsigned char> straight(features.edges().size(), 0);
   this->For(straight.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
@@ -462,6 +476,10 @@ void SilhouettePass::skipSubpixelFeatures()
       {
         const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(it->second)];
         within = !this->isFrozen(it->second); // the other piece's side decides there
+        if (within && culling && this->beyondFrustum(it->second))
+        {
+          continue; // the view cannot show it, nor its curve (cullOutsideFrustum's margin)
+        }
         for (int k = 0; k < 3 && within; ++k)
         {
           const Id e = edges.sideEdge(it->second, k);

@@ -101,8 +101,11 @@ struct SmoothingParameters
   /// curves stay within half its longest side of it (the end tangents are
   /// at most twice the chord, eq. 4), so nothing the view shows changes,
   /// and a crack where a culled triangle meets a re-meshed one lies beyond
-  /// that plane too. For renderers (vtkSilhouetteSmoothingMapper); a mesh
-  /// written to a file wants every silhouette smoothed.
+  /// that plane too. With SkipSubpixelSmoothing, a curved feature segment
+  /// whose sides are all such is drawn by its chord (in
+  /// SmoothingResult::SubpixelFeatureIds). For renderers
+  /// (vtkSilhouetteSmoothingMapper); a mesh written to a file wants every
+  /// silhouette smoothed.
   bool CullOutsideFrustum = false;
   /// Leave as they are the silhouette triangles whose smoothing would move
   /// no point of the image by more than Sampling.TolerancePixels (a part of

@@ -1190,6 +1190,38 @@ TEST(SilhouetteSmoother, SubpixelFeatureSegmentsAreDrawnByTheirChords)
   }
   std::printf("views with both rims' kinds: %zu of 24\n", mixedViews);
   EXPECT_EQ(mixedViews, 24u);
+
+  // With CullOutsideFrustum, a segment whose sides the view cannot show is
+  // drawn by its chord at any tolerance (close to a finely divided part,
+  // segments passing by the eye wanted hundreds of samples each): a second
+  // cylinder behind the eye. At 0.001 px no segment of either is within
+  // the tolerance; with culling, all of the second's are straight, none of
+  // the first's, and the output is closed.
+  std::vector<glm::dvec3> both = points;
+  std::vector<Triangle> bothTriangles = triangles;
+  const Id offset = static_cast<Id>(both.size());
+  for (const glm::dvec3& p : points)
+  {
+    both.push_back(p + glm::dvec3(8.0, 3.0, 6.0)); // twice as far as the eye, beyond it
+  }
+  for (const Triangle& t : triangles)
+  {
+    bothTriangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  }
+  const PreparedMesh pair(both, bothTriangles, {}, featureEdgesByAngle(both, bothTriangles, 60.0));
+  SmoothingParameters tight;
+  tight.SkipSubpixelSmoothing = true;
+  tight.Sampling.TolerancePixels = 0.001;
+  const SmoothingResult seen = smoothSilhouettes(pair, view, tight);
+  tight.CullOutsideFrustum = true;
+  const SmoothingResult culled = smoothSilhouettes(pair, view, tight);
+  std::printf("behind the eye: %zu segments straight without culling, %zu with\n",
+    seen.SubpixelFeatureIds.size(), culled.SubpixelFeatureIds.size());
+  EXPECT_TRUE(seen.SubpixelFeatureIds.empty());
+  ASSERT_EQ(culled.SubpixelFeatureIds.size(), curved);
+  EXPECT_GE(culled.SubpixelFeatureIds.front(), static_cast<Id>(curved))
+    << "the second cylinder's segments (numbered after the first's)";
+  EXPECT_TRUE(coretest::closedOnceWelded(pair, culled));
 }
 
 // SkipSubpixelSmoothing on pieces with ghost cells (FrozenTriangles: the

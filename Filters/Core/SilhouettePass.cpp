@@ -25,6 +25,10 @@ namespace detail
 
 SmoothingResult SilhouettePass::run()
 {
+  if (this->Parameters.CullOutsideFrustum)
+  {
+    this->makeFrustumPlanes();
+  }
   this->findSilhouetteTriangles();
   this->straightenAtApexes();
   this->skipSubpixelSmoothing();

@@ -212,9 +212,10 @@ private:
   void cullOutsideFrustum();
   // Whether triangle t lies beyond one of the frustum's planes by more than
   // its longest side (its smoothed curves stay within half of it).
+  // (The planes: makeFrustumPlanes, at the start of a pass that culls.)
   bool beyondFrustum(Id t) const;
-  mutable std::array<glm::dvec4, 6> FrustumPlanes;
-  mutable bool HaveFrustumPlanes = false;
+  void makeFrustumPlanes();
+  std::array<glm::dvec4, 6> FrustumPlanes;
 
   // One silhouette point per mixed edge, in ascending edge order, so both
   // triangles of an edge use the same point (the crack-free rule). On a feature edge
@@ -307,6 +308,22 @@ private:
   // P on side a-b and Q on side a-c of a silhouette triangle, a = corners[0].
   std::pair<PolygonPoint, PolygonPoint> silhouettePointsOf(
     Id t, int lone, const std::array<Id, 3>& corners) const;
+  // Silhouette triangle t's corners with the lone one first (`lone` gets
+  // its index in the triangle), as silhouettePointsOf takes them.
+  std::array<Id, 3> cornersFromLone(Id t, int& lone) const
+  {
+    const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
+    lone = this->loneCorner(tri);
+    return { { tri[lone], tri[(lone + 1) % 3], tri[(lone + 2) % 3] } };
+  }
+  // The silhouette segment from point p to point q (eq. 5 with their
+  // normals, which nP and nQ get).
+  HermiteCurve silhouetteSegment(Id p, Id q, glm::dvec3& nP, glm::dvec3& nQ) const
+  {
+    nP = this->normalOf(p);
+    nQ = this->normalOf(q);
+    return makeCircleApproximatingCurve(this->positionOf(p), nP, this->positionOf(q), nQ);
+  }
 
   void remeshTriangle(Id t, std::vector<std::vector<Id>>& segments);
   // A Subpixel triangle, kept as it is: only its silhouette segment, the

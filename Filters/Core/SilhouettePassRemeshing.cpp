@@ -35,10 +35,9 @@ std::vector<PolygonPoint> SilhouettePass::sampleSilhouetteSegment(
   {
     return interior;
   }
-  const glm::dvec3 nP = this->normalOf(p.Point);
-  const glm::dvec3 nQ = this->normalOf(q.Point);
-  const HermiteCurve segment =
-    makeCircleApproximatingCurve(this->positionOf(p.Point), nP, this->positionOf(q.Point), nQ);
+  glm::dvec3 nP;
+  glm::dvec3 nQ;
+  const HermiteCurve segment = this->silhouetteSegment(p.Point, q.Point, nP, nQ);
   const int samples = this->levelOf(t) >= ChordLevel ? 2 : this->sampleCount(segment, nP, nQ);
   if (isConcaveSegment(segment.P0, nP, segment.P1, nQ))
   {
@@ -86,9 +85,8 @@ std::pair<PolygonPoint, PolygonPoint> SilhouettePass::silhouettePointsOf(
 
 void SilhouettePass::remeshTriangle(Id t, std::vector<std::vector<Id>>& segments)
 {
-  const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
-  const int lone = this->loneCorner(tri);
-  const std::array<Id, 3> corners{ { tri[lone], tri[(lone + 1) % 3], tri[(lone + 2) % 3] } };
+  int lone = 0;
+  const std::array<Id, 3> corners = this->cornersFromLone(t, lone);
   const auto [p, q] = this->silhouettePointsOf(t, lone, corners);
 
   // The re-meshing works in the flat triangle, where P and Q sit on their
@@ -124,9 +122,8 @@ void SilhouettePass::remeshTriangle(Id t, std::vector<std::vector<Id>>& segments
 
 void SilhouettePass::addSubpixelSegment(Id t, std::vector<std::vector<Id>>& segments) const
 {
-  const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
-  const int lone = this->loneCorner(tri);
-  const std::array<Id, 3> corners{ { tri[lone], tri[(lone + 1) % 3], tri[(lone + 2) % 3] } };
+  int lone = 0;
+  const std::array<Id, 3> corners = this->cornersFromLone(t, lone);
   const auto [p, q] = this->silhouettePointsOf(t, lone, corners);
   if (p.Point != q.Point)
   {

@@ -120,21 +120,21 @@ void SilhouettePass::cullOutsideFrustum()
   this->Culled = before - this->Silhouette.size();
 }
 
+void SilhouettePass::makeFrustumPlanes()
+{
+  const ViewGeometry& v = this->View;
+  this->FrustumPlanes = { { v.clipRow(3) + v.clipRow(0), v.clipRow(3) - v.clipRow(0),
+    v.clipRow(3) + v.clipRow(1), v.clipRow(3) - v.clipRow(1), v.clipRow(3) + v.clipRow(2),
+    v.clipRow(3) - v.clipRow(2) } };
+  for (glm::dvec4& plane : this->FrustumPlanes)
+  {
+    const double length = glm::length(glm::dvec3(plane));
+    plane = length > 0.0 && std::isfinite(length) ? plane / length : glm::dvec4(0.0);
+  }
+}
+
 bool SilhouettePass::beyondFrustum(Id t) const
 {
-  if (!this->HaveFrustumPlanes)
-  {
-    const ViewGeometry& v = this->View;
-    this->FrustumPlanes = { { v.clipRow(3) + v.clipRow(0), v.clipRow(3) - v.clipRow(0),
-      v.clipRow(3) + v.clipRow(1), v.clipRow(3) - v.clipRow(1), v.clipRow(3) + v.clipRow(2),
-      v.clipRow(3) - v.clipRow(2) } };
-    for (glm::dvec4& plane : this->FrustumPlanes)
-    {
-      const double length = glm::length(glm::dvec3(plane));
-      plane = length > 0.0 && std::isfinite(length) ? plane / length : glm::dvec4(0.0);
-    }
-    this->HaveFrustumPlanes = true;
-  }
   const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
   const std::vector<glm::dvec3>& points = this->Mesh.points();
   const glm::dvec3& a = points[static_cast<std::size_t>(tri[0])];
@@ -454,10 +454,6 @@ void SilhouettePass::skipSubpixelFeatures()
   const std::vector<Id>* before = this->Parameters.SubpixelFeaturesBefore;
   const double tolerance = this->Sampling.TolerancePixels;
   const bool culling = this->Parameters.CullOutsideFrustum;
-  if (culling)
-  {
-    this->beyondFrustum(0); // the planes, made before the threads read them
-  }
   std::vector<unsigned char> straight(features.edges().size(), 0);
   this->For(straight.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
@@ -656,18 +652,16 @@ void SilhouettePass::applySampleBudget()
     {
       continue;
     }
-    const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
-    const int lone = this->loneCorner(tri);
-    const std::array<Id, 3> corners{ { tri[lone], tri[(lone + 1) % 3], tri[(lone + 2) % 3] } };
+    int lone = 0;
+    const std::array<Id, 3> corners = this->cornersFromLone(t, lone);
     const auto [p, q] = this->silhouettePointsOf(t, lone, corners);
     if (p.Point == q.Point)
     {
       continue;
     }
-    const glm::dvec3 nP = this->normalOf(p.Point);
-    const glm::dvec3 nQ = this->normalOf(q.Point);
-    const HermiteCurve segment =
-      makeCircleApproximatingCurve(this->positionOf(p.Point), nP, this->positionOf(q.Point), nQ);
+    glm::dvec3 nP;
+    glm::dvec3 nQ;
+    const HermiteCurve segment = this->silhouetteSegment(p.Point, q.Point, nP, nQ);
     wanted.push_back(silhouetteSampleCount(segment, nP, nQ, this->View, this->Sampling));
   }
   const auto interior = [&wanted](int cap) {

@@ -843,24 +843,38 @@ ViewGeometry realPerspective(const glm::dvec3& eye, int width, int height)
   return view;
 }
 
-// How far, in pixels, the pass moved its added points off their places in
-// the flat input triangles (the weights of their sources).
+// How far, in pixels, the pass moved added point p off its place in the
+// flat input triangle (the weights of its sources); false where either does
+// not project.
+bool pixelMoveOf(
+  const PreparedMesh& mesh, const NewPoint& p, const ViewGeometry& view, double& pixels)
+{
+  glm::dvec3 flat(0.0);
+  for (int k = 0; k < 3; ++k)
+  {
+    flat += p.Weights[k] * mesh.points()[static_cast<std::size_t>(p.Sources[k])];
+  }
+  glm::dvec2 a;
+  glm::dvec2 b;
+  if (!view.toPixels(p.Position, a) || !view.toPixels(flat, b))
+  {
+    return false;
+  }
+  pixels = glm::length(a - b);
+  return true;
+}
+
+// The largest such move of the pass's added points.
 double largestPixelMove(
   const PreparedMesh& mesh, const SmoothingResult& r, const ViewGeometry& view)
 {
   double largest = 0.0;
   for (const NewPoint& p : r.NewPoints)
   {
-    glm::dvec3 flat(0.0);
-    for (int k = 0; k < 3; ++k)
+    double moved = 0.0;
+    if (pixelMoveOf(mesh, p, view, moved))
     {
-      flat += p.Weights[k] * mesh.points()[static_cast<std::size_t>(p.Sources[k])];
-    }
-    glm::dvec2 a;
-    glm::dvec2 b;
-    if (view.toPixels(p.Position, a) && view.toPixels(flat, b))
-    {
-      largest = std::max(largest, glm::length(a - b));
+      largest = std::max(largest, moved);
     }
   }
   return largest;
@@ -1045,12 +1059,10 @@ double largestRimPixelMove(
     {
       continue;
     }
-    glm::dvec2 moved;
-    glm::dvec2 flat;
-    if (view.toPixels(p.Position, moved) &&
-      view.toPixels(p.Weights[0] * a + p.Weights[1] * b, flat))
+    double moved = 0.0;
+    if (pixelMoveOf(mesh, p, view, moved))
     {
-      largest = std::max(largest, glm::length(moved - flat));
+      largest = std::max(largest, moved);
     }
   }
   return largest;
@@ -1438,17 +1450,10 @@ TEST(SilhouetteSmoother, NothingLeftWholeWouldMoveByMoreThanTheTolerance)
           {
             continue;
           }
-          const NewPoint& p = full.NewPoints[static_cast<std::size_t>(corner) - n];
-          glm::dvec3 flat(0.0);
-          for (int k = 0; k < 3; ++k)
+          double moved = 0.0;
+          if (pixelMoveOf(mesh, full.NewPoints[static_cast<std::size_t>(corner) - n], view, moved))
           {
-            flat += p.Weights[k] * mesh.points()[static_cast<std::size_t>(p.Sources[k])];
-          }
-          glm::dvec2 a;
-          glm::dvec2 b;
-          if (view.toPixels(p.Position, a) && view.toPixels(flat, b))
-          {
-            worst = std::max(worst, glm::length(a - b) / parameters.Sampling.TolerancePixels);
+            worst = std::max(worst, moved / parameters.Sampling.TolerancePixels);
             ++checked;
           }
         }

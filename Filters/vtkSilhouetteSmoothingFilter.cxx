@@ -247,7 +247,9 @@ struct vtkSilhouetteSmoothingFilter::Internals
   // straight, and the build of the surface they are of (Builds): the next
   // view of that surface for that viewer, its points moved or not (a
   // deforming mesh keeps its triangles), leaves what was smoothed before
-  // whole only with a margin (SmoothingParameters::SubpixelBefore). Each
+  // whole only with a margin (SmoothingParameters::SubpixelBefore), and
+  // starts with the fold fallbacks that have frames left
+  // (SmoothingParameters::FallbacksBefore). Each
   // viewer's frames follow one another; two renderers taking turns must not
   // read each other's. The four viewers drawn last are kept.
   struct ChangesHistory
@@ -258,6 +260,7 @@ struct vtkSilhouetteSmoothingFilter::Internals
     std::vector<silsmooth::Id> Subpixel;
     std::vector<silsmooth::Id> Remeshed;
     std::vector<silsmooth::Id> SubpixelFeatures;
+    silsmooth::FoldFallbacks Fallbacks;
   };
   std::array<ChangesHistory, 4> Histories;
   std::size_t HistoryUses = 0;
@@ -515,8 +518,10 @@ silsmooth::SmoothingResult vtkSilhouetteSmoothingFilter::Internals::Smooth(
   parameters.SubpixelBefore = history ? &history->Subpixel : nullptr;
   parameters.RemeshedBefore = history ? &history->Remeshed : nullptr;
   parameters.SubpixelFeaturesBefore = history ? &history->SubpixelFeatures : nullptr;
+  parameters.FallbacksBefore = history ? &history->Fallbacks : nullptr;
   parameters.PerturbConcaveSilhouettes = self->PerturbVertices;
   parameters.PreventFolds = self->FoldPrevention;
+  parameters.FallbackKeepFrames = static_cast<unsigned char>(self->FoldFallbackFrames);
   parameters.KeepApexesPointed = self->KeepApexesPointed;
   parameters.CullOutsideFrustum = self->FrustumCulling;
   parameters.SkipSubpixelSmoothing = self->SkipSubpixelSmoothing;
@@ -876,6 +881,7 @@ int vtkSilhouetteSmoothingFilter::BuildChangesUnguarded(vtkPolyData* input, vtkC
   history.Subpixel = result.SubpixelTriangleIds;
   history.Remeshed = result.RemeshedTriangles;
   history.SubpixelFeatures = result.SubpixelFeatureIds;
+  history.Fallbacks = result.Fallbacks;
   history.Build = internal.Builds;
   const silsmooth::SurfaceFrame frame = internal.Surface->assembleChanges(result);
   const UsedPoints used(frame.Triangles, internal.Surface->outputPointCount() + frame.Added.size());
@@ -903,6 +909,8 @@ int vtkSilhouetteSmoothingFilter::BuildChangesUnguarded(vtkPolyData* input, vtkC
   AddCount(fd, "SilhouetteTriangleCount", static_cast<vtkIdType>(result.SilhouetteTriangleCount));
   AddCount(fd, "ChordFallbackCount", static_cast<vtkIdType>(result.ChordFallbackTriangles));
   AddCount(fd, "UnresolvedFoldCount", static_cast<vtkIdType>(result.UnresolvedFolds));
+  AddCount(fd, "FoldGuardRoundCount", static_cast<vtkIdType>(result.FoldGuardRounds));
+  AddCount(fd, "CarriedFallbackCount", static_cast<vtkIdType>(result.CarriedFallbacks));
   AddCount(fd, "CulledTriangleCount", static_cast<vtkIdType>(result.CulledTriangles));
   AddCount(fd, "SubpixelTriangleCount", static_cast<vtkIdType>(result.SubpixelTriangles));
   AddCount(
@@ -923,6 +931,7 @@ void vtkSilhouetteSmoothingFilter::CopySmoothingSettings(vtkSilhouetteSmoothingF
   this->SetSamplingRule(other->GetSamplingRule());
   this->SetPerturbVertices(other->GetPerturbVertices());
   this->SetFoldPrevention(other->GetFoldPrevention());
+  this->SetFoldFallbackFrames(other->GetFoldFallbackFrames());
   this->SetKeepApexesPointed(other->GetKeepApexesPointed());
   this->SetFrustumCulling(other->GetFrustumCulling());
   this->SetSkipSubpixelSmoothing(other->GetSkipSubpixelSmoothing());
@@ -948,6 +957,7 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NewPointBudget: " << this->NewPointBudget << "\n";
   os << indent << "PerturbVertices: " << (this->PerturbVertices ? "On" : "Off") << "\n";
   os << indent << "FoldPrevention: " << (this->FoldPrevention ? "On" : "Off") << "\n";
+  os << indent << "FoldFallbackFrames: " << this->FoldFallbackFrames << "\n";
   os << indent << "KeepApexesPointed: " << (this->KeepApexesPointed ? "On" : "Off") << "\n";
   os << indent << "FrustumCulling: " << (this->FrustumCulling ? "On" : "Off") << "\n";
   os << indent << "SkipSubpixelSmoothing: " << (this->SkipSubpixelSmoothing ? "On" : "Off") << "\n";

@@ -215,6 +215,23 @@ public:
 
   ///@{
   /**
+   * In vtkSilhouetteSmoothingMapper's frames (BuildChanges), how many frames
+   * a fold fallback is kept after the frame that took it (0 to 255, default
+   * 8): later frames of the same viewer start with it, still check for folds
+   * as any frame does, and try the curve again once it runs out. A coarse
+   * mesh's folds stay where they are for a few frames of an orbit; without
+   * this each frame takes them again, one more round of re-meshing and
+   * checking per level (2 to 4 rounds a frame on assimp's spider), and a
+   * triangle whose curve folds every other frame switches between curve and
+   * chord as often. 0: every frame starts anew. The filter's own output
+   * (RequestData) never carries any: it depends on its view alone.
+   */
+  vtkSetClampMacro(FoldFallbackFrames, int, 0, 255);
+  vtkGetMacro(FoldFallbackFrames, int);
+  ///@}
+
+  ///@{
+  /**
    * Keep cones pointed (default on): at a vertex where the surface comes to
    * a point (a cone's apex: its triangles' normals spread more than 30
    * degrees from their mean while neighbouring ones turn little), no one
@@ -476,8 +493,10 @@ public:
    * perturbation moved) and `changes` with what takes their place, over
    * points of its own, with the arrays of the whole output. Invariant: the
    * base mesh with those triangles replaced is RequestData's output for the
-   * same view, triangle for triangle, up to the points' numbering. The cost
-   * is in the silhouette, not the mesh.
+   * same view, triangle for triangle, up to the points' numbering, but for
+   * what the calls before carry: SkipSubpixelSmoothing's margin and the fold
+   * fallbacks of FoldFallbackFrames (0 and SkipSubpixelSmoothing off carry
+   * nothing). The cost is in the silhouette, not the mesh.
    */
   int BuildBaseMesh(vtkPolyData* input, vtkPolyData* base);
   int BuildChanges(vtkPolyData* input, vtkCamera* camera, const double modelMatrix[16], int width,
@@ -526,6 +545,7 @@ protected:
   int SamplingRule = SECOND_DIFFERENCE;
   bool PerturbVertices = true;
   bool FoldPrevention = true;
+  int FoldFallbackFrames = 8;
   bool KeepApexesPointed = true;
   bool FrustumCulling = false;
   bool SkipSubpixelSmoothing = false;

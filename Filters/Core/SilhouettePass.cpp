@@ -34,6 +34,7 @@ SmoothingResult SilhouettePass::run()
   this->skipSubpixelSmoothing();
   this->skipSubpixelFeatures();
   this->PresetStraightEdges = this->StraightEdges.size();
+  this->startFromFallbacksBefore();
   // Each round re-meshes the whole frame with the fallbacks decided so far;
   // a round that finds no fold, or no fallback left to take, is the last.
   // Rounds are bounded: every round but the last takes a fallback, and
@@ -90,6 +91,11 @@ SmoothingResult SilhouettePass::run()
       break;
     }
   }
+  if (this->Parameters.PreventFolds)
+  {
+    this->listFallbacks();
+  }
+  this->Result.CarriedFallbacks = this->CarriedFallbacks;
   this->Result.PinnedPoints = this->Pinned.size();
   this->Result.CulledTriangles = this->Culled;
   this->Result.StraightSilhouettePoints = this->StraightEdges.size() - this->PresetStraightEdges;
@@ -115,7 +121,6 @@ void SilhouettePass::straightenAtApexes()
   {
     return;
   }
-  const EdgeTable& edges = this->Mesh.edges();
   for (const Id t : this->Silhouette)
   {
     const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
@@ -124,19 +129,128 @@ void SilhouettePass::straightenAtApexes()
       continue;
     }
     this->Levels[t] = StraightLevel;
+    this->ApexStraight.push_back(t); // Silhouette is ascending
     ++this->ApexTriangles;
-    for (int k = 0; k < 3; ++k)
-    {
-      const Id e = edges.sideEdge(t, k);
-      if (this->isMixed(edges.edge(e)) && this->Mesh.edgeFeature(e) < 0 && !this->mayBeSeam(e))
-      {
-        this->StraightEdges.push_back(e);
-      }
-    }
+    this->straightSidesOf(t, this->StraightEdges);
   }
   std::sort(this->StraightEdges.begin(), this->StraightEdges.end());
   this->StraightEdges.erase(
     std::unique(this->StraightEdges.begin(), this->StraightEdges.end()), this->StraightEdges.end());
+}
+
+void SilhouettePass::straightSidesOf(Id t, std::vector<Id>& edges) const
+{
+  const EdgeTable& table = this->Mesh.edges();
+  for (int k = 0; k < 3; ++k)
+  {
+    const Id e = table.sideEdge(t, k);
+    if (this->isMixed(table.edge(e)) && this->Mesh.edgeFeature(e) < 0 && !this->mayBeSeam(e))
+    {
+      edges.push_back(e);
+    }
+  }
+}
+
+bool SilhouettePass::mayStraightenFeature(Id f) const
+{
+  if (!this->Parameters.BoundaryMayBeSeam)
+  {
+    return true;
+  }
+  const EdgeTable& edges = this->Mesh.edges();
+  const auto& sides = this->Mesh.featureSideTriangles();
+  for (auto it = std::lower_bound(sides.begin(), sides.end(), std::make_pair(f, Id{ 0 }));
+       it != sides.end() && it->first == f; ++it)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const Id e = edges.sideEdge(it->second, k);
+      if (this->Mesh.edgeFeature(e) == f && this->mayBeSeam(e))
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+// Carried fallbacks are applied as takeFallbacks would take them: a
+// triangle at StraightLevel straightens its sides' silhouette points with
+// it (a level without them would leave the fallbacks short of the
+// invariant in FoldGuard.h), a segment only where none of its sides is a
+// seam. Triangles that left the silhouette, or are left whole this frame,
+// drop theirs.
+void SilhouettePass::startFromFallbacksBefore()
+{
+  const FoldFallbacks* before = this->Parameters.FallbacksBefore;
+  if (!before || before->FramesLeft == 0 || !this->Parameters.PreventFolds)
+  {
+    return;
+  }
+  this->CarriedFrom = before;
+  std::vector<Id> edges;
+  for (const auto& [t, level] : before->Triangles)
+  {
+    if ((level != ChordLevel && level != StraightLevel) ||
+      !std::binary_search(this->Silhouette.begin(), this->Silhouette.end(), t) ||
+      this->isSubpixel(t) || this->levelOf(t) >= level)
+    {
+      continue;
+    }
+    this->Levels[t] = level;
+    ++this->CarriedFallbacks;
+    if (level == StraightLevel)
+    {
+      this->straightSidesOf(t, edges);
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  std::vector<Id> merged;
+  std::set_union(this->StraightEdges.begin(), this->StraightEdges.end(), edges.begin(), edges.end(),
+    std::back_inserter(merged));
+  merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
+  this->StraightEdges = std::move(merged);
+  const FeatureCurves& features = this->Mesh.features();
+  for (const Id f : before->FeatureSegments)
+  {
+    if (f >= 0 && static_cast<std::size_t>(f) < features.edges().size() && features.isCurved(f) &&
+      !this->isSubpixelFeature(f) && this->mayStraightenFeature(f))
+    {
+      this->StraightFeatures.push_back(f);
+      ++this->CarriedFallbacks;
+    }
+  }
+  for (const Id p : before->PinnedPoints)
+  {
+    if (p >= 0 && static_cast<std::size_t>(p) < this->Mesh.points().size())
+    {
+      this->Pinned.push_back(p);
+      ++this->CarriedFallbacks;
+    }
+  }
+}
+
+// Every fallback in force but those at apexes, with one frame fewer left
+// than the carried ones had, or FallbackKeepFrames when none were carried.
+void SilhouettePass::listFallbacks()
+{
+  FoldFallbacks& out = this->Result.Fallbacks;
+  out.FramesLeft = this->CarriedFrom ? static_cast<unsigned char>(this->CarriedFrom->FramesLeft - 1)
+                                     : this->Parameters.FallbackKeepFrames;
+  if (out.FramesLeft == 0)
+  {
+    return;
+  }
+  for (const auto& level : this->Levels)
+  {
+    if (!std::binary_search(this->ApexStraight.begin(), this->ApexStraight.end(), level.first))
+    {
+      out.Triangles.push_back(level);
+    }
+  }
+  std::sort(out.Triangles.begin(), out.Triangles.end());
+  out.FeatureSegments = this->StraightFeatures;
+  out.PinnedPoints = this->Pinned;
 }
 
 void SilhouettePass::remeshFrame()
@@ -306,11 +420,11 @@ bool SilhouettePass::takeFallbacks(const FoldFindings& findings, std::vector<Id>
       // the other sides of the crease sample too, and those on a seam
       // between pieces stay on the curve, which the piece across computes
       // too (it cannot know of this fallback).
-      for (int k = 0; k < 3; ++k)
+      std::vector<Id> sides;
+      this->straightSidesOf(t, sides);
+      for (const Id e : sides)
       {
-        const Id e = edges.sideEdge(t, k);
-        if (this->isMixed(edges.edge(e)) && this->Mesh.edgeFeature(e) < 0 && !this->mayBeSeam(e) &&
-          !std::binary_search(this->StraightEdges.begin(), this->StraightEdges.end(), e))
+        if (!std::binary_search(this->StraightEdges.begin(), this->StraightEdges.end(), e))
         {
           newEdges.push_back(e);
         }

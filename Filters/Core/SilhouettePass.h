@@ -76,6 +76,18 @@ private:
   static constexpr unsigned char StraightLevel = 2; // and points on its edges
 
   void straightenAtApexes();
+  // SmoothingParameters::FallbacksBefore: starts the frame with the
+  // fallbacks carried from the frame before that still apply.
+  void startFromFallbacksBefore();
+  // SmoothingResult::Fallbacks, at the end of the frame.
+  void listFallbacks();
+  // Adds to `edges` the sides of silhouette triangle t whose silhouette
+  // points its straight level puts on the straight edge: mixed sides that
+  // are neither feature edges nor possible seams.
+  void straightSidesOf(Id t, std::vector<Id>& edges) const;
+  // Whether feature segment f may be drawn by its chord as a fallback: no
+  // side of it may be a seam between pieces.
+  bool mayStraightenFeature(Id f) const;
   // The end of mixed edge e at which its silhouette point sits, when e
   // runs from an apex (apexSides: such edges' silhouette triangles,
   // sorted); -1 for any other edge.
@@ -405,6 +417,12 @@ private:
   std::size_t CrowdedTriangles = 0; // sent straight untested (FoldGuard.h)
   std::vector<Id> StraightFeatures;
   std::vector<Id> Pinned;
+  // Silhouette triangles put at StraightLevel at an apex, ascending.
+  std::vector<Id> ApexStraight;
+  // FallbacksBefore when the frame started with them, else null; how many
+  // of them still applied.
+  const FoldFallbacks* CarriedFrom = nullptr;
+  std::size_t CarriedFallbacks = 0;
 };
 
 } // namespace detail

@@ -124,6 +124,8 @@ struct ViewPatch
   vtkIdType CulledTriangles = 0;
   vtkIdType SubpixelTriangles = 0;
   vtkIdType SubpixelFeatureSegments = 0;
+  vtkIdType FoldGuardRounds = 0;
+  vtkIdType CarriedFallbacks = 0;
   vtkIdType SilhouetteTriangles = 0;
   vtkIdType NewTriangles = 0;
 };
@@ -300,6 +302,8 @@ struct vtkSilhouetteSmoothingMapper::Internals
     self->CulledTriangleCount = patch.CulledTriangles;
     self->SubpixelTriangleCount = patch.SubpixelTriangles;
     self->SubpixelFeatureSegmentCount = patch.SubpixelFeatureSegments;
+    self->FoldGuardRoundCount = patch.FoldGuardRounds;
+    self->CarriedFallbackCount = patch.CarriedFallbacks;
     self->SilhouetteTriangleCount = patch.SilhouetteTriangles;
     self->NewTriangleCount = patch.NewTriangles;
   }
@@ -314,6 +318,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
     patch.DrawsChanges = false;
     patch.ReplacedTriangles = patch.PatchTriangles = patch.CulledTriangles = 0;
     patch.SubpixelTriangles = patch.SubpixelFeatureSegments = 0;
+    patch.FoldGuardRounds = patch.CarriedFallbacks = 0;
     patch.SilhouetteTriangles = patch.NewTriangles = 0;
     patch.GeometryTime = this->Smoother->GetGeometryTime();
     if (!smooth || width <= 0 || height <= 0)
@@ -349,6 +354,14 @@ struct vtkSilhouetteSmoothingMapper::Internals
     if (vtkDataArray* straight = figures->GetArray("SubpixelFeatureSegmentCount"))
     {
       patch.SubpixelFeatureSegments = static_cast<vtkIdType>(straight->GetTuple1(0));
+    }
+    if (vtkDataArray* rounds = figures->GetArray("FoldGuardRoundCount"))
+    {
+      patch.FoldGuardRounds = static_cast<vtkIdType>(rounds->GetTuple1(0));
+    }
+    if (vtkDataArray* carried = figures->GetArray("CarriedFallbackCount"))
+    {
+      patch.CarriedFallbacks = static_cast<vtkIdType>(carried->GetTuple1(0));
     }
     if (vtkDataArray* silhouette = figures->GetArray("SilhouetteTriangleCount"))
     {
@@ -537,6 +550,8 @@ void vtkSilhouetteSmoothingMapper::ClearFrameCounts()
   this->ReplacedTriangleCount = this->PatchTriangleCount = this->CulledTriangleCount = 0;
   this->SubpixelTriangleCount = this->SilhouetteTriangleCount = this->NewTriangleCount = 0;
   this->SubpixelFeatureSegmentCount = 0;
+  this->FoldGuardRoundCount = 0;
+  this->CarriedFallbackCount = 0;
 }
 
 void vtkSilhouetteSmoothingMapper::MapDataArrayToVertexAttribute(
@@ -589,6 +604,8 @@ void vtkSilhouetteSmoothingMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CulledTriangleCount: " << this->CulledTriangleCount << "\n";
   os << indent << "SubpixelTriangleCount: " << this->SubpixelTriangleCount << "\n";
   os << indent << "SubpixelFeatureSegmentCount: " << this->SubpixelFeatureSegmentCount << "\n";
+  os << indent << "FoldGuardRoundCount: " << this->FoldGuardRoundCount << "\n";
+  os << indent << "CarriedFallbackCount: " << this->CarriedFallbackCount << "\n";
   os << indent << "SmoothingRunCount: " << this->SmoothingRunCount << "\n";
   os << indent << "SmoothingFilter:\n";
   this->Internal->Smoother->PrintSelf(os, indent.GetNextIndent());

@@ -105,6 +105,11 @@ public:
   /// the filter's SilhouetteTriangleCount and NewTriangleCount.
   vtkIdType GetSilhouetteTriangleCount() const { return this->SilhouetteTriangleCount; }
   vtkIdType GetNewTriangleCount() const { return this->NewTriangleCount; }
+  /// How many times the fold guard re-meshed the frame again, and how many
+  /// of the frame's fold fallbacks it carried from this viewer's frame
+  /// before (the smoothing filter's FoldFallbackFrames).
+  vtkIdType GetFoldGuardRoundCount() const { return this->FoldGuardRoundCount; }
+  vtkIdType GetCarriedFallbackCount() const { return this->CarriedFallbackCount; }
   ///@}
 
   /**
@@ -185,6 +190,8 @@ protected:
   vtkIdType CulledTriangleCount = 0;
   vtkIdType SubpixelTriangleCount = 0;
   vtkIdType SubpixelFeatureSegmentCount = 0;
+  vtkIdType FoldGuardRoundCount = 0;
+  vtkIdType CarriedFallbackCount = 0;
   vtkIdType SilhouetteTriangleCount = 0;
   vtkIdType NewTriangleCount = 0;
   double LastPrepareSeconds = 0.0;

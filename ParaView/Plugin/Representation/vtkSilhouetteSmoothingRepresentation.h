@@ -56,6 +56,7 @@ public:
   void SetSilhouetteSamplingRule(int rule);
   void SetSilhouettePerturbVertices(bool perturb);
   void SetSilhouetteFoldPrevention(bool prevent);
+  void SetSilhouetteFoldFallbackFrames(int frames);
   void SetSilhouetteKeepApexesPointed(bool keep);
   void SetSilhouetteSkipSubpixelSmoothing(bool skip);
   void SetSilhouetteFeatureLines(bool use);

@@ -500,6 +500,46 @@ private:
       }
     }
     this->GroupStarts.push_back(this->Items.size());
+    this->GroupOf.resize(this->Items.size());
+    for (std::size_t g = 0; g + 1 < this->GroupStarts.size(); ++g)
+    {
+      std::fill(this->GroupOf.begin() + static_cast<std::ptrdiff_t>(this->GroupStarts[g]),
+        this->GroupOf.begin() + static_cast<std::ptrdiff_t>(this->GroupStarts[g + 1]), g);
+    }
+  }
+
+  // Each group's changed candidates (changedCandidates with its joint box),
+  // before any group is judged, so that every group knows which others are
+  // crowded (testedFromTheOtherSide).
+  void findChangedCandidates(const FoldGuardParallelFor& parallelFor)
+  {
+    const std::size_t groups = this->GroupStarts.size() - 1;
+    this->GroupNearChanged.assign(groups, {});
+    parallelFor(groups, [this](std::size_t begin, std::size_t end) {
+      for (std::size_t g = begin; g < end; ++g)
+      {
+        if (this->GroupLows[g].x <= this->GroupHighs[g].x && !this->GroupCrowded[g] &&
+          !this->changedCandidates(this->GroupLows[g], this->GroupHighs[g], this->GroupFlat[g] != 0,
+            this->GroupNearChanged[g]))
+        {
+          this->GroupCrowded[g] = 1;
+          this->GroupNearChanged[g] = std::vector<Id>();
+        }
+      }
+    });
+  }
+
+  // Whether item j tests its pair with item k (j < k) itself: both are
+  // checked, and j's group is not crowded. Then j's group has k among its
+  // changed candidates (k's box meets j's, so it meets j's group's box; a
+  // group that lies in its input triangles leaves out only candidates that
+  // do too, which neither tests against the other), and the test is the
+  // same either way round (trianglesIntersect and trianglesTouch are
+  // symmetric).
+  bool testedFromTheOtherSide(std::size_t k, std::size_t j) const
+  {
+    return j < k && this->ToCheck[j] && !this->GroupCrowded[this->GroupOf[j]] &&
+      !this->Frame.PairsFromBothSides;
   }
 
   // 0: fine, 1: turned over, 2: cuts through another, 3: not tested
@@ -511,6 +551,7 @@ private:
     this->CutItems.assign(this->Items.size(), {});
     this->groupItems();
     this->findKeptCandidates(parallelFor);
+    this->findChangedCandidates(parallelFor);
     parallelFor(this->GroupStarts.size() - 1, [this](std::size_t begin, std::size_t end) {
       GroupScratch scratch;
       for (std::size_t g = begin; g < end; ++g)
@@ -518,6 +559,19 @@ private:
         this->judgeGroup(g, scratch);
       }
     });
+    // A pair of changed triangles that both check is tested once, from the
+    // lower item (testedFromTheOtherSide): the higher one cuts too.
+    for (std::size_t k = 0; k < this->Items.size(); ++k)
+    {
+      for (const std::size_t j : this->CutItems[k])
+      {
+        if (this->Verdict[j] == 0 && this->ToCheck[j] &&
+          !hasRepeatedCorner(this->idsOf(this->Items[j])))
+        {
+          this->Verdict[j] = 2;
+        }
+      }
+    }
   }
 
   // A group's candidates from the two grids, and one item's.
@@ -603,7 +657,7 @@ private:
         scratch.NearLows.push_back(glm::min(p[0], glm::min(p[1], p[2])));
         scratch.NearHighs.push_back(glm::max(p[0], glm::max(p[1], p[2])));
       }
-      crowded = !this->changedCandidates(low, high, this->GroupFlat[g] != 0, scratch.NearChanged);
+      scratch.NearChanged = std::move(this->GroupNearChanged[g]); // judged once
     }
     if (crowded)
     {
@@ -636,7 +690,7 @@ private:
           // Two that lie in their input triangles cut each other only where
           // those touch, or not at all (in one plane).
           const std::size_t i = static_cast<std::size_t>(j);
-          if (!(this->Flat[k] && this->Flat[i]) &&
+          if (!(this->Flat[k] && this->Flat[i]) && !this->testedFromTheOtherSide(k, i) &&
             boxesMeet(this->Lows[k], this->Highs[k], this->Lows[i], this->Highs[i]))
           {
             scratch.Changed.push_back(j);
@@ -779,8 +833,10 @@ private:
   std::vector<glm::dvec3> GroupLows;
   std::vector<glm::dvec3> GroupHighs;
   std::vector<std::vector<Id>> GroupNear;
-  std::vector<unsigned char> GroupFlat;    // every item to check is Flat
-  std::vector<unsigned char> GroupCrowded; // more candidates than CandidateCap
+  std::vector<std::vector<Id>> GroupNearChanged; // changed candidates of each group
+  std::vector<std::size_t> GroupOf;              // each item's group
+  std::vector<unsigned char> GroupFlat;          // every item to check is Flat
+  std::vector<unsigned char> GroupCrowded;       // more candidates than CandidateCap
 };
 
 } // namespace

@@ -38,6 +38,11 @@
 // slack), so both ways give every item the same candidates, in ascending
 // order, and the same findings.
 //
+// Two changed triangles that are both checked are tested against each
+// other once, by the first of them in the frame's order unless its
+// candidates are crowded (below); the test is symmetric, and a cut found
+// marks both, so the findings are those of testing from both sides.
+//
 // A new triangle that lies in its input triangle (liesIn; every new
 // triangle of a straight re-meshing does) is not tested against kept
 // triangles, nor against changed ones that lie in theirs: it could cut
@@ -107,6 +112,9 @@ struct FoldGuardFrame
   /// findings are those of a whole check.
   const std::vector<Id>* CheckSources = nullptr;
   const std::vector<Id>* CheckPoints = nullptr;
+  /// For tests: test each pair of checked changed triangles from both sides
+  /// (the findings must not depend on it).
+  bool PairsFromBothSides = false;
 };
 
 struct FoldFindings

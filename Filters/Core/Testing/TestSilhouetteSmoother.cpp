@@ -490,8 +490,10 @@ ParallelFor threadedFor(unsigned threads)
   };
 }
 
-// The fold guard's findings on a frame, from the mesh's grid or by a scan.
-FoldFindings foldsOf(const PreparedMesh& mesh, const SmoothingResult& r, bool grid)
+// The fold guard's findings on a frame, from the mesh's grid or by a scan,
+// each pair of changed triangles tested once or from both sides.
+FoldFindings foldsOf(
+  const PreparedMesh& mesh, const SmoothingResult& r, bool grid, bool bothSides = false)
 {
   std::vector<glm::dvec3> positions;
   std::vector<glm::dvec3> normals;
@@ -502,8 +504,9 @@ FoldFindings foldsOf(const PreparedMesh& mesh, const SmoothingResult& r, bool gr
   }
   const FoldGuardMesh guardMesh{ mesh.points(), mesh.normals(), mesh.triangles(),
     grid ? &mesh.triangleGrid() : nullptr };
-  const FoldGuardFrame frame{ r.RemeshedTriangles, r.ReplacementOffsets, r.Replacements, positions,
+  FoldGuardFrame frame{ r.RemeshedTriangles, r.ReplacementOffsets, r.Replacements, positions,
     normals, r.MovedPoints };
+  frame.PairsFromBothSides = bothSides;
   return findFolds(guardMesh, frame, grid ? serialFor : threadedFor(3));
 }
 
@@ -544,6 +547,13 @@ TEST(SilhouetteSmoother, FoldGuardLeavesNoFoldAndIncrementalChecksChangeNothing)
     EXPECT_EQ(byScan.Crowded, found.Crowded) << "view " << v;
     EXPECT_EQ(byScan.FoldingRemeshed, found.FoldingRemeshed) << "view " << v;
     EXPECT_EQ(byScan.FoldingMovedPoints, found.FoldingMovedPoints) << "view " << v;
+    // Each pair of changed triangles tested from both sides: the same
+    // findings again (a cut found once marks both triangles).
+    const FoldFindings bothSides = foldsOf(mesh, u, true, true);
+    EXPECT_EQ(bothSides.Turned, found.Turned) << "view " << v;
+    EXPECT_EQ(bothSides.Cutting, found.Cutting) << "view " << v;
+    EXPECT_EQ(bothSides.FoldingRemeshed, found.FoldingRemeshed) << "view " << v;
+    EXPECT_EQ(bothSides.FoldingMovedPoints, found.FoldingMovedPoints) << "view " << v;
     const bool fellBack =
       r.ChordFallbackTriangles + r.StraightSilhouettePoints + r.PinnedPoints > 0;
     EXPECT_EQ(found.any(), fellBack) << "view " << v;

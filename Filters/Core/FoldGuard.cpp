@@ -11,6 +11,9 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
 
 namespace silsmooth
 {
@@ -318,10 +321,12 @@ public:
 
   FoldFindings run(const FoldGuardParallelFor& parallelFor)
   {
+    auto T0 = std::chrono::steady_clock::now();
     this->collectItems(parallelFor);
     this->placeItems();
-    this->chooseItemsToCheck();
+    this->chooseItemsToCheck(parallelFor);
     this->judgeItems(parallelFor);
+    if (std::getenv("SIL_DBG")) std::fprintf(stderr, "CHECK %s %.3f\n", this->Frame.CheckSources ? "partial" : "whole", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - T0).count());
     return this->findings();
   }
 
@@ -393,30 +398,50 @@ private:
     }
   }
 
-  // The changed triangles where they are now, and their boxes.
+  // The changed triangles' boxes where they are now.
   void placeItems()
   {
     const std::size_t n = this->Items.size();
     this->Shapes.resize(n);
-    this->Flat.resize(n);
+    this->Flat.assign(n, 0);
+    this->Shaped.assign(n, 0);
     this->Lows.resize(n);
     this->Highs.resize(n);
     for (std::size_t k = 0; k < n; ++k)
     {
-      this->Shapes[k] = shapeOf(this->Geometry.current(this->idsOf(this->Items[k])));
-      const TriangleCorners& c = this->Shapes[k].Corners;
+      const TriangleCorners c = this->Geometry.current(this->idsOf(this->Items[k]));
       this->Lows[k] = glm::min(c.P[0], glm::min(c.P[1], c.P[2]));
       this->Highs[k] = glm::max(c.P[0], glm::max(c.P[1], c.P[2]));
-      this->Flat[k] = liesIn(c, this->Geometry.prepared(this->Items[k].Source)) ? 1 : 0;
+    }
+  }
+
+  // The shapes of the items listed (ascending, not yet shaped), and whether
+  // each lies in its input triangle: all of them for a whole check, the
+  // items to check and their candidates for a partial one.
+  void shapeItems(const std::vector<std::size_t>& which, const FoldGuardParallelFor& parallelFor)
+  {
+    parallelFor(which.size(), [this, &which](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i)
+      {
+        const std::size_t k = which[i];
+        this->Shapes[k] = shapeOf(this->Geometry.current(this->idsOf(this->Items[k])));
+        this->Flat[k] =
+          liesIn(this->Shapes[k].Corners, this->Geometry.prepared(this->Items[k].Source)) ? 1 : 0;
+      }
+    });
+    for (const std::size_t k : which)
+    {
+      this->Shaped[k] = 1;
     }
   }
 
   // Which items to check (all, unless the caller names what changed), and
   // how to find the changed triangles near one: a grid of their boxes made
   // for this frame (the prepared grid knows only the input's boxes, which a
-  // lifted new triangle or a moved one may leave) when many are checked; a
-  // few (a partial check after the first round) scan the boxes instead.
-  void chooseItemsToCheck()
+  // lifted new triangle or a moved one may leave) when many input triangles'
+  // items are checked; a few (a partial check after the first round) scan
+  // the boxes instead, and only the items they meet are shaped.
+  void chooseItemsToCheck(const FoldGuardParallelFor& parallelFor)
   {
     const FoldGuardFrame& frame = this->Frame;
     this->ToCheck.assign(this->Items.size(), 1);
@@ -435,52 +460,56 @@ private:
           : 0;
       }
     }
-    const auto checking =
-      static_cast<std::size_t>(std::count(this->ToCheck.begin(), this->ToCheck.end(), 1));
-    this->Scan = checking <= 64;
-    if (!this->Scan)
+    // Each input triangle's items are checked together (groupItems).
+    std::size_t checkedGroups = 0;
+    std::vector<std::size_t> checked;
+    for (std::size_t k = 0; k < this->Items.size(); ++k)
     {
-      this->Changed = TriangleGrid(this->Lows, this->Highs);
-      this->AnyFlat = std::find(this->Flat.begin(), this->Flat.end(), 1) != this->Flat.end();
-      if (this->AnyFlat)
+      if (this->ToCheck[k])
       {
-        std::vector<glm::dvec3> curvedLows = this->Lows;
-        for (std::size_t k = 0; k < this->Items.size(); ++k)
-        {
-          if (this->Flat[k])
-          {
-            curvedLows[k] = glm::dvec3(HUGE_VAL); // left out of the grid
-          }
-        }
-        this->CurvedChanged = TriangleGrid(std::move(curvedLows), this->Highs);
+        const bool sameGroup = !checked.empty() && this->Items[k].Remeshed >= 0 &&
+          this->Items[checked.back()].Remeshed == this->Items[k].Remeshed;
+        checkedGroups += sameGroup ? 0 : 1;
+        checked.push_back(k);
       }
+    }
+    this->Scan = checkedGroups <= 64;
+    if (this->Scan)
+    {
+      this->shapeItems(checked, parallelFor);
+      return;
+    }
+    std::vector<std::size_t> all(this->Items.size());
+    for (std::size_t k = 0; k < all.size(); ++k)
+    {
+      all[k] = k;
+    }
+    this->shapeItems(all, parallelFor);
+    this->Changed = TriangleGrid(this->Lows, this->Highs);
+    this->AnyFlat = std::find(this->Flat.begin(), this->Flat.end(), 1) != this->Flat.end();
+    if (this->AnyFlat)
+    {
+      std::vector<glm::dvec3> curvedLows = this->Lows;
+      for (std::size_t k = 0; k < this->Items.size(); ++k)
+      {
+        if (this->Flat[k])
+        {
+          curvedLows[k] = glm::dvec3(HUGE_VAL); // left out of the grid
+        }
+      }
+      this->CurvedChanged = TriangleGrid(std::move(curvedLows), this->Highs);
     }
   }
 
   // The changed triangles whose boxes meet the box [low, high] (only the
-  // ones that do not lie in their input triangles when `curvedOnly`); false,
-  // with `out` incomplete, when they are more than CandidateCap.
+  // ones that do not lie in their input triangles when `curvedOnly`), from
+  // the grids; false, with `out` incomplete, when they are more than
+  // CandidateCap.
   bool changedCandidates(
     const glm::dvec3& low, const glm::dvec3& high, bool curvedOnly, std::vector<Id>& out) const
   {
-    if (!this->Scan)
-    {
-      return (curvedOnly && this->AnyFlat ? this->CurvedChanged : this->Changed)
-        .query(low, high, out, CandidateCap);
-    }
-    out.clear();
-    for (std::size_t j = 0; j < this->Items.size(); ++j)
-    {
-      if ((!curvedOnly || !this->Flat[j]) && boxesMeet(low, high, this->Lows[j], this->Highs[j]))
-      {
-        if (out.size() == CandidateCap)
-        {
-          return false;
-        }
-        out.push_back(static_cast<Id>(j));
-      }
-    }
-    return true;
+    return (curvedOnly && this->AnyFlat ? this->CurvedChanged : this->Changed)
+      .query(low, high, out, CandidateCap);
   }
 
   // Items in runs that share one query of the prepared grid: the new
@@ -515,6 +544,11 @@ private:
   {
     const std::size_t groups = this->GroupStarts.size() - 1;
     this->GroupNearChanged.assign(groups, {});
+    if (this->Scan)
+    {
+      this->scanChangedCandidates(parallelFor);
+      return;
+    }
     parallelFor(groups, [this](std::size_t begin, std::size_t end) {
       for (std::size_t g = begin; g < end; ++g)
       {
@@ -527,6 +561,56 @@ private:
         }
       }
     });
+  }
+
+  // findChangedCandidates by scanning the boxes, for a few groups: the items
+  // whose boxes meet a group's are shaped first (the items to check are),
+  // then those that lie in their input triangles are left out for a group
+  // whose items all do, and the cap applies, as the grids' queries do.
+  void scanChangedCandidates(const FoldGuardParallelFor& parallelFor)
+  {
+    const std::size_t groups = this->GroupStarts.size() - 1;
+    std::vector<unsigned char> wanted(this->Items.size(), 0);
+    for (std::size_t g = 0; g < groups; ++g)
+    {
+      if (!(this->GroupLows[g].x <= this->GroupHighs[g].x) || this->GroupCrowded[g])
+      {
+        continue;
+      }
+      std::vector<Id>& out = this->GroupNearChanged[g];
+      for (std::size_t j = 0; j < this->Items.size(); ++j)
+      {
+        if (boxesMeet(this->GroupLows[g], this->GroupHighs[g], this->Lows[j], this->Highs[j]))
+        {
+          out.push_back(static_cast<Id>(j));
+          wanted[j] = 1;
+        }
+      }
+    }
+    std::vector<std::size_t> unshaped;
+    for (std::size_t j = 0; j < this->Items.size(); ++j)
+    {
+      if (wanted[j] && !this->Shaped[j])
+      {
+        unshaped.push_back(j);
+      }
+    }
+    this->shapeItems(unshaped, parallelFor);
+    for (std::size_t g = 0; g < groups; ++g)
+    {
+      std::vector<Id>& out = this->GroupNearChanged[g];
+      if (this->GroupFlat[g])
+      {
+        out.erase(std::remove_if(out.begin(), out.end(),
+                    [this](Id j) { return this->Flat[static_cast<std::size_t>(j)] != 0; }),
+          out.end());
+      }
+      if (out.size() > CandidateCap)
+      {
+        this->GroupCrowded[g] = 1;
+        out = std::vector<Id>();
+      }
+    }
   }
 
   // Whether item j tests its pair with item k (j < k) itself: both are
@@ -821,6 +905,8 @@ private:
   std::vector<glm::dvec3> Lows;
   std::vector<glm::dvec3> Highs;
   std::vector<unsigned char> ToCheck;
+  /// Per item: 1 once Shapes and Flat hold it (shapeItems).
+  std::vector<unsigned char> Shaped;
   bool Scan = true;
   TriangleGrid Changed;
   TriangleGrid CurvedChanged; // of the items that are not Flat, when some are

@@ -248,7 +248,7 @@ struct vtkSilhouetteSmoothingFilter::Internals
   // view of that surface for that viewer, its points moved or not (a
   // deforming mesh keeps its triangles), leaves what was smoothed before
   // whole only with a margin (SmoothingParameters::SubpixelBefore), and
-  // starts with the fold fallbacks that have frames left
+  // raises a folding triangle at once to its fallback there
   // (SmoothingParameters::FallbacksBefore). Each
   // viewer's frames follow one another; two renderers taking turns must not
   // read each other's. The four viewers drawn last are kept.
@@ -518,10 +518,9 @@ silsmooth::SmoothingResult vtkSilhouetteSmoothingFilter::Internals::Smooth(
   parameters.SubpixelBefore = history ? &history->Subpixel : nullptr;
   parameters.RemeshedBefore = history ? &history->Remeshed : nullptr;
   parameters.SubpixelFeaturesBefore = history ? &history->SubpixelFeatures : nullptr;
-  parameters.FallbacksBefore = history ? &history->Fallbacks : nullptr;
+  parameters.FallbacksBefore = history && self->ReuseFoldFallbacks ? &history->Fallbacks : nullptr;
   parameters.PerturbConcaveSilhouettes = self->PerturbVertices;
   parameters.PreventFolds = self->FoldPrevention;
-  parameters.FallbackKeepFrames = static_cast<unsigned char>(self->FoldFallbackFrames);
   parameters.KeepApexesPointed = self->KeepApexesPointed;
   parameters.CullOutsideFrustum = self->FrustumCulling;
   parameters.SkipSubpixelSmoothing = self->SkipSubpixelSmoothing;
@@ -910,7 +909,7 @@ int vtkSilhouetteSmoothingFilter::BuildChangesUnguarded(vtkPolyData* input, vtkC
   AddCount(fd, "ChordFallbackCount", static_cast<vtkIdType>(result.ChordFallbackTriangles));
   AddCount(fd, "UnresolvedFoldCount", static_cast<vtkIdType>(result.UnresolvedFolds));
   AddCount(fd, "FoldGuardRoundCount", static_cast<vtkIdType>(result.FoldGuardRounds));
-  AddCount(fd, "CarriedFallbackCount", static_cast<vtkIdType>(result.CarriedFallbacks));
+  AddCount(fd, "ReusedFallbackCount", static_cast<vtkIdType>(result.ReusedFallbacks));
   AddCount(fd, "CulledTriangleCount", static_cast<vtkIdType>(result.CulledTriangles));
   AddCount(fd, "SubpixelTriangleCount", static_cast<vtkIdType>(result.SubpixelTriangles));
   AddCount(
@@ -931,7 +930,7 @@ void vtkSilhouetteSmoothingFilter::CopySmoothingSettings(vtkSilhouetteSmoothingF
   this->SetSamplingRule(other->GetSamplingRule());
   this->SetPerturbVertices(other->GetPerturbVertices());
   this->SetFoldPrevention(other->GetFoldPrevention());
-  this->SetFoldFallbackFrames(other->GetFoldFallbackFrames());
+  this->SetReuseFoldFallbacks(other->GetReuseFoldFallbacks());
   this->SetKeepApexesPointed(other->GetKeepApexesPointed());
   this->SetFrustumCulling(other->GetFrustumCulling());
   this->SetSkipSubpixelSmoothing(other->GetSkipSubpixelSmoothing());
@@ -957,7 +956,7 @@ void vtkSilhouetteSmoothingFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NewPointBudget: " << this->NewPointBudget << "\n";
   os << indent << "PerturbVertices: " << (this->PerturbVertices ? "On" : "Off") << "\n";
   os << indent << "FoldPrevention: " << (this->FoldPrevention ? "On" : "Off") << "\n";
-  os << indent << "FoldFallbackFrames: " << this->FoldFallbackFrames << "\n";
+  os << indent << "ReuseFoldFallbacks: " << (this->ReuseFoldFallbacks ? "On" : "Off") << "\n";
   os << indent << "KeepApexesPointed: " << (this->KeepApexesPointed ? "On" : "Off") << "\n";
   os << indent << "FrustumCulling: " << (this->FrustumCulling ? "On" : "Off") << "\n";
   os << indent << "SkipSubpixelSmoothing: " << (this->SkipSubpixelSmoothing ? "On" : "Off") << "\n";

@@ -215,19 +215,23 @@ public:
 
   ///@{
   /**
-   * In vtkSilhouetteSmoothingMapper's frames (BuildChanges), how many frames
-   * a fold fallback is kept after the frame that took it (0 to 255, default
-   * 8): later frames of the same viewer start with it, still check for folds
-   * as any frame does, and try the curve again once it runs out. A coarse
-   * mesh's folds stay where they are for a few frames of an orbit; without
-   * this each frame takes them again, one more round of re-meshing and
-   * checking per level (2 to 4 rounds a frame on assimp's spider), and a
-   * triangle whose curve folds every other frame switches between curve and
-   * chord as often. 0: every frame starts anew. The filter's own output
-   * (RequestData) never carries any: it depends on its view alone.
+   * In vtkSilhouetteSmoothingMapper's frames (BuildChanges), reuse the fold
+   * fallbacks of the same viewer's frame before (default on): each frame
+   * still starts with none and checks for folds, but a triangle found
+   * folding goes at once to the fallback it needed there (and the creases
+   * beside it that were drawn straight there), instead of climbing to it
+   * one re-meshing round at a time. A coarse mesh's folds stay put from one
+   * frame of an orbit to the next: each frame took 2 to 4 rounds on assimp's
+   * spider. Nothing is kept that the frame does not need, so a triangle whose
+   * curve no longer folds is drawn curved; where a fold needs only the first
+   * fallback now, the one it needed before is kept while it folds. Field
+   * data `ReusedFallbackCount` (BuildChanges' changes) and the mapper's
+   * GetReusedFallbackCount count what was reused. The filter's own output
+   * (RequestData) reuses nothing: it depends on its view alone.
    */
-  vtkSetClampMacro(FoldFallbackFrames, int, 0, 255);
-  vtkGetMacro(FoldFallbackFrames, int);
+  vtkSetMacro(ReuseFoldFallbacks, bool);
+  vtkGetMacro(ReuseFoldFallbacks, bool);
+  vtkBooleanMacro(ReuseFoldFallbacks, bool);
   ///@}
 
   ///@{
@@ -494,9 +498,9 @@ public:
    * points of its own, with the arrays of the whole output. Invariant: the
    * base mesh with those triangles replaced is RequestData's output for the
    * same view, triangle for triangle, up to the points' numbering, but for
-   * what the calls before carry: SkipSubpixelSmoothing's margin and the fold
-   * fallbacks of FoldFallbackFrames (0 and SkipSubpixelSmoothing off carry
-   * nothing). The cost is in the silhouette, not the mesh.
+   * what the calls before leave: SkipSubpixelSmoothing's margin and the fold
+   * fallbacks of ReuseFoldFallbacks (with both off, nothing). The cost is in
+   * the silhouette, not the mesh.
    */
   int BuildBaseMesh(vtkPolyData* input, vtkPolyData* base);
   int BuildChanges(vtkPolyData* input, vtkCamera* camera, const double modelMatrix[16], int width,
@@ -545,7 +549,7 @@ protected:
   int SamplingRule = SECOND_DIFFERENCE;
   bool PerturbVertices = true;
   bool FoldPrevention = true;
-  int FoldFallbackFrames = 8;
+  bool ReuseFoldFallbacks = true;
   bool KeepApexesPointed = true;
   bool FrustumCulling = false;
   bool SkipSubpixelSmoothing = false;

@@ -34,7 +34,6 @@ SmoothingResult SilhouettePass::run()
   this->skipSubpixelSmoothing();
   this->skipSubpixelFeatures();
   this->PresetStraightEdges = this->StraightEdges.size();
-  this->startFromFallbacksBefore();
   // Each round re-meshes the whole frame with the fallbacks decided so far;
   // a round that finds no fold, or no fallback left to take, is the last.
   // Rounds are bounded: every round but the last takes a fallback, and
@@ -95,7 +94,7 @@ SmoothingResult SilhouettePass::run()
   {
     this->listFallbacks();
   }
-  this->Result.CarriedFallbacks = this->CarriedFallbacks;
+  this->Result.ReusedFallbacks = this->ReusedFallbacks;
   this->Result.PinnedPoints = this->Pinned.size();
   this->Result.CulledTriangles = this->Culled;
   this->Result.StraightSilhouettePoints = this->StraightEdges.size() - this->PresetStraightEdges;
@@ -151,96 +150,57 @@ void SilhouettePass::straightSidesOf(Id t, std::vector<Id>& edges) const
   }
 }
 
-bool SilhouettePass::mayStraightenFeature(Id f) const
+unsigned char SilhouettePass::rememberedLevel(Id t) const
 {
-  if (!this->Parameters.BoundaryMayBeSeam)
+  const FoldFallbacks* before = this->Parameters.FallbacksBefore;
+  if (!before)
   {
-    return true;
+    return 0;
   }
+  const auto it = std::lower_bound(before->Triangles.begin(), before->Triangles.end(),
+    std::make_pair(t, static_cast<unsigned char>(0)));
+  return it != before->Triangles.end() && it->first == t && it->second <= StraightLevel ? it->second
+                                                                                        : 0;
+}
+
+bool SilhouettePass::rememberedStraight(Id f) const
+{
+  const FoldFallbacks* before = this->Parameters.FallbacksBefore;
+  return before &&
+    std::binary_search(before->FeatureSegments.begin(), before->FeatureSegments.end(), f);
+}
+
+template<typename Accept>
+bool SilhouettePass::straightenSideFeatures(Id t, std::vector<Id>& changed, Accept straighten)
+{
   const EdgeTable& edges = this->Mesh.edges();
-  const auto& sides = this->Mesh.featureSideTriangles();
-  for (auto it = std::lower_bound(sides.begin(), sides.end(), std::make_pair(f, Id{ 0 }));
-       it != sides.end() && it->first == f; ++it)
+  bool taken = false;
+  for (int k = 0; k < 3; ++k)
   {
-    for (int k = 0; k < 3; ++k)
+    const Id e = edges.sideEdge(t, k);
+    const Id f = this->Mesh.edgeFeature(e);
+    if (f >= 0 && this->Mesh.features().isCurved(f) && !this->isStraightened(f) &&
+      !this->mayBeSeam(e) && straighten(f))
     {
-      const Id e = edges.sideEdge(it->second, k);
-      if (this->Mesh.edgeFeature(e) == f && this->mayBeSeam(e))
+      this->StraightFeatures.insert(
+        std::upper_bound(this->StraightFeatures.begin(), this->StraightFeatures.end(), f), f);
+      taken = true;
+      // Every side of the crease samples the segment.
+      const auto& sides = this->Mesh.featureSideTriangles();
+      for (auto it = std::lower_bound(sides.begin(), sides.end(), std::make_pair(f, Id{ 0 }));
+           it != sides.end() && it->first == f; ++it)
       {
-        return false;
+        changed.push_back(it->second);
       }
     }
   }
-  return true;
+  return taken;
 }
 
-// Carried fallbacks are applied as takeFallbacks would take them: a
-// triangle at StraightLevel straightens its sides' silhouette points with
-// it (a level without them would leave the fallbacks short of the
-// invariant in FoldGuard.h), a segment only where none of its sides is a
-// seam. Triangles that left the silhouette, or are left whole this frame,
-// drop theirs.
-void SilhouettePass::startFromFallbacksBefore()
-{
-  const FoldFallbacks* before = this->Parameters.FallbacksBefore;
-  if (!before || before->FramesLeft == 0 || !this->Parameters.PreventFolds)
-  {
-    return;
-  }
-  this->CarriedFrom = before;
-  std::vector<Id> edges;
-  for (const auto& [t, level] : before->Triangles)
-  {
-    if ((level != ChordLevel && level != StraightLevel) ||
-      !std::binary_search(this->Silhouette.begin(), this->Silhouette.end(), t) ||
-      this->isSubpixel(t) || this->levelOf(t) >= level)
-    {
-      continue;
-    }
-    this->Levels[t] = level;
-    ++this->CarriedFallbacks;
-    if (level == StraightLevel)
-    {
-      this->straightSidesOf(t, edges);
-    }
-  }
-  std::sort(edges.begin(), edges.end());
-  std::vector<Id> merged;
-  std::set_union(this->StraightEdges.begin(), this->StraightEdges.end(), edges.begin(), edges.end(),
-    std::back_inserter(merged));
-  merged.erase(std::unique(merged.begin(), merged.end()), merged.end());
-  this->StraightEdges = std::move(merged);
-  const FeatureCurves& features = this->Mesh.features();
-  for (const Id f : before->FeatureSegments)
-  {
-    if (f >= 0 && static_cast<std::size_t>(f) < features.edges().size() && features.isCurved(f) &&
-      !this->isSubpixelFeature(f) && this->mayStraightenFeature(f))
-    {
-      this->StraightFeatures.push_back(f);
-      ++this->CarriedFallbacks;
-    }
-  }
-  for (const Id p : before->PinnedPoints)
-  {
-    if (p >= 0 && static_cast<std::size_t>(p) < this->Mesh.points().size())
-    {
-      this->Pinned.push_back(p);
-      ++this->CarriedFallbacks;
-    }
-  }
-}
-
-// Every fallback in force but those at apexes, with one frame fewer left
-// than the carried ones had, or FallbackKeepFrames when none were carried.
+// Every fallback in force but those at apexes.
 void SilhouettePass::listFallbacks()
 {
   FoldFallbacks& out = this->Result.Fallbacks;
-  out.FramesLeft = this->CarriedFrom ? static_cast<unsigned char>(this->CarriedFrom->FramesLeft - 1)
-                                     : this->Parameters.FallbackKeepFrames;
-  if (out.FramesLeft == 0)
-  {
-    return;
-  }
   for (const auto& level : this->Levels)
   {
     if (!std::binary_search(this->ApexStraight.begin(), this->ApexStraight.end(), level.first))
@@ -250,7 +210,6 @@ void SilhouettePass::listFallbacks()
   }
   std::sort(out.Triangles.begin(), out.Triangles.end());
   out.FeatureSegments = this->StraightFeatures;
-  out.PinnedPoints = this->Pinned;
 }
 
 void SilhouettePass::remeshFrame()
@@ -386,33 +345,26 @@ bool SilhouettePass::takeFallbacks(const FoldFindings& findings, std::vector<Id>
     {
       // Last: its curved feature segments become their chords, on every
       // side of their creases.
-      for (int k = 0; k < 3; ++k)
-      {
-        const Id e = edges.sideEdge(t, k);
-        const Id f = this->Mesh.edgeFeature(e);
-        if (f >= 0 && this->Mesh.features().isCurved(f) && !this->isStraightened(f) &&
-          !this->mayBeSeam(e))
-        {
-          this->StraightFeatures.insert(
-            std::upper_bound(this->StraightFeatures.begin(), this->StraightFeatures.end(), f), f);
-          taken = true;
-          // Every side of the crease samples the segment.
-          const auto& sides = this->Mesh.featureSideTriangles();
-          for (auto it = std::lower_bound(sides.begin(), sides.end(), std::make_pair(f, Id{ 0 }));
-               it != sides.end() && it->first == f; ++it)
-          {
-            changed.push_back(it->second);
-          }
-        }
-      }
+      taken |= this->straightenSideFeatures(t, changed, [](Id) { return true; });
       continue;
     }
     unsigned char& level = this->Levels[t];
     // Untested (crowded) ones go straight at once: only that needs no test.
+    // One that needed a higher level in the frame before goes there at once,
+    // with the feature segments beside it that were straight there.
     const bool crowded = findings.FoldingRemeshed[i] == 2;
     this->CrowdedTriangles += crowded ? 1 : 0;
-    level = crowded ? StraightLevel : level + 1;
+    const unsigned char next = crowded ? StraightLevel : static_cast<unsigned char>(level + 1);
+    const unsigned char remembered = this->rememberedLevel(t);
+    this->ReusedFallbacks += remembered > next ? 1 : 0;
+    level = std::max(next, remembered);
     taken = true;
+    if (this->Parameters.FallbacksBefore && this->straightenSideFeatures(t, changed, [this](Id f) {
+          return this->rememberedStraight(f);
+        }))
+    {
+      ++this->ReusedFallbacks;
+    }
     if (level == StraightLevel)
     {
       // Its silhouette points, shared with the triangles across its mixed

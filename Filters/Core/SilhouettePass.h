@@ -76,18 +76,21 @@ private:
   static constexpr unsigned char StraightLevel = 2; // and points on its edges
 
   void straightenAtApexes();
-  // SmoothingParameters::FallbacksBefore: starts the frame with the
-  // fallbacks carried from the frame before that still apply.
-  void startFromFallbacksBefore();
+  // SmoothingParameters::FallbacksBefore: triangle t's level there (0 when
+  // none), and whether feature segment f was drawn straight there.
+  unsigned char rememberedLevel(Id t) const;
+  bool rememberedStraight(Id f) const;
+  // Draws by their chords the curved feature segments on t's sides that
+  // may be straightened (not on a seam) and that `straighten` accepts;
+  // adds every side of each to `changed`. True when it took any.
+  template<typename Accept>
+  bool straightenSideFeatures(Id t, std::vector<Id>& changed, Accept straighten);
   // SmoothingResult::Fallbacks, at the end of the frame.
   void listFallbacks();
   // Adds to `edges` the sides of silhouette triangle t whose silhouette
   // points its straight level puts on the straight edge: mixed sides that
   // are neither feature edges nor possible seams.
   void straightSidesOf(Id t, std::vector<Id>& edges) const;
-  // Whether feature segment f may be drawn by its chord as a fallback: no
-  // side of it may be a seam between pieces.
-  bool mayStraightenFeature(Id f) const;
   // The end of mixed edge e at which its silhouette point sits, when e
   // runs from an apex (apexSides: such edges' silhouette triangles,
   // sorted); -1 for any other edge.
@@ -419,10 +422,7 @@ private:
   std::vector<Id> Pinned;
   // Silhouette triangles put at StraightLevel at an apex, ascending.
   std::vector<Id> ApexStraight;
-  // FallbacksBefore when the frame started with them, else null; how many
-  // of them still applied.
-  const FoldFallbacks* CarriedFrom = nullptr;
-  std::size_t CarriedFallbacks = 0;
+  std::size_t ReusedFallbacks = 0; // SmoothingResult::ReusedFallbacks
 };
 
 } // namespace detail

@@ -38,7 +38,7 @@ enum class VisibilityMethod
 };
 
 /// The fold guard's fallbacks in force at the end of a frame
-/// (SmoothingResult::Fallbacks), for later frames to start with
+/// (SmoothingResult::Fallbacks), for the next frame of the same viewer
 /// (SmoothingParameters::FallbacksBefore). Lists ascending by id.
 struct FoldFallbacks
 {
@@ -47,10 +47,6 @@ struct FoldFallbacks
   std::vector<std::pair<Id, unsigned char>> Triangles;
   /// Feature segments drawn by their chords.
   std::vector<Id> FeatureSegments;
-  /// Points the perturbation leaves in place.
-  std::vector<Id> PinnedPoints;
-  /// How many more frames start with them; 0: none.
-  unsigned char FramesLeft = 0;
 };
 
 struct SmoothingParameters
@@ -160,23 +156,17 @@ struct SmoothingParameters
   const std::vector<Id>* SubpixelFeaturesBefore = nullptr;
   /// The fold guard's fallbacks of the frame before (its
   /// SmoothingResult::Fallbacks), when the caller keeps them (the mapper).
-  /// While they have frames left, the frame starts with those that still
-  /// apply (a triangle still on the silhouette and re-meshed, a segment
-  /// still curved) and checks for folds as any frame does; the fallbacks
-  /// it takes join them. Most of a coarse mesh's folds stay put from one
-  /// frame of an orbit to the next: without this every frame takes them
-  /// again, one round of re-meshing and checking per level (assimp's spider
-  /// took 2 to 4 rounds a frame), and a triangle whose curve folds every
-  /// other frame switches between curve and chord as often. Null: the frame
-  /// starts with none (the filter's output depends on its view alone).
+  /// The frame starts with none, as any frame does. A silhouette triangle
+  /// found folding goes at once to the level it had there, when that is
+  /// above the next level, and the feature segments beside it that were
+  /// drawn by their chords there are drawn so at once. A coarse mesh's folds
+  /// stay put from one frame of an orbit to the next; without this each
+  /// frame climbs to them again, one level a round (assimp's spider took 2 to
+  /// 4 rounds a frame). Nothing is kept that this frame does not need: a
+  /// triangle whose curve no longer folds is drawn curved, and a frame in
+  /// which nothing folds is the frame without them. Null: every triangle
+  /// climbs from the first level.
   const FoldFallbacks* FallbacksBefore = nullptr;
-  /// The frames that start with a frame's fallbacks when it carried none
-  /// (FoldFallbacks::FramesLeft); 0 carries none. All are dropped together
-  /// when those run out, and the next frame tries every curve again: one
-  /// still folding costs that frame a round, so trying a few each frame
-  /// would cost most frames one (on the spider, 1.7 rounds a frame against
-  /// 1.0 in an orbit of half-degree steps).
-  unsigned char FallbackKeepFrames = 8;
   /// Chain the silhouette into SmoothingResult::Polylines. Off when only the
   /// surface is wanted (the mapper): the triangles SkipSubpixelSmoothing
   /// leaves out then cost nothing past their test (their silhouette points,
@@ -260,14 +250,12 @@ struct SmoothingResult
   std::size_t UnresolvedFolds = 0;
   /// How many times the frame was re-meshed because of folds.
   std::size_t FoldGuardRounds = 0;
-  /// The fallbacks in force at the end of the frame, with the frames each
-  /// is still kept for (for SmoothingParameters::FallbacksBefore; those
-  /// taken at apexes and for sub-pixel strips are not listed: every frame
-  /// takes them anew). Empty without PreventFolds.
+  /// The fallbacks in force at the end of the frame but those at apexes
+  /// (for SmoothingParameters::FallbacksBefore). Empty without PreventFolds.
   FoldFallbacks Fallbacks;
-  /// Of the fallbacks counted above, those carried from FallbacksBefore
-  /// (triangles, segments and points).
-  std::size_t CarriedFallbacks = 0;
+  /// Fallbacks taken from FallbacksBefore: triangles raised to their level
+  /// there past the next one, and feature segments drawn straight with them.
+  std::size_t ReusedFallbacks = 0;
   /// Silhouette triangles at a cone's apex (PreparedMesh::apexes), re-meshed
   /// with the silhouette on their edges and chords; not counted above.
   std::size_t ApexTriangles = 0;

@@ -125,7 +125,7 @@ struct ViewPatch
   vtkIdType SubpixelTriangles = 0;
   vtkIdType SubpixelFeatureSegments = 0;
   vtkIdType FoldGuardRounds = 0;
-  vtkIdType CarriedFallbacks = 0;
+  vtkIdType ReusedFallbacks = 0;
   vtkIdType SilhouetteTriangles = 0;
   vtkIdType NewTriangles = 0;
 };
@@ -303,7 +303,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
     self->SubpixelTriangleCount = patch.SubpixelTriangles;
     self->SubpixelFeatureSegmentCount = patch.SubpixelFeatureSegments;
     self->FoldGuardRoundCount = patch.FoldGuardRounds;
-    self->CarriedFallbackCount = patch.CarriedFallbacks;
+    self->ReusedFallbackCount = patch.ReusedFallbacks;
     self->SilhouetteTriangleCount = patch.SilhouetteTriangles;
     self->NewTriangleCount = patch.NewTriangles;
   }
@@ -318,7 +318,7 @@ struct vtkSilhouetteSmoothingMapper::Internals
     patch.DrawsChanges = false;
     patch.ReplacedTriangles = patch.PatchTriangles = patch.CulledTriangles = 0;
     patch.SubpixelTriangles = patch.SubpixelFeatureSegments = 0;
-    patch.FoldGuardRounds = patch.CarriedFallbacks = 0;
+    patch.FoldGuardRounds = patch.ReusedFallbacks = 0;
     patch.SilhouetteTriangles = patch.NewTriangles = 0;
     patch.GeometryTime = this->Smoother->GetGeometryTime();
     if (!smooth || width <= 0 || height <= 0)
@@ -359,9 +359,9 @@ struct vtkSilhouetteSmoothingMapper::Internals
     {
       patch.FoldGuardRounds = static_cast<vtkIdType>(rounds->GetTuple1(0));
     }
-    if (vtkDataArray* carried = figures->GetArray("CarriedFallbackCount"))
+    if (vtkDataArray* reused = figures->GetArray("ReusedFallbackCount"))
     {
-      patch.CarriedFallbacks = static_cast<vtkIdType>(carried->GetTuple1(0));
+      patch.ReusedFallbacks = static_cast<vtkIdType>(reused->GetTuple1(0));
     }
     if (vtkDataArray* silhouette = figures->GetArray("SilhouetteTriangleCount"))
     {
@@ -551,7 +551,7 @@ void vtkSilhouetteSmoothingMapper::ClearFrameCounts()
   this->SubpixelTriangleCount = this->SilhouetteTriangleCount = this->NewTriangleCount = 0;
   this->SubpixelFeatureSegmentCount = 0;
   this->FoldGuardRoundCount = 0;
-  this->CarriedFallbackCount = 0;
+  this->ReusedFallbackCount = 0;
 }
 
 void vtkSilhouetteSmoothingMapper::MapDataArrayToVertexAttribute(
@@ -605,7 +605,7 @@ void vtkSilhouetteSmoothingMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SubpixelTriangleCount: " << this->SubpixelTriangleCount << "\n";
   os << indent << "SubpixelFeatureSegmentCount: " << this->SubpixelFeatureSegmentCount << "\n";
   os << indent << "FoldGuardRoundCount: " << this->FoldGuardRoundCount << "\n";
-  os << indent << "CarriedFallbackCount: " << this->CarriedFallbackCount << "\n";
+  os << indent << "ReusedFallbackCount: " << this->ReusedFallbackCount << "\n";
   os << indent << "SmoothingRunCount: " << this->SmoothingRunCount << "\n";
   os << indent << "SmoothingFilter:\n";
   this->Internal->Smoother->PrintSelf(os, indent.GetNextIndent());

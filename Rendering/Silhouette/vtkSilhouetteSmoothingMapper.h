@@ -24,7 +24,10 @@
  * changed since the last frame) and draws the replacements from a small
  * buffer of their own. The image is the filter's output drawn by a
  * vtkPolyDataMapper, but for rasterisation order (module test
- * TestSmoothingMapper). A change of the input's arrays alone (new scalars
+ * TestSmoothingMapper), and but for what each view's frames take from the
+ * frame before (the filter's SkipSubpixelSmoothing margin and
+ * ReuseFoldFallbacks: a triangle that folds again may keep the fallback it
+ * needed there). A change of the input's arrays alone (new scalars
  * on a still mesh) smooths nothing again: the mesh keeps its points and
  * normals, and each view's replacements take the new values as the
  * smoothing would have given them (module test TestSmoothingMapperUpdates).
@@ -106,10 +109,10 @@ public:
   vtkIdType GetSilhouetteTriangleCount() const { return this->SilhouetteTriangleCount; }
   vtkIdType GetNewTriangleCount() const { return this->NewTriangleCount; }
   /// How many times the fold guard re-meshed the frame again, and how many
-  /// of the frame's fold fallbacks it carried from this viewer's frame
-  /// before (the smoothing filter's FoldFallbackFrames).
+  /// fold fallbacks it took at once from this viewer's frame before (the
+  /// smoothing filter's ReuseFoldFallbacks).
   vtkIdType GetFoldGuardRoundCount() const { return this->FoldGuardRoundCount; }
-  vtkIdType GetCarriedFallbackCount() const { return this->CarriedFallbackCount; }
+  vtkIdType GetReusedFallbackCount() const { return this->ReusedFallbackCount; }
   ///@}
 
   /**
@@ -191,7 +194,7 @@ protected:
   vtkIdType SubpixelTriangleCount = 0;
   vtkIdType SubpixelFeatureSegmentCount = 0;
   vtkIdType FoldGuardRoundCount = 0;
-  vtkIdType CarriedFallbackCount = 0;
+  vtkIdType ReusedFallbackCount = 0;
   vtkIdType SilhouetteTriangleCount = 0;
   vtkIdType NewTriangleCount = 0;
   double LastPrepareSeconds = 0.0;

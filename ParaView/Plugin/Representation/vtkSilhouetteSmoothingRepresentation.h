@@ -56,7 +56,7 @@ public:
   void SetSilhouetteSamplingRule(int rule);
   void SetSilhouettePerturbVertices(bool perturb);
   void SetSilhouetteFoldPrevention(bool prevent);
-  void SetSilhouetteFoldFallbackFrames(int frames);
+  void SetSilhouetteReuseFoldFallbacks(bool reuse);
   void SetSilhouetteKeepApexesPointed(bool keep);
   void SetSilhouetteSkipSubpixelSmoothing(bool skip);
   void SetSilhouetteFeatureLines(bool use);

@@ -129,10 +129,10 @@ bool CheckCase(const MapperCase& c, vtkTexture* filterTexture, vtkTexture* mappe
   mapper->SetInputData(mesh);
   filter->SetOutputPointsPrecision(c.Precision);
   mapper->GetSmoothingFilter()->SetOutputPointsPrecision(c.Precision);
-  // The filter's requests carry no fold fallbacks from frame to frame; the
-  // mapper's carried ones are tested in core.SilhouetteSmoother and
-  // module.TestSmoothingMapperUpdates.
-  mapper->GetSmoothingFilter()->SetFoldFallbackFrames(0);
+  // The filter's requests reuse no fold fallbacks from frame to frame; the
+  // mapper's reuse is tested in core.SilhouetteSmoother and
+  // module.TestNoFolds.
+  mapper->GetSmoothingFilter()->ReuseFoldFallbacksOff();
   Configure(mapper, viaMapper.Actor, c.How, mapperTexture, mapperSecond);
   viaMapper.Actor->SetMapper(mapper);
   for (Scene* scene : { &viaFilter, &viaMapper })

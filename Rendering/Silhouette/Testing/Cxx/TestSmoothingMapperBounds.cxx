@@ -86,13 +86,13 @@ bool CheckMesh(const std::string& name, vtkPolyData* mesh, bool& leftInput)
   // Sub-pixel silhouettes are smoothed by both: the mapper keeps what it left
   // whole in its last frame while the filter's requests keep no history,
   // and this test is about the bounds of one and the same output. Likewise
-  // the fold fallbacks the mapper carries from frame to frame.
+  // the fold fallbacks the mapper reuses from frame to frame.
   vtkNew<vtkSilhouetteSmoothingFilter> filter;
   filter->SetInputData(mesh);
   filter->SetViewportSize(Size, Size);
   filter->FrustumCullingOn();
   mapper->GetSmoothingFilter()->SkipSubpixelSmoothingOff();
-  mapper->GetSmoothingFilter()->SetFoldFallbackFrames(0);
+  mapper->GetSmoothingFilter()->ReuseFoldFallbacksOff();
   double worst = 0.0; // how far the output reaches beyond the input's bounds
   int views = 0;
   bool ok = true;

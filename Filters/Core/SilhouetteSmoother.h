@@ -162,7 +162,8 @@ struct SmoothingParameters
   /// drawn by their chords there are drawn so at once. A coarse mesh's folds
   /// stay put from one frame of an orbit to the next; without this each
   /// frame climbs to them again, one level a round (assimp's spider took 2 to
-  /// 4 rounds a frame). Nothing is kept that this frame does not need: a
+  /// 4 rounds a frame). Only a triangle found folding in this frame takes
+  /// one (it may take a higher level than this frame alone would give it): a
   /// triangle whose curve no longer folds is drawn curved, and a frame in
   /// which nothing folds is the frame without them. Null: every triangle
   /// climbs from the first level.

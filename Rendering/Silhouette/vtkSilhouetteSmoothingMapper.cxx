@@ -604,9 +604,13 @@ void vtkSilhouetteSmoothingMapper::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CulledTriangleCount: " << this->CulledTriangleCount << "\n";
   os << indent << "SubpixelTriangleCount: " << this->SubpixelTriangleCount << "\n";
   os << indent << "SubpixelFeatureSegmentCount: " << this->SubpixelFeatureSegmentCount << "\n";
+  os << indent << "SilhouetteTriangleCount: " << this->SilhouetteTriangleCount << "\n";
+  os << indent << "NewTriangleCount: " << this->NewTriangleCount << "\n";
   os << indent << "FoldGuardRoundCount: " << this->FoldGuardRoundCount << "\n";
   os << indent << "ReusedFallbackCount: " << this->ReusedFallbackCount << "\n";
   os << indent << "SmoothingRunCount: " << this->SmoothingRunCount << "\n";
+  os << indent << "LastPrepareSeconds: " << this->LastPrepareSeconds << "\n";
+  os << indent << "LastSmoothingSeconds: " << this->LastSmoothingSeconds << "\n";
   os << indent << "SmoothingFilter:\n";
   this->Internal->Smoother->PrintSelf(os, indent.GetNextIndent());
 }

@@ -11,9 +11,6 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 
 namespace silsmooth
 {
@@ -321,12 +318,10 @@ public:
 
   FoldFindings run(const FoldGuardParallelFor& parallelFor)
   {
-    auto T0 = std::chrono::steady_clock::now();
     this->collectItems(parallelFor);
     this->placeItems();
     this->chooseItemsToCheck(parallelFor);
     this->judgeItems(parallelFor);
-    if (std::getenv("SIL_DBG")) std::fprintf(stderr, "CHECK %s %.3f\n", this->Frame.CheckSources ? "partial" : "whole", std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - T0).count());
     return this->findings();
   }
 

@@ -421,6 +421,30 @@ namespace
 // A coarse sphere whose normals are turned by up to `degrees` at random
 // (fixed seed): what a coarse real mesh's estimated normals look like, and
 // enough to make the re-meshing fold from some views.
+// Appends a unit sphere of `rings` x `sectors`, halved and centred at
+// (1.6, 0, 0): a coarse sphere beside the unit sphere at the origin; and,
+// when given, its exact normals (the unit sphere's points) to `normals`.
+void appendHalfSphereBeside(int rings, int sectors, std::vector<glm::dvec3>& points,
+  std::vector<Triangle>& triangles, std::vector<glm::dvec3>* normals = nullptr)
+{
+  std::vector<glm::dvec3> coarsePoints;
+  std::vector<Triangle> coarseTriangles;
+  coretest::unitSphere(rings, sectors, coarsePoints, coarseTriangles);
+  const Id offset = static_cast<Id>(points.size());
+  for (const glm::dvec3& p : coarsePoints)
+  {
+    points.push_back(0.5 * p + glm::dvec3(1.6, 0.0, 0.0));
+    if (normals)
+    {
+      normals->push_back(p);
+    }
+  }
+  for (const Triangle& t : coarseTriangles)
+  {
+    triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
+  }
+}
+
 PreparedMesh noisySphere(double degrees, int rings = 8, int sectors = 12)
 {
   std::vector<glm::dvec3> points;
@@ -1037,20 +1061,7 @@ TEST(SilhouetteSmoother, SubpixelSmoothingIsLeftOutWhereItMovesNothingByTheToler
   // smoothed, and the output is closed, with no T-junction.
   std::vector<glm::dvec3> both = points;
   std::vector<Triangle> bothTriangles = triangles;
-  {
-    std::vector<glm::dvec3> coarsePoints;
-    std::vector<Triangle> coarseTriangles;
-    coretest::unitSphere(8, 16, coarsePoints, coarseTriangles);
-    const Id offset = static_cast<Id>(both.size());
-    for (const glm::dvec3& p : coarsePoints)
-    {
-      both.push_back(0.5 * p + glm::dvec3(1.6, 0.0, 0.0));
-    }
-    for (const Triangle& t : coarseTriangles)
-    {
-      bothTriangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
-    }
-  }
+  appendHalfSphereBeside(8, 16, both, bothTriangles);
   std::vector<glm::dvec3> bothNormals = points;
   for (std::size_t i = points.size(); i < both.size(); ++i)
   {
@@ -1542,21 +1553,7 @@ TEST(SilhouetteSmoother, SampleBudgetLeavesTheShareOfSegmentsThatWantFewToTheOth
   std::vector<Triangle> triangles;
   coretest::unitSphere(48, 96, points, triangles);
   std::vector<glm::dvec3> normals = points;
-  {
-    std::vector<glm::dvec3> coarsePoints;
-    std::vector<Triangle> coarseTriangles;
-    coretest::unitSphere(6, 12, coarsePoints, coarseTriangles);
-    const Id offset = static_cast<Id>(points.size());
-    for (const glm::dvec3& p : coarsePoints)
-    {
-      points.push_back(0.5 * p + glm::dvec3(1.6, 0.0, 0.0));
-      normals.push_back(p);
-    }
-    for (const Triangle& t : coarseTriangles)
-    {
-      triangles.push_back({ t[0] + offset, t[1] + offset, t[2] + offset });
-    }
-  }
+  appendHalfSphereBeside(6, 12, points, triangles, &normals);
   const PreparedMesh pair(points, triangles, normals);
   const ViewGeometry close = realPerspective(glm::dvec3(0.8, 0.5, 3.0), 1024, 768);
   SmoothingParameters fine; // a tenth of a pixel: the coarse segments want dozens

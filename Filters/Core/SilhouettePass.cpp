@@ -128,7 +128,6 @@ void SilhouettePass::straightenAtApexes()
       continue;
     }
     this->Levels[t] = StraightLevel;
-    this->ApexStraight.push_back(t); // Silhouette is ascending
     ++this->ApexTriangles;
     this->straightSidesOf(t, this->StraightEdges);
   }
@@ -197,17 +196,12 @@ bool SilhouettePass::straightenSideFeatures(Id t, std::vector<Id>& changed, Acce
   return taken;
 }
 
-// Every fallback in force but those at apexes.
+// Every fallback in force. Those at apexes are listed too: such a triangle
+// starts the next frame straight, so its remembered level is never read.
 void SilhouettePass::listFallbacks()
 {
   FoldFallbacks& out = this->Result.Fallbacks;
-  for (const auto& level : this->Levels)
-  {
-    if (!std::binary_search(this->ApexStraight.begin(), this->ApexStraight.end(), level.first))
-    {
-      out.Triangles.push_back(level);
-    }
-  }
+  out.Triangles.assign(this->Levels.begin(), this->Levels.end());
   std::sort(out.Triangles.begin(), out.Triangles.end());
   out.FeatureSegments = this->StraightFeatures;
 }
@@ -372,19 +366,17 @@ bool SilhouettePass::takeFallbacks(const FoldFindings& findings, std::vector<Id>
       // the other sides of the crease sample too, and those on a seam
       // between pieces stay on the curve, which the piece across computes
       // too (it cannot know of this fallback).
-      std::vector<Id> sides;
-      this->straightSidesOf(t, sides);
-      for (const Id e : sides)
-      {
-        if (!std::binary_search(this->StraightEdges.begin(), this->StraightEdges.end(), e))
-        {
-          newEdges.push_back(e);
-        }
-      }
+      this->straightSidesOf(t, newEdges);
     }
   }
   std::sort(newEdges.begin(), newEdges.end());
   newEdges.erase(std::unique(newEdges.begin(), newEdges.end()), newEdges.end());
+  newEdges.erase(std::remove_if(newEdges.begin(), newEdges.end(),
+                   [this](Id e) {
+                     return std::binary_search(
+                       this->StraightEdges.begin(), this->StraightEdges.end(), e);
+                   }),
+    newEdges.end());
   if (!newEdges.empty())
   {
     // The triangles across them share the points (both are silhouette

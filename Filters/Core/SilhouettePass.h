@@ -420,8 +420,6 @@ private:
   std::size_t CrowdedTriangles = 0; // sent straight untested (FoldGuard.h)
   std::vector<Id> StraightFeatures;
   std::vector<Id> Pinned;
-  // Silhouette triangles put at StraightLevel at an apex, ascending.
-  std::vector<Id> ApexStraight;
   std::size_t ReusedFallbacks = 0; // SmoothingResult::ReusedFallbacks
 };
 

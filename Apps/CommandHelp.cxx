@@ -20,12 +20,12 @@ Commands:
   smooth INPUT [-o OUTPUT] [--lines-output LINES.vtp] [--json] [camera options]
       smooth the silhouette of INPUT for one view, optionally write the
       result, and print figures about it
-  render INPUT -o IMAGE.png|DRAWING.svg [--style STYLE] [--no-smoothing]
-         [--hidden none|dashed] [--width-by-depth] [--join-lines] [--lod]
-         [--json] [camera options]
-  render INPUT --style STYLE --progressive N [--svg] -o DIR [options]
-      render INPUT offscreen to a PNG image (or a line style to an SVG
-      drawing, or N drawings along its progressive mesh) and print the
+  render INPUT -o IMAGE.png|DRAWING.svg|DRAWING.pdf [--style STYLE]
+         [--no-smoothing] [--hidden none|dashed] [--width-by-depth]
+         [--join-lines] [--lod] [--json] [camera options]
+  render INPUT --style STYLE --progressive N [--svg|--pdf] -o DIR [options]
+      render INPUT offscreen to a PNG image (or a line style to an SVG or
+      PDF drawing, or N drawings along its progressive mesh) and print the
       same figures
   generate sphere|torus -o OUTPUT [shape options]
       write an analytic test mesh with exact normals
@@ -108,11 +108,11 @@ Options:
 
 std::string RenderHelp()
 {
-  return R"(Usage: silhouette render INPUT -o IMAGE.png|DRAWING.svg [--style STYLE]
-                        [--no-smoothing] [--hidden none|dashed]
+  return R"(Usage: silhouette render INPUT -o IMAGE.png|DRAWING.svg|DRAWING.pdf
+                        [--style STYLE] [--no-smoothing] [--hidden none|dashed]
                         [--width-by-depth] [--join-lines] [--lod] [--json]
                         [camera options]
-       silhouette render INPUT --style STYLE --progressive N [--svg] -o DIR
+       silhouette render INPUT --style STYLE --progressive N [--svg|--pdf] -o DIR
                         [the same options]
 
 Reads INPUT like 'silhouette smooth', smooths its silhouette for the view of
@@ -120,9 +120,10 @@ the camera options, renders it offscreen at --size with that same camera
 (no multisampling, so images are repeatable), writes a PNG image and prints
 the same figures as 'silhouette smooth'. Where there is no X display it
 renders through OSMesa (--backend). The line styles can also be written as
-an SVG drawing: the same visible lines as paths in image coordinates
-(pixels from the top-left corner, one path per visible piece), projected
-with the same camera and nothing rendered, so no display is needed. For a
+an SVG or PDF drawing: the same visible lines as paths in image coordinates
+(pixels from the top-left corner, one path per visible piece; a PDF page
+is the image's size at 96 pixels to the inch), projected with the same
+camera and nothing rendered, so no display is needed. For a
 pen plotter, each stretch of line is drawn once (of lines running within
 three quarters of a line's width of each other, one keeps it), the lines
 are clipped to the image, and the paths come in a short pen order from the
@@ -130,8 +131,8 @@ top-left corner.
 
 Options:
   -o, --output FILE       the image to write; required: a .png, or an .svg
-                          with a line style (lines, charcoal, lazy, hand,
-                          rough)
+                          or .pdf drawing with a line style (lines,
+                          charcoal, lazy, hand, rough)
   --style STYLE           what to draw (default: shaded):
                           shaded        the smoothed mesh in light grey on
                                         white, Phong shading with the
@@ -183,16 +184,16 @@ Options:
                           smoothing.
   --hidden none|dashed    the parts of the lines the surface hides: left out
                           (none), or drawn grey, dashed and thinner (dashed):
-                          in an SVG drawing with any line style, in a PNG
+                          in a drawing with any line style, in a PNG
                           image with --style lines only (default: none)
-  --width-by-depth        in an SVG drawing, each visible line's width
+  --width-by-depth        in a drawing, each visible line's width
                           follows its distance from the eye: 2 pixels at the
                           focal point's distance, times that distance over
                           the point's, within 0.5 to 8 pixels; each line is
                           then a filled outline, not a stroke (a pen
                           plotter traces its two sides) (default: 2 pixels
                           everywhere, stroked)
-  --join-lines            in an SVG drawing, lines that meet end to end are
+  --join-lines            in a drawing, lines that meet end to end are
                           one path, whatever their kinds (where more meet,
                           the two that continue each other most straightly),
                           so a pen plotter lifts its pen, and inks the
@@ -215,14 +216,14 @@ Options:
                           geometrically, each smoothed and its hidden lines
                           removed, all from the camera that frames INPUT;
                           -o names a directory (made if missing, not its
-                          parents; a name ending in .png or .svg is
+                          parents; a name ending in .png, .svg or .pdf is
                           refused) that gets sketch-01.png ... sketch-NN.png,
                           and one line of figures per drawing (a JSON array
                           with --json); drawings numbered past NN of an
                           earlier run are left there, with a warning
                           (default: one drawing)
-  --svg                   with --progressive, write sketch-NN.svg drawings
-                          (default: PNG images)
+  --svg, --pdf            with --progressive, write sketch-NN.svg or
+                          sketch-NN.pdf drawings (default: PNG images)
   --lines-output FILE     also write the smoothed silhouette polylines to
                           FILE, a .vtp (default: nothing is written)
   --json                  print the figures as one JSON object instead of text

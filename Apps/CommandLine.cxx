@@ -302,10 +302,16 @@ RenderOptions ParseRender(
     {
       render.ProgressiveLevels = ParseCount(option, args.TakeValue(option), 2, 64);
     }
-    else if (option.Name == "--svg")
+    else if (option.Name == "--svg" || option.Name == "--pdf")
     {
       RejectInlineValue(option);
-      render.ProgressiveSvg = true;
+      const std::string format = option.Name.substr(2);
+      if (render.ProgressiveFormat != "png" && render.ProgressiveFormat != format)
+      {
+        throw UsageError("options '--svg' and '--pdf' do not go together: the sketch's "
+                         "drawings are of one kind");
+      }
+      render.ProgressiveFormat = format;
     }
     else
     {
@@ -317,26 +323,27 @@ RenderOptions ParseRender(
   {
     throw UsageError(render.ProgressiveLevels > 0
         ? "'render --progressive' needs '-o DIR'"
-        : "'render' needs '-o IMAGE.png' or '-o DRAWING.svg'");
+        : "'render' needs '-o IMAGE.png', '-o DRAWING.svg' or '-o DRAWING.pdf'");
   }
   // -o of --progressive is a folder; one named like an image became a folder
   // called x.png.
   const std::string outputExtension = LowercaseExtension(render.Output);
-  if (render.ProgressiveLevels > 0 && (outputExtension == ".png" || outputExtension == ".svg"))
+  if (render.ProgressiveLevels > 0 &&
+    (outputExtension == ".png" || outputExtension == ".svg" || outputExtension == ".pdf"))
   {
-    throw UsageError("with '--progressive', -o names a folder for the drawings (sketch-01" +
-      std::string(render.ProgressiveSvg ? ".svg" : ".png") + ", ...), not an image: '" +
-      render.Output + "'");
+    throw UsageError("with '--progressive', -o names a folder for the drawings (sketch-01." +
+      render.ProgressiveFormat + ", ...), not an image: '" + render.Output + "'");
   }
   if (render.Lod && render.ProgressiveLevels > 0)
   {
     throw UsageError("option '--lod' does not go with '--progressive' (each drawing is one "
                      "level of the progressive mesh already)");
   }
-  if (render.ProgressiveSvg && render.ProgressiveLevels == 0)
+  if (render.ProgressiveFormat != "png" && render.ProgressiveLevels == 0)
   {
-    throw UsageError("option '--svg' goes with '--progressive'; for one drawing write "
-                     "'-o DRAWING.svg'");
+    throw UsageError("option '--" + render.ProgressiveFormat +
+      "' goes with '--progressive'; for one drawing write '-o DRAWING." + render.ProgressiveFormat +
+      "'");
   }
   return options;
 }

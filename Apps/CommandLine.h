@@ -45,18 +45,19 @@ struct RenderOptions
   std::optional<std::string> LinesOutput; ///< the silhouette polylines (.vtp)
   RenderStyle Style = RenderStyle::Shaded;
   bool NoSmoothing = false;
-  bool HiddenLines = false;  ///< --hidden dashed: the hidden parts too (grey; dashed in SVG)
-  bool WidthByDepth = false; ///< SVG: lines thinner away from the eye
-  bool JoinLines = false;    ///< SVG: lines that meet end to end joined into one path
+  bool HiddenLines = false;  ///< --hidden dashed: the hidden parts too (grey; dashed in drawings)
+  bool WidthByDepth = false; ///< SVG or PDF: lines thinner away from the eye
+  bool JoinLines = false;    ///< SVG or PDF: lines that meet end to end joined into one path
   bool Lod = false;          ///< refine the input for the view first (LevelOfDetail.h)
   /// --progressive N: N drawings along the progressive mesh into the folder
-  /// Output (0: one drawing); --svg: as SVG drawings.
+  /// Output (0: one drawing), as PNG images, or with --svg or --pdf as
+  /// those drawings ("png", "svg" or "pdf").
   int ProgressiveLevels = 0;
-  bool ProgressiveSvg = false;
+  std::string ProgressiveFormat = "png";
   bool Json = false;
   CameraOptions Camera;
   /// The command line as given ("silhouette render ...", words quoted as a
-  /// shell would need): an SVG drawing's title.
+  /// shell would need): a drawing's title.
   std::string CommandText;
 };
 

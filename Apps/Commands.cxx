@@ -10,6 +10,7 @@
 #include "Rendering.h"
 #include "Smoothing.h"
 #include "TextFormat.h"
+#include "VectorDrawing.h"
 #include "VtkErrorLog.h"
 
 #include <vtkCellArray.h>
@@ -255,19 +256,21 @@ void RunProgressiveSketch(const RenderOptions& options)
       NameOf(options.Style) + "'");
   }
   // The single drawing's checks (CheckRenderOutputPath), for a folder of
-  // PNG drawings or of SVG ones (--svg).
-  if (!options.ProgressiveSvg && options.WidthByDepth)
+  // PNG drawings or of SVG or PDF ones (--svg, --pdf).
+  const bool vector = options.ProgressiveFormat != "png";
+  if (!vector && options.WidthByDepth)
   {
-    throw UsageError("--width-by-depth needs SVG drawings; add --svg to --progressive");
+    throw UsageError("--width-by-depth needs SVG or PDF drawings; add --svg or --pdf to "
+                     "--progressive");
   }
-  if (!options.ProgressiveSvg && options.JoinLines)
+  if (!vector && options.JoinLines)
   {
-    throw UsageError("--join-lines needs SVG drawings; add --svg to --progressive");
+    throw UsageError("--join-lines needs SVG or PDF drawings; add --svg or --pdf to --progressive");
   }
-  if (!options.ProgressiveSvg && options.HiddenLines && options.Style != RenderStyle::Lines)
+  if (!vector && options.HiddenLines && options.Style != RenderStyle::Lines)
   {
     throw UsageError("--hidden dashed draws the hidden lines of '--style lines' in PNG drawings "
-                     "(of any line style with --svg), not of '" +
+                     "(of any line style with --svg or --pdf), not of '" +
       std::string(NameOf(options.Style)) + "'");
   }
   if (options.LinesOutput)
@@ -275,11 +278,11 @@ void RunProgressiveSketch(const RenderOptions& options)
     throw UsageError("option '--lines-output' does not go with '--progressive' (its drawings "
                      "are of many meshes)");
   }
-  if (!options.ProgressiveSvg)
+  if (!vector)
   {
     RequireDisplay();
   }
-  const std::string extension = options.ProgressiveSvg ? "svg" : "png";
+  const std::string& extension = options.ProgressiveFormat;
   PrepareSketchFolder(options.Output, options.ProgressiveLevels, extension);
   vtkSmartPointer<vtkPolyData> mesh = ReadMeshWithTriangles(options.Input);
   vtkNew<vtkProgressiveMeshFilter> progressive;
@@ -325,10 +328,10 @@ void RunProgressiveSketch(const RenderOptions& options)
     {
       PrintWarnings(run);
     }
-    if (options.ProgressiveSvg)
+    if (vector)
     {
       WarnIfBlank(
-        RenderToSvg(view, run.Filter, levelMesh, levelOptions), levelOptions.Output, levelMesh);
+        RenderToDrawing(view, run.Filter, levelMesh, levelOptions), levelOptions.Output, levelMesh);
     }
     else
     {
@@ -377,13 +380,13 @@ void RunRender(const RenderOptions& options)
     CheckLinesOutputPath(*options.LinesOutput);
     RefuseOverwritingModelOrInput(options.Input, *options.LinesOutput, "--lines-output");
   }
-  const bool svg = IsSvgPath(options.Output);
-  if (!svg)
+  const bool drawing = IsVectorDrawingPath(options.Output);
+  if (!drawing)
   {
-    RequireDisplay(); // an SVG drawing is projected, not rendered
+    RequireDisplay(); // a drawing is projected, not rendered
   }
   vtkSmartPointer<vtkPolyData> mesh = ReadMeshWithTriangles(options.Input);
-  if (!svg)
+  if (!drawing)
   {
     WarnIfTooSmallOrLargeToDraw(mesh->GetBounds());
   }
@@ -405,9 +408,9 @@ void RunRender(const RenderOptions& options)
   PrintWarnings(run);
   // Both files or neither: one that cannot be written leaves the other as it was.
   FileBatch outputs;
-  if (svg)
+  if (drawing)
   {
-    WarnIfBlank(RenderToSvg(view, run.Filter, mesh, options, &outputs), options.Output, mesh);
+    WarnIfBlank(RenderToDrawing(view, run.Filter, mesh, options, &outputs), options.Output, mesh);
   }
   else
   {

@@ -5,7 +5,7 @@
 #include "MeshIO.h"
 #include "RenderingBackend.h"
 #include "Smoothing.h"
-#include "SvgDrawing.h"
+#include "VectorDrawing.h"
 #include "VtkErrorLog.h"
 
 #include <vtkActor.h>
@@ -508,11 +508,6 @@ void CheckImageOutputPath(const std::string& path)
   RequireOutputDirectory(path);
 }
 
-bool IsSvgPath(const std::string& path)
-{
-  return LowercaseExtension(path) == ".svg";
-}
-
 bool IsLineStyle(RenderStyle style)
 {
   return style != RenderStyle::Shaded && style != RenderStyle::Wireframe &&
@@ -522,34 +517,34 @@ bool IsLineStyle(RenderStyle style)
 void CheckRenderOutputPath(const RenderOptions& options)
 {
   const bool lineStyle = IsLineStyle(options.Style);
-  if (!IsSvgPath(options.Output))
+  if (!IsVectorDrawingPath(options.Output))
   {
     if (LowercaseExtension(options.Output) != ".png")
     {
       throw UsageError("cannot write '" + options.Output +
-        "': the image must be a .png file, or an .svg file with a line style");
+        "': the image must be a .png file, or an .svg or .pdf drawing with a line style");
     }
     if (options.WidthByDepth)
     {
-      throw UsageError("--width-by-depth needs an .svg output; '" + options.Output +
+      throw UsageError("--width-by-depth needs an .svg or .pdf drawing; '" + options.Output +
         "' is a PNG image, whose lines have one width");
     }
     if (options.JoinLines)
     {
-      throw UsageError("--join-lines needs an .svg output; '" + options.Output +
+      throw UsageError("--join-lines needs an .svg or .pdf drawing; '" + options.Output +
         "' is a PNG image, which has no paths to join");
     }
     if (options.HiddenLines && options.Style != RenderStyle::Lines)
     {
       throw UsageError("--hidden dashed draws the hidden lines of '--style lines' in a PNG "
-                       "image (of any line style in an .svg drawing), not of '" +
+                       "image (of any line style in an .svg or .pdf drawing), not of '" +
         std::string(NameOf(options.Style)) + "'");
     }
   }
   else if (!lineStyle)
   {
     throw UsageError("cannot write '" + options.Output +
-      "': an .svg drawing needs a line style "
+      "': a drawing (.svg or .pdf) needs a line style "
       "(lines, charcoal, lazy, hand or rough), not '" +
       NameOf(options.Style) + "'");
   }
@@ -602,7 +597,7 @@ bool RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   return WriteWindowPng(view.Window, options.Output, batch);
 }
 
-bool RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
+bool RenderToDrawing(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
   vtkPolyData* input, const RenderOptions& options, FileBatch* batch)
 {
   VtkErrorLog& errors = VtkErrorLog::Instance();
@@ -633,7 +628,7 @@ bool RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
       lines.push_back(std::move(line));
     }
   }
-  SvgStyle style;
+  DrawingStyle style;
   style.Width = options.Camera.ViewportSize[0];
   style.Height = options.Camera.ViewportSize[1];
   style.WidthByDepth = options.WidthByDepth;
@@ -645,7 +640,7 @@ bool RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   // Blank: no visible line crosses the image (a line through it may have
   // no point in it).
   std::size_t visiblePaths = 0;
-  const std::string document = SvgDocument(lines, style, &visiblePaths);
+  const std::string document = VectorDocument(options.Output, lines, style, &visiblePaths);
   const bool blank = visiblePaths == 0;
   if (batch)
   {

@@ -34,11 +34,9 @@ OffscreenView MakeOffscreenView(const std::array<int, 2>& size);
 /// RuntimeError when its folder is missing.
 void CheckImageOutputPath(const std::string& path);
 
-/// Whether `path` ends in .svg (any letter case).
-bool IsSvgPath(const std::string& path);
-
-/// `render`'s output: a .png, or an .svg with a line style; throws
-/// UsageError otherwise, for --width-by-depth or --join-lines without an .svg and for
+/// `render`'s output: a .png, or an .svg or .pdf drawing with a line style;
+/// throws UsageError otherwise, for --width-by-depth or --join-lines
+/// without a drawing and for
 /// --hidden dashed in a PNG of a style other than lines (all options that
 /// do not go together), RuntimeError when the folder is missing.
 void CheckRenderOutputPath(const RenderOptions& options);
@@ -94,14 +92,15 @@ bool RenderToPng(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter
   vtkPolyData* input, const RenderOptions& options, FileBatch* batch = nullptr);
 
 /**
- * Writes the line style `options.Style` as an SVG drawing (SvgDrawing.h):
+ * Writes the line style `options.Style` as an SVG or PDF drawing, as
+ * `options.Output` names it (VectorDrawing.h):
  * the visible lines (or, for the brushes, their strokes) projected with the
  * view's camera, and with `options.HiddenLines` the hidden pieces, dashed.
  * Nothing is rendered: no display is needed. Throws RuntimeError on any VTK
  * error or a failed write. With a `batch`, the file is added to it.
  * Returns whether no visible line has a point in the image (a blank drawing).
  */
-bool RenderToSvg(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
+bool RenderToDrawing(const OffscreenView& view, vtkSilhouetteSmoothingFilter* filter,
   vtkPolyData* input, const RenderOptions& options, FileBatch* batch = nullptr);
 
 } // namespace cli

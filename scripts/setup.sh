@@ -8,7 +8,7 @@ here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${SILHOUETTE_BUILD_DIR:-$here/build}"
 
 packages=(cmake make g++ pkg-config libvtk9-dev python3-dev libglm-dev libosd-dev libosmesa6-dev libx11-dev libgtest-dev assimp-testmodels
-  librsvg2-bin xvfb xauth)
+  librsvg2-bin poppler-utils xvfb xauth)
 
 # shellcheck source=packages.sh
 source "$here/scripts/packages.sh"

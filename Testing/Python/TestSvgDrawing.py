@@ -40,6 +40,7 @@ import sys
 import xml.etree.ElementTree as ElementTree
 
 import cli_checks  # beside this script
+import drawing_checks  # beside this script
 from vtkmodules.vtkFiltersCore import vtkAppendPolyData
 from vtkmodules.vtkFiltersSources import vtkCubeSource
 from vtkmodules.vtkIOImage import vtkPNGReader
@@ -68,28 +69,12 @@ def paths(svg_file):
 
 
 def ink(png_file):
-    """The pixels darker than light grey in any channel, as a set of (x, y)."""
-    reader = vtkPNGReader()
-    reader.SetFileName(png_file)
-    reader.Update()
-    image = reader.GetOutput()
-    width, height, _ = image.GetDimensions()
-    scalars = image.GetPointData().GetScalars()
-    components = min(3, scalars.GetNumberOfComponents())
-    dark = set()
-    for i in range(width * height):
-        if min(scalars.GetComponent(i, c) for c in range(components)) < 200:
-            dark.add((i % width, i // width))
-    return dark
+    return drawing_checks.ink(png_file)
 
 
 def stray(a, b):
     """The share of a's pixels farther than RADIUS (in x and y) from any of b's."""
-    if not a:
-        return 1.0
-    near = {(x + dx, y + dy) for (x, y) in b
-            for dx in range(-RADIUS, RADIUS + 1) for dy in range(-RADIUS, RADIUS + 1)}
-    return sum(1 for p in a if p not in near) / len(a)
+    return drawing_checks.stray(a, b, RADIUS)
 
 
 def visible_pieces(mesh_file, camera_json, size):
@@ -167,13 +152,8 @@ if not failures:
         compare_raster("torus", svg_file, hidden_file, png_file)
 
 # --- The cube: its 9 visible edges ---------------------------------------------
-cube_file = os.path.join(work, "cube.vtp")
-cube = vtkCubeSource()
-writer = vtkXMLPolyDataWriter()
-writer.SetInputConnection(cube.GetOutputPort())
-writer.SetFileName(cube_file)
-writer.Write()
-cube_view = ["--style", "lines", "--size", "400x400", "--camera-position", "2.5", "1.85", "2.15"]
+cube_file = drawing_checks.write_cube(work)
+cube_view = drawing_checks.CUBE_VIEW
 cube_svg, cube_hidden, cube_png = (os.path.join(work, name)
                                    for name in ("cube.svg", "cube_hidden.svg", "cube.png"))
 code, _, err = run("render", cube_file, *cube_view, "-o", cube_hidden, "--hidden", "dashed")
@@ -388,7 +368,7 @@ if os.path.exists(wuson_drawing):
         check(segments(wuson_joined) == segments(wuson_drawing),
               "joined, the Wuson draws the same segments")
 code, _, err = run("render", cube_file, *cube_view, "-o", os.path.join(work, "joined.png"), "--join-lines")
-check(code == 2 and "--join-lines needs an .svg output" in err, "--join-lines with a PNG is refused")
+check(code == 2 and "--join-lines needs an .svg or .pdf drawing" in err, "--join-lines with a PNG is refused")
 
 # A closed path (its last point its first) is entered at its point nearest
 # the pen, where the last path left it (a plotter's pen rests at the top-left
@@ -511,11 +491,11 @@ check(code == 2 and "'--svg' goes with '--progressive'" in err, "--svg alone is 
 code, _, err = run("render", torus, "--style", "lines", "--progressive", "1", "-o", work)
 check(code == 2, "--progressive 1 is refused (2 to 64)")
 code, _, err = run("render", torus, "-o", os.path.join(work, "shaded.svg"))
-check(code == 2 and "an .svg drawing needs a line style" in err and err.count("\n") == 1,
+check(code == 2 and "a drawing (.svg or .pdf) needs a line style" in err and err.count("\n") == 1,
       "an .svg with the shaded style is refused in one line")
 code, _, err = run("render", torus, "--style", "lines", "--width-by-depth",
                    "-o", os.path.join(work, "depth.png"))
-check(code == 2 and "--width-by-depth needs an .svg output" in err,
+check(code == 2 and "--width-by-depth needs an .svg or .pdf drawing" in err,
       "--width-by-depth with a PNG is refused")
 code, _, err = run("render", torus, "--style", "lines", "--hidden", "dotted",
                    "-o", os.path.join(work, "dotted.svg"))

@@ -1,6 +1,7 @@
-#include "SvgDrawing.h"
+#include "VectorDrawing.h"
 
 #include "DrawingOverlaps.h"
+#include "MeshIO.h"
 #include "PathJoining.h"
 #include "PenOrder.h"
 
@@ -195,7 +196,8 @@ DrawnLine AsWritten(const DrawnLine& line)
 // over each other were drawn once, a line stops up to one and a half widths
 // from the line it meets, and square ends left white breaks there (a user's
 // trial).
-std::string OutlinePath(const DrawnLine& line, const std::vector<double>& halfWidths)
+std::vector<std::array<double, 2>> OutlinePolygon(
+  const DrawnLine& line, const std::vector<double>& halfWidths)
 {
   const std::size_t n = line.Points.size();
   std::vector<std::array<double, 2>> left(n);
@@ -228,7 +230,8 @@ std::string OutlinePath(const DrawnLine& line, const std::vector<double>& halfWi
   }
   // Half a circle about an end, from its left side to its right, bulging
   // along `forward`.
-  const auto cap = [&](std::size_t i, double sign, std::string& d) {
+  std::vector<std::array<double, 2>> outline;
+  const auto cap = [&](std::size_t i, double sign) {
     const std::array<double, 2> normal = sign > 0.0 ? normalOf(n - 2, n - 1) : normalOf(0, 1);
     const std::array<double, 2> forward{ sign * normal[1], -sign * normal[0] };
     const double r = halfWidths[i];
@@ -236,24 +239,15 @@ std::string OutlinePath(const DrawnLine& line, const std::vector<double>& halfWi
     {
       const double a = degrees * vtkMath::Pi() / 180.0;
       const double side = sign * std::sin(a); // left at +90 degrees on the way out
-      AppendPoint(d, 'L',
-        { line.Points[i][0] + r * (side * normal[0] + std::cos(a) * forward[0]),
-          line.Points[i][1] + r * (side * normal[1] + std::cos(a) * forward[1]) });
+      outline.push_back({ line.Points[i][0] + r * (side * normal[0] + std::cos(a) * forward[0]),
+        line.Points[i][1] + r * (side * normal[1] + std::cos(a) * forward[1]) });
     }
   };
-  std::string d;
-  for (std::size_t i = 0; i < n; ++i)
-  {
-    AppendPoint(d, i == 0 ? 'M' : 'L', left[i]);
-  }
-  cap(n - 1, 1.0, d);
-  for (std::size_t i = n; i-- > 0;)
-  {
-    AppendPoint(d, 'L', right[i]);
-  }
-  cap(0, -1.0, d);
-  d += 'Z';
-  return d;
+  outline.insert(outline.end(), left.begin(), left.end());
+  cap(n - 1, 1.0);
+  outline.insert(outline.end(), right.rbegin(), right.rend());
+  cap(0, -1.0);
+  return outline;
 }
 
 std::string PolylinePath(const DrawnLine& line)
@@ -384,7 +378,7 @@ DrawnLine PieceOf(
 // visible before the hidden, then by kind (KindRank), then the longer, keeps
 // the stretch; specks up to one and a half widths long on ink already there
 // are left out. A brush's strokes overlap by design and are kept as they are.
-std::vector<DrawnLine> OnceEach(const std::vector<DrawnLine>& lines, const SvgStyle& style)
+std::vector<DrawnLine> OnceEach(const std::vector<DrawnLine>& lines, const DrawingStyle& style)
 {
   std::vector<DrawnLine> inside;
   {
@@ -589,31 +583,21 @@ std::vector<DrawnLine> ProjectLines(vtkPolyData* lines, vtkRenderer* renderer, b
   return drawn;
 }
 
-std::string SvgDocument(
-  const std::vector<DrawnLine>& lines, const SvgStyle& style, std::size_t* visiblePaths)
+namespace
 {
-  std::string svg;
-  svg += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
-    std::to_string(style.Width) + "\" height=\"" + std::to_string(style.Height) +
-    "\" viewBox=\"0 0 " + std::to_string(style.Width) + " " + std::to_string(style.Height) +
-    "\">\n";
-  if (!style.Title.empty())
-  {
-    svg += "<title>" + EscapeXml(style.Title) + "</title>\n";
-  }
-  svg += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
 
-  std::string width;
-  AppendNumber(width, style.LineWidth);
-  std::string hiddenWidth;
-  AppendNumber(hiddenWidth, 0.75 * style.LineWidth);
-  std::string dash;
-  AppendNumber(dash, 3.0 * style.LineWidth);
-  // The hidden lines first: the visible ones are drawn over them where
-  // they cross.
-  svg += "<g id=\"hidden\" fill=\"none\" stroke=\"#999999\" stroke-width=\"" + hiddenWidth +
-    "\" stroke-dasharray=\"" + dash + " " + width + "\" stroke-linecap=\"butt\">\n";
+// The drawing's lines as both documents write them: each stretch once
+// (OnceEach), joined when asked, hidden and visible apart, each in pen
+// order; with WidthByDepth, each visible line's filled outline.
+struct WrittenLines
+{
+  std::vector<DrawnLine> Hidden;
+  std::vector<DrawnLine> Visible;
+  std::vector<std::vector<std::array<double, 2>>> VisibleOutlines; // WidthByDepth only
+};
+
+WrittenLines WrittenLinesOf(const std::vector<DrawnLine>& lines, const DrawingStyle& style)
+{
   // Each stretch of line once: lines drawn over each other (a border that
   // is also a crease, a piece and its reverse) would be inked twice by a
   // pen plotter.
@@ -627,24 +611,14 @@ std::string SvgDocument(
   {
     (line.Hidden ? hidden : visible).push_back(std::move(line));
   }
-  for (const DrawnLine& line : InPenOrder(std::move(hidden), false))
-  {
-    svg += "<path class=\"hidden " + line.Kind + "\" d=\"" + PolylinePath(line) + "\"/>\n";
-  }
-  svg += "</g>\n";
-  if (visiblePaths)
-  {
-    *visiblePaths = visible.size();
-  }
-  svg += style.WidthByDepth ? "<g id=\"visible\" fill=\"black\" stroke=\"none\">\n"
-                            : "<g id=\"visible\" fill=\"none\" stroke=\"black\" stroke-width=\"" +
-      width + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+  WrittenLines written;
+  written.Hidden = InPenOrder(std::move(hidden), false);
   // A filled outline (WidthByDepth) goes round its line and closes where it
   // began, so the pen is back at the end it entered by.
-  for (const DrawnLine& line : InPenOrder(std::move(visible), style.WidthByDepth))
+  written.Visible = InPenOrder(std::move(visible), style.WidthByDepth);
+  if (style.WidthByDepth)
   {
-    std::string d;
-    if (style.WidthByDepth)
+    for (const DrawnLine& line : written.Visible)
     {
       std::vector<double> halfWidths(line.Points.size());
       for (std::size_t i = 0; i < halfWidths.size(); ++i)
@@ -652,16 +626,208 @@ std::string SvgDocument(
         const double ratio = line.Depths[i] > 0.0 ? style.ReferenceDepth / line.Depths[i] : 4.0;
         halfWidths[i] = 0.5 * style.LineWidth * std::clamp(ratio, 0.25, 4.0);
       }
-      d = OutlinePath(line, halfWidths);
+      written.VisibleOutlines.push_back(OutlinePolygon(line, halfWidths));
+    }
+  }
+  return written;
+}
+
+std::string Number(double value)
+{
+  std::string text;
+  AppendNumber(text, value);
+  return text;
+}
+
+// A path of PDF's operators: moveto, then linetos (the points as the SVG
+// writes them, a hundredth of a pixel), then `paint` (S strokes, f fills).
+std::string PdfPath(const std::vector<std::array<double, 2>>& points, const char* paint)
+{
+  std::string path;
+  for (std::size_t i = 0; i < points.size(); ++i)
+  {
+    AppendNumber(path, points[i][0]);
+    path += ' ';
+    AppendNumber(path, points[i][1]);
+    path += i == 0 ? " m\n" : " l\n";
+  }
+  return path + paint + "\n";
+}
+
+// Text for a PDF text string: UTF-16BE with its byte order mark, in hex.
+// Bytes that are not UTF-8 (a file name in another encoding) and control
+// characters are written as '?'.
+std::string PdfTextString(const std::string& text)
+{
+  std::vector<unsigned long> units{ 0xFEFF };
+  for (std::size_t i = 0; i < text.size();)
+  {
+    const std::size_t length = Utf8SequenceLength(text, i);
+    const unsigned char lead = static_cast<unsigned char>(text[i]);
+    if (length <= 1)
+    {
+      units.push_back(length == 1 && lead >= 0x20 && lead != 0x7F ? lead : '?');
+      i += length == 0 ? 1 : length;
+      continue;
+    }
+    unsigned long code = lead & (0xFFu >> (length + 1));
+    for (std::size_t k = 1; k < length; ++k)
+    {
+      code = (code << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3Fu);
+    }
+    i += length;
+    if (code >= 0x10000)
+    {
+      code -= 0x10000;
+      units.push_back(0xD800 + (code >> 10));
+      units.push_back(0xDC00 + (code & 0x3FF));
     }
     else
     {
-      d = PolylinePath(line);
+      units.push_back(code);
     }
-    svg += "<path class=\"" + line.Kind + "\" d=\"" + d + "\"/>\n";
+  }
+  std::string hex = "<";
+  for (const unsigned long unit : units)
+  {
+    char digits[8];
+    std::snprintf(digits, sizeof digits, "%04lX", unit);
+    hex += digits;
+  }
+  return hex + ">";
+}
+
+} // namespace
+
+std::string SvgDocument(
+  const std::vector<DrawnLine>& lines, const DrawingStyle& style, std::size_t* visiblePaths)
+{
+  std::string svg;
+  svg += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  svg += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" +
+    std::to_string(style.Width) + "\" height=\"" + std::to_string(style.Height) +
+    "\" viewBox=\"0 0 " + std::to_string(style.Width) + " " + std::to_string(style.Height) +
+    "\">\n";
+  if (!style.Title.empty())
+  {
+    svg += "<title>" + EscapeXml(style.Title) + "</title>\n";
+  }
+  svg += "<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n";
+
+  const std::string width = Number(style.LineWidth);
+  // The hidden lines first: the visible ones are drawn over them where
+  // they cross.
+  svg += "<g id=\"hidden\" fill=\"none\" stroke=\"#999999\" stroke-width=\"" +
+    Number(0.75 * style.LineWidth) + "\" stroke-dasharray=\"" + Number(3.0 * style.LineWidth) +
+    " " + width + "\" stroke-linecap=\"butt\">\n";
+  const WrittenLines written = WrittenLinesOf(lines, style);
+  for (const DrawnLine& line : written.Hidden)
+  {
+    svg += "<path class=\"hidden " + line.Kind + "\" d=\"" + PolylinePath(line) + "\"/>\n";
+  }
+  svg += "</g>\n";
+  if (visiblePaths)
+  {
+    *visiblePaths = written.Visible.size();
+  }
+  svg += style.WidthByDepth ? "<g id=\"visible\" fill=\"black\" stroke=\"none\">\n"
+                            : "<g id=\"visible\" fill=\"none\" stroke=\"black\" stroke-width=\"" +
+      width + "\" stroke-linecap=\"round\" stroke-linejoin=\"round\">\n";
+  for (std::size_t i = 0; i < written.Visible.size(); ++i)
+  {
+    std::string d;
+    if (style.WidthByDepth)
+    {
+      const std::vector<std::array<double, 2>>& outline = written.VisibleOutlines[i];
+      for (std::size_t k = 0; k < outline.size(); ++k)
+      {
+        AppendPoint(d, k == 0 ? 'M' : 'L', outline[k]);
+      }
+      d += 'Z';
+    }
+    else
+    {
+      d = PolylinePath(written.Visible[i]);
+    }
+    svg += "<path class=\"" + written.Visible[i].Kind + "\" d=\"" + d + "\"/>\n";
   }
   svg += "</g>\n</svg>\n";
   return svg;
+}
+
+std::string PdfDocument(
+  const std::vector<DrawnLine>& lines, const DrawingStyle& style, std::size_t* visiblePaths)
+{
+  const WrittenLines written = WrittenLinesOf(lines, style);
+  if (visiblePaths)
+  {
+    *visiblePaths = written.Visible.size();
+  }
+  // Pixels, y down from the top-left corner, as in the SVG document: one
+  // transformation to points, y up from the bottom-left corner.
+  const double scale = 0.75;
+  const std::string pageWidth = Number(scale * style.Width);
+  const std::string pageHeight = Number(scale * style.Height);
+  std::string content = Number(scale) + " 0 0 " + Number(-scale) + " 0 " + pageHeight + " cm\n";
+  content +=
+    "1 g 0 0 " + std::to_string(style.Width) + " " + std::to_string(style.Height) + " re f\n";
+  const std::string width = Number(style.LineWidth);
+  // The hidden lines first (grey, dashed, butt ends, SVG's default miter
+  // joins), the visible ones over them.
+  content += "q 0.6 G " + Number(0.75 * style.LineWidth) + " w [" + Number(3.0 * style.LineWidth) +
+    " " + width + "] 0 d 0 J 0 j 4 M\n";
+  for (const DrawnLine& line : written.Hidden)
+  {
+    content += PdfPath(line.Points, "S");
+  }
+  content += "Q\n";
+  content += style.WidthByDepth ? "q 0 g\n" : "q 0 G " + width + " w 1 J 1 j\n";
+  for (std::size_t i = 0; i < written.Visible.size(); ++i)
+  {
+    content += style.WidthByDepth ? PdfPath(written.VisibleOutlines[i], "h f")
+                                  : PdfPath(written.Visible[i].Points, "S");
+  }
+  content += "Q\n";
+
+  // Objects 1 to 5, each at the offset the cross-reference table gives.
+  std::string pdf = "%PDF-1.4\n%\xE2\xE3\xCF\xD3\n"; // binary bytes: a binary file
+  std::vector<std::size_t> offsets;
+  const auto object = [&](const std::string& body) {
+    offsets.push_back(pdf.size());
+    pdf += std::to_string(offsets.size()) + " 0 obj\n" + body + "\nendobj\n";
+  };
+  object("<< /Type /Catalog /Pages 2 0 R >>");
+  object("<< /Type /Pages /Kids [3 0 R] /Count 1 >>");
+  object("<< /Type /Page /Parent 2 0 R /MediaBox [0 0 " + pageWidth + " " + pageHeight +
+    "] /Resources << >> /Contents 4 0 R >>");
+  object(
+    "<< /Length " + std::to_string(content.size()) + " >>\nstream\n" + content + "\nendstream");
+  object("<< /Producer (silhouette)" +
+    (style.Title.empty() ? std::string() : " /Title " + PdfTextString(style.Title)) + " >>");
+  const std::size_t table = pdf.size();
+  pdf += "xref\n0 " + std::to_string(offsets.size() + 1) + "\n0000000000 65535 f \n";
+  for (const std::size_t offset : offsets)
+  {
+    char entry[32];
+    std::snprintf(entry, sizeof entry, "%010zu 00000 n \n", offset);
+    pdf += entry;
+  }
+  pdf += "trailer\n<< /Size " + std::to_string(offsets.size() + 1) +
+    " /Root 1 0 R /Info 5 0 R >>\nstartxref\n" + std::to_string(table) + "\n%%EOF\n";
+  return pdf;
+}
+
+bool IsVectorDrawingPath(const std::string& path)
+{
+  const std::string extension = LowercaseExtension(path);
+  return extension == ".svg" || extension == ".pdf";
+}
+
+std::string VectorDocument(const std::string& path, const std::vector<DrawnLine>& lines,
+  const DrawingStyle& style, std::size_t* visiblePaths)
+{
+  return LowercaseExtension(path) == ".pdf" ? PdfDocument(lines, style, visiblePaths)
+                                            : SvgDocument(lines, style, visiblePaths);
 }
 
 } // namespace cli

@@ -1,5 +1,5 @@
-#ifndef SvgDrawing_h
-#define SvgDrawing_h
+#ifndef VectorDrawing_h
+#define VectorDrawing_h
 
 #include <array>
 #include <string>
@@ -30,11 +30,11 @@ struct DrawnLine
 /// perspective, what lies nearer the eye than the camera's near clipping
 /// plane is not drawn, as in a rendering: a polyline is cut where it
 /// crosses that plane, and the part in front of it kept (its points may lie
-/// far outside the image; SvgDocument clips them to it).
+/// far outside the image; the documents clip them to it).
 /// With `hiddenOnly`, only the cells whose Visible is 0 are taken.
 std::vector<DrawnLine> ProjectLines(vtkPolyData* lines, vtkRenderer* renderer, bool hiddenOnly);
 
-struct SvgStyle
+struct DrawingStyle
 {
   int Width = 0; ///< the image's size in pixels
   int Height = 0;
@@ -66,8 +66,27 @@ struct SvgStyle
  * fewer than two distinct points are left out.
  */
 /// `visiblePaths`, when given, counts the visible paths written.
-std::string SvgDocument(
-  const std::vector<DrawnLine>& lines, const SvgStyle& style, std::size_t* visiblePaths = nullptr);
+std::string SvgDocument(const std::vector<DrawnLine>& lines, const DrawingStyle& style,
+  std::size_t* visiblePaths = nullptr);
+
+/**
+ * The same drawing as a one-page PDF document (PDF 1.4, uncompressed): the
+ * same paths in the same order, coordinates and widths, on a page of the
+ * image's size at 96 pixels to the inch (0.75 point a pixel, as SVG's
+ * pixels are printed), so that a printer or an illustration program gets
+ * the lines as the SVG gives them to a browser. The title goes to the
+ * document's information (UTF-16, bytes that are not UTF-8 as '?').
+ */
+std::string PdfDocument(const std::vector<DrawnLine>& lines, const DrawingStyle& style,
+  std::size_t* visiblePaths = nullptr);
+
+/// Whether `path` names a drawing these documents write: .svg or .pdf
+/// (any letter case).
+bool IsVectorDrawingPath(const std::string& path);
+
+/// The document of the kind `path` names (.svg or .pdf).
+std::string VectorDocument(const std::string& path, const std::vector<DrawnLine>& lines,
+  const DrawingStyle& style, std::size_t* visiblePaths = nullptr);
 
 } // namespace cli
 

@@ -80,15 +80,23 @@ bool HasTriangleWithArea(vtkPolyData* mesh)
 
 // A drawing of nothing, of a mesh that has an outline from some view, says
 // why (a flat mesh seen from its side drew a blank image with no word).
-void WarnIfBlank(bool blank, const std::string& path, vtkPolyData* mesh)
+void WarnIfBlank(bool blank, const std::string& path, vtkPolyData* mesh, bool lines)
 {
-  if (blank && HasTriangleWithArea(mesh))
+  if (!blank || !HasTriangleWithArea(mesh))
   {
-    std::cerr << "silhouette: warning: '" << PrintableText(path)
-              << "' shows nothing of the mesh: it is outside the view, smaller than a pixel, or "
-                 "seen edge-on (a flat mesh from its side); try another --azimuth, --elevation or "
-                 "--zoom\n";
+    return;
   }
+  // A drawing is blank too when the mesh fills the view and none of its
+  // lines crosses it (zoomed in on the surface): a user read "shows nothing
+  // of the mesh" of such a drawing as the mesh being out of view.
+  std::cerr << "silhouette: warning: '" << PrintableText(path)
+            << (lines ? "' has no line in it: no outline, crease or border of the mesh crosses "
+                        "the view (the mesh's image may cover the whole view, or the mesh is "
+                        "outside the view, smaller than a pixel, or seen edge-on); try another "
+                        "--azimuth, --elevation or --zoom\n"
+                      : "' shows nothing of the mesh: it is outside the view, smaller than a "
+                        "pixel, or seen edge-on (a flat mesh from its side); try another "
+                        "--azimuth, --elevation or --zoom\n");
 }
 
 // Reads the mesh and refuses one the filter could do nothing with. One whose
@@ -330,13 +338,13 @@ void RunProgressiveSketch(const RenderOptions& options)
     }
     if (vector)
     {
-      WarnIfBlank(
-        RenderToDrawing(view, run.Filter, levelMesh, levelOptions), levelOptions.Output, levelMesh);
+      WarnIfBlank(RenderToDrawing(view, run.Filter, levelMesh, levelOptions), levelOptions.Output,
+        levelMesh, true);
     }
     else
     {
-      WarnIfBlank(
-        RenderToPng(view, run.Filter, levelMesh, levelOptions), levelOptions.Output, levelMesh);
+      WarnIfBlank(RenderToPng(view, run.Filter, levelMesh, levelOptions), levelOptions.Output,
+        levelMesh, true);
     }
     const Figures figures =
       CollectFigures(options.Input, levelOptions.Output, run.Filter->GetOutput(),
@@ -410,11 +418,13 @@ void RunRender(const RenderOptions& options)
   FileBatch outputs;
   if (drawing)
   {
-    WarnIfBlank(RenderToDrawing(view, run.Filter, mesh, options, &outputs), options.Output, mesh);
+    WarnIfBlank(
+      RenderToDrawing(view, run.Filter, mesh, options, &outputs), options.Output, mesh, true);
   }
   else
   {
-    WarnIfBlank(RenderToPng(view, run.Filter, mesh, options, &outputs), options.Output, mesh);
+    WarnIfBlank(RenderToPng(view, run.Filter, mesh, options, &outputs), options.Output, mesh,
+      IsLineStyle(options.Style));
   }
   if (options.LinesOutput)
   {

@@ -110,6 +110,13 @@ void FileBatch::Add(const std::string& path, const std::string& bytes)
     {
       target = resolved;
     }
+    // A file the user may not write is not replaced either (a rename in a
+    // directory the user may write would: a user's trial replaced another
+    // user's read-only drawing), as writing in place would refuse it.
+    if (::access(target.c_str(), W_OK) != 0)
+    {
+      Fail(path, errno);
+    }
   }
   const std::string::size_type slash = target.rfind('/');
   const std::string directory = slash == std::string::npos ? "" : target.substr(0, slash + 1);

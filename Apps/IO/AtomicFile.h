@@ -15,7 +15,8 @@ namespace cli
  *
  * A symbolic link is followed: its target is replaced, the link kept. A path
  * that exists and is not a regular file (/dev/null, /dev/stdout, a pipe) is
- * written in place.
+ * written in place. An existing file the user may not write (access(2)) is
+ * refused, though the rename could replace it.
  *
  * Throws RuntimeError("cannot write '<path>': <why>") on any failure (a full
  * disk, a file-size limit, a directory without write permission), after

@@ -32,6 +32,10 @@ vtkStandardNewMacro(vtkSilhouetteLineVisibility);
 namespace
 {
 
+// A gap of the outline running beside one drawn line within this share of
+// its own length is a detour, left out (OutlineGaps.h's withoutDetours).
+constexpr double DetourShare = 0.25;
+
 vtkIdType FieldValue(vtkIdType value, const char* name, vtkFieldData* fields)
 {
   vtkNew<vtkIdTypeArray> array;
@@ -382,10 +386,15 @@ int vtkSilhouetteLineVisibility::RequestViewData(vtkInformation*,
     // the contour (1.5 px from a line's end, or beside one within
     // OutlineGapPixels), which left a break of a pixel or two at each end of
     // a filled gap (a user's trial: the Wuson's back read as a dashed line).
+    // Gaps beside a drawn line all along are left out (OutlineGaps.h's
+    // withoutDetours): within a quarter of their length of it, they closed
+    // boxes beside a zoomed-in outline.
     const std::vector<std::vector<glm::dvec3>>& drawn = writer.visiblePieces();
     for (const std::vector<glm::dvec3>& gap : silsmooth::joinedToDrawnLines(
-           silsmooth::outlineGaps(occluder, view.Geometry, drawn, gapParameters), view.Geometry,
-           drawn, this->OutlineGapPixels + 1.0))
+           silsmooth::withoutDetours(
+             silsmooth::outlineGaps(occluder, view.Geometry, drawn, gapParameters), view.Geometry,
+             drawn, this->OutlineGapPixels + 1.0, DetourShare),
+           view.Geometry, drawn, this->OutlineGapPixels + 1.0))
     {
       writer.appendOutlineGap(gap);
     }

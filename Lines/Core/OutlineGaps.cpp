@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <unordered_map>
 
@@ -280,6 +281,104 @@ std::vector<std::vector<glm::dvec3>> outlineGaps(const OcclusionMesh& surface,
     }
   }
   return gaps;
+}
+
+namespace
+{
+
+// The distance in pixels from `pixel` to the polyline `line` (its points'
+// images), infinity for a line of fewer than two points.
+double distanceToLine(const glm::dvec2& pixel, const std::vector<glm::dvec2>& line)
+{
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 1; i < line.size(); ++i)
+  {
+    const glm::dvec2 ab = line[i] - line[i - 1];
+    const double squared = glm::dot(ab, ab);
+    const double t =
+      squared > 0.0 ? std::clamp(glm::dot(pixel - line[i - 1], ab) / squared, 0.0, 1.0) : 0.0;
+    best = std::min(best, glm::length(pixel - (line[i - 1] + t * ab)));
+  }
+  return best;
+}
+
+} // namespace
+
+std::vector<std::vector<glm::dvec3>> withoutDetours(std::vector<std::vector<glm::dvec3>> gaps,
+  const ViewGeometry& view, const std::vector<std::vector<glm::dvec3>>& drawn, double pixels,
+  double share)
+{
+  // Each drawn line's image, made when a gap first asks for it.
+  std::vector<std::optional<std::vector<glm::dvec2>>> images(drawn.size());
+  auto imageOf = [&](std::size_t line) -> const std::vector<glm::dvec2>& {
+    if (!images[line])
+    {
+      std::vector<glm::dvec2>& image = images[line].emplace();
+      for (const glm::dvec3& point : drawn[line])
+      {
+        glm::dvec2 pixel;
+        if (!view.toPixels(point, pixel))
+        {
+          image.clear(); // a point with no image: no detour beside this line
+          break;
+        }
+        image.push_back(pixel);
+      }
+    }
+    return *images[line];
+  };
+  // Whether every point of the gap's image, sampled every pixel, lies
+  // within `within` of the line.
+  auto runsBeside = [&](const std::vector<glm::dvec2>& gap, const std::vector<glm::dvec2>& line,
+                      double within) {
+    for (std::size_t i = 0; i < gap.size(); ++i)
+    {
+      const glm::dvec2 step = i + 1 < gap.size() ? gap[i + 1] - gap[i] : glm::dvec2(0.0);
+      const int samples = static_cast<int>(std::ceil(glm::length(step)));
+      for (int k = 0; k <= std::max(samples - 1, 0); ++k)
+      {
+        const double t = samples > 0 ? static_cast<double>(k) / samples : 0.0;
+        if (!(distanceToLine(gap[i] + t * step, line) <= within))
+        {
+          return false;
+        }
+      }
+    }
+    return true;
+  };
+  std::vector<std::vector<glm::dvec3>> kept;
+  for (std::vector<glm::dvec3>& gap : gaps)
+  {
+    std::vector<glm::dvec2> image;
+    for (const glm::dvec3& point : gap)
+    {
+      glm::dvec2 pixel;
+      if (view.toPixels(point, pixel))
+      {
+        image.push_back(pixel);
+      }
+    }
+    const bool open = gap.size() >= 2 && gap.front() != gap.back();
+    double length = 0.0;
+    for (std::size_t i = 1; i < image.size(); ++i)
+    {
+      length += glm::length(image[i] - image[i - 1]);
+    }
+    const double within = std::max(pixels, share * length);
+    bool detour = false;
+    for (std::size_t line = 0; open && image.size() == gap.size() && !detour && line < drawn.size();
+         ++line)
+    {
+      const std::vector<glm::dvec2>& lineImage = imageOf(line);
+      detour = distanceToLine(image.front(), lineImage) <= within &&
+        distanceToLine(image.back(), lineImage) <= within && runsBeside(image, lineImage, within);
+    }
+    if (!detour)
+    {
+      kept.push_back(std::move(gap));
+    }
+  }
+  return kept;
 }
 
 std::vector<std::vector<glm::dvec3>> joinedToDrawnLines(std::vector<std::vector<glm::dvec3>> gaps,

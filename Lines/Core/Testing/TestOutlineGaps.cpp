@@ -313,3 +313,35 @@ TEST(OutlineGaps, ALineAcrossTheOutlineCoversItOnlyWhereItMeetsIt)
   EXPECT_NEAR(length(outlineGaps(surface, view, { crossing }, anyDirection)),
     12.0 - 0.08 / foreshortening, 1e-6);
 }
+
+TEST(OutlineGaps, AGapBesideOneDrawnLineAllAlongIsADetourLeftOut)
+{
+  // Seen along z, 100 px a unit: a gap 40 px long, and drawn lines beside
+  // it in the image plane.
+  const ViewGeometry view = parallelView(glm::dvec3(0, 0, 1));
+  const std::vector<std::vector<glm::dvec3>> gap{ { { 0.0, 0.0, 0.0 }, { 0.4, 0.0, 0.0 } } };
+  auto beside = [](double pixels, double from, double to) {
+    return std::vector<glm::dvec3>{ { from, 0.01 * pixels, 0.0 }, { to, 0.01 * pixels, 0.0 } };
+  };
+  const double pixels = 5.0; // what the program uses: OutlineGapPixels + 1
+  // 6 px beside it all along, past both ends: within a quarter of its
+  // length (10 px), a detour.
+  EXPECT_TRUE(withoutDetours(gap, view, { beside(6.0, -0.1, 0.5) }, pixels, 0.25).empty());
+  // The wrong variant, a distance in pixels alone: the gap stays, and the
+  // drawing gets its box.
+  EXPECT_EQ(withoutDetours(gap, view, { beside(6.0, -0.1, 0.5) }, pixels, 0.0).size(), 1u);
+  // 12 px beside it: farther than the quarter, an outline of its own.
+  EXPECT_EQ(withoutDetours(gap, view, { beside(12.0, -0.1, 0.5) }, pixels, 0.25).size(), 1u);
+  // Two pieces of a line, each beside one end, none beside the middle (a
+  // hidden stretch of the curve between them): the gap is the outline.
+  EXPECT_EQ(
+    withoutDetours(gap, view, { beside(6.0, -0.1, 0.1), beside(6.0, 0.3, 0.5) }, pixels, 0.25)
+      .size(),
+    1u);
+  // A line beside it that ends half-way: not all along.
+  EXPECT_EQ(withoutDetours(gap, view, { beside(6.0, -0.1, 0.2) }, pixels, 0.25).size(), 1u);
+  // A closed gap (a loop) has no ends to join, and stays.
+  const std::vector<std::vector<glm::dvec3>> loop{ { { 0.0, 0.0, 0.0 }, { 0.4, 0.0, 0.0 },
+    { 0.4, 0.02, 0.0 }, { 0.0, 0.0, 0.0 } } };
+  EXPECT_EQ(withoutDetours(loop, view, { beside(6.0, -0.1, 0.5) }, pixels, 0.25).size(), 1u);
+}

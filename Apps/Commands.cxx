@@ -89,14 +89,15 @@ void WarnIfBlank(bool blank, const std::string& path, vtkPolyData* mesh, bool li
   // A drawing is blank too when the mesh fills the view and none of its
   // lines crosses it (zoomed in on the surface): a user read "shows nothing
   // of the mesh" of such a drawing as the mesh being out of view.
-  std::cerr << "silhouette: warning: '" << PrintableText(path)
-            << (lines ? "' has no line in it: no outline, crease or border of the mesh crosses "
-                        "the view (the mesh's image may cover the whole view, or the mesh is "
-                        "outside the view, smaller than a pixel, or seen edge-on); try another "
-                        "--azimuth, --elevation or --zoom\n"
-                      : "' shows nothing of the mesh: it is outside the view, smaller than a "
-                        "pixel, or seen edge-on (a flat mesh from its side); try another "
-                        "--azimuth, --elevation or --zoom\n");
+  std::cerr
+    << "silhouette: warning: '" << PrintableText(path)
+    << (lines ? "' has no visible line in it: no outline, crease or border of the mesh crosses "
+                "the view (the mesh's image may cover the whole view, or the mesh is "
+                "outside the view, smaller than a pixel, or seen edge-on); try another "
+                "--azimuth, --elevation or --zoom\n"
+              : "' shows nothing of the mesh: it is outside the view, smaller than a "
+                "pixel, or seen edge-on (a flat mesh from its side); try another "
+                "--azimuth, --elevation or --zoom\n");
 }
 
 // Reads the mesh and refuses one the filter could do nothing with. One whose

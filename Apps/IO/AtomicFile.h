@@ -15,8 +15,10 @@ namespace cli
  *
  * A symbolic link is followed: its target is replaced, the link kept. A path
  * that exists and is not a regular file (/dev/null, /dev/stdout, a pipe) is
- * written in place. An existing file the user may not write (access(2)) is
- * refused, though the rename could replace it.
+ * written in place. An existing file the user may not write (access(2),
+ * with the real user id: a file of one's own made read-only too) is
+ * refused, though the rename could replace it; a file made read-only
+ * after that check and before the rename is still replaced.
  *
  * Throws RuntimeError("cannot write '<path>': <why>") on any failure (a full
  * disk, a file-size limit, a directory without write permission), after

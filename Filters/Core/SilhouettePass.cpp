@@ -122,8 +122,7 @@ void SilhouettePass::straightenAtApexes()
   }
   for (const Id t : this->Silhouette)
   {
-    const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
-    if (!this->Mesh.isApex(tri[0]) && !this->Mesh.isApex(tri[1]) && !this->Mesh.isApex(tri[2]))
+    if (!this->hasApexCorner(t))
     {
       continue;
     }
@@ -134,6 +133,12 @@ void SilhouettePass::straightenAtApexes()
   std::sort(this->StraightEdges.begin(), this->StraightEdges.end());
   this->StraightEdges.erase(
     std::unique(this->StraightEdges.begin(), this->StraightEdges.end()), this->StraightEdges.end());
+}
+
+bool SilhouettePass::hasApexCorner(Id t) const
+{
+  const Triangle& tri = this->Mesh.triangles()[static_cast<std::size_t>(t)];
+  return this->Mesh.isApex(tri[0]) || this->Mesh.isApex(tri[1]) || this->Mesh.isApex(tri[2]);
 }
 
 void SilhouettePass::straightSidesOf(Id t, std::vector<Id>& edges) const
@@ -196,12 +201,20 @@ bool SilhouettePass::straightenSideFeatures(Id t, std::vector<Id>& changed, Acce
   return taken;
 }
 
-// Every fallback in force. Those at apexes are listed too: such a triangle
-// starts the next frame straight, so its remembered level is never read.
+// Every fallback in force but those at apexes (straightenAtApexes): their
+// level is not one a fold asked for, and a next frame with
+// KeepApexesPointed off would reuse it.
 void SilhouettePass::listFallbacks()
 {
   FoldFallbacks& out = this->Result.Fallbacks;
-  out.Triangles.assign(this->Levels.begin(), this->Levels.end());
+  const bool apexes = this->Parameters.KeepApexesPointed && !this->Mesh.apexes().empty();
+  for (const auto& level : this->Levels)
+  {
+    if (!apexes || !this->hasApexCorner(level.first))
+    {
+      out.Triangles.push_back(level);
+    }
+  }
   std::sort(out.Triangles.begin(), out.Triangles.end());
   out.FeatureSegments = this->StraightFeatures;
 }

@@ -87,6 +87,8 @@ private:
   bool straightenSideFeatures(Id t, std::vector<Id>& changed, Accept straighten);
   // SmoothingResult::Fallbacks, at the end of the frame.
   void listFallbacks();
+  // Whether input triangle t has a corner at a cone's apex (PreparedMesh::apexes).
+  bool hasApexCorner(Id t) const;
   // Adds to `edges` the sides of silhouette triangle t whose silhouette
   // points its straight level puts on the straight edge: mixed sides that
   // are neither feature edges nor possible seams.

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <unordered_map>
@@ -31,8 +32,9 @@ public:
     , Columns(static_cast<std::int64_t>(std::ceil(view.ViewportWidth / this->Cell)) + 2)
     , Rows(static_cast<std::int64_t>(std::ceil(view.ViewportHeight / this->Cell)) + 2)
   {
-    for (const std::vector<glm::dvec3>& line : drawn)
+    for (std::size_t index = 0; index < drawn.size(); ++index)
     {
+      const std::vector<glm::dvec3>& line = drawn[index];
       const std::size_t n = line.size();
       const bool closed = n > 2 && line.front() == line.back();
       glm::dvec2 previous;
@@ -43,8 +45,8 @@ public:
         const bool projected = view.toPixels(line[i], pixel);
         if (projected && havePrevious)
         {
-          this->file(
-            { previous, pixel, line[i - 1], line[i], !closed && i == 1, !closed && i + 1 == n });
+          this->file({ previous, pixel, line[i - 1], line[i], !closed && i == 1,
+            !closed && i + 1 == n, index });
         }
         previous = pixel;
         havePrevious = projected;
@@ -89,6 +91,32 @@ public:
     return found;
   }
 
+  /// The drawn lines with a segment within `radius` pixels of `pixel`,
+  /// ascending.
+  std::vector<std::size_t> linesNear(const glm::dvec2& pixel, double radius) const
+  {
+    std::vector<std::size_t> lines;
+    this->anySegmentNear(pixel, radius, [&](const Segment& segment, double, double distance) {
+      if (distance <= radius)
+      {
+        lines.push_back(segment.Line);
+      }
+      return false;
+    });
+    std::sort(lines.begin(), lines.end());
+    lines.erase(std::unique(lines.begin(), lines.end()), lines.end());
+    return lines;
+  }
+
+  /// Whether drawn line `line` has a segment within `radius` pixels of `pixel`.
+  bool lineNear(const glm::dvec2& pixel, std::size_t line, double radius) const
+  {
+    return this->anySegmentNear(
+      pixel, radius, [&](const Segment& segment, double, double distance) {
+        return segment.Line == line && distance <= radius;
+      });
+  }
+
 private:
   struct Segment
   {
@@ -96,8 +124,9 @@ private:
     glm::dvec2 B;
     glm::dvec3 ModelA; ///< A in model coordinates
     glm::dvec3 ModelB;
-    bool StartsLine; ///< A is the first point of an open drawn line
-    bool EndsLine;   ///< B is its last
+    bool StartsLine;  ///< A is the first point of an open drawn line
+    bool EndsLine;    ///< B is its last
+    std::size_t Line; ///< the drawn line's index
   };
 
   /// Calls `visit(segment, along, distance)` for the segments filed in the
@@ -283,69 +312,11 @@ std::vector<std::vector<glm::dvec3>> outlineGaps(const OcclusionMesh& surface,
   return gaps;
 }
 
-namespace
-{
-
-// The distance in pixels from `pixel` to the polyline `line` (its points'
-// images), infinity for a line of fewer than two points.
-double distanceToLine(const glm::dvec2& pixel, const std::vector<glm::dvec2>& line)
-{
-  double best = std::numeric_limits<double>::infinity();
-  for (std::size_t i = 1; i < line.size(); ++i)
-  {
-    const glm::dvec2 ab = line[i] - line[i - 1];
-    const double squared = glm::dot(ab, ab);
-    const double t =
-      squared > 0.0 ? std::clamp(glm::dot(pixel - line[i - 1], ab) / squared, 0.0, 1.0) : 0.0;
-    best = std::min(best, glm::length(pixel - (line[i - 1] + t * ab)));
-  }
-  return best;
-}
-
-} // namespace
-
 std::vector<std::vector<glm::dvec3>> withoutDetours(std::vector<std::vector<glm::dvec3>> gaps,
   const ViewGeometry& view, const std::vector<std::vector<glm::dvec3>>& drawn, double pixels,
   double share)
 {
-  // Each drawn line's image, made when a gap first asks for it.
-  std::vector<std::optional<std::vector<glm::dvec2>>> images(drawn.size());
-  auto imageOf = [&](std::size_t line) -> const std::vector<glm::dvec2>& {
-    if (!images[line])
-    {
-      std::vector<glm::dvec2>& image = images[line].emplace();
-      for (const glm::dvec3& point : drawn[line])
-      {
-        glm::dvec2 pixel;
-        if (!view.toPixels(point, pixel))
-        {
-          image.clear(); // a point with no image: no detour beside this line
-          break;
-        }
-        image.push_back(pixel);
-      }
-    }
-    return *images[line];
-  };
-  // Whether every point of the gap's image, sampled every pixel, lies
-  // within `within` of the line.
-  auto runsBeside = [&](const std::vector<glm::dvec2>& gap, const std::vector<glm::dvec2>& line,
-                      double within) {
-    for (std::size_t i = 0; i < gap.size(); ++i)
-    {
-      const glm::dvec2 step = i + 1 < gap.size() ? gap[i + 1] - gap[i] : glm::dvec2(0.0);
-      const int samples = static_cast<int>(std::ceil(glm::length(step)));
-      for (int k = 0; k <= std::max(samples - 1, 0); ++k)
-      {
-        const double t = samples > 0 ? static_cast<double>(k) / samples : 0.0;
-        if (!(distanceToLine(gap[i] + t * step, line) <= within))
-        {
-          return false;
-        }
-      }
-    }
-    return true;
-  };
+  const DrawnSegments drawnSegments(view, drawn, pixels, 1.0);
   std::vector<std::vector<glm::dvec3>> kept;
   for (std::vector<glm::dvec3>& gap : gaps)
   {
@@ -353,25 +324,48 @@ std::vector<std::vector<glm::dvec3>> withoutDetours(std::vector<std::vector<glm:
     for (const glm::dvec3& point : gap)
     {
       glm::dvec2 pixel;
-      if (view.toPixels(point, pixel))
+      if (!view.toPixels(point, pixel))
       {
-        image.push_back(pixel);
+        break;
       }
+      image.push_back(pixel);
     }
-    const bool open = gap.size() >= 2 && gap.front() != gap.back();
+    const bool open = gap.size() >= 2 && gap.front() != gap.back() && image.size() == gap.size();
     double length = 0.0;
     for (std::size_t i = 1; i < image.size(); ++i)
     {
       length += glm::length(image[i] - image[i - 1]);
     }
     const double within = std::max(pixels, share * length);
-    bool detour = false;
-    for (std::size_t line = 0; open && image.size() == gap.size() && !detour && line < drawn.size();
-         ++line)
+    // Both ends by one line (where the gap stopped, it came within the
+    // distance that covers the contour), then every pixel of the gap within
+    // `within` of it.
+    std::vector<std::size_t> candidates;
+    if (open && std::isfinite(length))
     {
-      const std::vector<glm::dvec2>& lineImage = imageOf(line);
-      detour = distanceToLine(image.front(), lineImage) <= within &&
-        distanceToLine(image.back(), lineImage) <= within && runsBeside(image, lineImage, within);
+      const std::vector<std::size_t> first = drawnSegments.linesNear(image.front(), pixels);
+      const std::vector<std::size_t> last = drawnSegments.linesNear(image.back(), pixels);
+      std::set_intersection(
+        first.begin(), first.end(), last.begin(), last.end(), std::back_inserter(candidates));
+    }
+    bool detour = false;
+    for (const std::size_t line : candidates)
+    {
+      detour = true;
+      for (std::size_t i = 0; detour && i + 1 < image.size(); ++i)
+      {
+        const glm::dvec2 step = image[i + 1] - image[i];
+        const int samples = std::max(1, static_cast<int>(std::ceil(glm::length(step))));
+        for (int k = 0; detour && k <= samples; ++k)
+        {
+          detour = drawnSegments.lineNear(
+            image[i] + (static_cast<double>(k) / samples) * step, line, within);
+        }
+      }
+      if (detour)
+      {
+        break;
+      }
     }
     if (!detour)
     {

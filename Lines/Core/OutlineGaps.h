@@ -75,16 +75,19 @@ std::vector<std::vector<glm::dvec3>> outlineGaps(const OcclusionMesh& surface,
   const ViewGeometry& view, const std::vector<std::vector<glm::dvec3>>& drawn,
   const OutlineGapParameters& parameters);
 
-/// The gaps without the detours: an open gap that runs beside one drawn
-/// line all along, both its ends and every point of it within
-/// `share` times its own length in the image (or `pixels`, when more) of
-/// that line, is left out. Such a gap is the contour of facets that stand
-/// beyond a curve that is drawn: their distance from it is one of the
-/// model, so it grows with the zoom past any distance in pixels, and the
-/// gap, joined to the curve at its ends, closed a thin box beside the
-/// outline (a user's trial at `--zoom 3`, 2026-12-06). Where the curve is
-/// hidden, the gap's ends meet two different pieces of it, and the gap
-/// stays: it is the outline there.
+/// The gaps without the detours: an open gap both of whose ends lie within
+/// `pixels` of one drawn line (where a gap stops, the contour has come
+/// within the distance that covers it) and every pixel of which lies
+/// within `share` times the gap's own length in the image (or `pixels`,
+/// when more) of that same line is left out. Such a gap is the contour of
+/// facets that stand beyond a curve that is drawn: their distance from it
+/// is one of the model, so it grows with the zoom past any distance in
+/// pixels, and the gap, joined to the curve at its ends, closed a thin box
+/// beside the outline (a user's trial at `--zoom 3`, 2026-12-06). Where the
+/// curve is hidden, the gap's ends meet two different pieces of it, and
+/// the gap stays: it is the outline there. So does a gap beside a line
+/// that passes farther than `pixels` from its ends (another part's
+/// outline running alongside), and a closed gap.
 std::vector<std::vector<glm::dvec3>> withoutDetours(std::vector<std::vector<glm::dvec3>> gaps,
   const ViewGeometry& view, const std::vector<std::vector<glm::dvec3>>& drawn, double pixels,
   double share);

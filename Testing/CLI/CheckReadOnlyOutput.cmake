@@ -24,6 +24,14 @@ if (uid STREQUAL "0")
     return()
   endif ()
   set(runner "${setpriv}" --reuid=65534 --regid=65534 --clear-groups)
+  # nobody must reach the program, the mesh and the directory (a build
+  # under /root is not reachable): else there is nothing to test.
+  execute_process(COMMAND ${runner} sh -c "test -x \"$1\" && test -r \"$2\" && test -w \"$3\""
+    sh "${PROGRAM}" "${SOURCE}" "${dir}" RESULT_VARIABLE reachable)
+  if (NOT reachable EQUAL 0)
+    message("CLI-TEST-SKIPPED: user nobody cannot reach the program, the mesh or ${dir}")
+    return()
+  endif ()
 endif ()
 execute_process(COMMAND ${runner} "${PROGRAM}" smooth "${SOURCE}" -o "${target}"
   RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)

@@ -316,32 +316,40 @@ TEST(OutlineGaps, ALineAcrossTheOutlineCoversItOnlyWhereItMeetsIt)
 
 TEST(OutlineGaps, AGapBesideOneDrawnLineAllAlongIsADetourLeftOut)
 {
-  // Seen along z, 100 px a unit: a gap 40 px long, and drawn lines beside
-  // it in the image plane.
+  // Seen along z, 100 px a unit (y up in the model; distances in the image
+  // are 100 times those in the plane z = 0). A drawn line along y = 0 from
+  // x = -0.1 to 0.5, and gaps above it.
   const ViewGeometry view = parallelView(glm::dvec3(0, 0, 1));
-  const std::vector<std::vector<glm::dvec3>> gap{ { { 0.0, 0.0, 0.0 }, { 0.4, 0.0, 0.0 } } };
-  auto beside = [](double pixels, double from, double to) {
-    return std::vector<glm::dvec3>{ { from, 0.01 * pixels, 0.0 }, { to, 0.01 * pixels, 0.0 } };
+  auto line = [](double y, double from, double to) {
+    return std::vector<glm::dvec3>{ { from, y, 0.0 }, { to, y, 0.0 } };
   };
+  const std::vector<glm::dvec3> drawn = line(0.0, -0.1, 0.5);
+  // A box's side: from 3 px off the line out to 6 px, 30 px along it, and
+  // back to 3 px (about 37 px long: a quarter is 9 px).
+  const std::vector<std::vector<glm::dvec3>> box{ { { 0.0, 0.03, 0.0 }, { 0.02, 0.06, 0.0 },
+    { 0.32, 0.06, 0.0 }, { 0.34, 0.03, 0.0 } } };
   const double pixels = 5.0; // what the program uses: OutlineGapPixels + 1
-  // 6 px beside it all along, past both ends: within a quarter of its
-  // length (10 px), a detour.
-  EXPECT_TRUE(withoutDetours(gap, view, { beside(6.0, -0.1, 0.5) }, pixels, 0.25).empty());
+  EXPECT_TRUE(withoutDetours(box, view, { drawn }, pixels, 0.25).empty());
   // The wrong variant, a distance in pixels alone: the gap stays, and the
   // drawing gets its box.
-  EXPECT_EQ(withoutDetours(gap, view, { beside(6.0, -0.1, 0.5) }, pixels, 0.0).size(), 1u);
-  // 12 px beside it: farther than the quarter, an outline of its own.
-  EXPECT_EQ(withoutDetours(gap, view, { beside(12.0, -0.1, 0.5) }, pixels, 0.25).size(), 1u);
-  // Two pieces of a line, each beside one end, none beside the middle (a
-  // hidden stretch of the curve between them): the gap is the outline.
+  EXPECT_EQ(withoutDetours(box, view, { drawn }, pixels, 0.0).size(), 1u);
+  // Its middle 20 px off the line, beyond the quarter: a bump of the
+  // outline, kept.
+  const std::vector<std::vector<glm::dvec3>> bump{ { { 0.0, 0.03, 0.0 }, { 0.02, 0.2, 0.0 },
+    { 0.32, 0.2, 0.0 }, { 0.34, 0.03, 0.0 } } };
+  EXPECT_EQ(withoutDetours(bump, view, { drawn }, pixels, 0.25).size(), 1u);
+  // Two pieces of the line, one by each end, none by the middle (a hidden
+  // stretch of the curve between them): the gap is the outline there.
   EXPECT_EQ(
-    withoutDetours(gap, view, { beside(6.0, -0.1, 0.1), beside(6.0, 0.3, 0.5) }, pixels, 0.25)
-      .size(),
+    withoutDetours(box, view, { line(0.0, -0.1, 0.05), line(0.0, 0.29, 0.5) }, pixels, 0.25).size(),
     1u);
-  // A line beside it that ends half-way: not all along.
-  EXPECT_EQ(withoutDetours(gap, view, { beside(6.0, -0.1, 0.2) }, pixels, 0.25).size(), 1u);
-  // A closed gap (a loop) has no ends to join, and stays.
-  const std::vector<std::vector<glm::dvec3>> loop{ { { 0.0, 0.0, 0.0 }, { 0.4, 0.0, 0.0 },
-    { 0.4, 0.02, 0.0 }, { 0.0, 0.0, 0.0 } } };
-  EXPECT_EQ(withoutDetours(loop, view, { beside(6.0, -0.1, 0.5) }, pixels, 0.25).size(), 1u);
+  // A line that passes 30 px from a gap 200 px long all along, but farther
+  // than `pixels` from its ends (the other side of a thin part): within the
+  // quarter (50 px), yet another part's outline, kept.
+  const std::vector<std::vector<glm::dvec3>> longGap{ { { 0.0, 0.0, 0.0 }, { 2.0, 0.0, 0.0 } } };
+  EXPECT_EQ(withoutDetours(longGap, view, { line(0.3, -0.1, 2.1) }, pixels, 0.25).size(), 1u);
+  // A closed gap (a loop) has no ends, and stays.
+  const std::vector<std::vector<glm::dvec3>> loop{ { { 0.0, 0.03, 0.0 }, { 0.34, 0.03, 0.0 },
+    { 0.17, 0.06, 0.0 }, { 0.0, 0.03, 0.0 } } };
+  EXPECT_EQ(withoutDetours(loop, view, { drawn }, pixels, 0.25).size(), 1u);
 }

@@ -56,8 +56,10 @@ const char* KindName(double kind)
 // The length of the valid UTF-8 sequence at text[i] (1 to 4), or 0 when the
 // bytes there are not one (a stray continuation byte, an overlong form, a
 // surrogate, beyond U+10FFFF, or cut short), or one of a code point XML
-// 1.0 does not allow (U+FFFE, U+FFFF).
-std::size_t Utf8SequenceLength(const std::string& text, std::size_t i)
+// 1.0 does not allow (U+FFFE, U+FFFF). `codePoint`, when given, gets the
+// code point of a valid sequence.
+std::size_t Utf8SequenceLength(
+  const std::string& text, std::size_t i, unsigned long* codePoint = nullptr)
 {
   const auto byte = [&](std::size_t k) {
     return static_cast<unsigned char>(text[k]);
@@ -67,6 +69,10 @@ std::size_t Utf8SequenceLength(const std::string& text, std::size_t i)
   unsigned long code = 0;
   if (lead < 0x80)
   {
+    if (codePoint)
+    {
+      *codePoint = lead;
+    }
     return 1;
   }
   if (lead >= 0xC2 && lead <= 0xDF)
@@ -104,6 +110,10 @@ std::size_t Utf8SequenceLength(const std::string& text, std::size_t i)
   // XML 1.0's characters: no surrogates, not U+FFFE or U+FFFF.
   const bool valid = code >= smallest[length] && code <= 0x10FFFF &&
     !(code >= 0xD800 && code <= 0xDFFF) && code != 0xFFFE && code != 0xFFFF;
+  if (valid && codePoint)
+  {
+    *codePoint = code;
+  }
   return valid ? length : 0;
 }
 
@@ -662,21 +672,14 @@ std::string PdfTextString(const std::string& text)
   std::vector<unsigned long> units{ 0xFEFF };
   for (std::size_t i = 0; i < text.size();)
   {
-    const std::size_t length = Utf8SequenceLength(text, i);
-    const unsigned char lead = static_cast<unsigned char>(text[i]);
-    if (length <= 1)
+    unsigned long code = 0;
+    const std::size_t length = Utf8SequenceLength(text, i, &code);
+    i += std::max<std::size_t>(length, 1);
+    if (length == 0 || code < 0x20 || code == 0x7F)
     {
-      units.push_back(length == 1 && lead >= 0x20 && lead != 0x7F ? lead : '?');
-      i += length == 0 ? 1 : length;
-      continue;
+      units.push_back('?');
     }
-    unsigned long code = lead & (0xFFu >> (length + 1));
-    for (std::size_t k = 1; k < length; ++k)
-    {
-      code = (code << 6) | (static_cast<unsigned char>(text[i + k]) & 0x3Fu);
-    }
-    i += length;
-    if (code >= 0x10000)
+    else if (code >= 0x10000)
     {
       code -= 0x10000;
       units.push_back(0xD800 + (code >> 10));

@@ -106,7 +106,9 @@ public:
    * points 1.5 times this distance beside it on both sides are hidden too:
    * it lies inside the surface's image (the far silhouette of a part thinner
    * than the tolerance, such as a spider's leg), unless it dips inside for
-   * less than 8 times this distance between visible pieces. Default 0
+   * less than 8 times this distance between visible pieces and
+   * OutlineGapPixels is 0 (with it, the surface's contour closes the
+   * outline there). Default 0
    * (off: exact visibility); `silhouette render` uses 1 pixel. Crease and
    * border lines (LineKind 1 and 2) do not use it. Negative, NaN or infinite
    * values fail the request with an error. A positive value makes the output depend on the

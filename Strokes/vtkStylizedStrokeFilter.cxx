@@ -13,9 +13,11 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include "PathJoining.h"
 #include "StrokeStylizer.h"
 #include "vtkSilhouetteFilterSupport.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -68,6 +70,82 @@ std::string LinesError(vtkPolyData* input)
   return nonFinite == 0
     ? ""
     : "Input has " + std::to_string(nonFinite) + " points with NaN or infinite coordinates.";
+}
+
+// A stroke's points, and the index among the line cells of its first line.
+struct Stroke
+{
+  std::vector<glm::dvec3> Points;
+  vtkIdType FirstLine = 0;
+};
+
+// Each line cell of two points or more, a stroke.
+std::vector<Stroke> LineCells(vtkPoints* points, vtkCellArray* lines)
+{
+  std::vector<Stroke> strokes;
+  vtkIdType index = 0;
+  vtkIdType count = 0;
+  const vtkIdType* ids = nullptr;
+  auto iterator = vtk::TakeSmartPointer(lines->NewIterator());
+  for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal();
+       iterator->GoToNextCell(), ++index)
+  {
+    iterator->GetCurrentCell(count, ids);
+    if (count < 2)
+    {
+      continue;
+    }
+    Stroke stroke;
+    stroke.FirstLine = index;
+    stroke.Points.reserve(static_cast<std::size_t>(count));
+    for (vtkIdType k = 0; k < count; ++k)
+    {
+      double p[3];
+      points->GetPoint(ids[k], p);
+      stroke.Points.emplace_back(p[0], p[1], p[2]);
+    }
+    strokes.push_back(std::move(stroke));
+  }
+  return strokes;
+}
+
+// The lines joined end to end (Lines/Core/PathJoining.h) where their ends
+// meet to within a billionth of the diagonal; a chain that comes back to its
+// start ends exactly on its first point, so the stylizer closes it.
+std::vector<Stroke> JoinedStrokes(
+  const std::vector<Stroke>& lines, const glm::dvec3& origin, double diagonal)
+{
+  const double step = diagonal > 0.0 ? 1e-9 * diagonal : 1.0;
+  std::vector<std::vector<glm::dvec3>> points;
+  points.reserve(lines.size());
+  for (const Stroke& line : lines)
+  {
+    points.push_back(line.Points);
+  }
+  std::vector<Stroke> strokes;
+  for (const std::vector<silsmooth::JoinedLine>& path :
+    silsmooth::joinedPaths(points, origin, step))
+  {
+    Stroke stroke;
+    stroke.FirstLine = lines[path.front().Line].FirstLine;
+    for (const silsmooth::JoinedLine& piece : path)
+    {
+      std::vector<glm::dvec3> next = lines[piece.Line].Points;
+      if (piece.Reversed)
+      {
+        std::reverse(next.begin(), next.end());
+      }
+      // The joint once: the point the stroke so far ends on.
+      stroke.Points.insert(
+        stroke.Points.end(), next.begin() + (stroke.Points.empty() ? 0 : 1), next.end());
+    }
+    if (path.size() > 1 && glm::length(stroke.Points.back() - stroke.Points.front()) <= step)
+    {
+      stroke.Points.back() = stroke.Points.front();
+    }
+    strokes.push_back(std::move(stroke));
+  }
+  return strokes;
 }
 
 } // namespace
@@ -125,38 +203,23 @@ int vtkStylizedStrokeFilter::RequestViewData(vtkInformation*, vtkInformationVect
     view.eye = modelView.Geometry.Eye;
     view.direction = -modelView.Geometry.TowardViewer;
 
-    const vtkIdType numberOfPoints = inPoints->GetNumberOfPoints();
-    vtkIdType strokeIndex = 0;
-    vtkIdType count = 0;
-    const vtkIdType* ids = nullptr;
-    const vtkIdType total = inLines->GetNumberOfCells();
-    auto iterator = vtk::TakeSmartPointer(inLines->NewIterator());
-    for (iterator->GoToFirstCell(); !iterator->IsDoneWithTraversal();
-         iterator->GoToNextCell(), ++strokeIndex)
+    const std::vector<Stroke> strokes = this->JoinLines
+      ? JoinedStrokes(
+          LineCells(inPoints, inLines), glm::dvec3(bounds[0], bounds[2], bounds[4]), diagonal)
+      : LineCells(inPoints, inLines);
+    for (std::size_t s = 0; s < strokes.size(); ++s)
     {
-      if (strokeIndex % 256 == 0)
+      if (s % 256 == 0)
       {
         if (!vtkSilhouetteFilterSupport::ReportProgress(
-              this, static_cast<double>(strokeIndex) / total))
+              this, static_cast<double>(s) / static_cast<double>(strokes.size())))
         {
           break;
         }
       }
-      iterator->GetCurrentCell(count, ids);
-      std::vector<glm::dvec3> stroke;
-      stroke.reserve(count);
-      for (vtkIdType k = 0; k < count; ++k)
-      {
-        double p[3];
-        inPoints->GetPoint(ids[k], p);
-        stroke.emplace_back(p[0], p[1], p[2]);
-      }
-      if (stroke.size() < 2)
-      {
-        continue;
-      }
-      const silsmooth::StylizedStroke result =
-        silsmooth::stylizeStroke(stroke, view, parameters, static_cast<std::uint64_t>(strokeIndex));
+      const Stroke& stroke = strokes[s];
+      const silsmooth::StylizedStroke result = silsmooth::stylizeStroke(
+        stroke.Points, view, parameters, static_cast<std::uint64_t>(stroke.FirstLine));
       lines->InsertNextCell(static_cast<vtkIdType>(result.points.size()));
       for (std::size_t i = 0; i < result.points.size(); ++i)
       {
@@ -165,7 +228,7 @@ int vtkStylizedStrokeFilter::RequestViewData(vtkInformation*, vtkInformationVect
         offsets->InsertNextTuple2(result.tangentOffset[i], result.normalOffset[i]);
         arcLengths->InsertNextValue(result.arcLength[i]);
       }
-      strokeIds->InsertNextValue(strokeIndex);
+      strokeIds->InsertNextValue(stroke.FirstLine);
     }
   }
   output->SetPoints(points);
@@ -185,4 +248,5 @@ void vtkStylizedStrokeFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Wavelength: " << this->Wavelength << "\n";
   os << indent << "Spacing: " << this->Spacing << "\n";
   os << indent << "Seed: " << this->Seed << "\n";
+  os << indent << "JoinLines: " << (this->JoinLines ? "On" : "Off") << "\n";
 }

@@ -35,11 +35,12 @@
  * lines gives no strokes, with a warning. A stroke shorter than 4 times the
  * amplitude is drawn with a quarter of its length as its amplitude.
  *
- * Output: one polyline per input line cell (verts and polygons are dropped),
- * with point data `BrushOffset` (2 components: v_x and v_y in world units),
- * `StrokeArcLength`, and cell data `StrokeId` (the input line's index among
- * the line cells). Point data of the input is not carried (resampling adds
- * points).
+ * Output: one polyline per stroke: per input line cell, or per chain of
+ * them with JoinLines (verts and polygons are dropped), with point data
+ * `BrushOffset` (2 components: v_x and v_y in world units),
+ * `StrokeArcLength`, and cell data `StrokeId` (the index among the line
+ * cells of the stroke's first input line, which also seeds its noise).
+ * Point data of the input is not carried (resampling adds points).
  */
 #ifndef vtkStylizedStrokeFilter_h
 #define vtkStylizedStrokeFilter_h
@@ -98,6 +99,22 @@ public:
   ///@}
 
   ///@{
+  /**
+   * Join input lines whose ends meet (at the same position, to within a
+   * billionth of the input's diagonal) into one stroke before the brush,
+   * so that the brush runs on across the joint; where more than two ends
+   * meet, the two that continue each other most straightly are joined. A
+   * chain that comes back to its start is a closed stroke. Lines that
+   * split one curve (the visible pieces of vtkSilhouetteLineVisibility, the
+   * outline's gaps it adds) would otherwise each start and end a stroke
+   * there, with its own offsets, and break the drawn curve. Default on.
+   */
+  vtkSetMacro(JoinLines, vtkTypeBool);
+  vtkGetMacro(JoinLines, vtkTypeBool);
+  vtkBooleanMacro(JoinLines, vtkTypeBool);
+  ///@}
+
+  ///@{
   /** Seed of the noise (hand, rough). Default 1. */
   vtkSetMacro(Seed, vtkTypeUInt64);
   vtkGetMacro(Seed, vtkTypeUInt64);
@@ -115,6 +132,7 @@ protected:
   double Wavelength = 0.02;
   double Spacing = 0.002;
   vtkTypeUInt64 Seed = 1;
+  vtkTypeBool JoinLines = 1;
 
 private:
   vtkStylizedStrokeFilter(const vtkStylizedStrokeFilter&) = delete;

@@ -587,7 +587,7 @@ std::vector<LinePiece> closeShortInsideGaps(std::vector<LinePiece> pieces,
   const LineVisibilityParameters& rule)
 {
   const double longest = OcclusionMesh::InsideGapOutlines * rule.OutlinePixels;
-  if (!(longest > 0.0) || pieces.size() < 3)
+  if (!rule.DrawShortDips || !(longest > 0.0) || pieces.size() < 3)
   {
     return pieces;
   }

@@ -89,6 +89,14 @@ struct LineVisibilityParameters
   /// (ViewGeometry::toPixels); 0 turns both off. Meant for silhouettes:
   /// a crease in a valley has its faces in front of it on both sides.
   double OutlinePixels = 0.0;
+  /// Whether a hidden piece shorter than OcclusionMesh::InsideGapOutlines
+  /// times OutlinePixels in the image, between two visible pieces, that only
+  /// insideTheOutline hides is drawn (the line as if never split there): so
+  /// the outline has no break where the smoothed curve dips a little inside
+  /// a coarse part's image. Off where the drawing closes the outline's gaps
+  /// with the surface's own contour (OutlineGaps.h), which draws the outline
+  /// there as the surface has it, not the dip's chord across a tip.
+  bool DrawShortDips = true;
 
   /// Tolerance: the mesh's mean edge length; Precision: 1e-6 of its bounding
   /// box's diagonal; SampleSpacing: 1/400 of it; Contact: 1e-5 of it.

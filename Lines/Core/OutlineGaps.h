@@ -19,15 +19,19 @@
 // there, or jumps in depth (a fold of the re-meshing with the surface just
 // behind it is not the outline). A drawn line covers a contour point that
 // lies within JoinPixels of it, or that it runs alongside within GapPixels
-// (its nearest point not an end of the line, its direction near the
-// contour's); a gap is a stretch of outline no drawn line covers. The two distances keep apart what
-// a user sees as one line and as two: a contour running 2 or 3 px beside a drawn silhouette is the
-// same edge of the image (drawing it doubled the stroke), while between two lines that stop short
-// of each other the gap runs on to within JoinPixels of their ends.
+// (the line's nearest point not one of its ends, the direction there near
+// the contour's); a gap is a stretch of outline no drawn line covers. The two distances keep apart
+// what a user sees as one line and as two: a contour running 2 or 3 px beside a drawn silhouette is
+// the same edge of the image (drawing it doubled the stroke), while between two lines that stop
+// short of each other the gap runs on to within JoinPixels of their ends.
 //
 // Invariants: every point of a gap lies on a contour edge of the surface
 // (so on the surface), and no drawn line covers it at the probes that
-// classified it; gaps shorter than JoinPixels in the image are left out.
+// classified it; gaps shorter than JoinPixels in the image are left out,
+// but for those between two ends of drawn lines (each within twice
+// JoinPixels of one of the gap's ends, JoinPixels or more apart): a break
+// of three or four pixels leaves only such a stretch open, and joined to
+// the lines it closes the break.
 #pragma once
 
 #include "LineVisibility.h"
@@ -87,7 +91,9 @@ std::vector<std::vector<glm::dvec3>> outlineGaps(const OcclusionMesh& surface,
 /// curve is hidden, the gap's ends meet two different pieces of it, and
 /// the gap stays: it is the outline there. So does a gap beside a line
 /// that passes farther than `pixels` from its ends (another part's
-/// outline running alongside), and a closed gap.
+/// outline running alongside), a gap with the end of a drawn line within
+/// `pixels` of either of its ends (it bridges a break in that line, which
+/// a thin part's other outline may pass beside), and a closed gap.
 std::vector<std::vector<glm::dvec3>> withoutDetours(std::vector<std::vector<glm::dvec3>> gaps,
   const ViewGeometry& view, const std::vector<std::vector<glm::dvec3>>& drawn, double pixels,
   double share);

@@ -3,6 +3,8 @@
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <map>
 #include <tuple>
 
@@ -21,35 +23,39 @@ std::size_t endOf(std::size_t line, int last)
 
 // The unit direction in which the line leaves its end (towards its nearest
 // point at another position); zero for a line of one position.
-glm::dvec2 leaving(const std::vector<glm::dvec2>& line, int last)
+template<typename Point>
+Point leaving(const std::vector<Point>& line, int last)
 {
   const std::size_t n = line.size();
-  const glm::dvec2 from = last ? line[n - 1] : line[0];
+  const Point from = last ? line[n - 1] : line[0];
   for (std::size_t k = 1; k < n; ++k)
   {
-    const glm::dvec2 to = last ? line[n - 1 - k] : line[k];
+    const Point to = last ? line[n - 1 - k] : line[k];
     const double length = glm::distance(from, to);
     if (length > 0.0)
     {
       return (to - from) / length;
     }
   }
-  return glm::dvec2(0.0);
+  return Point(0.0);
 }
 
-} // namespace
+using EndKey = std::tuple<int, std::int64_t, std::int64_t, std::int64_t>; // group, position
 
-std::vector<std::vector<JoinedLine>> joinedPaths(const std::vector<std::vector<glm::dvec2>>& lines,
-  const std::vector<int>& groups, std::pair<std::int64_t, std::int64_t> (*keyOf)(const glm::dvec2&))
+// joinedPaths for points of either dimension; keyOf(point) gives an end's
+// position key.
+template<typename Point, typename KeyOf>
+std::vector<std::vector<JoinedLine>> joinLines(
+  const std::vector<std::vector<Point>>& lines, const std::vector<int>& groups, KeyOf keyOf)
 {
   // The ends at each point of each group.
-  std::map<std::tuple<int, std::int64_t, std::int64_t>, std::vector<std::size_t>> meeting;
+  std::map<EndKey, std::vector<std::size_t>> meeting;
   for (std::size_t i = 0; i < lines.size(); ++i)
   {
     for (int last = 0; last < 2; ++last)
     {
-      const auto [x, y] = keyOf(last ? lines[i].back() : lines[i].front());
-      meeting[{ groups[i], x, y }].push_back(endOf(i, last));
+      const auto [x, y, z] = keyOf(last ? lines[i].back() : lines[i].front());
+      meeting[{ groups[i], x, y, z }].push_back(endOf(i, last));
     }
   }
   // Pair the ends at each point, the straightest continuation first.
@@ -123,6 +129,27 @@ std::vector<std::vector<JoinedLine>> joinedPaths(const std::vector<std::vector<g
       return a.front().Line < b.front().Line;
     });
   return paths;
+}
+
+} // namespace
+
+std::vector<std::vector<JoinedLine>> joinedPaths(const std::vector<std::vector<glm::dvec2>>& lines,
+  const std::vector<int>& groups, std::pair<std::int64_t, std::int64_t> (*keyOf)(const glm::dvec2&))
+{
+  return joinLines(lines, groups, [keyOf](const glm::dvec2& point) {
+    const auto [x, y] = keyOf(point);
+    return std::array<std::int64_t, 3>{ x, y, 0 };
+  });
+}
+
+std::vector<std::vector<JoinedLine>> joinedPaths(
+  const std::vector<std::vector<glm::dvec3>>& lines, const glm::dvec3& origin, double step)
+{
+  return joinLines(lines, std::vector<int>(lines.size(), 0), [&](const glm::dvec3& point) {
+    const glm::dvec3 steps = (point - origin) / step;
+    return std::array<std::int64_t, 3>{ std::llround(steps.x), std::llround(steps.y),
+      std::llround(steps.z) };
+  });
 }
 
 } // namespace silsmooth

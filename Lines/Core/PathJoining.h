@@ -15,6 +15,7 @@
 #pragma once
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -37,5 +38,13 @@ struct JoinedLine
 std::vector<std::vector<JoinedLine>> joinedPaths(const std::vector<std::vector<glm::dvec2>>& lines,
   const std::vector<int>& groups,
   std::pair<std::int64_t, std::int64_t> (*keyOf)(const glm::dvec2&));
+
+/// The same for lines in space (model coordinates), one group: an end's key
+/// is its position less `origin` in steps of `step`, rounded (a positive
+/// step; points within a rounding step of each other meet, and points
+/// apart by a step or more do not). The origin keeps the keys small: the
+/// lines' bounding box's corner, with a step of a billionth of its diagonal.
+std::vector<std::vector<JoinedLine>> joinedPaths(
+  const std::vector<std::vector<glm::dvec3>>& lines, const glm::dvec3& origin, double step);
 
 } // namespace silsmooth

@@ -260,6 +260,13 @@ TEST(LineVisibility, AShortDipInsideItsSheetsImageLeavesNoGap)
   EXPECT_TRUE(dip[0].Visible);
   EXPECT_EQ(dip[0].Points, line);
   EXPECT_EQ(dip[0].Along, (std::vector<double>{ 0.0, 1.0, 2.0 }));
+  LineVisibilityParameters noDips = parameters;
+  noDips.DrawShortDips = false;
+  const std::vector<LinePiece> leftOut =
+    splitByVisibility(flaps({ { -0.02, 0.02 } }), view, line, noDips);
+  expectWellFormed(leftOut, line);
+  ASSERT_EQ(leftOut.size(), 3u) << "the dip left to the outline's gaps";
+  EXPECT_FALSE(leftOut[1].Visible);
 
   const std::vector<LinePiece> run =
     splitByVisibility(flaps({ { -0.2, 0.2 } }), view, line, parameters);

@@ -352,4 +352,60 @@ TEST(OutlineGaps, AGapBesideOneDrawnLineAllAlongIsADetourLeftOut)
   const std::vector<std::vector<glm::dvec3>> loop{ { { 0.0, 0.03, 0.0 }, { 0.34, 0.03, 0.0 },
     { 0.17, 0.06, 0.0 }, { 0.0, 0.03, 0.0 } } };
   EXPECT_EQ(withoutDetours(loop, view, { drawn }, pixels, 0.25).size(), 1u);
+
+  // A break of 6 px in a silhouette (two visible pieces, the curve hidden
+  // between them), its gap 1 px above and 1.5 px short of the pieces' ends,
+  // and the other outline of a thin part 3 px above the gap all along: the
+  // gap bridges the break, kept. That other line alone would make it a
+  // detour (the wrong variant: the spider's legs had their breaks open).
+  const std::vector<std::vector<glm::dvec3>> bridge{ { { 0.015, 0.01, 0.0 },
+    { 0.045, 0.01, 0.0 } } };
+  const std::vector<glm::dvec3> otherSide = line(0.04, -0.1, 0.5);
+  EXPECT_EQ(withoutDetours(
+              bridge, view, { line(0.0, -0.1, 0.0), line(0.0, 0.06, 0.5), otherSide }, pixels, 0.25)
+              .size(),
+    1u);
+  EXPECT_TRUE(withoutDetours(bridge, view, { otherSide }, pixels, 0.25).empty());
+}
+
+TEST(OutlineGaps, ABreakOfAFewPixelsInALineBesideTheOutlineIsBridged)
+{
+  // The hexagon drawn a pixel inside the outline, with a break of 3.5 px in
+  // the middle of one edge, a vertex half a pixel before each end of it (a
+  // smoothed curve's samples are that close): as at the coarse bunny's ear
+  // tip at 400 x 300, where the silhouette passes under a facet for a few
+  // pixels.
+  const OcclusionMesh surface = cube();
+  const ViewGeometry view = parallelView(Generic);
+  const std::vector<glm::dvec3> hexagon = shrunk(contourPolylines(surface, view)[0], 1.0);
+  const glm::dvec3 toward = glm::normalize(Generic);
+  const glm::dvec3 edge = hexagon[1] - hexagon[0];
+  const double edgePixels = 100.0 * glm::length(edge - glm::dot(edge, toward) * toward);
+  auto at = [&](double pixels) {
+    return hexagon[0] + (0.5 + pixels / edgePixels) * edge;
+  };
+  std::vector<glm::dvec3> drawn{ at(1.75), at(2.25) };
+  drawn.insert(drawn.end(), hexagon.begin() + 1, hexagon.end()); // round to hexagon[0]
+  drawn.push_back(at(-2.25));
+  drawn.push_back(at(-1.75));
+  const OutlineGapParameters rule = gapRule();
+
+  // One stretch of the contour, in the break, shorter than the join
+  // distance: kept, since a line ends by each of its ends.
+  const std::vector<std::vector<glm::dvec3>> gaps = outlineGaps(surface, view, { drawn }, rule);
+  ASSERT_EQ(gaps.size(), 1u);
+  const double stretch = 100.0 * length(gaps); // about the pixels in the image
+  EXPECT_GT(stretch, 0.0);
+  EXPECT_LT(stretch, 2.0 * rule.JoinPixels);
+  // Joined to the line's two ends, it closes the drawing.
+  const std::vector<std::vector<glm::dvec3>> joined =
+    joinedToDrawnLines(withoutDetours(gaps, view, { drawn }, 5.0, 0.25), view, { drawn }, 5.0);
+  ASSERT_EQ(joined.size(), 1u);
+  EXPECT_LT(glm::length(joined[0].front() - drawn.back()), 1e-9);
+  EXPECT_LT(glm::length(joined[0].back() - drawn.front()), 1e-9);
+
+  // The wrong variant, the line unbroken: no gap (nothing to bridge, and
+  // nothing open: the line runs alongside the whole outline).
+  std::vector<glm::dvec3> whole(hexagon.begin(), hexagon.end());
+  EXPECT_TRUE(outlineGaps(surface, view, { whole }, rule).empty());
 }

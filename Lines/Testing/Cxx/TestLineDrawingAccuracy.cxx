@@ -72,10 +72,17 @@
 //                 view 2:   14 of 4218 px (0.33%) / 99.5% (98.9%) / 2026 of  6777 (30%)
 //   bracket       view 1:    0 of 7554 px         / 100%  (100%)  / 3205 of 10971 (29%)
 //                 view 2:    0 of 5099 px         / 100%  (100%)  / 5176 of 10466 (49%)
+// Since 2026-12-06 a short dip of a silhouette inside its sheet's image
+// is left to the gaps' contour (LineVisibilityParameters::DrawShortDips
+// off with OutlineGapPixels), and a gap that bridges a break in a line is
+// never a detour: strays 0, 9, 10, 15, 3, 14, 0, 0 (the bunny's ear tip
+// in view 2 lost its chord, 7 px up to 3.2 px off), outline drawn 100,
+// 100, 99.4, 99.2, 100, 100, 100, 100%. The wrong variant of the lowered
+// limits (11 and 13), the dips drawn as before, strays 18 and 14.
 // (b) meets the issue everywhere; (a) on the bracket and the bunny's view
 // 1. The other limits are the measured strays plus about a quarter (at
 // least 2), so that they catch regressions; every remaining stray is 2 to
-// 3.2 px off a discontinuity. Each stray cluster is printed with how far the
+// 2.8 px off a discontinuity. Each stray cluster is printed with how far the
 // line lies behind the surface at its pixels, from the drawing's own depth
 // buffer.
 // Until 2026-12-03 the program's drawing was the exact visibility's where
@@ -109,7 +116,7 @@
 // though the boss hides its middle (only vertices were classified).
 // With -T FOLDER, each view's drawing is written there as
 // TestLineDrawingAccuracy_<mesh>_<view>.png: line pixels black, strays red,
-// discontinuity pixels grey.
+// discontinuity pixels grey, outline pixels with no line near them blue.
 #include "vtkActor.h"
 #include "vtkAppendPolyData.h"
 #include "vtkCamera.h"
@@ -454,17 +461,24 @@ void PrintClusters(const Strays& strays, const std::vector<float>& toDiscontinui
   }
   std::sort(clusters.begin(), clusters.end(),
     [](const Cluster& a, const Cluster& b) { return a.Size > b.Size; });
-  for (std::size_t k = 0; k < std::min<std::size_t>(3, clusters.size()); ++k)
+  for (const Cluster& c : clusters)
   {
-    const Cluster& c = clusters[k];
-    std::printf("    %3d px at x %d..%d, y %d..%d: up to %.1f px off, %.3f..%.3f diagonal behind "
-                "the surface\n",
-      c.Size, c.X0, c.X1, c.Y0, c.Y1, c.Farthest, c.Behind[0], c.Behind[1]);
+    std::printf("    %3d px at x %d..%d, y %d..%d: up to %.1f px off, ", c.Size, c.X0, c.X1, c.Y0,
+      c.Y1, c.Farthest);
+    if (c.Behind[0] <= c.Behind[1])
+    {
+      std::printf("%.3f..%.3f diagonal behind the surface\n", c.Behind[0], c.Behind[1]);
+    }
+    else
+    {
+      std::printf("over no surface\n");
+    }
   }
 }
 
 void WriteDiagnosis(const std::string& path, const Drawing& drawing,
-  const std::vector<unsigned char>& discontinuity, const Strays& strays)
+  const std::vector<unsigned char>& discontinuity, const Strays& strays,
+  const std::vector<unsigned char>& outline, const std::vector<float>& toLine)
 {
   vtkNew<vtkImageData> image;
   image->SetDimensions(Width, Height, 1);
@@ -476,6 +490,11 @@ void WriteDiagnosis(const std::string& path, const Drawing& drawing,
     if (discontinuity[p])
     {
       c[0] = c[1] = c[2] = 190;
+    }
+    if (outline[p] && toLine[p] > Near)
+    {
+      c[0] = c[1] = 0; // an outline pixel with no line near it: blue
+      c[2] = 255;
     }
     if (drawing.Dark[p])
     {
@@ -596,7 +615,7 @@ bool CheckMesh(const std::string& file, const Case (&views)[2], vtkRenderWindow*
     {
       WriteDiagnosis(
         temporary + "/TestLineDrawingAccuracy_" + name + "_" + std::to_string(v + 1) + ".png",
-        drawing, discontinuity, strays);
+        drawing, discontinuity, strays, outline, toLine);
     }
 
     if (strays.Lines < 1000 || outlinePixels < 1000)
@@ -653,8 +672,8 @@ int TestLineDrawingAccuracy(int argc, char* argv[])
   window->AddRenderer(renderer);
 
   const Case bunny[2] = { { "view 1 (azimuth 0, elevation 20)", 0.0, 20.0, 2 },
-    { "view 2 (azimuth 120, elevation -15)", 120.0, -15.0, 23 } };
-  const Case spider[2] = { { "view 1 (azimuth 0, elevation 20)", 0.0, 20.0, 17 },
+    { "view 2 (azimuth 120, elevation -15)", 120.0, -15.0, 11 } };
+  const Case spider[2] = { { "view 1 (azimuth 0, elevation 20)", 0.0, 20.0, 13 },
     { "view 2 (azimuth 120, elevation -15)", 120.0, -15.0, 19 } };
   const Case wuson[2] = { { "view 1 (azimuth 30, elevation 20)", 30.0, 20.0, 5 },
     { "view 2 (azimuth 225, elevation 10)", 225.0, 10.0, 18 } };

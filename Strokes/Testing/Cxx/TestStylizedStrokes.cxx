@@ -1,15 +1,19 @@
 // vtkStylizedStrokeFilter (Kim and Choe 3.5) on the smoothed silhouette of
 // the coarse bunny: every brush offset within its amplitude, offsets in the
 // view plane, zero amplitude gives the polylines back, the output repeats, a
-// model matrix means model coordinates, and a missing camera is an error.
+// model matrix means model coordinates, lines that meet end to end are one
+// stroke, and a missing camera is an error.
 #include "vtkCamera.h"
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSilhouetteSmoothingFilter.h"
+#include "vtkSmartPointer.h"
 #include "vtkStylizedStrokeFilter.h"
 #include "vtkTransform.h"
 #include "vtkTransformPolyDataFilter.h"
@@ -17,6 +21,7 @@
 #include "SilhouetteTestSupport.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -167,6 +172,91 @@ bool CheckModelMatrix(vtkPolyData* silhouette, vtkCamera* camera, double diagona
   return true;
 }
 
+// A circle drawn as three lines that meet end to end (the middle one
+// reversed, each with its own copies of the points where they meet), as
+// vtkSilhouetteLineVisibility's pieces of one curve come: joined, one closed
+// stroke along the circle; with JoinLines off (the wrong variant), three
+// strokes, and the brush breaks the circle where they meet.
+bool CheckJoinedLines()
+{
+  constexpr int Samples = 60;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines;
+  const int cuts[4] = { 0, 20, 40, Samples };
+  for (int part = 0; part < 3; ++part)
+  {
+    lines->InsertNextCell(cuts[part + 1] - cuts[part] + 1);
+    for (int k = cuts[part]; k <= cuts[part + 1]; ++k)
+    {
+      const int i = part == 1 ? cuts[1] + cuts[2] - k : k; // the middle one reversed
+      const double angle = 2.0 * vtkMath::Pi() * (i % Samples) / Samples;
+      lines->InsertCellPoint(points->InsertNextPoint(std::cos(angle), std::sin(angle), 0.0));
+    }
+  }
+  vtkNew<vtkPolyData> circle;
+  circle->SetPoints(points);
+  circle->SetLines(lines);
+  vtkNew<vtkCamera> camera;
+  camera->SetPosition(0.0, 0.0, 5.0);
+
+  auto strokes = [&](bool join, double amplitude) {
+    auto filter = vtkSmartPointer<vtkStylizedStrokeFilter>::New();
+    filter->SetInputData(circle);
+    filter->SetCamera(camera);
+    filter->SetBrushToHand();
+    filter->SetAmplitude(amplitude);
+    filter->SetSpacing(0.0);
+    filter->SetJoinLines(join);
+    filter->Update();
+    auto out = vtkSmartPointer<vtkPolyData>::New();
+    out->DeepCopy(filter->GetOutput());
+    return out;
+  };
+  // The biggest jump between consecutive points of a stroke, and between
+  // the strokes' ends that meet on the circle.
+  auto ends = [](vtkPolyData* out, vtkIdType cell, bool last) {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    out->GetLines()->GetCellAtId(cell, n, ids);
+    double p[3];
+    out->GetPoint(ids[last ? n - 1 : 0], p);
+    return std::array<double, 3>{ p[0], p[1], p[2] };
+  };
+  auto apart = [](const std::array<double, 3>& a, const std::array<double, 3>& b) {
+    return std::hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+  };
+
+  vtkSmartPointer<vtkPolyData> still = strokes(true, 0.0);
+  CHECK(still->GetNumberOfLines() == 1, "three lines meeting end to end are one stroke");
+  CHECK(still->GetNumberOfPoints() == Samples + 1, "each joint once");
+  CHECK(apart(ends(still, 0, false), ends(still, 0, true)) == 0.0, "a closed stroke");
+  for (vtkIdType i = 0; i < still->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    still->GetPoint(i, p);
+    const double angle = 2.0 * vtkMath::Pi() * (i % Samples) / Samples;
+    CHECK(std::hypot(p[0] - std::cos(angle), p[1] - std::sin(angle)) < 1e-6,
+      "along the circle in order");
+  }
+  CHECK(strokes(false, 0.0)->GetNumberOfLines() == 3, "the wrong variant: three strokes");
+
+  // With a brush: joined, the stroke stays closed; apart, the offsets of
+  // the ends that meet differ and break the circle.
+  vtkSmartPointer<vtkPolyData> joined = strokes(true, 0.02);
+  CHECK(
+    joined->GetNumberOfLines() == 1 && apart(ends(joined, 0, false), ends(joined, 0, true)) == 0.0,
+    "the brushed circle is closed");
+  vtkSmartPointer<vtkPolyData> separate = strokes(false, 0.02);
+  const double broken = std::max({ apart(ends(separate, 0, true), ends(separate, 1, true)),
+    apart(ends(separate, 1, false), ends(separate, 2, false)),
+    apart(ends(separate, 2, true), ends(separate, 0, false)) });
+  std::printf("brushed circle: %lld stroke(s) joined; apart, the widest break %.4f of the "
+              "diameter\n",
+    static_cast<long long>(joined->GetNumberOfLines()), broken / 2.0);
+  CHECK(broken > 0.002, "the wrong variant breaks the brushed circle where the lines meet");
+  return true;
+}
+
 bool Run(int argc, char* argv[])
 {
   auto bunny = silhouette_test::ReadMesh(silhouette_test::DataFile(argc, argv, "bunny_coarse.ply"));
@@ -184,6 +274,7 @@ bool Run(int argc, char* argv[])
   CHECK(CheckBrushes(silhouette, camera, diagonal), "brushes");
   CHECK(CheckZeroAmplitude(silhouette, camera), "zero amplitude");
   CHECK(CheckModelMatrix(silhouette, camera, diagonal), "model matrix");
+  CHECK(CheckJoinedLines(), "lines joined into strokes");
 
   // No camera: an error, not a crash.
   vtkNew<vtkStylizedStrokeFilter> blind;

@@ -117,6 +117,13 @@ std::size_t Utf8SequenceLength(
   return valid ? length : 0;
 }
 
+// Whether a title's character is written as '?' in both formats: a
+// control character other than the tab (not allowed in XML 1.0 text).
+bool IsControlCharacter(unsigned long code)
+{
+  return (code < 0x20 && code != '\t') || code == 0x7F;
+}
+
 // Text for an XML 1.0 document in UTF-8: markup characters escaped, and
 // control characters and bytes that are not UTF-8 (a file name in another
 // encoding) written as '?', so that the document always parses.
@@ -149,8 +156,7 @@ std::string EscapeXml(const std::string& text)
         escaped += "&quot;";
         break;
       default:
-        // Control characters are not allowed in XML 1.0 text.
-        escaped += length == 0 || (static_cast<unsigned char>(c) < 0x20 && c != '\t') ? '?' : c;
+        escaped += length == 0 || IsControlCharacter(static_cast<unsigned char>(c)) ? '?' : c;
     }
   }
   return escaped;
@@ -666,7 +672,7 @@ std::string PdfPath(const std::vector<std::array<double, 2>>& points, const char
 
 // Text for a PDF text string: UTF-16BE with its byte order mark, in hex.
 // Bytes that are not UTF-8 (a file name in another encoding) and control
-// characters are written as '?'.
+// characters are written as '?', as in the SVG's title.
 std::string PdfTextString(const std::string& text)
 {
   std::vector<unsigned long> units{ 0xFEFF };
@@ -675,7 +681,7 @@ std::string PdfTextString(const std::string& text)
     unsigned long code = 0;
     const std::size_t length = Utf8SequenceLength(text, i, &code);
     i += std::max<std::size_t>(length, 1);
-    if (length == 0 || code < 0x20 || code == 0x7F)
+    if (length == 0 || IsControlCharacter(code))
     {
       units.push_back('?');
     }

@@ -393,12 +393,15 @@ int vtkSilhouetteLineVisibility::RequestViewData(vtkInformation*,
     // Gaps beside a drawn line all along are left out (OutlineGaps.h's
     // withoutDetours): within a quarter of their length of it, they closed
     // boxes beside a zoomed-in outline.
+    // Where a gap stops, the contour has come within OutlineGapPixels of a
+    // line: a pixel more finds that line from the gap's end.
+    const double reach = this->OutlineGapPixels + 1.0;
     const std::vector<std::vector<glm::dvec3>>& drawn = writer.visiblePieces();
     for (const std::vector<glm::dvec3>& gap : silsmooth::joinedToDrawnLines(
            silsmooth::withoutDetours(
              silsmooth::outlineGaps(occluder, view.Geometry, drawn, gapParameters), view.Geometry,
-             drawn, this->OutlineGapPixels + 1.0, DetourShare),
-           view.Geometry, drawn, this->OutlineGapPixels + 1.0))
+             drawn, reach, DetourShare),
+           view.Geometry, drawn, reach))
     {
       writer.appendOutlineGap(gap);
     }

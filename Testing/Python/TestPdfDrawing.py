@@ -203,6 +203,21 @@ if code == 0 and pdfinfo:
     check(re.search(r"Page size:\s+150 x 112.5 pts", info) is not None,
           "pdfinfo reads a page of 200x150 pixels at 96 dpi")
 
+# A tab in the name is kept in both titles, as a control character is
+# written '?' in both (the PDF's title wrote the tab as '?').
+tabbed = os.path.join(work, "tab\tname")
+for suffix in (".pdf", ".svg"):
+    code, _, err = run("render", torus, "--style", "lines", "--size", "200x150",
+                       "-o", tabbed + suffix)
+    check(code == 0, "render to a name with a tab (%s)" % err.strip())
+if pdfinfo and os.path.exists(tabbed + ".pdf") and os.path.exists(tabbed + ".svg"):
+    info = subprocess.run([pdfinfo, tabbed + ".pdf"], capture_output=True, text=True,
+                          timeout=60).stdout
+    with open(tabbed + ".svg", encoding="utf-8") as svg:
+        svg_title = re.search(r"<title>([^<]*)</title>", svg.read()).group(1)
+    check("tab\tname.pdf" in info and "tab\tname.svg" in svg_title,
+          "the tab kept in the PDF's and the SVG's titles")
+
 # --- The cube: joined lines ----------------------------------------------------
 cube_file = drawing_checks.write_cube(work)
 cube_view = drawing_checks.CUBE_VIEW

@@ -267,6 +267,10 @@ void RunProgressiveSketch(const RenderOptions& options)
   // The single drawing's checks (CheckRenderOutputPath), for a folder of
   // PNG drawings or of SVG or PDF ones (--svg, --pdf).
   const bool vector = options.ProgressiveFormat != "png";
+  if (options.ProgressiveFormat == "pdf")
+  {
+    CheckPdfPageSize(options.Camera.ViewportSize);
+  }
   if (!vector && options.WidthByDepth)
   {
     throw UsageError("--width-by-depth needs SVG or PDF drawings; add --svg or --pdf to "

@@ -514,9 +514,24 @@ bool IsLineStyle(RenderStyle style)
     style != RenderStyle::NewGeometry;
 }
 
+void CheckPdfPageSize(const std::array<int, 2>& size)
+{
+  // PDF's smallest page is 3 by 3 units (points); a pixel is 0.75 pt.
+  if (size[0] < 4 || size[1] < 4)
+  {
+    throw UsageError("a PDF drawing's page is at least 3 pt on each side: --size 4x4 or more, "
+                     "not " +
+      std::to_string(size[0]) + "x" + std::to_string(size[1]));
+  }
+}
+
 void CheckRenderOutputPath(const RenderOptions& options)
 {
   const bool lineStyle = IsLineStyle(options.Style);
+  if (LowercaseExtension(options.Output) == ".pdf")
+  {
+    CheckPdfPageSize(options.Camera.ViewportSize);
+  }
   if (!IsVectorDrawingPath(options.Output))
   {
     if (LowercaseExtension(options.Output) != ".png")

@@ -38,8 +38,12 @@ void CheckImageOutputPath(const std::string& path);
 /// throws UsageError otherwise, for --width-by-depth or --join-lines
 /// without a drawing and for
 /// --hidden dashed in a PNG of a style other than lines (all options that
-/// do not go together), RuntimeError when the folder is missing.
+/// do not go together), for a .pdf smaller than CheckPdfPageSize allows,
+/// RuntimeError when the folder is missing.
 void CheckRenderOutputPath(const RenderOptions& options);
+/// Throws UsageError for a PDF page of fewer than 4 x 4 pixels: PDF's
+/// smallest page is 3 x 3 points, and a pixel is 0.75 pt.
+void CheckPdfPageSize(const std::array<int, 2>& size);
 /// Whether `style` draws lines (lines and the brushes), not a surface.
 bool IsLineStyle(RenderStyle style);
 

@@ -246,6 +246,24 @@ std::vector<double> EyeDepth(vtkRenderWindow* window, vtkCamera* camera)
   return depth;
 }
 
+// Shows `coloured` alone, unlit, in its own colours (point or cell scalars).
+void ShowUnlit(vtkRenderer* renderer, vtkPolyData* coloured, bool cellColours)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(coloured);
+  mapper->SetColorModeToDirectScalars();
+  if (cellColours)
+  {
+    mapper->SetScalarModeToUseCellData();
+  }
+  mapper->ScalarVisibilityOn();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->LightingOff();
+  renderer->RemoveAllViewProps();
+  renderer->AddActor(actor);
+}
+
 // The surface's connected parts (points joined where they have the same
 // position, so that a crease's copies do not cut a part), each drawn in a
 // flat colour of its own (its index + 1, cell colours: exact), read back.
@@ -281,16 +299,7 @@ std::vector<std::uint32_t> RenderParts(
     }
   }
   coloured->GetCellData()->SetScalars(colours);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(coloured);
-  mapper->SetColorModeToDirectScalars();
-  mapper->SetScalarModeToUseCellData();
-  mapper->ScalarVisibilityOn();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->LightingOff();
-  renderer->RemoveAllViewProps();
-  renderer->AddActor(actor);
+  ShowUnlit(renderer, coloured, true);
   const double background[3] = { renderer->GetBackground()[0], renderer->GetBackground()[1],
     renderer->GetBackground()[2] };
   renderer->SetBackground(0.0, 0.0, 0.0); // part 0
@@ -331,15 +340,7 @@ Reference RenderSurface(vtkRenderWindow* window, vtkRenderer* renderer, vtkPolyD
     }
   }
   coloured->GetPointData()->SetScalars(colours);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(coloured);
-  mapper->SetColorModeToDirectScalars();
-  mapper->ScalarVisibilityOn();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->LightingOff();
-  renderer->RemoveAllViewProps();
-  renderer->AddActor(actor);
+  ShowUnlit(renderer, coloured, false);
   renderer->ResetCameraClippingRange();
   window->Render();
 

@@ -110,12 +110,14 @@ std::vector<Stroke> LineCells(vtkPoints* points, vtkCellArray* lines)
 }
 
 // The lines joined end to end (Lines/Core/PathJoining.h) where their ends
-// meet to within a billionth of the diagonal; a chain that comes back to its
-// start ends exactly on its first point, so the stylizer closes it.
-std::vector<Stroke> JoinedStrokes(
-  const std::vector<Stroke>& lines, const glm::dvec3& origin, double diagonal)
+// meet to within a hundred-thousandth of the diagonal (a hundredth of a
+// pixel on a drawing 1,000 px across: ends the line visibility filter
+// placed a hair apart, 1e-5 of the diagonal on the Wuson, are joined); a
+// chain that comes back to its start ends exactly on its first point, so
+// the stylizer closes it.
+std::vector<Stroke> JoinedStrokes(const std::vector<Stroke>& lines, double diagonal)
 {
-  const double step = diagonal > 0.0 ? 1e-9 * diagonal : 1.0;
+  const double tolerance = 1e-5 * diagonal;
   std::vector<std::vector<glm::dvec3>> points;
   points.reserve(lines.size());
   for (const Stroke& line : lines)
@@ -123,8 +125,7 @@ std::vector<Stroke> JoinedStrokes(
     points.push_back(line.Points);
   }
   std::vector<Stroke> strokes;
-  for (const std::vector<silsmooth::JoinedLine>& path :
-    silsmooth::joinedPaths(points, origin, step))
+  for (const std::vector<silsmooth::JoinedLine>& path : silsmooth::joinedPaths(points, tolerance))
   {
     Stroke stroke;
     stroke.FirstLine = lines[path.front().Line].FirstLine;
@@ -139,7 +140,7 @@ std::vector<Stroke> JoinedStrokes(
       stroke.Points.insert(
         stroke.Points.end(), next.begin() + (stroke.Points.empty() ? 0 : 1), next.end());
     }
-    if (path.size() > 1 && glm::length(stroke.Points.back() - stroke.Points.front()) <= step)
+    if (path.size() > 1 && glm::length(stroke.Points.back() - stroke.Points.front()) <= tolerance)
     {
       stroke.Points.back() = stroke.Points.front();
     }
@@ -204,8 +205,7 @@ int vtkStylizedStrokeFilter::RequestViewData(vtkInformation*, vtkInformationVect
     view.direction = -modelView.Geometry.TowardViewer;
 
     const std::vector<Stroke> strokes = this->JoinLines
-      ? JoinedStrokes(
-          LineCells(inPoints, inLines), glm::dvec3(bounds[0], bounds[2], bounds[4]), diagonal)
+      ? JoinedStrokes(LineCells(inPoints, inLines), diagonal)
       : LineCells(inPoints, inLines);
     for (std::size_t s = 0; s < strokes.size(); ++s)
     {

@@ -101,7 +101,8 @@ public:
   ///@{
   /**
    * Join input lines whose ends meet (at the same position, to within a
-   * billionth of the input's diagonal) into one stroke before the brush,
+   * hundred-thousandth of the input's diagonal) into one stroke before the
+   * brush,
    * so that the brush runs on across the joint; where more than two ends
    * meet, the two that continue each other most straightly are joined. A
    * chain that comes back to its start is a closed stroke. Lines that

@@ -110,20 +110,38 @@ public:
 
   /// The drawn point nearest `pixel`, within `reach` pixels, in model
   /// coordinates (interpolated along its segment as in the image), or no
-  /// value. Ties go to the segment looked at first.
-  std::optional<glm::dvec3> nearest(const glm::dvec2& pixel, double reach) const
+  /// value; where that point lies within `snap` pixels of an end of an open
+  /// line, that end itself, bit for bit (paths and strokes join where ends
+  /// are equal). Ties go to the segment looked at first.
+  std::optional<glm::dvec3> nearest(const glm::dvec2& pixel, double reach, double snap) const
   {
-    std::optional<glm::dvec3> found;
+    const Segment* closest = nullptr;
+    double closestAlong = 0.0;
     double best = reach;
     this->anySegmentNear(pixel, reach, [&](const Segment& segment, double along, double distance) {
-      if (distance < best || (!found && distance <= reach))
+      if (distance < best || (!closest && distance <= reach))
       {
         best = distance;
-        found = segment.ModelA + along * (segment.ModelB - segment.ModelA);
+        closest = &segment;
+        closestAlong = along;
       }
       return false; // every segment near
     });
-    return found;
+    if (!closest)
+    {
+      return std::nullopt;
+    }
+    const Segment& segment = *closest;
+    const glm::dvec2 at = segment.A + closestAlong * (segment.B - segment.A);
+    if (segment.StartsLine && glm::length(at - segment.A) <= snap)
+    {
+      return segment.ModelA;
+    }
+    if (segment.EndsLine && glm::length(at - segment.B) <= snap)
+    {
+      return segment.ModelB;
+    }
+    return segment.ModelA + closestAlong * (segment.ModelB - segment.ModelA);
   }
 
   /// The drawn lines with a segment within `radius` pixels of `pixel`,
@@ -477,6 +495,10 @@ std::vector<std::vector<glm::dvec3>> joinedToDrawnLines(std::vector<std::vector<
   const ViewGeometry& view, const std::vector<std::vector<glm::dvec3>>& drawn, double reach)
 {
   const DrawnSegments drawnSegments(view, drawn, reach, 1.0);
+  // Within half a pixel of a line's end, the gap joins that end exactly: a
+  // point a hair from it (6e-7 of a unit on the coarse bunny's ear tip)
+  // kept a brush's strokes apart there.
+  constexpr double snap = 0.5;
   for (std::vector<glm::dvec3>& gap : gaps)
   {
     if (gap.size() < 2 || gap.front() == gap.back())
@@ -486,14 +508,14 @@ std::vector<std::vector<glm::dvec3>> joinedToDrawnLines(std::vector<std::vector<
     glm::dvec2 pixel;
     if (view.toPixels(gap.back(), pixel))
     {
-      if (const auto to = drawnSegments.nearest(pixel, reach))
+      if (const auto to = drawnSegments.nearest(pixel, reach, snap))
       {
         gap.push_back(*to);
       }
     }
     if (view.toPixels(gap.front(), pixel))
     {
-      if (const auto to = drawnSegments.nearest(pixel, reach))
+      if (const auto to = drawnSegments.nearest(pixel, reach, snap))
       {
         gap.insert(gap.begin(), *to);
       }

@@ -103,8 +103,11 @@ std::vector<std::vector<glm::dvec3>> withoutDetours(std::vector<std::vector<glm:
 /// point (in model coordinates) is added to the gap before its first point
 /// or after its last, so that the drawing has no break there (a gap stops
 /// JoinPixels short of a line that ends, and the contour can run a pixel or
-/// more beside the line it continues). Closed gaps and ends with no line
-/// within reach are left as they are.
+/// more beside the line it continues). Where that point lies within half a
+/// pixel of the line's end, the end itself is added, bit for bit, so that
+/// the gap and the line meet at equal points (a brush joins them into one
+/// stroke). Closed gaps and ends with no line within reach are left as
+/// they are.
 std::vector<std::vector<glm::dvec3>> joinedToDrawnLines(std::vector<std::vector<glm::dvec3>> gaps,
   const ViewGeometry& view, const std::vector<std::vector<glm::dvec3>>& drawn, double reach);
 

@@ -143,12 +143,76 @@ std::vector<std::vector<JoinedLine>> joinedPaths(const std::vector<std::vector<g
 }
 
 std::vector<std::vector<JoinedLine>> joinedPaths(
-  const std::vector<std::vector<glm::dvec3>>& lines, const glm::dvec3& origin, double step)
+  const std::vector<std::vector<glm::dvec3>>& lines, double tolerance)
 {
+  // The ends, clustered: ends within `tolerance` of each other (directly or
+  // through others) are one cluster, found through a grid of cells as wide
+  // as the tolerance (a pair within it lies in the same or a neighbouring
+  // cell).
+  std::vector<glm::dvec3> ends;
+  ends.reserve(2 * lines.size());
+  for (const std::vector<glm::dvec3>& line : lines)
+  {
+    ends.push_back(line.front());
+    ends.push_back(line.back());
+  }
+  std::vector<std::size_t> parent(ends.size());
+  for (std::size_t i = 0; i < parent.size(); ++i)
+  {
+    parent[i] = i;
+  }
+  const auto root = [&](std::size_t i) {
+    while (parent[i] != i)
+    {
+      i = parent[i] = parent[parent[i]];
+    }
+    return i;
+  };
+  const double cell = tolerance > 0.0 ? tolerance : 1.0;
+  const auto cellOf = [&](const glm::dvec3& p) {
+    return std::array<std::int64_t, 3>{ static_cast<std::int64_t>(std::floor(p.x / cell)),
+      static_cast<std::int64_t>(std::floor(p.y / cell)),
+      static_cast<std::int64_t>(std::floor(p.z / cell)) };
+  };
+  std::map<std::array<std::int64_t, 3>, std::vector<std::size_t>> grid;
+  for (std::size_t i = 0; i < ends.size(); ++i)
+  {
+    const std::array<std::int64_t, 3> c = cellOf(ends[i]);
+    for (std::int64_t dx = -1; dx <= 1; ++dx)
+    {
+      for (std::int64_t dy = -1; dy <= 1; ++dy)
+      {
+        for (std::int64_t dz = -1; dz <= 1; ++dz)
+        {
+          const auto near = grid.find({ c[0] + dx, c[1] + dy, c[2] + dz });
+          if (near == grid.end())
+          {
+            continue;
+          }
+          for (const std::size_t j : near->second)
+          {
+            if (glm::distance(ends[i], ends[j]) <= tolerance)
+            {
+              parent[root(i)] = root(j);
+            }
+          }
+        }
+      }
+    }
+    grid[c].push_back(i);
+  }
+  // An end's key: its cluster. The keys are looked up by the end's exact
+  // position, which the lines hand back.
+  std::map<std::array<double, 3>, std::int64_t> clusterAt;
+  for (std::size_t i = 0; i < ends.size(); ++i)
+  {
+    clusterAt.emplace(
+      std::array<double, 3>{ ends[i].x, ends[i].y, ends[i].z }, static_cast<std::int64_t>(root(i)));
+  }
   return joinLines(lines, std::vector<int>(lines.size(), 0), [&](const glm::dvec3& point) {
-    const glm::dvec3 steps = (point - origin) / step;
-    return std::array<std::int64_t, 3>{ std::llround(steps.x), std::llround(steps.y),
-      std::llround(steps.z) };
+    return std::array<std::int64_t, 3>{
+      clusterAt.at(std::array<double, 3>{ point.x, point.y, point.z }), 0, 0
+    };
   });
 }
 

@@ -39,12 +39,10 @@ std::vector<std::vector<JoinedLine>> joinedPaths(const std::vector<std::vector<g
   const std::vector<int>& groups,
   std::pair<std::int64_t, std::int64_t> (*keyOf)(const glm::dvec2&));
 
-/// The same for lines in space (model coordinates), one group: an end's key
-/// is its position less `origin` in steps of `step`, rounded (a positive
-/// step; points within a rounding step of each other meet, and points
-/// apart by a step or more do not). The origin keeps the keys small: the
-/// lines' bounding box's corner, with a step of a billionth of its diagonal.
+/// The same for lines in space (model coordinates, two points or more
+/// each), one group: ends meet where they lie within `tolerance` of each
+/// other, directly or through other ends (0: at equal positions only).
 std::vector<std::vector<JoinedLine>> joinedPaths(
-  const std::vector<std::vector<glm::dvec3>>& lines, const glm::dvec3& origin, double step);
+  const std::vector<std::vector<glm::dvec3>>& lines, double tolerance);
 
 } // namespace silsmooth

@@ -409,3 +409,33 @@ TEST(OutlineGaps, ABreakOfAFewPixelsInALineBesideTheOutlineIsBridged)
   std::vector<glm::dvec3> whole(hexagon.begin(), hexagon.end());
   EXPECT_TRUE(outlineGaps(surface, view, { whole }, rule).empty());
 }
+
+TEST(OutlineGaps, AGapReachingALinesEndJoinsThatEndExactly)
+{
+  // Seen along z, 100 px a unit. A drawn line ends at the origin; a gap
+  // starts 1 px beside it, 0.2 px short of its end: its nearest point on
+  // the line is 0.2 px from the end, and joining there left the gap and the
+  // line a hair apart, so a brush drew them as two strokes (the coarse
+  // bunny's ear tip). Within half a pixel of the end, the end itself, bit
+  // for bit; 0.8 px short, the nearest point.
+  const ViewGeometry view = parallelView(glm::dvec3(0, 0, 1));
+  const std::vector<glm::dvec3> line{ { -0.5, 0.0, 0.0 }, { 0.0, 0.0, 0.0 } };
+  for (const double shortBy : { 0.002, 0.008 })
+  {
+    const std::vector<std::vector<glm::dvec3>> gap{ { { -shortBy, 0.01, 0.0 },
+      { 0.05, 0.01, 0.0 } } };
+    const std::vector<std::vector<glm::dvec3>> joined =
+      joinedToDrawnLines(gap, view, { line }, 5.0);
+    ASSERT_EQ(joined.size(), 1u);
+    ASSERT_EQ(joined[0].size(), 3u) << "joined at its first end only";
+    if (shortBy < 0.005)
+    {
+      EXPECT_EQ(joined[0].front(), line.back());
+    }
+    else
+    {
+      EXPECT_NEAR(joined[0].front().x, -shortBy, 1e-12);
+      EXPECT_NEAR(joined[0].front().y, 0.0, 1e-12);
+    }
+  }
+}

@@ -90,3 +90,24 @@ TEST(PathJoining, AClosedLoopStaysOnePathAndEveryLineIsUsedOnce)
   // The loop's two ends meet at the tail's end: one of them takes the tail.
   EXPECT_EQ(paths.size(), 2u);
 }
+
+TEST(PathJoining, LinesInSpaceMeetWhereTheirEndsLieWithinTheTolerance)
+{
+  // A square's sides in the plane z = 1, each corner's two ends up to 1e-6
+  // apart (as a line visibility filter's pieces come), in any order and
+  // direction: one closed path within 1e-5; with ends equal only (the
+  // wrong variant), the corners apart stay apart. An end 1e-3 away is not
+  // joined: the chain is open there.
+  using Line3 = std::vector<glm::dvec3>;
+  const std::vector<Line3> sides{ { { 0, 0, 1 }, { 1, 0, 1 } }, { { 1, 1, 1 }, { 1e-6, 1, 1 } },
+    { { 1 + 4e-7, 1 - 6e-7, 1 }, { 1, 1e-6, 1 } }, { { 0, 0, 1 }, { 0, 1, 1 } } };
+  EXPECT_EQ(idsOf(joinedPaths(sides, 1e-5)), (std::vector<std::vector<long>>{ { 0, -3, 1, -4 } }));
+  EXPECT_GT(joinedPaths(sides, 0.0).size(), 1u);
+  Line3 apart = sides[3];
+  apart.back().x += 1e-3;
+  const std::vector<Line3> open{ sides[0], sides[1], sides[2], apart };
+  EXPECT_EQ(joinedPaths(open, 1e-5).size(), 1u) << "an open chain, one path";
+  EXPECT_EQ(idsOf(joinedPaths(open, 1e-5)).front().size(), 4u);
+  const auto ends = joinedPaths(open, 1e-5).front();
+  EXPECT_TRUE(ends.front().Line == 3 || ends.back().Line == 3) << "the line apart ends the path";
+}

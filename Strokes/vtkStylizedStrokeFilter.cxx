@@ -17,7 +17,6 @@
 #include "StrokeStylizer.h"
 #include "vtkSilhouetteFilterSupport.h"
 
-#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -115,14 +114,14 @@ std::vector<Stroke> LineCells(vtkPoints* points, vtkCellArray* lines)
 // placed a hair apart, 1e-5 of the diagonal on the Wuson, are joined); a
 // chain that comes back to its start ends exactly on its first point, so
 // the stylizer closes it.
-std::vector<Stroke> JoinedStrokes(const std::vector<Stroke>& lines, double diagonal)
+std::vector<Stroke> JoinedStrokes(std::vector<Stroke> lines, double diagonal)
 {
   const double tolerance = 1e-5 * diagonal;
   std::vector<std::vector<glm::dvec3>> points;
   points.reserve(lines.size());
-  for (const Stroke& line : lines)
+  for (Stroke& line : lines)
   {
-    points.push_back(line.Points);
+    points.push_back(std::move(line.Points));
   }
   std::vector<Stroke> strokes;
   for (const std::vector<silsmooth::JoinedLine>& path : silsmooth::joinedPaths(points, tolerance))
@@ -131,14 +130,17 @@ std::vector<Stroke> JoinedStrokes(const std::vector<Stroke>& lines, double diago
     stroke.FirstLine = lines[path.front().Line].FirstLine;
     for (const silsmooth::JoinedLine& piece : path)
     {
-      std::vector<glm::dvec3> next = lines[piece.Line].Points;
+      const std::vector<glm::dvec3>& next = points[piece.Line];
+      // The joint once: the point the stroke so far ends on.
+      const std::size_t skip = stroke.Points.empty() ? 0 : 1;
       if (piece.Reversed)
       {
-        std::reverse(next.begin(), next.end());
+        stroke.Points.insert(stroke.Points.end(), next.rbegin() + skip, next.rend());
       }
-      // The joint once: the point the stroke so far ends on.
-      stroke.Points.insert(
-        stroke.Points.end(), next.begin() + (stroke.Points.empty() ? 0 : 1), next.end());
+      else
+      {
+        stroke.Points.insert(stroke.Points.end(), next.begin() + skip, next.end());
+      }
     }
     if (path.size() > 1 && glm::length(stroke.Points.back() - stroke.Points.front()) <= tolerance)
     {

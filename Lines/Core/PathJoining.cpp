@@ -1,10 +1,10 @@
 #include "PathJoining.h"
 
+#include "SurfaceWelding.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
-#include <array>
-#include <cmath>
 #include <map>
 #include <tuple>
 
@@ -42,21 +42,17 @@ Point leaving(const std::vector<Point>& line, int last)
 
 using EndKey = std::tuple<int, std::int64_t, std::int64_t, std::int64_t>; // group, position
 
-// joinedPaths for points of either dimension; keyOf(point) gives an end's
-// position key.
-template<typename Point, typename KeyOf>
+// joinedPaths for points of either dimension; keys[endOf(line, last)] is an
+// end's key (its group and position).
+template<typename Point>
 std::vector<std::vector<JoinedLine>> joinLines(
-  const std::vector<std::vector<Point>>& lines, const std::vector<int>& groups, KeyOf keyOf)
+  const std::vector<std::vector<Point>>& lines, const std::vector<EndKey>& keys)
 {
   // The ends at each point of each group.
   std::map<EndKey, std::vector<std::size_t>> meeting;
-  for (std::size_t i = 0; i < lines.size(); ++i)
+  for (std::size_t end = 0; end < keys.size(); ++end)
   {
-    for (int last = 0; last < 2; ++last)
-    {
-      const auto [x, y, z] = keyOf(last ? lines[i].back() : lines[i].front());
-      meeting[{ groups[i], x, y, z }].push_back(endOf(i, last));
-    }
+    meeting[keys[end]].push_back(end);
   }
   // Pair the ends at each point, the straightest continuation first.
   std::vector<std::size_t> partner(2 * lines.size(), none);
@@ -136,19 +132,24 @@ std::vector<std::vector<JoinedLine>> joinLines(
 std::vector<std::vector<JoinedLine>> joinedPaths(const std::vector<std::vector<glm::dvec2>>& lines,
   const std::vector<int>& groups, std::pair<std::int64_t, std::int64_t> (*keyOf)(const glm::dvec2&))
 {
-  return joinLines(lines, groups, [keyOf](const glm::dvec2& point) {
-    const auto [x, y] = keyOf(point);
-    return std::array<std::int64_t, 3>{ x, y, 0 };
-  });
+  std::vector<EndKey> keys;
+  keys.reserve(2 * lines.size());
+  for (std::size_t i = 0; i < lines.size(); ++i)
+  {
+    for (const glm::dvec2& end : { lines[i].front(), lines[i].back() })
+    {
+      const auto [x, y] = keyOf(end);
+      keys.emplace_back(groups[i], x, y, 0);
+    }
+  }
+  return joinLines(lines, keys);
 }
 
 std::vector<std::vector<JoinedLine>> joinedPaths(
   const std::vector<std::vector<glm::dvec3>>& lines, double tolerance)
 {
-  // The ends, clustered: ends within `tolerance` of each other (directly or
-  // through others) are one cluster, found through a grid of cells as wide
-  // as the tolerance (a pair within it lies in the same or a neighbouring
-  // cell).
+  // An end's key: the end it is welded with (within the tolerance,
+  // transitively), as the surface's points are.
   std::vector<glm::dvec3> ends;
   ends.reserve(2 * lines.size());
   for (const std::vector<glm::dvec3>& line : lines)
@@ -156,64 +157,14 @@ std::vector<std::vector<JoinedLine>> joinedPaths(
     ends.push_back(line.front());
     ends.push_back(line.back());
   }
-  std::vector<std::size_t> parent(ends.size());
-  for (std::size_t i = 0; i < parent.size(); ++i)
+  const std::vector<Id> welded = weldCoincidentPoints(ends, tolerance);
+  std::vector<EndKey> keys;
+  keys.reserve(ends.size());
+  for (const Id vertex : welded)
   {
-    parent[i] = i;
+    keys.emplace_back(0, vertex, 0, 0);
   }
-  const auto root = [&](std::size_t i) {
-    while (parent[i] != i)
-    {
-      i = parent[i] = parent[parent[i]];
-    }
-    return i;
-  };
-  const double cell = tolerance > 0.0 ? tolerance : 1.0;
-  const auto cellOf = [&](const glm::dvec3& p) {
-    return std::array<std::int64_t, 3>{ static_cast<std::int64_t>(std::floor(p.x / cell)),
-      static_cast<std::int64_t>(std::floor(p.y / cell)),
-      static_cast<std::int64_t>(std::floor(p.z / cell)) };
-  };
-  std::map<std::array<std::int64_t, 3>, std::vector<std::size_t>> grid;
-  for (std::size_t i = 0; i < ends.size(); ++i)
-  {
-    const std::array<std::int64_t, 3> c = cellOf(ends[i]);
-    for (std::int64_t dx = -1; dx <= 1; ++dx)
-    {
-      for (std::int64_t dy = -1; dy <= 1; ++dy)
-      {
-        for (std::int64_t dz = -1; dz <= 1; ++dz)
-        {
-          const auto near = grid.find({ c[0] + dx, c[1] + dy, c[2] + dz });
-          if (near == grid.end())
-          {
-            continue;
-          }
-          for (const std::size_t j : near->second)
-          {
-            if (glm::distance(ends[i], ends[j]) <= tolerance)
-            {
-              parent[root(i)] = root(j);
-            }
-          }
-        }
-      }
-    }
-    grid[c].push_back(i);
-  }
-  // An end's key: its cluster. The keys are looked up by the end's exact
-  // position, which the lines hand back.
-  std::map<std::array<double, 3>, std::int64_t> clusterAt;
-  for (std::size_t i = 0; i < ends.size(); ++i)
-  {
-    clusterAt.emplace(
-      std::array<double, 3>{ ends[i].x, ends[i].y, ends[i].z }, static_cast<std::int64_t>(root(i)));
-  }
-  return joinLines(lines, std::vector<int>(lines.size(), 0), [&](const glm::dvec3& point) {
-    return std::array<std::int64_t, 3>{
-      clusterAt.at(std::array<double, 3>{ point.x, point.y, point.z }), 0, 0
-    };
-  });
+  return joinLines(lines, keys);
 }
 
 } // namespace silsmooth
